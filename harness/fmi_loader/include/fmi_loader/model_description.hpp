@@ -1,0 +1,155 @@
+// The content of an FMI 2.0 modelDescription.xml (FMI 2.0.4 standard, section 2.2), with the
+// standard's defaults already applied so users never re-derive them.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fmi_loader {
+
+enum class Causality { parameter, calculated_parameter, input, output, local, independent };
+enum class Variability { constant, fixed, tunable, discrete, continuous };
+enum class Initial { none, exact, approx, calculated };  // none: the attribute is not allowed (input, independent)
+enum class VariableType { real, integer, boolean, string, enumeration };
+
+std::string_view to_string(Causality c) noexcept;
+std::string_view to_string(Variability v) noexcept;
+std::string_view to_string(Initial i) noexcept;
+std::string_view to_string(VariableType t) noexcept;
+
+// FMI 2.0.4 section 2.2.7, table of causality x variability: is the combination allowed at all?
+bool is_valid_combination(Causality c, Variability v) noexcept;
+// The default of `initial` for a valid combination (same table, cases A-E).
+Initial default_initial(Causality c, Variability v) noexcept;
+// Whether an explicitly given `initial` is allowed for the combination.
+bool is_allowed_initial(Causality c, Variability v, Initial i) noexcept;
+
+struct BaseUnit {
+    int kg = 0, m = 0, s = 0, A = 0, K = 0, mol = 0, cd = 0, rad = 0;
+    double factor = 1.0, offset = 0.0;
+};
+
+struct DisplayUnit {
+    std::string name;
+    double factor = 1.0, offset = 0.0;
+};
+
+struct Unit {
+    std::string name;
+    std::optional<BaseUnit> base_unit;
+    std::vector<DisplayUnit> display_units;
+};
+
+struct EnumerationItem {
+    std::string name;
+    std::int64_t value = 0;
+    std::string description;
+};
+
+struct SimpleType {
+    std::string name, description;
+    VariableType type = VariableType::real;
+    std::string quantity, unit, display_unit;
+    std::optional<double> min, max, nominal;
+    std::vector<EnumerationItem> items;  // Enumeration only
+};
+
+struct LogCategory {
+    std::string name, description;
+};
+
+struct DefaultExperiment {
+    std::optional<double> start_time, stop_time, tolerance, step_size;
+};
+
+struct ScalarVariable {
+    std::string name;
+    std::uint32_t value_reference = 0;
+    std::string description;
+    Causality causality = Causality::local;          // default per section 2.2.7
+    Variability variability = Variability::continuous;
+    Initial initial = Initial::none;                 // explicit value or the table's default
+    bool initial_given = false;                      // whether the XML stated `initial`
+    bool can_handle_multiple_set_per_time_instant = true;
+    VariableType type = VariableType::real;
+    std::string declared_type;
+    std::optional<std::string> start;                // raw attribute text; typed via start_as_*
+    // Own attributes, completed from the declaredType's SimpleType when the variable omits them.
+    std::string quantity, unit, display_unit;
+    std::optional<double> min, max, nominal;
+    std::optional<std::size_t> derivative;           // 1-based index of the state this is the derivative of
+    bool reinit = false;
+    bool relative_quantity = false;
+
+    std::optional<double> start_as_real() const;     // Real, Integer, Enumeration
+    std::optional<bool> start_as_boolean() const;    // "true"/"false"/"1"/"0"
+};
+
+struct Unknown {
+    std::size_t index = 0;                                   // 1-based into model_variables
+    std::optional<std::vector<std::size_t>> dependencies;    // absent: depends on all knowns
+    std::vector<std::string> dependencies_kind;
+};
+
+struct ModelStructure {
+    std::vector<Unknown> outputs, derivatives, initial_unknowns;
+};
+
+struct ModelExchangeInfo {
+    std::string model_identifier;
+    bool needs_execution_tool = false;
+    bool completed_integrator_step_not_needed = false;
+    bool can_be_instantiated_only_once_per_process = false;
+    bool can_not_use_memory_management_functions = false;
+    bool can_get_and_set_fmu_state = false;
+    bool can_serialize_fmu_state = false;
+    bool provides_directional_derivative = false;
+};
+
+struct CoSimulationInfo {
+    std::string model_identifier;
+    bool needs_execution_tool = false;
+    bool can_handle_variable_communication_step_size = false;
+    bool can_interpolate_inputs = false;
+    int max_output_derivative_order = 0;
+    bool can_run_asynchronuously = false;  // the standard's spelling
+    bool can_be_instantiated_only_once_per_process = false;
+    bool can_not_use_memory_management_functions = false;
+    bool can_get_and_set_fmu_state = false;
+    bool can_serialize_fmu_state = false;
+    bool provides_directional_derivative = false;
+};
+
+struct ModelDescription {
+    std::string fmi_version, model_name, guid, description, author, version, generation_tool;
+    std::string variable_naming_convention = "flat";
+    std::size_t number_of_event_indicators = 0;
+    std::optional<ModelExchangeInfo> model_exchange;
+    std::optional<CoSimulationInfo> co_simulation;
+    std::vector<Unit> unit_definitions;
+    std::vector<SimpleType> type_definitions;
+    std::vector<LogCategory> log_categories;
+    std::optional<DefaultExperiment> default_experiment;
+    std::vector<ScalarVariable> model_variables;
+    ModelStructure model_structure;
+
+    // Number of continuous states = number of ModelStructure/Derivatives entries (section 2.2.8).
+    std::size_t number_of_continuous_states() const noexcept { return model_structure.derivatives.size(); }
+    const ScalarVariable* find_variable(std::string_view name) const noexcept;
+    const Unit* find_unit(std::string_view name) const noexcept;
+    const SimpleType* find_type(std::string_view name) const noexcept;
+};
+
+// Parses with libxml2 without network access, without loading a DTD and without expanding
+// entities; a document carrying a DOCTYPE is refused (an FMU never needs one). Throws LoaderError
+// (xml_parse, xml_invalid) naming `source_name`.
+ModelDescription parse_model_description(std::string_view xml, const std::string& source_name = "<memory>");
+ModelDescription read_model_description(const std::filesystem::path& file);
+
+}  // namespace fmi_loader

@@ -1,0 +1,21 @@
+#include "fmi_loader/loader_error.hpp"
+
+namespace fmi_loader {
+
+std::string_view to_string(LoaderErrc code) noexcept {
+    switch (code) {
+    case LoaderErrc::archive_open: return "archive_open";
+    case LoaderErrc::unsafe_entry: return "unsafe_entry";
+    case LoaderErrc::extract_io: return "extract_io";
+    case LoaderErrc::xml_parse: return "xml_parse";
+    case LoaderErrc::xml_invalid: return "xml_invalid";
+    case LoaderErrc::dl_open: return "dl_open";
+    case LoaderErrc::missing_symbol: return "missing_symbol";
+    }
+    return "unknown";
+}
+
+LoaderError::LoaderError(LoaderErrc code, const std::string& message)
+    : std::runtime_error(std::string(to_string(code)) + ": " + message), code_(code) {}
+
+}  // namespace fmi_loader

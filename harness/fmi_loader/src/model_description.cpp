@@ -1,0 +1,501 @@
+// modelDescription.xml reader. The rules and defaults quoted below are from the FMI 2.0.4 standard,
+// section 2.2 (the XML schema) and its table of causality/variability/initial (section 2.2.7).
+#include "fmi_loader/model_description.hpp"
+
+#include <libxml/parser.h>
+#include <libxml/tree.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "fmi_loader/loader_error.hpp"
+
+namespace fmi_loader {
+
+std::string_view to_string(Causality c) noexcept {
+    switch (c) {
+    case Causality::parameter: return "parameter";
+    case Causality::calculated_parameter: return "calculatedParameter";
+    case Causality::input: return "input";
+    case Causality::output: return "output";
+    case Causality::local: return "local";
+    case Causality::independent: return "independent";
+    }
+    return "?";
+}
+
+std::string_view to_string(Variability v) noexcept {
+    switch (v) {
+    case Variability::constant: return "constant";
+    case Variability::fixed: return "fixed";
+    case Variability::tunable: return "tunable";
+    case Variability::discrete: return "discrete";
+    case Variability::continuous: return "continuous";
+    }
+    return "?";
+}
+
+std::string_view to_string(Initial i) noexcept {
+    switch (i) {
+    case Initial::none: return "none";
+    case Initial::exact: return "exact";
+    case Initial::approx: return "approx";
+    case Initial::calculated: return "calculated";
+    }
+    return "?";
+}
+
+std::string_view to_string(VariableType t) noexcept {
+    switch (t) {
+    case VariableType::real: return "Real";
+    case VariableType::integer: return "Integer";
+    case VariableType::boolean: return "Boolean";
+    case VariableType::string: return "String";
+    case VariableType::enumeration: return "Enumeration";
+    }
+    return "?";
+}
+
+bool is_valid_combination(Causality c, Variability v) noexcept {
+    using enum Variability;
+    switch (c) {
+    case Causality::parameter:
+    case Causality::calculated_parameter: return v == fixed || v == tunable;
+    case Causality::input: return v == discrete || v == continuous;
+    case Causality::output: return v == constant || v == discrete || v == continuous;
+    case Causality::local: return true;
+    case Causality::independent: return v == continuous;
+    }
+    return false;
+}
+
+Initial default_initial(Causality c, Variability v) noexcept {
+    // Cases of the 2.2.7 table: A -> exact, B and C -> calculated, D and E -> no initial.
+    switch (c) {
+    case Causality::parameter: return Initial::exact;                      // A
+    case Causality::calculated_parameter: return Initial::calculated;      // B
+    case Causality::input:
+    case Causality::independent: return Initial::none;                     // D, E
+    case Causality::output:
+    case Causality::local:
+        return v == Variability::constant ? Initial::exact : Initial::calculated;  // A; B or C
+    }
+    return Initial::none;
+}
+
+bool is_allowed_initial(Causality c, Variability v, Initial i) noexcept {
+    if (!is_valid_combination(c, v)) return false;
+    switch (c) {
+    case Causality::parameter: return i == Initial::exact;                                         // A
+    case Causality::calculated_parameter: return i == Initial::calculated || i == Initial::approx;  // B
+    case Causality::input:
+    case Causality::independent: return i == Initial::none;                                        // D, E
+    case Causality::output:
+    case Causality::local:
+        if (v == Variability::constant) return i == Initial::exact;                                // A
+        if (v == Variability::fixed || v == Variability::tunable)
+            return i == Initial::calculated || i == Initial::approx;                               // B
+        return i == Initial::exact || i == Initial::approx || i == Initial::calculated;            // C
+    }
+    return false;
+}
+
+std::optional<double> ScalarVariable::start_as_real() const {
+    if (!start || type == VariableType::string || type == VariableType::boolean) return std::nullopt;
+    char* end = nullptr;
+    errno = 0;
+    const double value = std::strtod(start->c_str(), &end);
+    if (end == start->c_str() || *end != '\0' || errno == ERANGE) return std::nullopt;
+    return value;
+}
+
+std::optional<bool> ScalarVariable::start_as_boolean() const {
+    if (!start || type != VariableType::boolean) return std::nullopt;
+    if (*start == "true" || *start == "1") return true;
+    if (*start == "false" || *start == "0") return false;
+    return std::nullopt;
+}
+
+const ScalarVariable* ModelDescription::find_variable(std::string_view name) const noexcept {
+    for (const auto& v : model_variables)
+        if (v.name == name) return &v;
+    return nullptr;
+}
+
+const Unit* ModelDescription::find_unit(std::string_view name) const noexcept {
+    for (const auto& u : unit_definitions)
+        if (u.name == name) return &u;
+    return nullptr;
+}
+
+const SimpleType* ModelDescription::find_type(std::string_view name) const noexcept {
+    for (const auto& t : type_definitions)
+        if (t.name == name) return &t;
+    return nullptr;
+}
+
+namespace {
+
+struct DocFree {
+    void operator()(xmlDoc* d) const noexcept { xmlFreeDoc(d); }
+};
+struct CtxtFree {
+    void operator()(xmlParserCtxt* c) const noexcept { xmlFreeParserCtxt(c); }
+};
+
+class Reader {
+public:
+    explicit Reader(std::string source) : source_(std::move(source)) {}
+
+    [[noreturn]] void invalid(const xmlNode* node, const std::string& cause) const {
+        const long line = node ? static_cast<long>(xmlGetLineNo(node)) : 0;
+        throw LoaderError(LoaderErrc::xml_invalid, "'" + source_ + "' line " + std::to_string(line) + ": " + cause);
+    }
+
+    static bool is(const xmlNode* n, const char* name) {
+        return n->type == XML_ELEMENT_NODE && xmlStrcmp(n->name, reinterpret_cast<const xmlChar*>(name)) == 0;
+    }
+
+    static std::optional<std::string> attr(const xmlNode* n, const char* name) {
+        xmlChar* value = xmlGetNoNsProp(n, reinterpret_cast<const xmlChar*>(name));
+        if (!value) return std::nullopt;
+        std::string text(reinterpret_cast<const char*>(value));
+        xmlFree(value);
+        return text;
+    }
+
+    std::string required(const xmlNode* n, const char* name) const {
+        auto v = attr(n, name);
+        if (!v) invalid(n, std::string("<") + reinterpret_cast<const char*>(n->name) + "> lacks required attribute '" + name + "'");
+        return *v;
+    }
+
+    std::string text(const xmlNode* n, const char* name) const { return attr(n, name).value_or(""); }
+
+    std::optional<double> real(const xmlNode* n, const char* name) const {
+        auto v = attr(n, name);
+        if (!v) return std::nullopt;
+        char* end = nullptr;
+        const double value = std::strtod(v->c_str(), &end);
+        if (v->empty() || *end != '\0') invalid(n, std::string("attribute '") + name + "' is not a number: '" + *v + "'");
+        return value;
+    }
+
+    std::optional<long long> integer(const xmlNode* n, const char* name) const {
+        auto v = attr(n, name);
+        if (!v) return std::nullopt;
+        char* end = nullptr;
+        errno = 0;
+        const long long value = std::strtoll(v->c_str(), &end, 10);
+        if (v->empty() || *end != '\0' || errno == ERANGE)
+            invalid(n, std::string("attribute '") + name + "' is not an integer: '" + *v + "'");
+        return value;
+    }
+
+    std::size_t index(const xmlNode* n, const char* name) const {
+        const auto v = integer(n, name);
+        if (!v) invalid(n, std::string("lacks required attribute '") + name + "'");
+        if (*v < 1) invalid(n, std::string("attribute '") + name + "' must be >= 1");
+        return static_cast<std::size_t>(*v);
+    }
+
+    bool boolean(const xmlNode* n, const char* name, bool fallback) const {
+        auto v = attr(n, name);
+        if (!v) return fallback;
+        if (*v == "true" || *v == "1") return true;
+        if (*v == "false" || *v == "0") return false;
+        invalid(n, std::string("attribute '") + name + "' is not a boolean: '" + *v + "'");
+    }
+
+    Causality causality(const xmlNode* n) const {
+        const auto v = attr(n, "causality");
+        if (!v || *v == "local") return Causality::local;  // default, section 2.2.7
+        if (*v == "parameter") return Causality::parameter;
+        if (*v == "calculatedParameter") return Causality::calculated_parameter;
+        if (*v == "input") return Causality::input;
+        if (*v == "output") return Causality::output;
+        if (*v == "independent") return Causality::independent;
+        invalid(n, "unknown causality '" + *v + "'");
+    }
+
+    Variability variability(const xmlNode* n) const {
+        const auto v = attr(n, "variability");
+        if (!v || *v == "continuous") return Variability::continuous;  // default, section 2.2.7
+        if (*v == "constant") return Variability::constant;
+        if (*v == "fixed") return Variability::fixed;
+        if (*v == "tunable") return Variability::tunable;
+        if (*v == "discrete") return Variability::discrete;
+        invalid(n, "unknown variability '" + *v + "'");
+    }
+
+    std::optional<Initial> initial(const xmlNode* n) const {
+        const auto v = attr(n, "initial");
+        if (!v) return std::nullopt;
+        if (*v == "exact") return Initial::exact;
+        if (*v == "approx") return Initial::approx;
+        if (*v == "calculated") return Initial::calculated;
+        invalid(n, "unknown initial '" + *v + "'");
+    }
+
+    static std::optional<VariableType> type_of(const xmlNode* n) {
+        if (is(n, "Real")) return VariableType::real;
+        if (is(n, "Integer")) return VariableType::integer;
+        if (is(n, "Boolean")) return VariableType::boolean;
+        if (is(n, "String")) return VariableType::string;
+        if (is(n, "Enumeration")) return VariableType::enumeration;
+        return std::nullopt;
+    }
+
+    std::vector<std::size_t> index_list(const xmlNode* n, const std::string& list) const {
+        std::vector<std::size_t> out;
+        std::istringstream in(list);
+        std::string token;
+        while (in >> token) {
+            char* end = nullptr;
+            const long long v = std::strtoll(token.c_str(), &end, 10);
+            if (*end != '\0' || v < 1) invalid(n, "bad index '" + token + "' in dependencies");
+            out.push_back(static_cast<std::size_t>(v));
+        }
+        return out;
+    }
+
+    std::vector<Unknown> unknowns(const xmlNode* parent) const {
+        std::vector<Unknown> out;
+        for (const xmlNode* u = parent->children; u; u = u->next) {
+            if (!is(u, "Unknown")) continue;
+            Unknown unknown;
+            unknown.index = index(u, "index");
+            if (const auto deps = attr(u, "dependencies")) unknown.dependencies = index_list(u, *deps);
+            if (const auto kinds = attr(u, "dependenciesKind")) {
+                std::istringstream in(*kinds);
+                std::string k;
+                while (in >> k) {
+                    if (k != "dependent" && k != "constant" && k != "fixed" && k != "tunable" && k != "discrete")
+                        invalid(u, "unknown dependenciesKind '" + k + "'");
+                    unknown.dependencies_kind.push_back(k);
+                }
+                // The kinds list pairs with dependencies one to one (section 2.2.8).
+                if (!unknown.dependencies || unknown.dependencies->size() != unknown.dependencies_kind.size())
+                    invalid(u, "dependenciesKind does not pair with dependencies");
+            }
+            out.push_back(std::move(unknown));
+        }
+        return out;
+    }
+
+    void unit_definitions(const xmlNode* parent, ModelDescription& md) const {
+        for (const xmlNode* n = parent->children; n; n = n->next) {
+            if (!is(n, "Unit")) continue;
+            Unit unit;
+            unit.name = required(n, "name");
+            for (const xmlNode* c = n->children; c; c = c->next) {
+                if (is(c, "BaseUnit")) {
+                    BaseUnit b;
+                    b.kg = static_cast<int>(integer(c, "kg").value_or(0));
+                    b.m = static_cast<int>(integer(c, "m").value_or(0));
+                    b.s = static_cast<int>(integer(c, "s").value_or(0));
+                    b.A = static_cast<int>(integer(c, "A").value_or(0));
+                    b.K = static_cast<int>(integer(c, "K").value_or(0));
+                    b.mol = static_cast<int>(integer(c, "mol").value_or(0));
+                    b.cd = static_cast<int>(integer(c, "cd").value_or(0));
+                    b.rad = static_cast<int>(integer(c, "rad").value_or(0));
+                    b.factor = real(c, "factor").value_or(1.0);
+                    b.offset = real(c, "offset").value_or(0.0);
+                    unit.base_unit = b;
+                } else if (is(c, "DisplayUnit")) {
+                    unit.display_units.push_back({required(c, "name"), real(c, "factor").value_or(1.0), real(c, "offset").value_or(0.0)});
+                }
+            }
+            md.unit_definitions.push_back(std::move(unit));
+        }
+    }
+
+    void type_definitions(const xmlNode* parent, ModelDescription& md) const {
+        for (const xmlNode* n = parent->children; n; n = n->next) {
+            if (!is(n, "SimpleType")) continue;
+            SimpleType t;
+            t.name = required(n, "name");
+            t.description = text(n, "description");
+            const xmlNode* body = nullptr;
+            for (const xmlNode* c = n->children; c; c = c->next)
+                if (type_of(c)) { body = c; break; }
+            if (!body) invalid(n, "SimpleType '" + t.name + "' has no Real/Integer/Boolean/String/Enumeration element");
+            t.type = *type_of(body);
+            t.quantity = text(body, "quantity");
+            t.unit = text(body, "unit");
+            t.display_unit = text(body, "displayUnit");
+            t.min = real(body, "min");
+            t.max = real(body, "max");
+            t.nominal = real(body, "nominal");
+            for (const xmlNode* item = body->children; item; item = item->next) {
+                if (!is(item, "Item")) continue;
+                const auto value = integer(item, "value");
+                if (!value) invalid(item, "Item lacks 'value'");
+                t.items.push_back({required(item, "name"), *value, text(item, "description")});
+            }
+            md.type_definitions.push_back(std::move(t));
+        }
+    }
+
+    ScalarVariable scalar_variable(const xmlNode* n, const ModelDescription& md) const {
+        ScalarVariable v;
+        v.name = required(n, "name");
+        const auto vr = integer(n, "valueReference");
+        if (!vr) invalid(n, "ScalarVariable '" + v.name + "' lacks 'valueReference'");
+        if (*vr < 0 || *vr > 0xFFFFFFFFLL) invalid(n, "valueReference of '" + v.name + "' out of range");
+        v.value_reference = static_cast<std::uint32_t>(*vr);
+        v.description = text(n, "description");
+        v.causality = causality(n);
+        v.variability = variability(n);
+        v.can_handle_multiple_set_per_time_instant = boolean(n, "canHandleMultipleSetPerTimeInstant", true);
+        const auto init = initial(n);
+        v.initial_given = init.has_value();
+        v.initial = init ? *init : default_initial(v.causality, v.variability);
+
+        const xmlNode* body = nullptr;
+        for (const xmlNode* c = n->children; c; c = c->next) {
+            if (!type_of(c)) continue;
+            if (body) invalid(c, "ScalarVariable '" + v.name + "' has more than one type element");
+            body = c;
+        }
+        if (!body) invalid(n, "ScalarVariable '" + v.name + "' has no type element");
+        v.type = *type_of(body);
+        v.declared_type = text(body, "declaredType");
+        v.start = attr(body, "start");
+        v.quantity = text(body, "quantity");
+        v.unit = text(body, "unit");
+        v.display_unit = text(body, "displayUnit");
+        v.min = real(body, "min");
+        v.max = real(body, "max");
+        v.nominal = real(body, "nominal");
+        v.relative_quantity = boolean(body, "relativeQuantity", false);
+        v.reinit = boolean(body, "reinit", false);
+        if (const auto d = integer(body, "derivative")) {
+            if (*d < 1) invalid(body, "derivative index of '" + v.name + "' must be >= 1");
+            v.derivative = static_cast<std::size_t>(*d);
+        }
+        // Attributes a variable omits are inherited from its declared type (section 2.2.3).
+        if (!v.declared_type.empty()) {
+            const SimpleType* t = md.find_type(v.declared_type);
+            if (!t) invalid(body, "declaredType '" + v.declared_type + "' of '" + v.name + "' is not defined");
+            if (v.quantity.empty()) v.quantity = t->quantity;
+            if (v.unit.empty()) v.unit = t->unit;
+            if (v.display_unit.empty()) v.display_unit = t->display_unit;
+            if (!v.min) v.min = t->min;
+            if (!v.max) v.max = t->max;
+            if (!v.nominal) v.nominal = t->nominal;
+        }
+        return v;
+    }
+
+    ModelDescription read(const xmlNode* root) const {
+        if (!root || !is(root, "fmiModelDescription"))
+            invalid(root, "root element is not <fmiModelDescription>");
+        ModelDescription md;
+        md.fmi_version = required(root, "fmiVersion");
+        if (md.fmi_version.rfind("2.", 0) != 0) invalid(root, "fmiVersion '" + md.fmi_version + "' is not 2.x");
+        md.model_name = required(root, "modelName");
+        md.guid = required(root, "guid");
+        md.description = text(root, "description");
+        md.author = text(root, "author");
+        md.version = text(root, "version");
+        md.generation_tool = text(root, "generationTool");
+        md.variable_naming_convention = attr(root, "variableNamingConvention").value_or("flat");
+        if (md.variable_naming_convention != "flat" && md.variable_naming_convention != "structured")
+            invalid(root, "unknown variableNamingConvention '" + md.variable_naming_convention + "'");
+        const auto nz = integer(root, "numberOfEventIndicators").value_or(0);
+        if (nz < 0) invalid(root, "numberOfEventIndicators is negative");
+        md.number_of_event_indicators = static_cast<std::size_t>(nz);
+
+        // Types first: variables inherit from them whatever the element order in the file.
+        for (const xmlNode* n = root->children; n; n = n->next) {
+            if (is(n, "UnitDefinitions")) unit_definitions(n, md);
+            else if (is(n, "TypeDefinitions")) type_definitions(n, md);
+        }
+        for (const xmlNode* n = root->children; n; n = n->next) {
+            if (is(n, "ModelExchange")) {
+                ModelExchangeInfo me;
+                me.model_identifier = required(n, "modelIdentifier");
+                me.needs_execution_tool = boolean(n, "needsExecutionTool", false);
+                me.completed_integrator_step_not_needed = boolean(n, "completedIntegratorStepNotNeeded", false);
+                me.can_be_instantiated_only_once_per_process = boolean(n, "canBeInstantiatedOnlyOncePerProcess", false);
+                me.can_not_use_memory_management_functions = boolean(n, "canNotUseMemoryManagementFunctions", false);
+                me.can_get_and_set_fmu_state = boolean(n, "canGetAndSetFMUstate", false);
+                me.can_serialize_fmu_state = boolean(n, "canSerializeFMUstate", false);
+                me.provides_directional_derivative = boolean(n, "providesDirectionalDerivative", false);
+                md.model_exchange = me;
+            } else if (is(n, "CoSimulation")) {
+                CoSimulationInfo cs;
+                cs.model_identifier = required(n, "modelIdentifier");
+                cs.needs_execution_tool = boolean(n, "needsExecutionTool", false);
+                cs.can_handle_variable_communication_step_size = boolean(n, "canHandleVariableCommunicationStepSize", false);
+                cs.can_interpolate_inputs = boolean(n, "canInterpolateInputs", false);
+                cs.max_output_derivative_order = static_cast<int>(integer(n, "maxOutputDerivativeOrder").value_or(0));
+                cs.can_run_asynchronuously = boolean(n, "canRunAsynchronuously", false);
+                cs.can_be_instantiated_only_once_per_process = boolean(n, "canBeInstantiatedOnlyOncePerProcess", false);
+                cs.can_not_use_memory_management_functions = boolean(n, "canNotUseMemoryManagementFunctions", false);
+                cs.can_get_and_set_fmu_state = boolean(n, "canGetAndSetFMUstate", false);
+                cs.can_serialize_fmu_state = boolean(n, "canSerializeFMUstate", false);
+                cs.provides_directional_derivative = boolean(n, "providesDirectionalDerivative", false);
+                md.co_simulation = cs;
+            } else if (is(n, "LogCategories")) {
+                for (const xmlNode* c = n->children; c; c = c->next)
+                    if (is(c, "Category")) md.log_categories.push_back({required(c, "name"), text(c, "description")});
+            } else if (is(n, "DefaultExperiment")) {
+                md.default_experiment = DefaultExperiment{real(n, "startTime"), real(n, "stopTime"),
+                                                          real(n, "tolerance"), real(n, "stepSize")};
+            } else if (is(n, "ModelVariables")) {
+                for (const xmlNode* c = n->children; c; c = c->next)
+                    if (is(c, "ScalarVariable")) md.model_variables.push_back(scalar_variable(c, md));
+            } else if (is(n, "ModelStructure")) {
+                for (const xmlNode* c = n->children; c; c = c->next) {
+                    if (is(c, "Outputs")) md.model_structure.outputs = unknowns(c);
+                    else if (is(c, "Derivatives")) md.model_structure.derivatives = unknowns(c);
+                    else if (is(c, "InitialUnknowns")) md.model_structure.initial_unknowns = unknowns(c);
+                }
+            }
+        }
+        if (!md.model_exchange && !md.co_simulation)
+            invalid(root, "neither <ModelExchange> nor <CoSimulation> is declared");
+        return md;
+    }
+
+private:
+    std::string source_;
+};
+
+}  // namespace
+
+ModelDescription parse_model_description(std::string_view xml, const std::string& source_name) {
+    std::unique_ptr<xmlParserCtxt, CtxtFree> ctxt(xmlNewParserCtxt());
+    if (!ctxt) throw LoaderError(LoaderErrc::xml_parse, "'" + source_name + "': cannot create parser");
+    // NONET: no network; neither DTDLOAD nor NOENT: no external subset and no entity expansion.
+    // NOERROR/NOWARNING: the message goes into the exception, not to stderr.
+    const int options = XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING;
+    std::unique_ptr<xmlDoc, DocFree> doc(xmlCtxtReadMemory(ctxt.get(), xml.data(), static_cast<int>(xml.size()),
+                                                           nullptr, nullptr, options));
+    if (!doc || !ctxt->wellFormed) {
+        const xmlError* err = xmlCtxtGetLastError(ctxt.get());
+        std::string cause = err && err->message ? err->message : "not well-formed";
+        while (!cause.empty() && cause.back() == '\n') cause.pop_back();
+        const int line = err ? err->line : 0;
+        throw LoaderError(LoaderErrc::xml_parse, "'" + source_name + "' line " + std::to_string(line) + ": " + cause);
+    }
+    // A DOCTYPE is the only way to declare entities; FMI never uses one, so refuse it outright.
+    if (doc->intSubset || doc->extSubset)
+        throw LoaderError(LoaderErrc::xml_invalid, "'" + source_name + "': DOCTYPE declarations are not allowed in modelDescription.xml");
+    return Reader(source_name).read(xmlDocGetRootElement(doc.get()));
+}
+
+ModelDescription read_model_description(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw LoaderError(LoaderErrc::xml_parse, "'" + file.string() + "': cannot open file");
+    std::ostringstream content;
+    content << in.rdbuf();
+    return parse_model_description(content.str(), file.string());
+}
+
+}  // namespace fmi_loader
