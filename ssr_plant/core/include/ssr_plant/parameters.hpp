@@ -1,0 +1,88 @@
+// The plant's parameters: one plain, trivially copyable struct with documented defaults.
+// Values marked "seed" are from paper 000 §4 / 001 §4; the others are assumptions for a plausible
+// small-satellite power system (a 10 Wp, 36-cell panel per face charging a 12 V battery from a 15 V bus)
+// and say so.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+namespace ssr_plant {
+
+// How the plant is solved in time. Both use the same equations (plant.cpp); only the shunt fraction
+// and the sample/hold differ.
+enum class Fidelity : std::int32_t {
+    switching = 0,  // every PWM edge is a time event; the S/H tracks while the gate is on, holds while off
+    averaged = 1,   // state-space average over one PWM period (eq. 4): no PWM events; the S/H output is
+                    // the continuous differential short-circuit current
+};
+
+// The panel's relative response to the sun's incidence angle β.
+enum class AngularResponse : std::int32_t {
+    cosine = 0,  // eq. 1: I_sc = I_sc|β=0 · cos β
+    kelly = 1,   // Kelly cosine, seed 000 fig. 4 (after Patel 1999), see angular_response.hpp
+};
+
+// Datasheet of one panel at the rated irradiance (standard test conditions, cell temperature below).
+// Assumed values of a common 36-cell 10 Wp silicon module: Pmp = 17.5 V · 0.5714 A = 10.0 W, fill
+// factor 0.750. Its open-circuit voltage (21.5 V) leaves room for a 15 V bus plus an OR diode.
+struct PanelDatasheet {
+    double rated_irradiance = 1000.0;         // W/m², seed: 10 Wp at 1000 W/m²
+    double short_circuit_current = 0.62;      // A, Isc (assumed)
+    double open_circuit_voltage = 21.5;       // V, Voc (assumed)
+    double max_power_current = 0.5714;        // A, Imp (assumed)
+    double max_power_voltage = 17.5;          // V, Vmp (assumed); Vmp·Imp = 10.0 W (seed: 10 Wp)
+    std::int32_t cells_in_series = 36;        // (assumed)
+    // Ω, R_sh of fig. 2 for the whole panel (assumed; the datasheet points fix the other four unknowns).
+    // 2000 Ω gives the fit n ≈ 1.28, R_s ≈ 1.34 Ω (37 mΩ per cell); a much lower R_sh cannot reach this
+    // fill factor with a physical ideality (500 Ω would need n ≈ 0.42).
+    double shunt_resistance = 2000.0;
+    double cell_temperature = 298.15;         // K, thermal voltage V_T = k T / q of eq. 2
+};
+
+// A 12 V battery (assumed lead-acid): open-circuit voltage vs state of charge, tabulated at
+// soc = 0, 0.1, …, 1 (typical rested voltages of a 12 V lead-acid battery as in common published
+// charts; an assumption, the seed only says "12 V battery"). Linear between points, held outside [0, 1].
+struct BatteryParameters {
+    double capacity = 7200.0;  // C (= 2 Ah, assumed)
+    std::array<double, 11> open_circuit_voltage = {11.30, 11.51, 11.66, 11.81, 11.96, 12.10,
+                                                   12.24, 12.37, 12.50, 12.62, 12.73};  // V
+    double internal_resistance = 0.05;   // Ω (assumed)
+    // Charge path bus → charge MOSFET → current-limiting resistor → battery. Without a limit the
+    // 15 V bus against a 12.5 V battery would draw tens of amperes; 5 Ω gives about C/4 (assumed).
+    double charge_path_resistance = 5.0;  // Ω
+    // Discharge path battery → series diode → bus (fig. 5): carries the load in eclipse.
+    double diode_forward_voltage = 0.6;   // V (assumed)
+    double diode_resistance = 0.05;       // Ω, forward slope of the piecewise-linear diode (assumed)
+    // Hysteresis charge control (seed 000 §2): connect for charging when soc falls to the low
+    // threshold, disconnect when it reaches full charge. The band makes the switching count finite.
+    double soc_connect = 0.80;     // (assumed)
+    double soc_disconnect = 1.00;  // "maximum charge" (seed)
+};
+
+struct Parameters {
+    Fidelity fidelity = Fidelity::switching;
+    AngularResponse angular_response = AngularResponse::cosine;
+    PanelDatasheet panel;
+    double or_diode_forward_voltage = 0.6;  // V, the fast OR diode between each panel and the bus (assumed)
+    double or_diode_resistance = 0.05;      // Ω, its forward slope (assumed)
+    double shunt_switch_resistance = 0.05;  // Ω, R_DS(on) of each shunt MOSFET (assumed)
+
+    // Sequential Shunt Regulator (fig. 5 / fig. 7).
+    double pwm_frequency = 5000.0;       // Hz (seed)
+    double bus_capacitance = 1500e-6;    // F (seed)
+    double load_resistance = 90.0;       // Ω (seed)
+    double bus_voltage_reference = 15.0; // V (seed)
+    // Proportional controller, seed gain 300. Unit: percent of duty per volt of bus error,
+    //   D = clamp(controller_gain · (v_bus − v_ref) / 100, 0, 1)   (D = fraction of the period shunted).
+    // Why percent: the controller is sampled once per PWM period, so the loop gain per sample is
+    // I_pv · T · K / C. With K = 300 /V and the seed's I_pv ≈ 1.2 A, T = 200 µs, C = 1500 µF that is
+    // ≈ 48 (> 2: the sampled loop is unstable and degenerates into a 0/1 limit cycle); with
+    // K = 3 /V it is ≈ 0.5, a well-damped loop. The price is a steady-state offset D/K (≈ 0.28 V at
+    // D ≈ 0.85): a pure P controller always has one.
+    double controller_gain = 300.0;      // %/V (seed value, unit: see above)
+
+    BatteryParameters battery;
+};
+
+}  // namespace ssr_plant

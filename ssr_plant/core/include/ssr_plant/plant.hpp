@@ -1,0 +1,108 @@
+// The whole power system (seed 000 §2–4, 001 §3–4) as an event-driven ODE for an external integrator:
+// six panels (one per face), the Sequential Shunt Regulator with its PWM and P controller, bus capacitor,
+// resistive load, battery with series diode and hysteresis charge switch, and the per-axis differential
+// Hall transducer with sample/hold.
+//
+// Protocol (FMI Model Exchange style), all functions pure:
+//   model = make_model(parameters)                      (throws ParameterError)
+//   d     = initialize(model, u, t0, x0)                 (discrete state at the start)
+//   loop: integrate dx/dt = derivatives(model, u, d, t, x) up to next_time_event(model, d), watching
+//         event_indicators(model, u, d, t, x) for sign changes; at a time or state event:
+//         d = event_update(model, u, d, t, x).discrete   (continuous states never jump)
+//   outputs(model, u, d, t, x) at any point.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+
+#include "ssr_plant/parameters.hpp"
+#include "ssr_plant/pv_panel.hpp"
+
+namespace ssr_plant {
+
+inline constexpr std::size_t face_count = 6;  // +x, −x, +y, −y, +z, −z
+inline constexpr std::size_t axis_count = 3;
+
+// Continuous state vector layout.
+inline constexpr std::size_t state_v_bus = 0;  // V, bus capacitor voltage (nominal 15)
+inline constexpr std::size_t state_soc = 1;    // 1, battery state of charge (charge / capacity, nominal 1)
+inline constexpr std::size_t state_count = 2;
+using State = std::array<double, state_count>;
+
+// Event indicators (state events; they cross zero where the hysteresis charge controller may switch).
+inline constexpr std::size_t indicator_soc_connect = 0;     // soc − soc_connect: falling to 0 connects
+inline constexpr std::size_t indicator_soc_disconnect = 1;  // soc − soc_disconnect: rising to 0 disconnects
+inline constexpr std::size_t indicator_count = 2;
+using Indicators = std::array<double, indicator_count>;
+
+inline constexpr double no_time_event = std::numeric_limits<double>::infinity();
+
+struct Inputs {
+    std::array<double, 3> sun_body = {0.0, 0.0, 1.0};  // sun direction in body axes (normalized here)
+    double irradiance = 1367.0;                        // W/m² of direct sunlight, 0 in eclipse (seed)
+    std::array<double, face_count> albedo_face = {};   // W/m² of Earth albedo reaching each face
+};
+
+// Everything that changes only at events. Trivially copyable.
+struct DiscreteState {
+    double period_origin = 0.0;       // s, start of PWM period 0 (the start time)
+    std::int64_t period_index = 0;    // PWM period in progress: it starts at origin + index · T
+    double duty = 0.0;                // duty sampled at the start of this period (switching);
+                                      // (averaged: the value at initialization, unused)
+    bool gate = false;                // shunt MOSFETs on (switching); averaged: duty > 0
+    bool off_edge_pending = false;    // the gate turns off at origin + (index + duty) · T
+    bool charge_connected = false;    // battery charge MOSFET on
+    double next_event_time = no_time_event;                  // s, next PWM edge (switching)
+    std::array<double, axis_count> held_current = {};        // A, S/H value, updated when the gate opens
+    friend bool operator==(const DiscreteState&, const DiscreteState&) = default;
+};
+
+struct Outputs {
+    std::array<double, axis_count> i_sh = {};        // A, S/H of I(+axis) − I(−axis)
+    std::array<double, face_count> i_sc = {};        // A, each panel's true short-circuit current (V = 0)
+    std::array<double, face_count> i_panel = {};     // A, each panel's current into the bus (period
+                                                     // average in averaged mode)
+    double v_bus = 0.0;    // V
+    double v_batt = 0.0;   // V, battery terminal voltage
+    double i_batt = 0.0;   // A, into the battery (+ charging)
+    double soc = 0.0;      // 1
+    double duty = 0.0;     // 1, shunt duty cycle
+    bool gate = false;     // shunt MOSFETs on
+    double i_load = 0.0;   // A, through the load resistor
+};
+
+// Parameters plus what is derived from them once (the fitted panel circuit). Trivially copyable.
+struct Model {
+    Parameters parameters;
+    DiodeModel diode;
+    double pwm_period = 0.0;  // s
+};
+
+// Validates the parameters and fits the panel circuit. Throws ParameterError with a clear message.
+Model make_model(const Parameters& p);
+
+// Throws std::invalid_argument for non-finite inputs, negative irradiance or albedo.
+void check_inputs(const Inputs& u);
+
+// Effective irradiance on each face: irradiance · f(β) + albedo (W/m²).
+std::array<double, face_count> face_irradiance(const Model& m, const Inputs& u);
+
+DiscreteState initialize(const Model& m, const Inputs& u, double t0, const State& x0);
+State derivatives(const Model& m, const Inputs& u, const DiscreteState& d, double t, const State& x);
+Outputs outputs(const Model& m, const Inputs& u, const DiscreteState& d, double t, const State& x);
+Indicators event_indicators(const Model& m, const Inputs& u, const DiscreteState& d, double t, const State& x);
+double next_time_event(const Model& m, const DiscreteState& d);  // no_time_event if none
+
+struct EventResult {
+    DiscreteState discrete;
+    bool changed = false;  // any discrete variable changed (for valuesOfContinuousStatesChanged = false,
+                           // newDiscreteStatesNeeded = false: one call settles an event instant)
+};
+// Performs every discrete change due at t: PWM edges whose time has come (t >= edge − 1e-9 T), the
+// controller sample at a period start, the S/H hold when the gate opens, and the charge switch.
+// Idempotent: a second call at the same t with the result changes nothing.
+EventResult event_update(const Model& m, const Inputs& u, const DiscreteState& d, double t, const State& x);
+
+}  // namespace ssr_plant

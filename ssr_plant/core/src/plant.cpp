@@ -1,0 +1,230 @@
+#include "ssr_plant/plant.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "ssr_plant/angular_response.hpp"
+#include "ssr_plant/battery.hpp"
+#include "ssr_plant/shunt_regulator.hpp"
+
+namespace ssr_plant {
+namespace {
+
+void require(bool ok, const char* what) {
+    if (!ok) throw ParameterError(std::string("ssr_plant parameters: ") + what);
+}
+
+bool positive(double v) { return std::isfinite(v) && v > 0.0; }
+bool non_negative(double v) { return std::isfinite(v) && v >= 0.0; }
+
+// Time tolerance for "this PWM edge is due now": far below any edge spacing, above rounding of t.
+double edge_tolerance(const Model& m, double t) { return 1e-9 * m.pwm_period + 1e-15 * std::abs(t); }
+
+// Pulses shorter than this are no pulse at all (no zero-length gate events).
+double effective_duty(const Model& m, double duty) {
+    constexpr double tiny = 1e-9;
+    (void)m;
+    if (duty < tiny) return 0.0;
+    if (duty > 1.0 - tiny) return 1.0;
+    return duty;
+}
+
+double period_start(const DiscreteState& d, const Model& m, std::int64_t k) {
+    return d.period_origin + static_cast<double>(k) * m.pwm_period;
+}
+
+// Per face: photocurrent from the effective irradiance.
+std::array<double, face_count> photocurrents(const Model& m, const Inputs& u) {
+    const auto g = face_irradiance(m, u);
+    std::array<double, face_count> iph{};
+    for (std::size_t k = 0; k < face_count; ++k) iph[k] = photocurrent(m.diode, g[k]);
+    return iph;
+}
+
+// Current each panel pushes through its OR diode into the bus when its shunt switch is off: the panel
+// sits at v_bus + V_f + I R_or; a reverse-biased diode (panel below bus + V_f) passes nothing.
+std::array<double, face_count> bus_side_currents(const Model& m, const std::array<double, face_count>& iph,
+                                                 double v_bus) {
+    const auto& p = m.parameters;
+    std::array<double, face_count> i{};
+    for (std::size_t k = 0; k < face_count; ++k)
+        i[k] = std::max(0.0, panel_current(m.diode, iph[k], v_bus + p.or_diode_forward_voltage,
+                                           p.or_diode_resistance));
+    return i;
+}
+
+// Current through each closed shunt switch (panel short-circuited through R_DS(on)): what the Hall
+// transducer sees while the gate is on.
+std::array<double, face_count> shunted_currents(const Model& m, const std::array<double, face_count>& iph) {
+    std::array<double, face_count> i{};
+    for (std::size_t k = 0; k < face_count; ++k)
+        i[k] = panel_current(m.diode, iph[k], 0.0, m.parameters.shunt_switch_resistance);
+    return i;
+}
+
+// Fraction of the time the shunts are on: the gate itself (switching) or the duty (averaged, eq. 4).
+double shunt_fraction(const Model& m, const DiscreteState& d, double v_bus) {
+    if (m.parameters.fidelity == Fidelity::averaged) return controller_duty(m.parameters, v_bus);
+    return d.gate ? 1.0 : 0.0;
+}
+
+// Starts PWM period k at its start time: sample the controller, turn the gate on for the pulse.
+void start_period(const Model& m, DiscreteState& d, std::int64_t k, double v_bus) {
+    d.period_index = k;
+    d.duty = effective_duty(m, controller_duty(m.parameters, v_bus));
+    d.gate = d.duty > 0.0;
+    d.off_edge_pending = d.duty > 0.0 && d.duty < 1.0;
+    d.next_event_time = d.off_edge_pending ? period_start(d, m, k) + d.duty * m.pwm_period
+                                           : period_start(d, m, k + 1);
+}
+
+void update_charge_switch(const Model& m, DiscreteState& d, double soc) {
+    const auto& b = m.parameters.battery;
+    if (!d.charge_connected && soc <= b.soc_connect) d.charge_connected = true;
+    else if (d.charge_connected && soc >= b.soc_disconnect) d.charge_connected = false;
+}
+
+}  // namespace
+
+Model make_model(const Parameters& p) {
+    require(p.fidelity == Fidelity::switching || p.fidelity == Fidelity::averaged, "fidelity must be 0 or 1");
+    require(p.angular_response == AngularResponse::cosine || p.angular_response == AngularResponse::kelly,
+            "angular_response must be 0 (cosine) or 1 (kelly)");
+    require(non_negative(p.or_diode_forward_voltage) && non_negative(p.or_diode_resistance),
+            "OR diode forward voltage and resistance must be >= 0");
+    require(non_negative(p.shunt_switch_resistance), "shunt switch resistance must be >= 0");
+    require(positive(p.pwm_frequency), "PWM frequency must be > 0");
+    require(positive(p.bus_capacitance), "bus capacitance must be > 0");
+    require(positive(p.load_resistance), "load resistance must be > 0");
+    require(std::isfinite(p.bus_voltage_reference), "bus voltage reference must be finite");
+    require(non_negative(p.controller_gain), "controller gain must be >= 0");
+    const auto& b = p.battery;
+    require(positive(b.capacity), "battery capacity must be > 0");
+    require(positive(b.internal_resistance), "battery internal resistance must be > 0");
+    require(positive(b.charge_path_resistance), "battery charge path resistance must be > 0");
+    require(non_negative(b.diode_forward_voltage) && positive(b.diode_resistance),
+            "battery diode: forward voltage >= 0 and resistance > 0");
+    for (double v : b.open_circuit_voltage) require(positive(v), "battery open-circuit voltages must be > 0");
+    require(std::isfinite(b.soc_connect) && std::isfinite(b.soc_disconnect) && b.soc_connect < b.soc_disconnect,
+            "hysteresis needs soc_connect < soc_disconnect");
+    Model m;
+    m.parameters = p;
+    m.diode = fit_diode_model(p.panel);
+    m.pwm_period = 1.0 / p.pwm_frequency;
+    return m;
+}
+
+void check_inputs(const Inputs& u) {
+    for (double s : u.sun_body)
+        if (!std::isfinite(s)) throw std::invalid_argument("ssr_plant inputs: sun_body must be finite");
+    if (!std::isfinite(u.irradiance) || u.irradiance < 0.0)
+        throw std::invalid_argument("ssr_plant inputs: irradiance must be finite and >= 0");
+    for (double a : u.albedo_face)
+        if (!std::isfinite(a) || a < 0.0)
+            throw std::invalid_argument("ssr_plant inputs: albedo_face must be finite and >= 0");
+}
+
+std::array<double, face_count> face_irradiance(const Model& m, const Inputs& u) {
+    const auto& s = u.sun_body;
+    const double norm = std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+    std::array<double, face_count> g{};
+    for (std::size_t k = 0; k < face_count; ++k) {
+        const std::size_t axis = k / 2;
+        const double sign = (k % 2 == 0) ? 1.0 : -1.0;  // faces +x, −x, +y, −y, +z, −z
+        const double cos_beta = norm > 0.0 ? sign * s[axis] / norm : -1.0;
+        // Direct sunlight through the angular law (eq. 1 or the Kelly cosine), plus the face's albedo.
+        g[k] = u.irradiance * angular_response(m.parameters.angular_response, cos_beta) + u.albedo_face[k];
+    }
+    return g;
+}
+
+DiscreteState initialize(const Model& m, const Inputs& u, double t0, const State& x0) {
+    DiscreteState d;
+    d.period_origin = t0;
+    d.charge_connected = x0[state_soc] <= m.parameters.battery.soc_connect;
+    // The S/H starts as if it had been tracking: it holds the live differential current.
+    d.held_current = differential_currents(shunted_currents(m, photocurrents(m, u)));
+    if (m.parameters.fidelity == Fidelity::switching) {
+        start_period(m, d, 0, x0[state_v_bus]);
+    } else {
+        d.duty = controller_duty(m.parameters, x0[state_v_bus]);
+        d.gate = d.duty > 0.0;
+        d.next_event_time = no_time_event;
+    }
+    return d;
+}
+
+State derivatives(const Model& m, const Inputs& u, const DiscreteState& d, double /*t*/, const State& x) {
+    const auto& p = m.parameters;
+    const double v = x[state_v_bus];
+    const double sigma = shunt_fraction(m, d, v);
+    const auto i_pv = bus_side_currents(m, photocurrents(m, u), v);
+    double i_in = 0.0;
+    for (double i : i_pv) i_in += i;
+    i_in *= (1.0 - sigma);  // eq. 4: I_bus = (1 − D) I; σ ∈ {0, 1} when switching
+    const auto batt = battery_operating_point(p.battery, x[state_soc], v, d.charge_connected);
+    State dx{};
+    dx[state_v_bus] = (i_in - v / p.load_resistance - batt.current) / p.bus_capacitance;  // C dv/dt = Σ i
+    dx[state_soc] = batt.current / p.battery.capacity;  // charge balance, coulombic efficiency 1
+    return dx;
+}
+
+Outputs outputs(const Model& m, const Inputs& u, const DiscreteState& d, double /*t*/, const State& x) {
+    const auto& p = m.parameters;
+    const double v = x[state_v_bus];
+    const auto iph = photocurrents(m, u);
+    Outputs y;
+    for (std::size_t k = 0; k < face_count; ++k) y.i_sc[k] = panel_current(m.diode, iph[k], 0.0);
+    const double sigma = shunt_fraction(m, d, v);
+    const auto i_pv = bus_side_currents(m, iph, v);
+    for (std::size_t k = 0; k < face_count; ++k) y.i_panel[k] = (1.0 - sigma) * i_pv[k];
+    const auto live = differential_currents(shunted_currents(m, iph));
+    // Seed 001 §3: the S/H samples while the shunts are on and holds while they are off.
+    if (p.fidelity == Fidelity::averaged) y.i_sh = live;
+    else y.i_sh = d.gate ? live : d.held_current;
+    const auto batt = battery_operating_point(p.battery, x[state_soc], v, d.charge_connected);
+    y.v_bus = v;
+    y.v_batt = batt.terminal_voltage;
+    y.i_batt = batt.current;
+    y.soc = x[state_soc];
+    y.duty = p.fidelity == Fidelity::averaged ? sigma : d.duty;
+    y.gate = p.fidelity == Fidelity::averaged ? sigma > 0.0 : d.gate;
+    y.i_load = v / p.load_resistance;
+    return y;
+}
+
+Indicators event_indicators(const Model& m, const Inputs&, const DiscreteState&, double, const State& x) {
+    const auto& b = m.parameters.battery;
+    return {x[state_soc] - b.soc_connect, x[state_soc] - b.soc_disconnect};
+}
+
+double next_time_event(const Model& m, const DiscreteState& d) {
+    if (m.parameters.fidelity == Fidelity::averaged) return no_time_event;
+    return d.next_event_time;
+}
+
+EventResult event_update(const Model& m, const Inputs& u, const DiscreteState& d0, double t, const State& x) {
+    DiscreteState d = d0;
+    if (m.parameters.fidelity == Fidelity::switching) {
+        // A bounded loop: normally one edge is due; more only if a host stepped past edges.
+        for (int guard = 0; guard < 1000000 && t >= d.next_event_time - edge_tolerance(m, t); ++guard) {
+            if (d.off_edge_pending) {
+                d.gate = false;  // trailing edge of the pulse
+                d.off_edge_pending = false;
+                d.next_event_time = period_start(d, m, d.period_index + 1);
+                // The S/H holds what it tracked up to this instant.
+                d.held_current = differential_currents(shunted_currents(m, photocurrents(m, u)));
+            } else {
+                const bool gate_before = d.gate;
+                start_period(m, d, d.period_index + 1, x[state_v_bus]);  // controller sample (digital P)
+                if (gate_before && !d.gate)
+                    d.held_current = differential_currents(shunted_currents(m, photocurrents(m, u)));
+            }
+        }
+    }
+    update_charge_switch(m, d, x[state_soc]);
+    return {d, !(d == d0)};
+}
+
+}  // namespace ssr_plant

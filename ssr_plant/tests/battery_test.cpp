@@ -1,0 +1,54 @@
+#include "ssr_plant/battery.hpp"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+using namespace ssr_plant;
+
+// Defaults typed by hand: OCV table 11.30 … 12.73 V, R_int 0.05 Ω, charge path 5 Ω, diode 0.6 V / 0.05 Ω.
+const BatteryParameters b{};
+
+TEST(SsrCoreBattery, OpenCircuitVoltageInterpolatesTheTable) {
+    EXPECT_DOUBLE_EQ(open_circuit_voltage(b, 0.0), 11.30);
+    EXPECT_DOUBLE_EQ(open_circuit_voltage(b, 1.0), 12.73);
+    EXPECT_NEAR(open_circuit_voltage(b, 0.5), 12.10, 1e-12);
+    EXPECT_NEAR(open_circuit_voltage(b, 0.85), 0.5 * (12.50 + 12.62), 1e-12);  // halfway 0.8…0.9
+    EXPECT_DOUBLE_EQ(open_circuit_voltage(b, -0.2), 11.30);  // held outside [0, 1]
+    EXPECT_DOUBLE_EQ(open_circuit_voltage(b, 1.3), 12.73);
+}
+
+TEST(SsrCoreBattery, StandbyOnARegulatedBusDrawsNothing) {
+    // Switch open, diode reverse-biased (12.73 − 15 < 0.6): no current, terminal = OCV.
+    const auto pt = battery_operating_point(b, 1.0, 15.0, false);
+    EXPECT_EQ(pt.current, 0.0);
+    EXPECT_DOUBLE_EQ(pt.terminal_voltage, 12.73);
+}
+
+TEST(SsrCoreBattery, ChargingThroughTheSwitch) {
+    // Hand: (15 − 12.10) / (5 + 0.05) = 0.574257… A into the battery.
+    const auto pt = battery_operating_point(b, 0.5, 15.0, true);
+    EXPECT_NEAR(pt.current, 2.90 / 5.05, 1e-12);
+    EXPECT_NEAR(pt.terminal_voltage, 12.10 + 0.05 * 2.90 / 5.05, 1e-12);
+}
+
+TEST(SsrCoreBattery, DiodeCarriesTheLoadInEclipse) {
+    // Switch open, bus at 11 V: diode conducts, hand: −(12.10 − 0.6 − 11) / (0.05 + 0.05) = −5 A.
+    const auto pt = battery_operating_point(b, 0.5, 11.0, false);
+    EXPECT_NEAR(pt.current, -5.0, 1e-12);
+    // Both paths (switch closed as well): KCL at the terminal node by hand,
+    // (vt − 12.10)/0.05 + (vt − 11)/5 + (vt − 11.6)/0.05 = 0 → vt = 476.2 / 40.2.
+    const double vt = 476.2 / 40.2;
+    const auto both = battery_operating_point(b, 0.5, 11.0, true);
+    EXPECT_NEAR(both.terminal_voltage, vt, 1e-12);
+    EXPECT_NEAR(both.current, (vt - 12.10) / 0.05, 1e-10);
+}
+
+TEST(SsrCoreBattery, ContinuousAtTheDiodeThreshold) {
+    // The diode starts conducting at v_bus = OCV − V_f = 11.5 V: no jump in current there.
+    const double v0 = 12.10 - 0.6;
+    EXPECT_NEAR(battery_operating_point(b, 0.5, v0 + 1e-9, false).current, 0.0, 1e-7);
+    EXPECT_NEAR(battery_operating_point(b, 0.5, v0 - 1e-9, false).current, 0.0, 1e-7);
+}
+
+}  // namespace

@@ -1,0 +1,265 @@
+#include "ssr_plant/plant.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "reference_formulas.hpp"
+#include "ssr_plant/battery.hpp"
+#include "test_integrator.hpp"
+
+namespace {
+
+using namespace ssr_plant;
+
+constexpr double T = 1.0 / 5000.0;  // seed PWM period
+
+Inputs sun_along(double sx, double sy, double sz, double irradiance = 1367.0) {
+    Inputs u;
+    u.sun_body = {sx, sy, sz};
+    u.irradiance = irradiance;
+    return u;
+}
+
+// Current through a closed shunt switch by the Lambert-W closed form (independent of the solver).
+double shorted_reference(const Model& m, double effective_irradiance) {
+    const double iph = m.diode.photocurrent_rated * effective_irradiance / 1000.0;
+    return ssr_plant_test::lambert_panel_current(iph, m.diode.saturation_current, m.diode.ideality_voltage,
+                                                 m.diode.series_resistance + m.parameters.shunt_switch_resistance,
+                                                 m.diode.shunt_resistance, 0.0);
+}
+
+TEST(SsrCorePlant, RejectsBadParametersAndInputs) {
+    Parameters p;
+    p.bus_capacitance = 0.0;
+    EXPECT_THROW(make_model(p), ParameterError);
+    p = Parameters{};
+    p.battery.soc_connect = 1.0;  // no hysteresis band
+    EXPECT_THROW(make_model(p), ParameterError);
+    p = Parameters{};
+    p.pwm_frequency = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW(make_model(p), ParameterError);
+    EXPECT_NO_THROW(make_model(Parameters{}));
+
+    Inputs u;
+    EXPECT_NO_THROW(check_inputs(u));
+    u.sun_body[1] = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW(check_inputs(u), std::invalid_argument);
+    u = Inputs{};
+    u.irradiance = -1.0;
+    EXPECT_THROW(check_inputs(u), std::invalid_argument);
+    u = Inputs{};
+    u.albedo_face[3] = std::numeric_limits<double>::infinity();
+    EXPECT_THROW(check_inputs(u), std::invalid_argument);
+}
+
+TEST(SsrCorePlant, FaceIrradianceIsDirectTimesCosinePlusAlbedo) {
+    const Model m = make_model(Parameters{});
+    Inputs u = sun_along(0.6, 0.0, -0.8, 1000.0);
+    u.albedo_face = {0, 0, 0, 50, 0, 0};
+    const auto g = face_irradiance(m, u);
+    // Hand: +x sees cos β = 0.6, −z sees 0.8, the rest 0; −y gets 50 W/m² of albedo.
+    const double expected[] = {600.0, 0.0, 0.0, 50.0, 0.0, 800.0};
+    for (int k = 0; k < 6; ++k) EXPECT_NEAR(g[k], expected[k], 1e-12) << k;
+    // A non-unit sun vector is normalized.
+    const auto g2 = face_irradiance(m, sun_along(3.0, 0.0, -4.0, 1000.0));
+    EXPECT_NEAR(g2[0], 600.0, 1e-12);
+    EXPECT_NEAR(g2[5], 800.0, 1e-12);
+}
+
+TEST(SsrCorePlant, PwmEdgesAreTimeEventsOnAnExactGrid) {
+    const Model m = make_model(Parameters{});
+    const Inputs u = sun_along(1, 0, 0);
+    // v = 15.2 V → D = 300 %/V · 0.2 V = 0.6 (hand).
+    State x{15.2, 0.9};
+    DiscreteState d = initialize(m, u, 0.0, x);
+    EXPECT_NEAR(d.duty, 0.6, 1e-12);
+    EXPECT_TRUE(d.gate);
+    EXPECT_NEAR(next_time_event(m, d), 0.6 * T, 1e-18);
+    // Not yet due: nothing changes.
+    EXPECT_FALSE(event_update(m, u, d, 0.3 * T, x).changed);
+    d = event_update(m, u, d, 0.6 * T, x).discrete;
+    EXPECT_FALSE(d.gate);
+    EXPECT_NEAR(next_time_event(m, d), T, 1e-18);
+    // Period start: controller samples the bus (now 15.0 → D = 0: gate stays off all period).
+    x[state_v_bus] = 15.0;
+    d = event_update(m, u, d, T, x).discrete;
+    EXPECT_EQ(d.duty, 0.0);
+    EXPECT_FALSE(d.gate);
+    EXPECT_NEAR(next_time_event(m, d), 2 * T, 1e-18);
+    // D saturated at 1: on for the whole period, no off edge.
+    x[state_v_bus] = 15.5;
+    d = event_update(m, u, d, 2 * T, x).discrete;
+    EXPECT_EQ(d.duty, 1.0);
+    EXPECT_TRUE(d.gate);
+    EXPECT_NEAR(next_time_event(m, d), 3 * T, 1e-18);
+    // After 10^6 periods the edges are still on k·T (no accumulated drift).
+    DiscreteState far = d;
+    far.period_index = 1000000 - 1;
+    far.next_event_time = 1000000 * T;
+    far.off_edge_pending = false;
+    x[state_v_bus] = 15.1;
+    far = event_update(m, u, far, 1000000 * T, x).discrete;
+    EXPECT_NEAR(next_time_event(m, far), (1000000 + 0.3) * T, 1e-12);
+}
+
+TEST(SsrCorePlant, SampleHoldTracksWhileGateOnAndHoldsWhileOff) {
+    const Model m = make_model(Parameters{});
+    const State x{15.2, 0.9};  // D = 0.6
+    // Sun along +x: the x-axis Hall sees the shorted +x panel, the others nothing.
+    const Inputs u1 = sun_along(1, 0, 0);
+    DiscreteState d = initialize(m, u1, 0.0, x);
+    auto y = outputs(m, u1, d, 0.0, x);
+    const double ix = shorted_reference(m, 1367.0);
+    EXPECT_NEAR(y.i_sh[0], ix, 1e-9);
+    EXPECT_NEAR(y.i_sh[1], 0.0, 1e-12);
+    EXPECT_NEAR(y.i_sh[2], 0.0, 1e-12);
+    // Tracking: sun moves to −y while the gate is on → the output follows.
+    const Inputs u2 = sun_along(0, -1, 0);
+    y = outputs(m, u2, d, 0.5 * T, x);
+    EXPECT_NEAR(y.i_sh[0], 0.0, 1e-12);
+    EXPECT_NEAR(y.i_sh[1], -ix, 1e-9);
+    // Gate opens at 0.6 T with the sun at −y: that value is held.
+    d = event_update(m, u2, d, 0.6 * T, x).discrete;
+    ASSERT_FALSE(d.gate);
+    // Sun jumps to +z during the off time: the S/H output must not move.
+    const Inputs u3 = sun_along(0, 0, 1);
+    y = outputs(m, u3, d, 0.8 * T, x);
+    EXPECT_NEAR(y.i_sh[1], -ix, 1e-9);
+    EXPECT_NEAR(y.i_sh[2], 0.0, 1e-12);
+    // The true short-circuit currents are live regardless of the S/H: +z panel, V = 0, no switch R.
+    EXPECT_NEAR(y.i_sc[4], ssr_plant_test::lambert_panel_current(m.diode.photocurrent_rated * 1.367,
+                                                                 m.diode.saturation_current, m.diode.ideality_voltage,
+                                                                 m.diode.series_resistance, m.diode.shunt_resistance, 0.0),
+                1e-9);
+    // Next period: the gate closes and the S/H tracks again.
+    d = event_update(m, u3, d, T, x).discrete;
+    ASSERT_TRUE(d.gate);
+    y = outputs(m, u3, d, T, x);
+    EXPECT_NEAR(y.i_sh[2], ix, 1e-9);
+    EXPECT_NEAR(y.i_sh[1], 0.0, 1e-12);
+
+    // Averaged fidelity: no PWM events, the S/H is the continuous differential current.
+    Parameters pa;
+    pa.fidelity = Fidelity::averaged;
+    const Model ma = make_model(pa);
+    DiscreteState da = initialize(ma, u2, 0.0, x);
+    EXPECT_EQ(next_time_event(ma, da), no_time_event);
+    y = outputs(ma, u3, da, 0.8 * T, x);
+    EXPECT_NEAR(y.i_sh[2], ix, 1e-9);
+    EXPECT_NEAR(y.duty, 0.6, 1e-12);
+}
+
+TEST(SsrCorePlant, HysteresisSwitchesOnlyAtTheThresholds) {
+    const Model m = make_model(Parameters{});  // connect at soc 0.80, disconnect at 1.00
+    const Inputs u = sun_along(0, 0, 1);
+    State x{15.0, 0.81};
+    DiscreteState d = initialize(m, u, 0.0, x);
+    EXPECT_FALSE(d.charge_connected);
+    auto z = event_indicators(m, u, d, 0.0, x);
+    EXPECT_NEAR(z[indicator_soc_connect], 0.01, 1e-15);
+    EXPECT_NEAR(z[indicator_soc_disconnect], -0.19, 1e-15);
+    d.next_event_time = 1.0;  // keep PWM out of this check
+    x[state_soc] = 0.805;
+    EXPECT_FALSE(event_update(m, u, d, 0.0, x).changed);
+    x[state_soc] = 0.80;
+    d = event_update(m, u, d, 0.0, x).discrete;
+    EXPECT_TRUE(d.charge_connected);
+    // Inside the band nothing happens in either direction.
+    for (double soc : {0.79, 0.85, 0.95, 0.999}) {
+        x[state_soc] = soc;
+        EXPECT_FALSE(event_update(m, u, d, 0.0, x).changed) << soc;
+    }
+    x[state_soc] = 1.0;
+    d = event_update(m, u, d, 0.0, x).discrete;
+    EXPECT_FALSE(d.charge_connected);
+    x[state_soc] = 0.9;
+    EXPECT_FALSE(event_update(m, u, d, 0.0, x).changed);
+}
+
+TEST(SsrCorePlant, DerivativesBalanceChargeAndPower) {
+    // Independent expectation: Kirchhoff at the bus with panel currents from the Lambert-W closed
+    // form at v + V_f (OR diode, its resistance in series), 0 where the diode blocks; load v/R;
+    // battery current from the network solved by hand in battery_test.
+    for (Fidelity f : {Fidelity::switching, Fidelity::averaged}) {
+        Parameters p;
+        p.fidelity = f;
+        const Model m = make_model(p);
+        Inputs u = sun_along(0.48, -0.6, 0.64);
+        u.albedo_face = {0, 20, 0, 0, 0, 40};
+        for (double v : {11.0, 14.0, 15.1, 15.3, 21.0}) {
+            for (bool gate : {false, true}) {
+                for (bool conn : {false, true}) {
+                    DiscreteState d;
+                    d.gate = gate;
+                    d.charge_connected = conn;
+                    const State x{v, 0.5};
+                    const State dx = derivatives(m, u, d, 0.0, x);
+                    const auto g = face_irradiance(m, u);
+                    const double sigma = f == Fidelity::averaged
+                                             ? std::clamp(3.0 * (v - 15.0), 0.0, 1.0)
+                                             : (gate ? 1.0 : 0.0);
+                    double i_pv = 0.0, p_panels = 0.0;
+                    for (int k = 0; k < 6; ++k) {
+                        const double i = std::max(0.0, ssr_plant_test::lambert_panel_current(
+                            m.diode.photocurrent_rated * g[k] / 1000.0, m.diode.saturation_current,
+                            m.diode.ideality_voltage, m.diode.series_resistance + 0.05, m.diode.shunt_resistance,
+                            v + 0.6));
+                        i_pv += (1 - sigma) * i;
+                        p_panels += (1 - sigma) * i * (v + 0.6 + 0.05 * i);  // panel terminal power
+                    }
+                    const double i_batt = battery_operating_point(p.battery, 0.5, v, conn).current;
+                    EXPECT_NEAR(dx[state_v_bus] * 1500e-6, i_pv - v / 90.0 - i_batt, 1e-9);
+                    EXPECT_NEAR(dx[state_soc] * 7200.0, i_batt, 1e-12);
+                    // Power: what the panels deliver = capacitor + load + battery + OR-diode losses.
+                    const auto y = outputs(m, u, d, 0.0, x);
+                    double diode_loss = 0.0;
+                    for (double i : y.i_panel) diode_loss += (i > 0 ? i * (0.6 + 0.05 * i / (1 - sigma)) : 0.0);
+                    if (sigma < 1.0) {
+                        EXPECT_NEAR(p_panels, 1500e-6 * v * dx[state_v_bus] + v * v / 90.0 + v * y.i_batt + diode_loss,
+                                    1e-8);
+                    }
+                }
+            }
+        }
+    }
+}
+
+TEST(SsrCorePlant, HysteresisRunHasFiniteSwitchingsAndRespectsFullCharge) {
+    // Eclipse then sun, with a tiny battery (1 C) so the whole cycle takes about 1 s: the battery carries the
+    // load through its diode, falls to soc 0.80 → connected (1 switching, no chatter while it keeps
+    // discharging), then charges in the sun up to 1.00 → disconnected (2nd switching), then stays.
+    for (Fidelity f : {Fidelity::averaged, Fidelity::switching}) {
+        Parameters p;
+        p.fidelity = f;
+        p.battery.capacity = 1.0;
+        const Model m = make_model(p);
+        auto u = [](double t) { return sun_along(1 / std::sqrt(3.0), 1 / std::sqrt(3.0), 1 / std::sqrt(3.0), t < 0.5 ? 0.0 : 1367.0); };
+        State x{15.0, 0.82};
+        double soc_max = 0.0, soc_min = 1.0, t_connect = -1, t_disconnect = -1;
+        bool prev_conn = false;
+        const auto st = ssr_plant_test::simulate(m, u, x, 0.0, 1.2, 20e-6, 1e-4,
+            [&](double t, const State& xs, const DiscreteState& d, bool) {
+                soc_max = std::max(soc_max, xs[state_soc]);
+                soc_min = std::min(soc_min, xs[state_soc]);
+                if (d.charge_connected && !prev_conn) t_connect = t;
+                if (!d.charge_connected && prev_conn) t_disconnect = t;
+                prev_conn = d.charge_connected;
+            });
+        EXPECT_EQ(st.charge_switchings, 2) << static_cast<int>(f);
+        EXPECT_GT(t_connect, 0.0);
+        EXPECT_LT(t_connect, 0.5);  // in eclipse
+        EXPECT_GT(t_disconnect, 0.5);
+        EXPECT_LE(soc_max, 1.0 + 1e-9);
+        EXPECT_NEAR(soc_max, 1.0, 1e-6);
+        EXPECT_LT(soc_min, 0.8);
+        EXPECT_NEAR(x[state_soc], 1.0, 1e-6);  // no discharge after disconnect in the sun
+        std::cout << "[hysteresis " << (f == Fidelity::averaged ? "averaged" : "switching") << "] connect at "
+                  << t_connect << " s, disconnect at " << t_disconnect << " s, soc min " << soc_min
+                  << ", steps " << st.steps << ", time events " << st.time_events << ", state events "
+                  << st.state_events << "\n";
+    }
+}
+
+}  // namespace
