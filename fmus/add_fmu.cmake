@@ -1,0 +1,45 @@
+# add_fmu(<name> SOURCES <files...> [LIBRARIES <targets...>])
+#
+# <name> is the model identifier, the folder, the shared library and the .fmu (one name everywhere).
+# Makes:
+#   <name>_model     static library of the block's sources (what its unit tests link)
+#   <name>           the FMU binary <name>.so: the block plus the FMI runtime, only fmi2* exported
+#   <name>_describe  the build-time writer of modelDescription.xml and documentation/index.html
+#   <name>_fmu       ${PVATT_FMU_DIR}/<name>.fmu, built by default
+function(add_fmu name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBRARIES" ${ARGN})
+
+  add_library(${name}_model STATIC ${ARG_SOURCES})
+  target_link_libraries(${name}_model PUBLIC fmu_model ${ARG_LIBRARIES})
+  set_target_properties(${name}_model PROPERTIES CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)
+
+  add_library(${name} SHARED $<TARGET_OBJECTS:fmu_runtime_objects>)
+  target_link_libraries(${name} PRIVATE ${name}_model)
+  set_target_properties(${name} PROPERTIES PREFIX "" OUTPUT_NAME ${name}
+    CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON
+    LIBRARY_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/fmu_binaries)
+  target_link_options(${name} PRIVATE -Wl,--version-script=${FMU_VERSION_SCRIPT} -Wl,--no-undefined)
+  if(NOT PVATT_SANITIZE)
+    # A host such as MATLAB may bring an older C++ runtime; carry our own, kept local by fmu.map.
+    target_link_options(${name} PRIVATE -static-libstdc++ -static-libgcc)
+  endif()
+
+  add_executable(${name}_describe $<TARGET_OBJECTS:fmu_describe_main>)
+  target_link_libraries(${name}_describe PRIVATE ${name}_model fmu_description_writer)
+
+  set(stage ${CMAKE_BINARY_DIR}/fmu_staging/${name})
+  set(fmu_file ${PVATT_FMU_DIR}/${name}.fmu)
+  add_custom_command(
+    OUTPUT ${fmu_file}
+    COMMAND ${CMAKE_COMMAND} -E rm -rf ${stage}
+    COMMAND ${CMAKE_COMMAND} -E make_directory ${stage}/binaries/linux64 ${PVATT_FMU_DIR}
+    COMMAND $<TARGET_FILE:${name}_describe> ${stage}
+    COMMAND ${CMAKE_COMMAND} -E copy $<TARGET_FILE:${name}> ${stage}/binaries/linux64/${name}.so
+    COMMAND ${CMAKE_COMMAND} -E rm -f ${fmu_file}
+    COMMAND ${CMAKE_COMMAND} -E chdir ${stage}
+            ${CMAKE_COMMAND} -E tar cf ${fmu_file} --format=zip modelDescription.xml binaries documentation
+    DEPENDS ${name} ${name}_describe
+    COMMENT "Packing ${name}.fmu"
+    VERBATIM)
+  add_custom_target(${name}_fmu ALL DEPENDS ${fmu_file})
+endfunction()

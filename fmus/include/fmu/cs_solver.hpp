@@ -1,0 +1,51 @@
+// Co-Simulation inside the FMU: advances a block over a communication step with SUNDIALS CVODE
+// (BDF, dense Newton), stopping exactly at the block's time events and locating its state events
+// with CVODE's root finding, running the event iteration at each, and restarting the integrator
+// after every discontinuity. Plain C++; the CVODE handles are owned here and freed in reverse order.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "fmu/model_runner.hpp"
+
+namespace fmu {
+
+struct SolverStatistics {
+    std::int64_t steps = 0;
+    std::int64_t rhs_evaluations = 0;
+    std::int64_t time_events = 0;
+    std::int64_t state_events = 0;
+    std::int64_t restarts = 0;
+};
+
+class CsSolver {
+public:
+    CsSolver(ModelRunner& runner, double relative_tolerance);
+    ~CsSolver();
+    CsSolver(const CsSolver&) = delete;
+    CsSolver& operator=(const CsSolver&) = delete;
+
+    enum class Outcome { reached, terminated };
+    // Integrate from the runner's current time to t_end, handling every event on the way and any
+    // event due exactly at t_end. Throws fmu::Error when the integrator fails.
+    Outcome advance(double t_end);
+    // States were changed from outside (FMU state restored, inputs changed): restart at next advance.
+    void invalidate() { restart_needed_ = true; }
+
+    const SolverStatistics& statistics() const { return stats_; }
+
+    struct Cvode;  // the SUNDIALS handles (public only so the C callbacks can name it)
+
+private:
+    bool integrate_to(double t_stop);          // true when a state event stopped it
+    bool locate_without_states(double t_stop);  // no states: bisection on the indicators
+
+    ModelRunner& runner_;
+    std::unique_ptr<Cvode> cvode_;
+    bool restart_needed_ = true;
+    SolverStatistics stats_;
+};
+
+}  // namespace fmu

@@ -1,0 +1,89 @@
+// What the FMI runtime needs from a block, with no FMI types: its description, its variables as bytes
+// located by the table, and its equations. Blocks do not implement this directly; they derive from
+// fmu::Block (block.hpp), which implements the bookkeeping from the variable table.
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "fmu/table.hpp"
+
+namespace fmu {
+
+struct DefaultExperiment {
+    double start_time = 0.0;
+    double stop_time = 10.0;
+    double tolerance = 1e-6;
+    double step_size = 1e-3;  // the communication / output interval a host should use by default
+};
+
+// Block-level facts that go into the model description and the generated documentation.
+struct ModelInfo {
+    std::string model_identifier;  // folder, CMake target, .so and .fmu name: "magnetometer"
+    std::string model_name;
+    std::string description;       // one line, for the model description
+    std::string documentation_html;  // the block's page in documentation/index.html (body fragment)
+    std::string author = "pv_attitude_fmi contributors";
+    std::string version = "0.1.0";
+    std::string license = "MIT";
+    DefaultExperiment default_experiment;
+};
+
+// What an event update tells the runtime.
+struct EventUpdate {
+    bool again = false;           // another round of discrete updates is needed at this instant
+    bool states_changed = false;  // continuous states were re-initialized (integrator must restart)
+    bool terminate = false;       // the block asks the host to stop the simulation
+};
+
+inline constexpr double no_time_event = std::numeric_limits<double>::infinity();
+
+// True when time t has reached event_time, allowing for the rounding of a host that computed t as a
+// sum of steps. Blocks use it in event_update; the runtime uses it to decide that a time event is due.
+inline bool reached(double t, double event_time) {
+    const double magnitude = event_time < 0 ? -event_time : event_time;
+    return t >= event_time - 1e-12 * (magnitude > 1.0 ? magnitude : 1.0);
+}
+
+class Model {
+public:
+    virtual ~Model() = default;
+
+    virtual const ModelInfo& info() const = 0;
+    virtual const TableBase& table() const = 0;
+    virtual std::unique_ptr<Model> clone() const = 0;
+
+    // The whole block state as bytes (a trivially copyable struct): get/set through the table's
+    // offsets, FMU state save/restore and serialization are copies of these bytes.
+    virtual std::span<std::byte> bytes() = 0;
+    virtual std::span<const std::byte> bytes() const = 0;
+    virtual void reset_to_defaults() = 0;
+
+    // Equations. Called by the runtime only, in this contract:
+    // - initialize(t): from parameters and start values, set the discrete state (first time events,
+    //   switch positions). Called whenever a value is read in initialization mode and at its exit,
+    //   so it must depend only on parameters, inputs and start values (calling it twice = once).
+    // - evaluate(t): outputs, derivative fields and other locals from time, states, inputs,
+    //   parameters and the discrete state. Must not change the discrete state.
+    // - event_indicators(t, z): the block's zero-crossing functions (after evaluate).
+    // - event_update(t, time_event_due): the discrete changes at an event instant.
+    // - next_time_event(): absolute time of the next time event, or no_time_event.
+    // - validate(): cross-parameter checks at exit of initialization; throw fmu::Error with a
+    //   message a user understands.
+    virtual void initialize(double t) = 0;
+    virtual void evaluate(double t) = 0;
+    virtual std::size_t event_indicator_count() const = 0;
+    virtual void event_indicators(double t, std::span<double> z) = 0;
+    virtual EventUpdate event_update(double t, bool time_event_due) = 0;
+    virtual double next_time_event() const = 0;
+    virtual void validate() const = 0;
+};
+
+// Every block defines this once (FMU_BLOCK in block.hpp); the runtime and the tools call it.
+std::unique_ptr<Model> make_model();
+
+}  // namespace fmu

@@ -1,0 +1,62 @@
+// Drives one block: its clock, lazy evaluation, continuous states, event indicators and event
+// iteration. Shared by the Model Exchange entry points (the host integrates) and the Co-Simulation
+// solver (we integrate), so both see the same equations in the same order. Plain C++, no FMI types.
+#pragma once
+
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "fmu/model.hpp"
+
+namespace fmu {
+
+class ModelRunner {
+public:
+    explicit ModelRunner(std::unique_ptr<Model> model);
+
+    Model& model() { return *model_; }
+    const Model& model() const { return *model_; }
+    const TableBase& table() const { return model_->table(); }
+
+    double time() const { return time_; }
+    void set_time(double t);
+
+    // Any change of time, states, inputs or parameters makes the outputs stale; they are
+    // recomputed on the next read. In initialization mode a read first re-runs initialize().
+    void mark_changed() { stale_ = true; }
+    void set_initializing(bool on) {
+        initializing_ = on;
+        stale_ = true;
+    }
+    void ensure_evaluated();
+
+    std::size_t state_count() const { return table().states().size(); }
+    std::size_t indicator_count() const { return indicator_count_; }
+    void get_states(std::span<double> x) const;
+    void set_states(std::span<const double> x);
+    void get_derivatives(std::span<double> dx);
+    void get_nominals(std::span<double> nominal) const;
+    void get_indicators(std::span<double> z);
+
+    // True when the block's next time event is due at the current time (within rounding).
+    bool time_event_due() const;
+    double next_time_event() const { return model_->next_time_event(); }
+    // One round of discrete updates at the current time.
+    EventUpdate update_discrete();
+    // Rounds until the block needs no more; throws if it never settles. `states_changed` and
+    // `terminate` are or-ed over the rounds.
+    EventUpdate event_iteration();
+
+    // Replace the whole block state with a copy (FMU state restore); time travels with it.
+    void restore(const Model& saved, double time);
+
+private:
+    std::unique_ptr<Model> model_;
+    double time_ = 0.0;
+    bool stale_ = true;
+    bool initializing_ = false;
+    std::size_t indicator_count_ = 0;
+};
+
+}  // namespace fmu

@@ -1,0 +1,53 @@
+// One row of a block's variable table: everything the model description, the FMI getters and
+// setters and the table-driven tests need to know about a scalar variable. Plain C++, no FMI types.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fmu {
+
+enum class ValueType { Real, Integer, Boolean, String };
+enum class Causality { parameter, calculated_parameter, input, output, local, independent };
+enum class Variability { constant, fixed, tunable, discrete, continuous };
+enum class Initial { none, exact, approx, calculated };
+
+std::string_view to_string(ValueType v);
+std::string_view to_string(Causality c);   // the standard's spelling, e.g. "calculatedParameter"
+std::string_view to_string(Variability v);
+std::string_view to_string(Initial i);
+
+struct Variable {
+    std::string name;         // structured name: "mag_body[2]", "der(b_filt[1])"
+    std::string base_name;    // the declared name: "mag_body"
+    std::string description;
+    std::string unit;         // empty: dimensionless without a unit
+    ValueType type = ValueType::Real;
+    Causality causality = Causality::local;
+    Variability variability = Variability::continuous;
+    Initial initial = Initial::none;
+    std::uint32_t value_reference = 0;
+    std::optional<double> min, max, nominal;
+    std::vector<std::string> allowed_values;  // a String parameter that names one of a fixed set
+    std::size_t offset = 0;                   // byte offset of the value in the block's data struct
+    std::size_t string_capacity = 0;          // String only
+    std::optional<std::size_t> derivative_of; // index of the state this is the derivative of
+    // Outputs and derivatives: indices of the inputs and states this value depends on directly
+    // (empty optional: not declared, meaning "may depend on every known").
+    std::optional<std::vector<std::size_t>> dependencies;
+
+    bool has_start() const {
+        return causality == Causality::input || initial == Initial::exact || initial == Initial::approx ||
+               (variability == Variability::constant);
+    }
+    bool is_state() const { return is_state_; }
+    bool is_derivative() const { return derivative_of.has_value(); }
+
+    bool is_state_ = false;  // set by the table when a derivative refers to this variable
+};
+
+}  // namespace fmu

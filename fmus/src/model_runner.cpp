@@ -1,0 +1,97 @@
+#include "fmu/model_runner.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "fmu/errors.hpp"
+#include "fmu/value_access.hpp"
+
+namespace fmu {
+
+namespace {
+// A block that keeps asking for another round at one instant is broken; stop instead of hanging.
+constexpr int max_event_rounds = 1000;
+}  // namespace
+
+ModelRunner::ModelRunner(std::unique_ptr<Model> model)
+    : model_(std::move(model)), indicator_count_(model_->event_indicator_count()) {}
+
+void ModelRunner::set_time(double t) {
+    if (!std::isfinite(t)) throw Error("time must be finite");
+    time_ = t;
+    stale_ = true;
+}
+
+void ModelRunner::ensure_evaluated() {
+    if (!stale_) return;
+    if (initializing_) model_->initialize(time_);
+    model_->evaluate(time_);
+    stale_ = false;
+}
+
+void ModelRunner::get_states(std::span<double> x) const {
+    const auto& vars = table().variables();
+    const auto& states = table().states();
+    for (std::size_t i = 0; i < states.size(); ++i) x[i] = read_real(model_->bytes(), vars[states[i]]);
+}
+
+void ModelRunner::set_states(std::span<const double> x) {
+    const auto& vars = table().variables();
+    const auto& states = table().states();
+    for (std::size_t i = 0; i < states.size(); ++i) {
+        if (!std::isfinite(x[i])) throw Error("state " + vars[states[i]].name + " set to a non-finite value");
+    }
+    for (std::size_t i = 0; i < states.size(); ++i) write_real(model_->bytes(), vars[states[i]], x[i]);
+    stale_ = true;
+}
+
+void ModelRunner::get_derivatives(std::span<double> dx) {
+    ensure_evaluated();
+    const auto& vars = table().variables();
+    const auto& ders = table().derivatives();
+    for (std::size_t i = 0; i < ders.size(); ++i) dx[i] = read_real(model_->bytes(), vars[ders[i]]);
+}
+
+void ModelRunner::get_nominals(std::span<double> nominal) const {
+    const auto& vars = table().variables();
+    const auto& states = table().states();
+    for (std::size_t i = 0; i < states.size(); ++i) nominal[i] = vars[states[i]].nominal.value_or(1.0);
+}
+
+void ModelRunner::get_indicators(std::span<double> z) {
+    ensure_evaluated();
+    model_->event_indicators(time_, z);
+}
+
+bool ModelRunner::time_event_due() const {
+    const double next = model_->next_time_event();
+    return std::isfinite(next) && reached(time_, next);
+}
+
+EventUpdate ModelRunner::update_discrete() {
+    ensure_evaluated();  // the update sees outputs consistent with the instant before it
+    const EventUpdate result = model_->event_update(time_, time_event_due());
+    stale_ = true;
+    ensure_evaluated();
+    return result;
+}
+
+EventUpdate ModelRunner::event_iteration() {
+    EventUpdate total;
+    for (int round = 0; round < max_event_rounds; ++round) {
+        const EventUpdate r = update_discrete();
+        total.states_changed = total.states_changed || r.states_changed;
+        total.terminate = total.terminate || r.terminate;
+        if (!r.again) return total;
+    }
+    throw Error("event iteration did not settle after " + std::to_string(max_event_rounds) + " rounds");
+}
+
+void ModelRunner::restore(const Model& saved, double time) {
+    auto src = saved.bytes();
+    std::copy(src.begin(), src.end(), model_->bytes().begin());
+    time_ = time;
+    stale_ = true;
+}
+
+}  // namespace fmu

@@ -1,0 +1,32 @@
+// Build-time tool linked with one block: writes that block's modelDescription.xml and
+// documentation/index.html into a staging folder, from its variable table.
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "description_xml.hpp"
+#include "documentation_html.hpp"
+
+int main(int argc, char** argv) {
+    if (argc != 2) {
+        std::cerr << "usage: " << argv[0] << " STAGING_DIR\n";
+        return 2;
+    }
+    try {
+        const std::filesystem::path dir = argv[1];
+        std::filesystem::create_directories(dir / "documentation");
+        const auto model = fmu::make_model();
+        auto write = [](const std::filesystem::path& path, const std::string& text) {
+            std::ofstream out(path, std::ios::binary);
+            out << text;
+            if (!out) throw std::runtime_error("cannot write " + path.string());
+        };
+        write(dir / "modelDescription.xml", fmu::model_description_xml(*model));
+        write(dir / "documentation" / "index.html", fmu::documentation_html(*model));
+        return 0;
+    } catch (const std::exception& e) {
+        std::cerr << argv[0] << ": " << e.what() << "\n";
+        return 1;
+    }
+}

@@ -1,0 +1,212 @@
+#include "description_xml.hpp"
+
+#include <libxml/xmlwriter.h>
+
+#include <memory>
+#include <set>
+#include <utility>
+
+#include "../src/instance.hpp"  // the log categories the runtime declares
+#include "fmu/description.hpp"
+#include "fmu/errors.hpp"
+#include "fmu/units.hpp"
+
+namespace fmu {
+
+namespace {
+
+struct BufferDeleter {
+    void operator()(xmlBuffer* b) const { xmlBufferFree(b); }
+};
+struct WriterDeleter {
+    void operator()(xmlTextWriter* w) const { xmlFreeTextWriter(w); }
+};
+
+class Writer {
+public:
+    Writer() : buffer_(xmlBufferCreate()) {
+        if (!buffer_) throw Error("libxml2: cannot create a buffer");
+        writer_.reset(xmlNewTextWriterMemory(buffer_.get(), 0));
+        if (!writer_) throw Error("libxml2: cannot create a writer");
+        xmlTextWriterSetIndent(writer_.get(), 1);
+        xmlTextWriterSetIndentString(writer_.get(), BAD_CAST "  ");
+        ok(xmlTextWriterStartDocument(writer_.get(), nullptr, "UTF-8", nullptr));
+    }
+    void start(const char* element) { ok(xmlTextWriterStartElement(writer_.get(), BAD_CAST element)); }
+    void end() { ok(xmlTextWriterEndElement(writer_.get())); }
+    void attribute(const char* name, const std::string& value) {
+        ok(xmlTextWriterWriteAttribute(writer_.get(), BAD_CAST name, BAD_CAST value.c_str()));
+    }
+    void attribute(const char* name, int value) { attribute(name, std::to_string(value)); }
+    std::string finish() {
+        ok(xmlTextWriterEndDocument(writer_.get()));
+        writer_.reset();  // flushes into the buffer
+        return std::string(reinterpret_cast<const char*>(xmlBufferContent(buffer_.get())));
+    }
+
+private:
+    static void ok(int rc) {
+        if (rc < 0) throw Error("libxml2 writer failed");
+    }
+    std::unique_ptr<xmlBuffer, BufferDeleter> buffer_;
+    std::unique_ptr<xmlTextWriter, WriterDeleter> writer_;
+};
+
+std::string description_with_choices(const Variable& v) {
+    if (v.allowed_values.empty()) return v.description;
+    std::string text = v.description + " One of:";
+    for (std::size_t i = 0; i < v.allowed_values.size(); ++i) text += (i ? ", " : " ") + v.allowed_values[i];
+    return text + ".";
+}
+
+void write_unit(Writer& w, const UnitDefinition& u) {
+    w.start("Unit");
+    w.attribute("name", std::string(u.name));
+    w.start("BaseUnit");
+    const std::pair<const char*, int> exponents[] = {{"kg", u.kg}, {"m", u.m},     {"s", u.s},   {"A", u.A},
+                                                     {"K", u.K},   {"mol", u.mol}, {"cd", u.cd}, {"rad", u.rad}};
+    for (auto [name, e] : exponents)
+        if (e != 0) w.attribute(name, e);
+    if (u.factor != 1.0) w.attribute("factor", format_real(u.factor));
+    if (u.offset != 0.0) w.attribute("offset", format_real(u.offset));
+    w.end();
+    w.end();
+}
+
+void write_unknowns(Writer& w, const char* element, const std::vector<std::size_t>& indices,
+                    const std::vector<Variable>& vars, bool with_dependencies) {
+    if (indices.empty()) return;
+    w.start(element);
+    for (auto i : indices) {
+        w.start("Unknown");
+        w.attribute("index", static_cast<int>(i + 1));
+        const auto& deps = vars[i].dependencies;
+        if (with_dependencies && deps) {
+            std::string list;
+            for (auto d : *deps) list += (list.empty() ? "" : " ") + std::to_string(d + 1);
+            w.attribute("dependencies", list);
+        }
+        w.end();
+    }
+    w.end();
+}
+
+}  // namespace
+
+std::string model_description_xml(const Model& model) {
+    const auto& info = model.info();
+    const auto& vars = model.table().variables();
+    auto defaults = model.clone();
+    defaults->reset_to_defaults();
+    const auto default_bytes = std::as_const(*defaults).bytes();
+
+    Writer w;
+    w.start("fmiModelDescription");
+    w.attribute("fmiVersion", "2.0");
+    w.attribute("modelName", info.model_name);
+    w.attribute("guid", description_guid(model));
+    w.attribute("description", info.description);
+    w.attribute("author", info.author);
+    w.attribute("version", info.version);
+    w.attribute("license", info.license);
+    w.attribute("generationTool", "pv_attitude_fmi fmus runtime");
+    w.attribute("variableNamingConvention", "structured");
+    w.attribute("numberOfEventIndicators", static_cast<int>(model.event_indicator_count()));
+
+    w.start("ModelExchange");
+    w.attribute("modelIdentifier", info.model_identifier);
+    w.attribute("completedIntegratorStepNotNeeded", "true");
+    w.attribute("canNotUseMemoryManagementFunctions", "true");
+    w.attribute("canGetAndSetFMUstate", "true");
+    w.attribute("canSerializeFMUstate", "true");
+    w.attribute("providesDirectionalDerivative", "false");
+    w.end();
+    w.start("CoSimulation");
+    w.attribute("modelIdentifier", info.model_identifier);
+    w.attribute("canHandleVariableCommunicationStepSize", "true");
+    w.attribute("canInterpolateInputs", "false");
+    w.attribute("maxOutputDerivativeOrder", "0");
+    w.attribute("canRunAsynchronuously", "false");  // the standard's spelling
+    w.attribute("canNotUseMemoryManagementFunctions", "true");
+    w.attribute("canGetAndSetFMUstate", "true");
+    w.attribute("canSerializeFMUstate", "true");
+    w.attribute("providesDirectionalDerivative", "false");
+    w.end();
+
+    std::set<std::string> unit_names;
+    for (const auto& v : vars)
+        if (!v.unit.empty()) unit_names.insert(v.unit);
+    if (!unit_names.empty()) {
+        w.start("UnitDefinitions");
+        for (const auto& name : unit_names) {
+            const auto unit = find_unit(name);
+            if (!unit) throw Error("unit '" + name + "' has no definition");
+            write_unit(w, *unit);
+        }
+        w.end();
+    }
+
+    w.start("LogCategories");
+    for (std::size_t i = 0; i < std::size(log_categories); ++i) {
+        w.start("Category");
+        w.attribute("name", log_categories[i]);
+        w.attribute("description", log_category_descriptions[i]);
+        w.end();
+    }
+    w.end();
+
+    const auto& ex = info.default_experiment;
+    w.start("DefaultExperiment");
+    w.attribute("startTime", format_real(ex.start_time));
+    w.attribute("stopTime", format_real(ex.stop_time));
+    w.attribute("tolerance", format_real(ex.tolerance));
+    w.attribute("stepSize", format_real(ex.step_size));
+    w.end();
+
+    w.start("ModelVariables");
+    for (std::size_t i = 0; i < vars.size(); ++i) {
+        const auto& v = vars[i];
+        w.start("ScalarVariable");
+        w.attribute("name", v.name);
+        w.attribute("valueReference", std::to_string(v.value_reference));
+        w.attribute("description", description_with_choices(v));
+        w.attribute("causality", std::string(to_string(v.causality)));
+        w.attribute("variability", std::string(to_string(v.variability)));
+        if (v.initial != Initial::none) w.attribute("initial", std::string(to_string(v.initial)));
+        w.start(std::string(to_string(v.type)).c_str());
+        if (v.type == ValueType::Real && !v.unit.empty()) w.attribute("unit", v.unit);
+        if (v.has_start()) w.attribute("start", start_text(v, default_bytes));
+        if (v.type == ValueType::Real || v.type == ValueType::Integer) {
+            auto bound = [&](double x) { return v.type == ValueType::Real ? format_real(x) : std::to_string(static_cast<long long>(x)); };
+            if (v.min) w.attribute("min", bound(*v.min));
+            if (v.max) w.attribute("max", bound(*v.max));
+        }
+        if (v.type == ValueType::Real && v.nominal) w.attribute("nominal", format_real(*v.nominal));
+        if (v.derivative_of) w.attribute("derivative", static_cast<int>(*v.derivative_of + 1));
+        w.end();
+        w.end();
+    }
+    w.end();
+
+    std::vector<std::size_t> outputs, initial_unknowns;
+    for (std::size_t i = 0; i < vars.size(); ++i) {
+        const auto& v = vars[i];
+        if (v.causality == Causality::output) outputs.push_back(i);
+        // FMI 2.0 §2.2.8: outputs and states/derivatives with initial approx or calculated, and
+        // calculated parameters, in index order.
+        const bool calculated = v.initial == Initial::approx || v.initial == Initial::calculated;
+        if ((v.causality == Causality::output && calculated) || v.causality == Causality::calculated_parameter ||
+            ((v.is_state() || v.is_derivative()) && calculated))
+            initial_unknowns.push_back(i);
+    }
+    w.start("ModelStructure");
+    write_unknowns(w, "Outputs", outputs, vars, true);
+    write_unknowns(w, "Derivatives", model.table().derivatives(), vars, true);
+    write_unknowns(w, "InitialUnknowns", initial_unknowns, vars, false);
+    w.end();
+
+    w.end();
+    return w.finish();
+}
+
+}  // namespace fmu

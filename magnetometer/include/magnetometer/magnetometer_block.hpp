@@ -1,0 +1,64 @@
+// The magnetometer as an FMU block: its variable table (the one source of the model description,
+// the FMI getters/setters and the table-driven tests) and the event logic around the HMC2003 model.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "fmu/block.hpp"
+#include "fmu/random.hpp"
+#include "magnetometer/hmc2003.hpp"
+
+namespace magnetometer {
+
+// Every variable of the block. Defaults are the HMC2003 datasheet's typical values where it gives
+// one (Honeywell, "HMC2003 Three-axis magnetic sensor hybrid"); the others are marked as assumptions.
+struct MagnetometerData {
+    // inputs
+    Vec3 mag_body{};  // T
+    // parameters
+    double sensitivity = 1.0 / tesla_per_gauss;  // V/T: datasheet 1 V/gauss
+    double v_null = 2.5;                         // V: zero-field output and the reference pin
+    double bridge_offset = 0.02;                 // V: assumed; the datasheet's null spread is 2.3–2.7 V
+    bool set_reset_enabled = true;
+    double set_reset_period = 1.0;    // s: assumed; the seed says "occasionally"
+    double cross_axis = 0.003;        // 1: assumed 0.3 % cross-field pick-up
+    Vec3 misalignment{};              // rad
+    double bandwidth = 1000.0;        // Hz: datasheet 1 kHz
+    double noise_rms = 40e-6 * tesla_per_gauss;  // T: datasheet resolution 40 µgauss
+    double noise_sample_period = 0.01;           // s: noise held for this long (band-limits it to 50 Hz)
+    std::int32_t noise_seed = 1;
+    double temperature = 25.0;             // degC
+    double sensitivity_tempco = -600e-6;   // 1/K: datasheet −600 ppm/°C
+    double v_rail_low = 0.0;               // V
+    double v_rail_high = 5.0;              // V
+    // continuous states and derivatives
+    Vec3 b_filt{};
+    Vec3 der_b_filt{};
+    // outputs
+    Vec3 v_out{};
+    double v_ref = 2.5;
+    bool set_polarity = true;  // true after a set pulse, false after a reset pulse
+    // discrete state (locals)
+    Vec3 noise{};
+    double next_set_reset = 0.0;
+    double next_noise = 0.0;
+    fmu::Random random{};
+};
+
+class MagnetometerBlock : public fmu::Block<MagnetometerBlock, MagnetometerData> {
+public:
+    static void declare(fmu::Table<MagnetometerData>& t);
+    static fmu::ModelInfo describe();
+
+    void initialize(double t) override;
+    void evaluate(double t) override;
+    fmu::EventUpdate event_update(double t, bool time_event_due) override;
+    double next_time_event() const override;
+    void validate() const override;
+
+private:
+    void draw_noise();
+};
+
+}  // namespace magnetometer

@@ -1,0 +1,136 @@
+#include "magnetometer/magnetometer_block.hpp"
+
+#include <algorithm>
+
+#include "fmu/errors.hpp"
+
+namespace magnetometer {
+
+void MagnetometerBlock::declare(fmu::Table<MagnetometerData>& t) {
+    using D = MagnetometerData;
+    t.input("mag_body", &D::mag_body, "T", "Magnetic flux density at the sensor, body axes");
+
+    t.parameter("sensitivity", &D::sensitivity, "V/T", "Sensitivity at 25 degC (datasheet: 1 V/gauss = 1e4 V/T)")
+        .min(1e-3);
+    t.parameter("v_null", &D::v_null, "V", "Zero-field output voltage, also the reference pin (datasheet: 2.5 V)")
+        .range(0.0, 5.0);
+    t.parameter("bridge_offset", &D::bridge_offset, "V",
+                "Bridge offset referred to the output; its sign flips with each set/reset pulse")
+        .range(-1.0, 1.0);
+    t.parameter("set_reset_enabled", &D::set_reset_enabled, "",
+                "Apply periodic set/reset pulses (alternating set and reset) every set_reset_period");
+    t.parameter("set_reset_period", &D::set_reset_period, "s", "Time between set/reset pulses").min(1e-4);
+    t.parameter("cross_axis", &D::cross_axis, "1",
+                "Cross-axis sensitivity: fraction of each transverse field seen by an axis")
+        .range(-0.1, 0.1);
+    t.parameter("misalignment", &D::misalignment, "rad",
+                "Small rotation of the sensor axes relative to the body axes, about x, y, z")
+        .range(-0.1, 0.1);
+    t.parameter("bandwidth", &D::bandwidth, "Hz", "Sensor bandwidth, a first-order low-pass (datasheet: 1 kHz)")
+        .range(1e-3, 1e6);
+    t.parameter("noise_rms", &D::noise_rms, "T",
+                "RMS output noise, field-equivalent (datasheet resolution 40 ugauss = 4 nT); 0 disables it")
+        .range(0.0, 1e-3);
+    t.parameter("noise_sample_period", &D::noise_sample_period, "s",
+                "Noise is a new Gaussian sample every period, held in between (band-limits it)")
+        .min(1e-5);
+    t.parameter("noise_seed", &D::noise_seed, "", "Seed of the noise generator: the same seed gives the same run");
+    t.parameter("temperature", &D::temperature, "degC", "Sensor temperature").range(-55.0, 125.0).tunable();
+    t.parameter("sensitivity_tempco", &D::sensitivity_tempco, "1/K",
+                "Relative change of sensitivity per kelvin (datasheet: -600 ppm/degC)")
+        .range(-0.01, 0.01);
+    t.parameter("v_rail_low", &D::v_rail_low, "V", "Lower saturation rail of the outputs");
+    t.parameter("v_rail_high", &D::v_rail_high, "V", "Upper saturation rail of the outputs (5 V supply)");
+
+    t.state("b_filt", &D::b_filt, &D::der_b_filt, "T", "Field after the sensor's bandwidth filter, sensor axes")
+        .nominal(1e-4)
+        .calculated_start()
+        .derivative_depends_elementwise({"b_filt"})
+        .derivative_depends_on({"mag_body"});
+
+    t.output("v_out", &D::v_out, "V", "Output voltages X, Y, Z (0-5 V, v_ref at zero field)")
+        .depends_elementwise({"b_filt"});
+    t.output("v_ref", &D::v_ref, "V", "Zero-field reference voltage (+2.5 V pin)").depends_on({});
+    t.output("set_polarity", &D::set_polarity, "", "True after a set pulse, false after a reset pulse")
+        .depends_on({});
+}
+
+fmu::ModelInfo MagnetometerBlock::describe() {
+    fmu::ModelInfo info;
+    info.model_identifier = "magnetometer";
+    info.model_name = "magnetometer";
+    info.description = "Honeywell HMC2003 three-axis magnetoresistive magnetometer and its output circuit";
+    info.documentation_html =
+        "<p>The HMC2003 hybrid of seed paper 000 section 5 (fig. 10): three magnetoresistive bridges with "
+        "amplifiers giving 0-5 V outputs, 1 V/gauss, +2.5 V at zero field, and a +2.5 V reference pin for the "
+        "ADC. Signal chain per axis: the body-frame field is mixed by the cross-axis and misalignment matrix "
+        "M = C&middot;(I &minus; [&theta;&times;]), filtered by the sensor bandwidth (first order, continuous "
+        "states <code>b_filt</code>), scaled by the temperature-dependent sensitivity "
+        "S(T) = S<sub>0</sub>(1 + k<sub>T</sub>(T &minus; 25 &deg;C)), shifted by the bridge offset whose sign "
+        "flips with each set/reset pulse (time events every <code>set_reset_period</code>; the mean of a set and "
+        "a reset reading cancels the offset), plus seeded Gaussian noise held for "
+        "<code>noise_sample_period</code> (its generator is part of the FMU state), and clamped to the rails.</p>"
+        "<p>Defaults are the datasheet's typical values; <code>bridge_offset</code>, <code>cross_axis</code> and "
+        "<code>set_reset_period</code> are assumptions to be replaced by a calibration of the flight unit. "
+        "Linearity error, hysteresis and the set/reset pulse's own transient are not modelled.</p>";
+    info.default_experiment = {.start_time = 0.0, .stop_time = 5.0, .tolerance = 1e-6, .step_size = 1e-3};
+    return info;
+}
+
+void MagnetometerBlock::validate() const {
+    const auto& d = data();
+    if (!(d.v_rail_low < d.v_rail_high)) throw fmu::Error("v_rail_low must be below v_rail_high");
+    if (d.v_null < d.v_rail_low || d.v_null > d.v_rail_high) throw fmu::Error("v_null must lie between the rails");
+}
+
+void MagnetometerBlock::draw_noise() {
+    auto& d = data();
+    for (auto& n : d.noise) n = d.noise_rms > 0.0 ? d.noise_rms * d.random.normal() : 0.0;
+}
+
+void MagnetometerBlock::initialize(double t) {
+    auto& d = data();
+    // The sensor has been powered long before the simulation starts: its filter is in steady state.
+    d.b_filt = multiply(sensor_matrix(d.cross_axis, d.misalignment), d.mag_body);
+    d.set_polarity = true;  // the first pulse at power-up is a set pulse
+    d.next_set_reset = d.set_reset_enabled ? t + d.set_reset_period : fmu::no_time_event;
+    d.random.seed(static_cast<std::uint64_t>(static_cast<std::uint32_t>(d.noise_seed)));
+    draw_noise();
+    d.next_noise = d.noise_rms > 0.0 ? t + d.noise_sample_period : fmu::no_time_event;
+}
+
+void MagnetometerBlock::evaluate(double) {
+    auto& d = data();
+    const Vec3 sensed = multiply(sensor_matrix(d.cross_axis, d.misalignment), d.mag_body);
+    d.der_b_filt = filter_derivative(sensed, d.b_filt, d.bandwidth);
+    const OutputStage stage{.sensitivity = sensitivity_at(d.sensitivity, d.sensitivity_tempco, d.temperature),
+                            .v_null = d.v_null,
+                            .offset = d.bridge_offset,
+                            .v_low = d.v_rail_low,
+                            .v_high = d.v_rail_high};
+    const double polarity = d.set_polarity ? 1.0 : -1.0;
+    for (int i = 0; i < 3; ++i) d.v_out[i] = output_voltage(stage, d.b_filt[i], d.noise[i], polarity);
+    d.v_ref = std::clamp(d.v_null, d.v_rail_low, d.v_rail_high);
+}
+
+fmu::EventUpdate MagnetometerBlock::event_update(double t, bool time_event_due) {
+    auto& d = data();
+    if (!time_event_due) return {};
+    if (fmu::reached(t, d.next_set_reset)) {
+        d.set_polarity = !d.set_polarity;  // pulses alternate set, reset, set, ...
+        d.next_set_reset += d.set_reset_period;
+    }
+    if (fmu::reached(t, d.next_noise)) {
+        draw_noise();
+        d.next_noise += d.noise_sample_period;
+    }
+    return {};
+}
+
+double MagnetometerBlock::next_time_event() const {
+    return std::min(data().next_set_reset, data().next_noise);
+}
+
+}  // namespace magnetometer
+
+FMU_BLOCK(magnetometer::MagnetometerBlock)
