@@ -1,0 +1,35 @@
+#pragma once
+// Earth albedo on the six box faces.
+//
+// Model: the Earth is a Lambertian sphere of radius R_E and reflectivity rho. A surface element dA at
+// p with outward normal p^ and solar zenith cos z = p^ . s^ > 0 reflects radiance L = rho E_sun cos z / pi.
+// The irradiance it gives a face with unit normal n at the satellite r (d = p - r, l = |d|, u = d/l):
+//   dE = L cos(a_e) max(0, n . u) dA / l^2,   cos(a_e) = -p^ . u   (> 0 on the visible cap)
+// i.e. the exact view factor of a differential element to a differential plate; the sum over the visible
+// sunlit cap is done by quadrature in polar coordinates about the sub-satellite point (central angle
+// gamma in [0, gamma_max], gamma_max = acos(R_E/r), Gauss-Legendre; azimuth psi, midpoint rule, which is
+// spectrally accurate for a periodic integrand; dA = R_E^2 sin gamma dgamma dpsi).
+// Shadowing of the Earth by itself is exact (cap = visible hemisphere part); the face is assumed to see
+// the whole cap (no self-shadowing by the satellite), and E_sun is the irradiance at the Earth (the
+// satellite's own eclipse does not enter).
+#include <array>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products
+
+namespace environment {
+
+struct AlbedoParams {
+  bool enabled = true;
+  double reflectivity = 0.3;  // Earth's mean Bond albedo, about 0.3
+  int rings = 16;             // Gauss-Legendre points in gamma
+  int sectors = 36;           // midpoint points in psi
+};
+
+/// Irradiance (W/m^2) on the faces +x, -x, +y, -y, +z, -z. r_sat, sun_direction: ECI (m, unit);
+/// solar_irradiance at the Earth (W/m^2); body_from_eci = A (maps ECI to body).
+std::array<double, 6> earth_albedo(const AlbedoParams& params, const Eigen::Vector3d& r_sat,
+                                   const Eigen::Vector3d& sun_direction, double solar_irradiance,
+                                   const Eigen::Matrix3d& body_from_eci);
+
+}  // namespace environment

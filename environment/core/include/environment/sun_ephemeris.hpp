@@ -1,0 +1,39 @@
+#pragma once
+// Geocentric sun position in ECI (mean equator and equinox; J2000 to the accuracy of the models).
+#include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products
+
+namespace environment {
+
+struct SunPosition {
+  Eigen::Vector3d direction_eci;  // unit vector, Earth centre -> Sun
+  double distance = 0.0;          // m, Earth centre -> Sun
+};
+
+/// Low-precision formula of the Astronomical Almanac (section C, "Low precision formulas for the Sun";
+/// also US Naval Observatory, "Approximate Solar Coordinates"): accuracy about 0.01 deg in direction
+/// for 1950-2050, distance to about 1e-4 AU.
+///   n = JD - 2451545.0
+///   L = 280.460 + 0.9856474 n   (mean longitude, deg)
+///   g = 357.528 + 0.9856003 n   (mean anomaly, deg)
+///   lambda = L + 1.915 sin g + 0.020 sin 2g    (ecliptic longitude, latitude ~ 0)
+///   eps = 23.439 - 0.0000004 n                 (obliquity)
+///   R = 1.00014 - 0.01671 cos g - 0.00014 cos 2g   (AU)
+///   direction = (cos lambda, cos eps sin lambda, sin eps sin lambda)
+SunPosition sun_almanac(double julian_date);
+
+/// Simplified geocentric model of seed 002 (Nygren et al.), eq. 21-23:
+///   eps_sun = A sin(2 pi T/365)          (21)  elevation above the equator
+///   lambda_sun = 2 pi T / 365            (22)  azimuth from the vernal equinox
+///   r = R_theta(eps_sun) R_psi(lambda_sun) [1 0 0]^T   (23)
+///     = (cos eps cos lambda, cos eps sin lambda, sin eps)
+/// T = days since the vernal equinox. The paper prints A = 2 pi/180 rad (2 deg), which cannot be the
+/// sun's declination amplitude; the physical amplitude is the obliquity, 23.44 deg, and that is the
+/// default of `elevation_amplitude` (pass 2 pi/180 to get the printed formula). Distance: 1 AU.
+SunPosition sun_seed002(double julian_date, double julian_date_vernal_equinox, double elevation_amplitude);
+
+/// Right ascension and declination (rad) of an ECI direction; RA in [0, 2 pi).
+double right_ascension(const Eigen::Vector3d& v);
+double declination(const Eigen::Vector3d& v);
+
+}  // namespace environment

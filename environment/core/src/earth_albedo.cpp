@@ -1,0 +1,102 @@
+#include "environment/earth_albedo.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "environment/constants.hpp"
+
+namespace environment {
+
+namespace {
+// Gauss-Legendre nodes and weights on [-1, 1] (Newton iteration on P_n; Golub-Welsch would do too).
+// The integrand is smooth in gamma up to the horizon (the emission cosine goes linearly to zero), so
+// Gauss-Legendre in gamma converges much faster than a midpoint rule; only the terminator adds a kink.
+void gauss_legendre(int n, std::vector<double>& x, std::vector<double>& w) {
+  x.resize(n);
+  w.resize(n);
+  for (int i = 0; i < n; ++i) {
+    double z = std::cos(kPi * (i + 0.75) / (n + 0.5));
+    double dp = 1.0;
+    for (int iter = 0; iter < 100; ++iter) {
+      double p0 = 1.0, p1 = z;
+      for (int k = 2; k <= n; ++k) {
+        const double p2 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p0) / k;
+        p0 = p1;
+        p1 = p2;
+      }
+      if (n == 1) p0 = 1.0;
+      dp = n * (z * p1 - p0) / (z * z - 1.0);
+      const double step = p1 / dp;
+      z -= step;
+      if (std::abs(step) < 1e-15) break;
+    }
+    x[i] = z;
+    w[i] = 2.0 / ((1.0 - z * z) * dp * dp);
+  }
+}
+}  // namespace
+
+std::array<double, 6> earth_albedo(const AlbedoParams& params, const Eigen::Vector3d& r_sat,
+                                   const Eigen::Vector3d& sun_direction, double solar_irradiance,
+                                   const Eigen::Matrix3d& body_from_eci) {
+  std::array<double, 6> e{};
+  if (!params.enabled || params.reflectivity <= 0.0 || solar_irradiance <= 0.0) return e;
+  if (params.rings < 1 || params.sectors < 3) throw std::invalid_argument("earth_albedo: rings >= 1, sectors >= 3");
+  const double r = r_sat.norm();
+  if (!(r > kEarthRadius)) throw std::invalid_argument("earth_albedo: satellite below the Earth's surface");
+
+  // Polar grid about the sub-satellite point; the visible cap ends where the line of sight is tangent.
+  const Eigen::Vector3d e3 = r_sat / r;
+  Eigen::Vector3d e1 = e3.unitOrthogonal();
+  const Eigen::Vector3d e2 = e3.cross(e1);
+  const double gamma_max = std::acos(kEarthRadius / r);
+  std::vector<double> node, weight;
+  gauss_legendre(params.rings, node, weight);
+  const double dpsi = 2.0 * kPi / params.sectors;
+  const double s_dot_e3 = sun_direction.dot(e3);
+  const double s_dot_e1 = sun_direction.dot(e1);
+  const double s_dot_e2 = sun_direction.dot(e2);
+  // Radiance per unit cos(zenith): L = rho E cos z / pi.
+  const double radiance_scale = params.reflectivity * solar_irradiance / kPi;
+
+  std::vector<double> cos_psi(params.sectors), sin_psi(params.sectors);
+  for (int j = 0; j < params.sectors; ++j) {
+    cos_psi[j] = std::cos((j + 0.5) * dpsi);
+    sin_psi[j] = std::sin((j + 0.5) * dpsi);
+  }
+  // Work in body axes: the six face normals are then just +/- the coordinate axes.
+  const Eigen::Vector3d b1 = body_from_eci * e1, b2 = body_from_eci * e2, b3 = body_from_eci * e3;
+  for (int i = 0; i < params.rings; ++i) {
+    const double gamma = 0.5 * gamma_max * (node[i] + 1.0);
+    const double cg = std::cos(gamma), sg = std::sin(gamma);
+    const double area = kEarthRadius * kEarthRadius * sg * (0.5 * gamma_max * weight[i]) * dpsi;
+    // Satellite -> element: d = R p^ - r e3; its length depends on gamma only.
+    const double l2 = kEarthRadius * kEarthRadius + r * r - 2.0 * kEarthRadius * r * cg;
+    const double l = std::sqrt(l2);
+    // cos of the emission angle at the element: -p^ . d/l = (r cos gamma - R)/l
+    const double cos_emit = (r * cg - kEarthRadius) / l;
+    if (cos_emit <= 0.0) continue;
+    const double ring_weight = radiance_scale * cos_emit * area / l2;
+    for (int j = 0; j < params.sectors; ++j) {
+      // cos of the solar zenith angle at the element
+      const double cos_z = cg * s_dot_e3 + sg * (cos_psi[j] * s_dot_e1 + sin_psi[j] * s_dot_e2);
+      if (cos_z <= 0.0) continue;
+      const double w = ring_weight * cos_z / l;  // 1/l normalises d below
+      // d in body axes (unnormalised)
+      const Eigen::Vector3d d = kEarthRadius * (cg * b3 + sg * (cos_psi[j] * b1 + sin_psi[j] * b2)) - r * b3;
+      for (int k = 0; k < 3; ++k) {
+        const double c = w * d(k);
+        if (c > 0.0) {
+          e[2 * k] += c;
+        } else {
+          e[2 * k + 1] -= c;
+        }
+      }
+    }
+  }
+  return e;
+}
+
+}  // namespace environment
