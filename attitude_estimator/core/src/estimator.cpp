@@ -1,0 +1,51 @@
+#include "attitude_estimator/estimator.hpp"
+
+namespace attitude_estimator {
+
+template <class T>
+SampleResult<T> estimate_sample(const SampleInputs<T>& in, const EstimatorConfig<T>& config) noexcept {
+  SampleResult<T> r;
+
+  Vec3<T> i_digital{};
+  Vec3<T> v_digital{};
+  for (int k = 0; k < 3; ++k) {
+    i_digital[k] = convert(config.sun_adc[k], in.i_sh[k]).value;
+    v_digital[k] = convert(config.mag_adc[k], in.v_mag[k]).value;
+  }
+  const T v_ref_digital = convert(config.mag_ref_adc, in.v_mag_ref).value;
+
+  const SunMeasurement<T> sun = sun_vector_from_currents(i_digital, config.i_sc_norm, config.min_sun_norm);
+  r.sun_meas = sun.unit;
+  r.sun_norm = sun.norm;
+  r.sun_valid = sun.valid;
+
+  Vec3<T> rail_low{};
+  Vec3<T> rail_high{};
+  for (int k = 0; k < 3; ++k) {
+    rail_low[k] = config.mag_adc[k].min;  // a saturated sensor shows up at its converter's range ends
+    rail_high[k] = config.mag_adc[k].max;
+  }
+  const FieldMeasurement<T> mag =
+      field_vector_from_voltages(v_digital, v_ref_digital, config.mag_sensitivity, rail_low, rail_high,
+                                 config.mag_rail_margin, config.min_field);
+  r.mag_meas = mag.unit;
+  r.mag_field = mag.field;
+  r.mag_valid = mag.valid;
+
+  if (!r.sun_valid || !r.mag_valid) return r;
+
+  ObservationSet<T> set;
+  set.add(in.sun_ref, r.sun_meas, config.sun_weight);
+  set.add(in.mag_ref, r.mag_meas, config.mag_weight);
+  const WahbaSolution<T> s = solve_wahba(set, config.solver, WahbaOptions<T>{config.min_separation_sin});
+  r.q = s.q;
+  r.a = s.a;
+  r.loss = s.loss;
+  r.valid = s.valid;
+  return r;
+}
+
+template SampleResult<float> estimate_sample(const SampleInputs<float>&, const EstimatorConfig<float>&) noexcept;
+template SampleResult<double> estimate_sample(const SampleInputs<double>&, const EstimatorConfig<double>&) noexcept;
+
+}  // namespace attitude_estimator
