@@ -7,11 +7,12 @@ namespace fmu {
 
 namespace {
 
-constexpr std::array<UnitDefinition, 22> units{{
+constexpr std::array<UnitDefinition, 23> units{{
     {.name = "1"},
     {.name = "s", .s = 1},
     {.name = "Hz", .s = -1},
     {.name = "m", .m = 1},
+    {.name = "m/s2", .m = 1, .s = -2},
     {.name = "rad", .rad = 1},
     {.name = "deg", .rad = 1, .factor = 0.017453292519943295},
     {.name = "rad/s", .s = -1, .rad = 1},

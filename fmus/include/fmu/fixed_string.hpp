@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstddef>
+#include <string>
 #include <string_view>
 
 #include "fmu/errors.hpp"
@@ -16,6 +17,10 @@ struct FixedString {
 
     constexpr FixedString() = default;
     constexpr FixedString(std::string_view text) { assign(text); }  // NOLINT: implicit on purpose
+    template <std::size_t N>
+    constexpr FixedString(const char (&text)[N]) {  // NOLINT: lets a default read `label = "ball"`
+        assign(std::string_view(text, N - 1));
+    }
 
     constexpr void assign(std::string_view text) {
         if (text.size() > Capacity) throw Error("string longer than " + std::to_string(Capacity) + " characters");

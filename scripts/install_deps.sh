@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs the Debian packages the build and the tests need, skipping those already installed.
+# Runs apt-get as root (directly, or through sudo for a normal user).
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libsundials-dev     # CVODE: Co-Simulation inside each FMU (linked statically), the master's solver
+  libeigen3-dev       # small fixed-size linear algebra (Q-method, rotations)
+  libxml2-dev         # modelDescription.xml writer and parser
+  libzip-dev          # .fmu archives in the loader
+  libcli11-dev libfmt-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  libfftw3-dev        # spin-rate estimation from the acquired sun vector
+  zip unzip
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+as_root=()
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install_deps: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+  as_root=(sudo)
+fi
+echo "install_deps: installing ${missing[*]}"
+"${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+"${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
