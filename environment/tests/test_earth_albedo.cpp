@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "environment/constants.hpp"
 #include "environment/earth_albedo.hpp"

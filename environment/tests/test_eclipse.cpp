@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "environment/circular_orbit.hpp"
 #include "environment/constants.hpp"

@@ -1,8 +1,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <stdexcept>
+#include <string>
 
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>

@@ -5,6 +5,7 @@
 
 #include "environment/attitude.hpp"
 #include "environment/constants.hpp"
+#include "environment/earth_rotation.hpp"
 #include "environment/eclipse.hpp"
 #include "environment/geomagnetic_field.hpp"
 #include "environment/sun_ephemeris.hpp"
@@ -12,16 +13,6 @@
 namespace environment {
 
 namespace {
-// Passive rotation about z by angle a: ECI -> ECEF with a = GMST (precession, nutation and polar motion
-// neglected: the ECEF frame here is the pseudo Earth-fixed frame rotated from J2000 by GMST; the
-// J2000 -> of-date precession, 0.36 deg in 2026, is the dominant neglected term).
-Eigen::Matrix3d eci_to_ecef(double gmst_rad) {
-  const double c = std::cos(gmst_rad), s = std::sin(gmst_rad);
-  Eigen::Matrix3d r;
-  r << c, s, 0.0, -s, c, 0.0, 0.0, 0.0, 1.0;
-  return r;
-}
-
 std::array<double, 3> to_array(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
 void validate(const EnvironmentParams& p) {
@@ -98,14 +89,14 @@ EnvironmentOutputs Environment::evaluate(double t, const RigidBodyState* state) 
   }
   out.sun_body = to_array(A * s);
 
-  // Geomagnetic field: evaluated in ECEF, rotated to ECI by GMST.
-  const Eigen::Matrix3d ecef_from_eci = eci_to_ecef(out.gmst);
+  // Geomagnetic field: evaluated Earth-fixed, rotated back to ECI (precession + GMST, earth_rotation.hpp).
+  const Eigen::Matrix3d to_ecef = ecef_from_eci(out.julian_date);
   const GaussCoefficients c = igrf_coefficients(decimal_year(out.julian_date));
-  const Eigen::Vector3d r_ecef = ecef_from_eci * r;
+  const Eigen::Vector3d r_ecef = to_ecef * r;
   const Eigen::Vector3d b_ecef = (params_.field_model == FieldModel::dipole)
                                      ? dipole_field(c, r_ecef)
                                      : spherical_harmonic_field(c, params_.igrf_max_degree, r_ecef);
-  const Eigen::Vector3d b_eci = ecef_from_eci.transpose() * b_ecef;
+  const Eigen::Vector3d b_eci = to_ecef.transpose() * b_ecef;
   out.mag_eci = to_array(b_eci);
   out.mag_body = to_array(A * b_eci);
 
