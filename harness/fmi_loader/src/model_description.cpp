@@ -277,9 +277,8 @@ public:
                         invalid(u, "unknown dependenciesKind '" + k + "'");
                     unknown.dependencies_kind.push_back(k);
                 }
-                // The kinds list pairs with dependencies one to one (section 2.2.8).
-                if (!unknown.dependencies || unknown.dependencies->size() != unknown.dependencies_kind.size())
-                    invalid(u, "dependenciesKind does not pair with dependencies");
+                // Whether the kinds pair one to one with dependencies (section 2.2.8) is left to
+                // validators: tools read such files, so the loader keeps them as written.
             }
             out.push_back(std::move(unknown));
         }
