@@ -1,0 +1,14 @@
+// The master's one exception type: what failed and why, in a sentence a user can act on. Loader
+// failures keep their own type (fmi_loader::LoaderError); main() prints either and sets the exit code.
+#pragma once
+
+#include <stdexcept>
+
+namespace cosim {
+
+class CosimError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+}  // namespace cosim

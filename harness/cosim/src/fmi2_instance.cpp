@@ -1,0 +1,154 @@
+#include "fmi2_instance.hpp"
+
+#include <cstdarg>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+
+#include "cosim_error.hpp"
+#include "value_text.hpp"
+
+namespace cosim {
+
+namespace {
+
+// FMI loggers are printf-like: format the message with its arguments before storing it.
+void logger(fmi2ComponentEnvironment env, fmi2String, fmi2Status status, fmi2String, fmi2String message, ...) {
+    if (!env || !message) return;
+    va_list args;
+    va_start(args, message);
+    va_list copy;
+    va_copy(copy, args);
+    const int n = std::vsnprintf(nullptr, 0, message, copy);
+    va_end(copy);
+    std::string text(n > 0 ? static_cast<std::size_t>(n) : 0, '\0');
+    if (n > 0) std::vsnprintf(text.data(), text.size() + 1, message, args);
+    va_end(args);
+    static_cast<Fmi2Instance*>(env)->record(status, std::move(text));
+}
+
+const char* status_name(fmi2Status s) {
+    switch (s) {
+        case fmi2OK: return "OK";
+        case fmi2Warning: return "Warning";
+        case fmi2Discard: return "Discard";
+        case fmi2Error: return "Error";
+        case fmi2Fatal: return "Fatal";
+        case fmi2Pending: return "Pending";
+    }
+    return "?";
+}
+
+}  // namespace
+
+Fmi2Instance::Fmi2Instance(fmi_loader::Fmu& fmu, fmi_loader::FmuKind kind, std::string instance_name, bool logging_on)
+    : fmu_(fmu),
+      lib_(fmu.library(kind)),
+      name_(std::move(instance_name)),
+      callbacks_{logger, std::calloc, std::free, nullptr, this} {
+    const auto& md = fmu_.description();
+    component_ = lib_->fmi2Instantiate(name_.c_str(),
+                                       kind == fmi_loader::FmuKind::model_exchange ? fmi2ModelExchange : fmi2CoSimulation,
+                                       md.guid.c_str(), fmu_.archive().resource_uri().c_str(), &callbacks_, fmi2False,
+                                       logging_on ? fmi2True : fmi2False);
+    if (!component_) {
+        std::string why = messages_.empty() ? "no message from the FMU" : messages_.back().second;
+        throw CosimError(name_ + ": fmi2Instantiate failed: " + why);
+    }
+}
+
+Fmi2Instance::~Fmi2Instance() {
+    if (component_) lib_->fmi2FreeInstance(component_);
+}
+
+void Fmi2Instance::record(fmi2Status status, std::string message) {
+    if (status >= fmi2Warning) std::cerr << name_ << " [" << status_name(status) << "] " << message << "\n";
+    messages_.emplace_back(status, std::move(message));
+}
+
+void Fmi2Instance::check(fmi2Status status, const char* function) {
+    if (status < fmi2Error) return;
+    std::string why = messages_.empty() ? "no message from the FMU" : messages_.back().second;
+    throw CosimError(name_ + ": " + function + " returned " + status_name(status) + ": " + why);
+}
+
+void Fmi2Instance::setup_experiment(double start_time, std::optional<double> stop_time, std::optional<double> tolerance) {
+    check(lib_->fmi2SetupExperiment(component_, tolerance ? fmi2True : fmi2False, tolerance.value_or(0.0), start_time,
+                                    stop_time ? fmi2True : fmi2False, stop_time.value_or(0.0)),
+          "fmi2SetupExperiment");
+}
+
+void Fmi2Instance::enter_initialization_mode() {
+    check(lib_->fmi2EnterInitializationMode(component_), "fmi2EnterInitializationMode");
+}
+void Fmi2Instance::exit_initialization_mode() {
+    check(lib_->fmi2ExitInitializationMode(component_), "fmi2ExitInitializationMode");
+}
+void Fmi2Instance::terminate() { check(lib_->fmi2Terminate(component_), "fmi2Terminate"); }
+
+void Fmi2Instance::set_from_text(std::string_view name, std::string_view text) {
+    const auto* v = description().find_variable(name);
+    if (!v) throw CosimError(name_ + ": no variable named '" + std::string(name) + "'");
+    const fmi2ValueReference vr = v->value_reference;
+    const std::string where = name_ + "." + std::string(name);
+    switch (v->type) {
+        case fmi_loader::VariableType::real: {
+            const fmi2Real x = parse_real(text, where);
+            check(lib_->fmi2SetReal(component_, &vr, 1, &x), "fmi2SetReal");
+            break;
+        }
+        case fmi_loader::VariableType::integer:
+        case fmi_loader::VariableType::enumeration: {
+            const fmi2Integer x = parse_integer(text, where);
+            check(lib_->fmi2SetInteger(component_, &vr, 1, &x), "fmi2SetInteger");
+            break;
+        }
+        case fmi_loader::VariableType::boolean: {
+            const fmi2Boolean x = parse_boolean(text, where) ? fmi2True : fmi2False;
+            check(lib_->fmi2SetBoolean(component_, &vr, 1, &x), "fmi2SetBoolean");
+            break;
+        }
+        case fmi_loader::VariableType::string: {
+            const std::string s(text);
+            const fmi2String x = s.c_str();
+            check(lib_->fmi2SetString(component_, &vr, 1, &x), "fmi2SetString");
+            break;
+        }
+    }
+}
+
+double Fmi2Instance::get_real(fmi2ValueReference vr) {
+    fmi2Real x = 0.0;
+    check(lib_->fmi2GetReal(component_, &vr, 1, &x), "fmi2GetReal");
+    return x;
+}
+
+std::string Fmi2Instance::get_as_text(const fmi_loader::ScalarVariable& v) {
+    const fmi2ValueReference vr = v.value_reference;
+    switch (v.type) {
+        case fmi_loader::VariableType::real: return format_real(get_real(vr));
+        case fmi_loader::VariableType::integer:
+        case fmi_loader::VariableType::enumeration: {
+            fmi2Integer x = 0;
+            check(lib_->fmi2GetInteger(component_, &vr, 1, &x), "fmi2GetInteger");
+            return std::to_string(x);
+        }
+        case fmi_loader::VariableType::boolean: {
+            fmi2Boolean x = 0;
+            check(lib_->fmi2GetBoolean(component_, &vr, 1, &x), "fmi2GetBoolean");
+            return x ? "1" : "0";
+        }
+        case fmi_loader::VariableType::string: {
+            fmi2String x = nullptr;
+            check(lib_->fmi2GetString(component_, &vr, 1, &x), "fmi2GetString");
+            return x ? x : "";
+        }
+    }
+    return {};
+}
+
+void Fmi2Instance::do_step(double t, double h) {
+    check(lib_->fmi2DoStep(component_, t, h, fmi2True), "fmi2DoStep");
+}
+
+}  // namespace cosim

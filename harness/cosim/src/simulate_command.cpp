@@ -1,0 +1,81 @@
+#include "simulate_command.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+#include "cosim_error.hpp"
+#include "fmi2_instance.hpp"
+#include "value_text.hpp"
+
+namespace cosim {
+
+void simulate(const SimulateOptions& options, std::ostream& out) {
+    fmi_loader::Fmu fmu(options.fmu);
+    const auto& md = fmu.description();
+    if (!md.co_simulation) throw CosimError(options.fmu.string() + " has no CoSimulation interface");
+    const auto ex = md.default_experiment.value_or(fmi_loader::DefaultExperiment{});
+    const double start = ex.start_time.value_or(0.0);
+    const double stop = options.stop_time.value_or(ex.stop_time.value_or(start + 1.0));
+    const double h = options.output_interval.value_or(ex.step_size.value_or((stop - start) / 500.0));
+    if (!(stop > start) || !(h > 0.0)) throw CosimError("stop time must exceed the start time and the interval be positive");
+
+    std::vector<const fmi_loader::ScalarVariable*> columns;
+    if (options.columns.empty()) {
+        for (const auto& v : md.model_variables)
+            if (v.causality == fmi_loader::Causality::output) columns.push_back(&v);
+    } else {
+        for (const auto& name : options.columns) {
+            const auto* v = md.find_variable(name);
+            if (!v) throw CosimError("no variable named '" + name + "' in " + options.fmu.string());
+            columns.push_back(v);
+        }
+    }
+
+    Fmi2Instance instance(fmu, fmi_loader::FmuKind::co_simulation, md.model_name);
+    instance.setup_experiment(start, stop, options.tolerance ? options.tolerance : ex.tolerance);
+    for (const auto& setting : options.settings) {
+        const auto eq = setting.find('=');
+        if (eq == std::string::npos) throw CosimError("--set expects name=value, got '" + setting + "'");
+        instance.set_from_text(setting.substr(0, eq), setting.substr(eq + 1));
+    }
+    instance.enter_initialization_mode();
+    instance.exit_initialization_mode();
+
+    std::ofstream csv_file;
+    if (options.csv) {
+        csv_file.open(*options.csv);
+        if (!csv_file) throw CosimError("cannot write " + options.csv->string());
+    }
+    const bool as_csv = options.csv.has_value();
+    std::ostream& sink = as_csv ? csv_file : out;
+    const int width = 16;
+    auto row = [&](const std::string& first, auto&& cell) {
+        if (as_csv) {
+            sink << first;
+            for (std::size_t i = 0; i < columns.size(); ++i) sink << "," << cell(i);
+        } else {
+            sink << std::left << std::setw(10) << first;
+            for (std::size_t i = 0; i < columns.size(); ++i) sink << std::setw(width) << cell(i);
+        }
+        sink << "\n";
+    };
+    row("time", [&](std::size_t i) { return columns[i]->name; });
+    const auto steps = static_cast<long>(std::llround((stop - start) / h));
+    for (long k = 0;; ++k) {
+        const double t = start + k * h;  // from the step count, so that times never drift
+        row(format_real(t), [&](std::size_t i) {
+            const auto& v = *columns[i];
+            if (as_csv || v.type != fmi_loader::VariableType::real) return instance.get_as_text(v);
+            std::ostringstream cell;  // a table is read by a person: 8 significant digits
+            cell << std::setprecision(8) << instance.get_real(v.value_reference);
+            return cell.str();
+        });
+        if (k >= steps) break;
+        instance.do_step(t, std::min(h, stop - t));
+    }
+    instance.terminate();
+}
+
+}  // namespace cosim

@@ -1,0 +1,38 @@
+#include "value_text.hpp"
+
+#include <charconv>
+#include <cmath>
+
+#include "cosim_error.hpp"
+
+namespace cosim {
+
+double parse_real(std::string_view text, const std::string& what) {
+    double x = 0.0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), x);
+    if (ec != std::errc() || end != text.data() + text.size() || text.empty())
+        throw CosimError(what + ": '" + std::string(text) + "' is not a number");
+    return x;
+}
+
+int parse_integer(std::string_view text, const std::string& what) {
+    int x = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), x);
+    if (ec != std::errc() || end != text.data() + text.size() || text.empty())
+        throw CosimError(what + ": '" + std::string(text) + "' is not an integer");
+    return x;
+}
+
+bool parse_boolean(std::string_view text, const std::string& what) {
+    if (text == "true" || text == "1") return true;
+    if (text == "false" || text == "0") return false;
+    throw CosimError(what + ": '" + std::string(text) + "' is not a Boolean (true, false, 1, 0)");
+}
+
+std::string format_real(double x) {
+    char buf[32];
+    const auto result = std::to_chars(buf, buf + sizeof buf, x);
+    return std::string(buf, result.ptr);
+}
+
+}  // namespace cosim
