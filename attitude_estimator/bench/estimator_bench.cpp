@@ -7,9 +7,11 @@
 #include <random>
 #include <vector>
 
+#include "attitude_estimator/attitude_matrix.hpp"
 #include "attitude_estimator/estimator.hpp"
 #include "attitude_estimator/fast_solver.hpp"
 #include "attitude_estimator/q_method.hpp"
+#include "attitude_estimator/vec3_math.hpp"
 
 namespace ae = attitude_estimator;
 

@@ -31,16 +31,20 @@ inline Quaternion<T> quaternion_from_attitude_matrix(const Matrix3RowMajor<T>& a
   Quaternion<T> q;
   if (tr >= a[0] && tr >= a[4] && tr >= a[8]) {
     const T f = T(2) * std::sqrt(T(1) + tr);  // 4w
-    q = {(a[5] - a[7]) / f, (a[6] - a[2]) / f, (a[1] - a[3]) / f, f / T(4)};
+    const T g = T(1) / f;
+    q = {(a[5] - a[7]) * g, (a[6] - a[2]) * g, (a[1] - a[3]) * g, f * T(0.25)};
   } else if (a[0] >= a[4] && a[0] >= a[8]) {
     const T f = T(2) * std::sqrt(T(1) + a[0] - a[4] - a[8]);  // 4x
-    q = {f / T(4), (a[1] + a[3]) / f, (a[2] + a[6]) / f, (a[5] - a[7]) / f};
+    const T g = T(1) / f;
+    q = {f * T(0.25), (a[1] + a[3]) * g, (a[2] + a[6]) * g, (a[5] - a[7]) * g};
   } else if (a[4] >= a[8]) {
     const T f = T(2) * std::sqrt(T(1) - a[0] + a[4] - a[8]);  // 4y
-    q = {(a[1] + a[3]) / f, f / T(4), (a[5] + a[7]) / f, (a[6] - a[2]) / f};
+    const T g = T(1) / f;
+    q = {(a[1] + a[3]) * g, f * T(0.25), (a[5] + a[7]) * g, (a[6] - a[2]) * g};
   } else {
     const T f = T(2) * std::sqrt(T(1) - a[0] - a[4] + a[8]);  // 4z
-    q = {(a[2] + a[6]) / f, (a[5] + a[7]) / f, f / T(4), (a[1] - a[3]) / f};
+    const T g = T(1) / f;
+    q = {(a[2] + a[6]) * g, (a[5] + a[7]) * g, f * T(0.25), (a[1] - a[3]) * g};
   }
   const T n = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
   const T s = (q.w < T(0) ? T(-1) : T(1)) / n;
