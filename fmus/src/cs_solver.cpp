@@ -1,164 +1,62 @@
 #include "fmu/cs_solver.hpp"
 
-#include <cvode/cvode.h>
-#include <nvector/nvector_serial.h>
-#include <sundials/sundials_context.h>
-#include <sunlinsol/sunlinsol_dense.h>
-#include <sunmatrix/sunmatrix_dense.h>
-
 #include <algorithm>
 #include <cmath>
-#include <exception>
-#include <utility>
-#include <vector>
+#include <string>
 
 #include "fmu/errors.hpp"
 
 namespace fmu {
 
-namespace {
-
-template <class T, auto Free>
-struct Deleter {
-    void operator()(T* p) const { Free(p); }
-};
-
-void free_cvode(void* mem) { CVodeFree(&mem); }
-void free_context(SUNContext ctx) { SUNContext_Free(&ctx); }
-
-}  // namespace
-
-struct CsSolver::Cvode {
-    // Declared in creation order; destroyed in reverse, as SUNDIALS requires.
-    std::unique_ptr<std::remove_pointer_t<SUNContext>, Deleter<std::remove_pointer_t<SUNContext>, free_context>> ctx;
-    std::unique_ptr<std::remove_pointer_t<N_Vector>, Deleter<std::remove_pointer_t<N_Vector>, N_VDestroy>> y;
-    std::unique_ptr<std::remove_pointer_t<N_Vector>, Deleter<std::remove_pointer_t<N_Vector>, N_VDestroy>> abstol;
-    std::unique_ptr<std::remove_pointer_t<SUNMatrix>, Deleter<std::remove_pointer_t<SUNMatrix>, SUNMatDestroy>> matrix;
-    std::unique_ptr<std::remove_pointer_t<SUNLinearSolver>,
-                    Deleter<std::remove_pointer_t<SUNLinearSolver>, SUNLinSolFree>>
-        solver;
-    std::unique_ptr<void, Deleter<void, free_cvode>> mem;
-
-    ModelRunner* runner = nullptr;
-    std::exception_ptr failure;  // an exception from a callback, rethrown after CVode returns
-    std::string message;         // CVODE's own error text
-    std::vector<double> scratch;
-};
-
-namespace {
-
-void check(int flag, const char* what, const std::string& detail = {}) {
-    if (flag < 0) throw Error(std::string("CVODE ") + what + " failed (flag " + std::to_string(flag) + ")" +
-                              (detail.empty() ? "" : ": " + detail));
-}
-
-// Callbacks never let an exception through: they store it and return -1 (unrecoverable).
-int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
-    auto& c = *static_cast<CsSolver::Cvode*>(user);
-    try {
-        const auto n = static_cast<std::size_t>(N_VGetLength(y));
-        c.runner->set_time(t);
-        c.runner->set_states({N_VGetArrayPointer(y), n});
-        c.runner->get_derivatives({N_VGetArrayPointer(ydot), n});
-        return 0;
-    } catch (...) {
-        c.failure = std::current_exception();
-        return -1;
-    }
-}
-
-int roots(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
-    auto& c = *static_cast<CsSolver::Cvode*>(user);
-    try {
-        const auto n = static_cast<std::size_t>(N_VGetLength(y));
-        c.runner->set_time(t);
-        c.runner->set_states({N_VGetArrayPointer(y), n});
-        c.runner->get_indicators({g, c.runner->indicator_count()});
-        return 0;
-    } catch (...) {
-        c.failure = std::current_exception();
-        return -1;
-    }
-}
-
-void error_handler(int, const char* module, const char* function, char* msg, void* user) {
-    auto& c = *static_cast<CsSolver::Cvode*>(user);
-    c.message = std::string(module ? module : "") + "/" + (function ? function : "") + ": " + (msg ? msg : "");
-}
-
-}  // namespace
-
-CsSolver::CsSolver(ModelRunner& runner, double relative_tolerance) : runner_(runner) {
-    const auto n = static_cast<sunindextype>(runner_.state_count());
+CsSolver::CsSolver(ModelRunner& runner, double relative_tolerance)
+    : runner_(runner), x_(runner.state_count()) {
+    const std::size_t n = runner_.state_count();
     if (n == 0) return;  // nothing to integrate; events are located by bisection
-    cvode_ = std::make_unique<Cvode>();
-    auto& c = *cvode_;
-    c.runner = &runner_;
-    SUNContext ctx = nullptr;
-    check(SUNContext_Create(nullptr, &ctx), "SUNContext_Create");
-    c.ctx.reset(ctx);
-    c.y.reset(N_VNew_Serial(n, ctx));
-    c.abstol.reset(N_VNew_Serial(n, ctx));
-    if (!c.y || !c.abstol) throw Error("CVODE: cannot allocate vectors");
-    runner_.get_states({N_VGetArrayPointer(c.y.get()), static_cast<std::size_t>(n)});
     // Absolute tolerance of each state from its nominal magnitude: reltol × nominal.
-    std::vector<double> nominal(static_cast<std::size_t>(n));
-    runner_.get_nominals(nominal);
-    for (sunindextype i = 0; i < n; ++i)
-        N_VGetArrayPointer(c.abstol.get())[i] = relative_tolerance * nominal[static_cast<std::size_t>(i)];
-
-    c.mem.reset(CVodeCreate(CV_BDF, ctx));
-    if (!c.mem) throw Error("CVodeCreate failed");
-    void* mem = c.mem.get();
-    check(CVodeSetErrHandlerFn(mem, error_handler, &c), "CVodeSetErrHandlerFn");
-    check(CVodeInit(mem, rhs, runner_.time(), c.y.get()), "CVodeInit");
-    check(CVodeSetUserData(mem, &c), "CVodeSetUserData");
-    check(CVodeSVtolerances(mem, relative_tolerance, c.abstol.get()), "CVodeSVtolerances");
-    if (runner_.indicator_count() > 0)
-        check(CVodeRootInit(mem, static_cast<int>(runner_.indicator_count()), roots), "CVodeRootInit");
-    c.matrix.reset(SUNDenseMatrix(n, n, ctx));
-    c.solver.reset(SUNLinSol_Dense(c.y.get(), c.matrix.get(), ctx));
-    if (!c.matrix || !c.solver) throw Error("CVODE: cannot allocate the dense linear solver");
-    check(CVodeSetLinearSolver(mem, c.solver.get(), c.matrix.get()), "CVodeSetLinearSolver");
-    check(CVodeSetMaxNumSteps(mem, 1000000), "CVodeSetMaxNumSteps");
+    std::vector<double> abstol(n);
+    runner_.get_nominals(abstol);
+    for (auto& a : abstol) a *= relative_tolerance;
+    auto rhs = [this](double t, std::span<const double> x, std::span<double> dx) {
+        runner_.set_time(t);
+        runner_.set_states(x);
+        runner_.get_derivatives(dx);
+    };
+    auto roots = [this](double t, std::span<const double> x, std::span<double> g) {
+        runner_.set_time(t);
+        runner_.set_states(x);
+        runner_.get_indicators(g);
+    };
+    cvode_ = std::make_unique<CvodeIntegrator>(n, runner_.indicator_count(), rhs, roots, relative_tolerance, abstol);
 }
 
-CsSolver::~CsSolver() = default;
+SolverStatistics CsSolver::statistics() const {
+    SolverStatistics s = stats_;
+    if (cvode_) {
+        s.steps = cvode_->steps();
+        s.rhs_evaluations = cvode_->rhs_evaluations();
+    }
+    return s;
+}
 
 bool CsSolver::integrate_to(double t_stop) {
-    auto& c = *cvode_;
-    void* mem = c.mem.get();
-    auto* y = c.y.get();
-    const auto n = static_cast<std::size_t>(N_VGetLength(y));
     if (restart_needed_) {
-        runner_.get_states({N_VGetArrayPointer(y), n});
-        check(CVodeReInit(mem, runner_.time(), y), "CVodeReInit");
+        runner_.get_states(x_);
+        cvode_->restart(runner_.time(), x_);
         restart_needed_ = false;
         ++stats_.restarts;
     }
-    check(CVodeSetStopTime(mem, t_stop), "CVodeSetStopTime");
-    sunrealtype t_reached = runner_.time();
-    long steps_before = 0, rhs_before = 0, steps_after = 0, rhs_after = 0;
-    CVodeGetNumSteps(mem, &steps_before);
-    CVodeGetNumRhsEvals(mem, &rhs_before);
-    const int flag = CVode(mem, t_stop, y, &t_reached, CV_NORMAL);
-    CVodeGetNumSteps(mem, &steps_after);
-    CVodeGetNumRhsEvals(mem, &rhs_after);
-    stats_.steps += steps_after - steps_before;
-    stats_.rhs_evaluations += rhs_after - rhs_before;
-    if (c.failure) {
-        auto failure = std::exchange(c.failure, nullptr);
+    double t = runner_.time();
+    CvodeIntegrator::Stop stop;
+    try {
+        stop = cvode_->advance(t_stop, t, x_);
+    } catch (...) {
         restart_needed_ = true;
-        std::rethrow_exception(failure);
+        throw;
     }
-    if (flag < 0) {
-        restart_needed_ = true;
-        check(flag, "integration", c.message);
-    }
-    // The state at the point CVODE returned (callbacks may have left trial values behind).
-    runner_.set_time(flag == CV_TSTOP_RETURN ? t_stop : t_reached);
-    runner_.set_states({N_VGetArrayPointer(y), n});
-    return flag == CV_ROOT_RETURN;
+    // The callbacks may have left trial values behind: set the point CVODE returned.
+    runner_.set_time(t);
+    runner_.set_states(x_);
+    return stop == CvodeIntegrator::Stop::root;
 }
 
 bool CsSolver::locate_without_states(double t_stop) {

@@ -127,7 +127,7 @@ void Instance::exit_initialization_mode() {
 
 void Instance::terminate() {
     if (cs_solver_) {
-        const auto& s = cs_solver_->statistics();
+        const auto s = cs_solver_->statistics();
         log(fmi2OK, "logStatistics",
             "steps " + std::to_string(s.steps) + ", right-hand sides " + std::to_string(s.rhs_evaluations) +
                 ", time events " + std::to_string(s.time_events) + ", state events " + std::to_string(s.state_events) +

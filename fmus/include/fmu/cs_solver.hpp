@@ -1,13 +1,14 @@
-// Co-Simulation inside the FMU: advances a block over a communication step with SUNDIALS CVODE
-// (BDF, dense Newton), stopping exactly at the block's time events and locating its state events
-// with CVODE's root finding, running the event iteration at each, and restarting the integrator
-// after every discontinuity. Plain C++; the CVODE handles are owned here and freed in reverse order.
+// Co-Simulation inside the FMU: advances a block over a communication step with SUNDIALS CVODE,
+// stopping exactly at the block's time events and locating its state events with CVODE's root
+// finding, running the event iteration at each, and restarting the integrator after every
+// discontinuity. Plain C++.
 #pragma once
 
 #include <cstdint>
 #include <memory>
-#include <string>
+#include <vector>
 
+#include "fmu/cvode_integrator.hpp"
 #include "fmu/model_runner.hpp"
 
 namespace fmu {
@@ -23,9 +24,6 @@ struct SolverStatistics {
 class CsSolver {
 public:
     CsSolver(ModelRunner& runner, double relative_tolerance);
-    ~CsSolver();
-    CsSolver(const CsSolver&) = delete;
-    CsSolver& operator=(const CsSolver&) = delete;
 
     enum class Outcome { reached, terminated };
     // Integrate from the runner's current time to t_end, handling every event on the way and any
@@ -34,16 +32,15 @@ public:
     // States were changed from outside (FMU state restored, inputs changed): restart at next advance.
     void invalidate() { restart_needed_ = true; }
 
-    const SolverStatistics& statistics() const { return stats_; }
-
-    struct Cvode;  // the SUNDIALS handles (public only so the C callbacks can name it)
+    SolverStatistics statistics() const;
 
 private:
-    bool integrate_to(double t_stop);          // true when a state event stopped it
+    bool integrate_to(double t_stop);           // true when a state event stopped it
     bool locate_without_states(double t_stop);  // no states: bisection on the indicators
 
     ModelRunner& runner_;
-    std::unique_ptr<Cvode> cvode_;
+    std::unique_ptr<CvodeIntegrator> cvode_;
+    std::vector<double> x_;
     bool restart_needed_ = true;
     SolverStatistics stats_;
 };

@@ -1,0 +1,46 @@
+// SUNDIALS CVODE (BDF, dense Newton) behind a small C++ interface with root finding and stop times,
+// shared by the Co-Simulation solver inside each FMU and by the master's Model Exchange solver.
+// Every handle is owned (freed in reverse order of creation); an exception thrown by a callback is
+// stored, CVODE is told to stop (return -1), and the exception is rethrown after CVode() returns.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace fmu {
+
+class CvodeIntegrator {
+public:
+    using Rhs = std::function<void(double t, std::span<const double> x, std::span<double> dx)>;
+    using Roots = std::function<void(double t, std::span<const double> x, std::span<double> g)>;
+
+    // n states (n > 0), m root functions; absolute tolerance per state.
+    CvodeIntegrator(std::size_t n, std::size_t m, Rhs rhs, Roots roots, double relative_tolerance,
+                    std::span<const double> absolute_tolerance);
+    ~CvodeIntegrator();
+    CvodeIntegrator(const CvodeIntegrator&) = delete;
+    CvodeIntegrator& operator=(const CvodeIntegrator&) = delete;
+
+    // Start afresh from (t, x): after every discontinuity.
+    void restart(double t, std::span<const double> x);
+
+    enum class Stop { reached, root };
+    // Integrate towards t_stop (never past it). On return t and x hold the point reached: t_stop, or
+    // the first root of any root function, with root_info() telling which.
+    Stop advance(double t_stop, double& t, std::span<double> x);
+    // For each root function: +1 / −1 when it crossed upwards / downwards at the last root, else 0.
+    const std::vector<int>& root_info() const { return root_info_; }
+
+    long steps() const;
+    long rhs_evaluations() const;
+
+    struct Handles;  // public only so the C callbacks can name it
+
+private:
+    std::unique_ptr<Handles> h_;
+    std::vector<int> root_info_;
+};
+
+}  // namespace fmu
