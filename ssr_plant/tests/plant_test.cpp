@@ -157,15 +157,16 @@ TEST(SsrCorePlant, HysteresisSwitchesOnlyAtTheThresholds) {
     State x{15.0, 0.81};
     DiscreteState d = initialize(m, u, 0.0, x);
     EXPECT_FALSE(d.charge_connected);
-    auto z = event_indicators(m, u, d, 0.0, x);
-    EXPECT_NEAR(z[indicator_soc_connect], 0.01, 1e-15);
-    EXPECT_NEAR(z[indicator_soc_disconnect], -0.19, 1e-15);
+    // Disconnected: distance down to the connect threshold (hand: 0.81 − 0.80).
+    EXPECT_NEAR(event_indicators(m, u, d, 0.0, x)[indicator_charge_switch], 0.01, 1e-15);
     d.next_event_time = 1.0;  // keep PWM out of this check
     x[state_soc] = 0.805;
     EXPECT_FALSE(event_update(m, u, d, 0.0, x).changed);
     x[state_soc] = 0.80;
     d = event_update(m, u, d, 0.0, x).discrete;
     EXPECT_TRUE(d.charge_connected);
+    // Connected: distance up to full charge, the whole band right after the switch (hand: 1.00 − 0.80).
+    EXPECT_NEAR(event_indicators(m, u, d, 0.0, x)[indicator_charge_switch], 0.20, 1e-15);
     // Inside the band nothing happens in either direction.
     for (double soc : {0.79, 0.85, 0.95, 0.999}) {
         x[state_soc] = soc;

@@ -194,9 +194,9 @@ Outputs outputs(const Model& m, const Inputs& u, const DiscreteState& d, double 
     return y;
 }
 
-Indicators event_indicators(const Model& m, const Inputs&, const DiscreteState&, double, const State& x) {
+Indicators event_indicators(const Model& m, const Inputs&, const DiscreteState& d, double, const State& x) {
     const auto& b = m.parameters.battery;
-    return {x[state_soc] - b.soc_connect, x[state_soc] - b.soc_disconnect};
+    return {d.charge_connected ? b.soc_disconnect - x[state_soc] : x[state_soc] - b.soc_connect};
 }
 
 double next_time_event(const Model& m, const DiscreteState& d) {

@@ -31,10 +31,13 @@ inline constexpr std::size_t state_soc = 1;    // 1, battery state of charge (ch
 inline constexpr std::size_t state_count = 2;
 using State = std::array<double, state_count>;
 
-// Event indicators (state events; they cross zero where the hysteresis charge controller may switch).
-inline constexpr std::size_t indicator_soc_connect = 0;     // soc − soc_connect: falling to 0 connects
-inline constexpr std::size_t indicator_soc_disconnect = 1;  // soc − soc_disconnect: rising to 0 disconnects
-inline constexpr std::size_t indicator_count = 2;
+// Event indicators (state events). One: the hysteresis charge controller's distance to its next switch,
+//   disconnected: soc − soc_connect      (falls to 0 → connect for charging)
+//   connected:    soc_disconnect − soc   (falls to 0 at full charge → disconnect)
+// Positive between events; after a switch it restarts at the band width (no indicator stays at 0, so a
+// battery resting at full charge does not leave a root function identically zero).
+inline constexpr std::size_t indicator_charge_switch = 0;
+inline constexpr std::size_t indicator_count = 1;
 using Indicators = std::array<double, indicator_count>;
 
 inline constexpr double no_time_event = std::numeric_limits<double>::infinity();
