@@ -119,6 +119,8 @@ CvodeIntegrator::CvodeIntegrator(std::size_t n, std::size_t m, Rhs rhs, Roots ro
 CvodeIntegrator::~CvodeIntegrator() = default;
 
 void CvodeIntegrator::restart(double t, std::span<const double> x) {
+    steps_before_restart_ = steps();
+    rhs_before_restart_ = rhs_evaluations();
     std::copy_n(x.begin(), h_->n, N_VGetArrayPointer(h_->y.get()));
     check(CVodeReInit(h_->mem.get(), t, h_->y.get()), "CVodeReInit");
 }
@@ -141,13 +143,13 @@ CvodeIntegrator::Stop CvodeIntegrator::advance(double t_stop, double& t, std::sp
 long CvodeIntegrator::steps() const {
     long n = 0;
     CVodeGetNumSteps(h_->mem.get(), &n);
-    return n;
+    return steps_before_restart_ + n;
 }
 
 long CvodeIntegrator::rhs_evaluations() const {
     long n = 0;
     CVodeGetNumRhsEvals(h_->mem.get(), &n);
-    return n;
+    return rhs_before_restart_ + n;
 }
 
 }  // namespace fmu

@@ -33,6 +33,7 @@ public:
     // For each root function: +1 / −1 when it crossed upwards / downwards at the last root, else 0.
     const std::vector<int>& root_info() const { return root_info_; }
 
+    // Totals over the whole life of the integrator (CVODE itself counts from the last restart).
     long steps() const;
     long rhs_evaluations() const;
 
@@ -41,6 +42,7 @@ public:
 private:
     std::unique_ptr<Handles> h_;
     std::vector<int> root_info_;
+    long steps_before_restart_ = 0, rhs_before_restart_ = 0;
 };
 
 }  // namespace fmu

@@ -151,4 +151,81 @@ void Fmi2Instance::do_step(double t, double h) {
     check(lib_->fmi2DoStep(component_, t, h, fmi2True), "fmi2DoStep");
 }
 
+void Fmi2Instance::set_real(fmi2ValueReference vr, double x) {
+    check(lib_->fmi2SetReal(component_, &vr, 1, &x), "fmi2SetReal");
+}
+
+fmi2Integer Fmi2Instance::get_integer(fmi2ValueReference vr) {
+    fmi2Integer x = 0;
+    check(lib_->fmi2GetInteger(component_, &vr, 1, &x), "fmi2GetInteger");
+    return x;
+}
+
+void Fmi2Instance::set_integer(fmi2ValueReference vr, fmi2Integer x) {
+    check(lib_->fmi2SetInteger(component_, &vr, 1, &x), "fmi2SetInteger");
+}
+
+bool Fmi2Instance::get_boolean(fmi2ValueReference vr) {
+    fmi2Boolean x = 0;
+    check(lib_->fmi2GetBoolean(component_, &vr, 1, &x), "fmi2GetBoolean");
+    return x != fmi2False;
+}
+
+void Fmi2Instance::set_boolean(fmi2ValueReference vr, bool x) {
+    const fmi2Boolean b = x ? fmi2True : fmi2False;
+    check(lib_->fmi2SetBoolean(component_, &vr, 1, &b), "fmi2SetBoolean");
+}
+
+std::string Fmi2Instance::get_string(fmi2ValueReference vr) {
+    fmi2String x = nullptr;
+    check(lib_->fmi2GetString(component_, &vr, 1, &x), "fmi2GetString");
+    return x ? x : "";
+}
+
+void Fmi2Instance::set_string(fmi2ValueReference vr, const std::string& x) {
+    const fmi2String s = x.c_str();
+    check(lib_->fmi2SetString(component_, &vr, 1, &s), "fmi2SetString");
+}
+
+void Fmi2Instance::set_time(double t) { check(lib_->fmi2SetTime(component_, t), "fmi2SetTime"); }
+
+void Fmi2Instance::set_states(const double* x, std::size_t n) {
+    check(lib_->fmi2SetContinuousStates(component_, x, n), "fmi2SetContinuousStates");
+}
+
+void Fmi2Instance::get_states(double* x, std::size_t n) {
+    check(lib_->fmi2GetContinuousStates(component_, x, n), "fmi2GetContinuousStates");
+}
+
+void Fmi2Instance::get_derivatives(double* dx, std::size_t n) {
+    check(lib_->fmi2GetDerivatives(component_, dx, n), "fmi2GetDerivatives");
+}
+
+void Fmi2Instance::get_nominals(double* nominal, std::size_t n) {
+    check(lib_->fmi2GetNominalsOfContinuousStates(component_, nominal, n), "fmi2GetNominalsOfContinuousStates");
+}
+
+void Fmi2Instance::get_event_indicators(double* z, std::size_t n) {
+    check(lib_->fmi2GetEventIndicators(component_, z, n), "fmi2GetEventIndicators");
+}
+
+void Fmi2Instance::enter_event_mode() { check(lib_->fmi2EnterEventMode(component_), "fmi2EnterEventMode"); }
+
+fmi2EventInfo Fmi2Instance::new_discrete_states() {
+    fmi2EventInfo info{};
+    check(lib_->fmi2NewDiscreteStates(component_, &info), "fmi2NewDiscreteStates");
+    return info;
+}
+
+void Fmi2Instance::enter_continuous_time_mode() {
+    check(lib_->fmi2EnterContinuousTimeMode(component_), "fmi2EnterContinuousTimeMode");
+}
+
+bool Fmi2Instance::completed_integrator_step(bool* terminate) {
+    fmi2Boolean enter = fmi2False, stop = fmi2False;
+    check(lib_->fmi2CompletedIntegratorStep(component_, fmi2True, &enter, &stop), "fmi2CompletedIntegratorStep");
+    if (terminate) *terminate = stop != fmi2False;
+    return enter != fmi2False;
+}
+
 }  // namespace cosim

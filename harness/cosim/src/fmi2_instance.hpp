@@ -3,6 +3,7 @@
 // addressed by name or by value reference. The FMI function names appear only here and in the loader.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -33,6 +34,28 @@ public:
     std::string get_as_text(const fmi_loader::ScalarVariable& v);
 
     void do_step(double t, double h);
+
+    // Typed access by value reference (the master's hot path: no name look-ups).
+    void set_real(fmi2ValueReference vr, double x);
+    fmi2Integer get_integer(fmi2ValueReference vr);
+    void set_integer(fmi2ValueReference vr, fmi2Integer x);
+    bool get_boolean(fmi2ValueReference vr);
+    void set_boolean(fmi2ValueReference vr, bool x);
+    std::string get_string(fmi2ValueReference vr);
+    void set_string(fmi2ValueReference vr, const std::string& x);
+
+    // Model Exchange.
+    void set_time(double t);
+    void set_states(const double* x, std::size_t n);
+    void get_states(double* x, std::size_t n);
+    void get_derivatives(double* dx, std::size_t n);
+    void get_nominals(double* nominal, std::size_t n);
+    void get_event_indicators(double* z, std::size_t n);
+    void enter_event_mode();
+    fmi2EventInfo new_discrete_states();
+    void enter_continuous_time_mode();
+    // Returns true when the FMU asks for a step event.
+    bool completed_integrator_step(bool* terminate);
 
     // Messages the FMU logged (status and text), newest last; the master prints warnings and errors.
     const std::vector<std::pair<fmi2Status, std::string>>& messages() const { return messages_; }

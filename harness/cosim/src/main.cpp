@@ -7,6 +7,7 @@
 #include "cosim_error.hpp"
 #include "fmi_loader/loader_error.hpp"
 #include "info_command.hpp"
+#include "run_command.hpp"
 #include "simulate_command.hpp"
 
 int main(int argc, char** argv) {
@@ -28,9 +29,35 @@ int main(int argc, char** argv) {
     simulate->add_option("--columns", sim.columns, "Variables to report (default: every output)")->delimiter(',');
     simulate->add_option("--output", csv_path, "Write CSV to this file instead of printing a table");
 
+    cosim::RunOptions run_options;
+    std::string ssd_path, run_csv;
+    std::vector<std::string> fmu_dirs;
+    auto* run = app.add_subcommand("run", "Run a system described in SSP (.ssd)");
+    run->add_option("ssd", ssd_path, "The system structure description")->required();
+    run->add_option("--stop-time", run_options.stop_time, "Stop time in s (default: the .ssd's DefaultExperiment)");
+    run->add_option("--output", run_csv, "CSV results file");
+    run->add_option("--output-interval", run_options.output_interval,
+                    "Output interval in s (default: the smallest DefaultExperiment stepSize of the FMUs)");
+    run->add_option("--step", run_options.communication_step, "Communication step of Co-Simulation components");
+    run->add_option("--tolerance", run_options.tolerance, "Relative tolerance (default: the FMUs' smallest)");
+    run->add_option("--set", run_options.system.settings, "component.variable=value before initialization (repeatable)");
+    run->add_option("--cs", run_options.system.co_simulation, "Run this component through its Co-Simulation interface");
+    run->add_option("--fmu-dir", fmu_dirs, "Where to look for FMUs not found beside the .ssd")
+        ->default_val(std::vector<std::string>{PVATT_DEFAULT_FMU_DIR});
+    run->add_option("--columns", run_options.columns, "component.variable columns of the CSV (default: every output)")
+        ->delimiter(',');
+    run->add_flag("--realtime", run_options.realtime, "Pace simulated time to the wall clock");
+    run->add_flag("--event-rows", run_options.event_rows, "Add CSV rows just before and after each event");
+
     CLI11_PARSE(app, argc, argv);
     try {
         if (*info) cosim::print_info(info_path, std::cout);
+        if (*run) {
+            run_options.ssd = ssd_path;
+            if (!run_csv.empty()) run_options.csv = run_csv;
+            for (const auto& d : fmu_dirs) run_options.system.fmu_dirs.emplace_back(d);
+            cosim::run_system(run_options, std::cout);
+        }
         if (*simulate) {
             sim.fmu = fmu_path;
             if (!csv_path.empty()) sim.csv = csv_path;

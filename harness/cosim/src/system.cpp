@@ -1,0 +1,314 @@
+#include "system.hpp"
+
+#include <algorithm>
+#include <map>
+
+#include "cosim_error.hpp"
+
+namespace cosim {
+
+namespace {
+
+using fmi_loader::Causality;
+using fmi_loader::VariableType;
+
+std::string kind_name(ConnectorKind k) {
+    switch (k) {
+        case ConnectorKind::input: return "input";
+        case ConnectorKind::output: return "output";
+        case ConnectorKind::parameter: return "parameter";
+        case ConnectorKind::calculated_parameter: return "calculatedParameter";
+        case ConnectorKind::inout: return "inout";
+        case ConnectorKind::unspecified: return "unspecified";
+    }
+    return "?";
+}
+
+bool kind_matches(ConnectorKind k, Causality c) {
+    switch (k) {
+        case ConnectorKind::input: return c == Causality::input;
+        case ConnectorKind::output: return c == Causality::output;
+        case ConnectorKind::parameter: return c == Causality::parameter;
+        case ConnectorKind::calculated_parameter: return c == Causality::calculated_parameter;
+        default: return true;
+    }
+}
+
+// Integer and Enumeration values travel as the same fmi2Integer.
+bool same_type(VariableType a, VariableType b) {
+    auto norm = [](VariableType t) { return t == VariableType::enumeration ? VariableType::integer : t; };
+    return norm(a) == norm(b);
+}
+
+std::size_t index_in(const fmi_loader::ModelDescription& md, const fmi_loader::ScalarVariable* v) {
+    return static_cast<std::size_t>(v - md.model_variables.data());
+}
+
+}  // namespace
+
+System::System(const SystemDescription& description, const SystemOptions& options)
+    : description_(description), tolerance_(options.tolerance) {
+    load_components(options);
+    check_connectors();
+    connect();
+    order_connections();
+    for (const auto& setting : options.settings) {
+        const auto dot = setting.find('.');
+        const auto eq = setting.find('=');
+        if (dot == std::string::npos || eq == std::string::npos || eq < dot)
+            throw CosimError("--set expects component.variable=value, got '" + setting + "'");
+        settings_.emplace_back(component_index(setting.substr(0, dot)), setting.substr(dot + 1));
+    }
+    check_open_inputs();
+}
+
+std::size_t System::component_index(const std::string& name) const {
+    for (std::size_t i = 0; i < components_.size(); ++i)
+        if (components_[i].name == name) return i;
+    throw CosimError(description_.file.string() + ": no component named '" + name + "'");
+}
+
+std::filesystem::path System::resolve_source(const std::string& source, const SystemOptions& options) const {
+    std::filesystem::path p = source;
+    if (source.starts_with("file:")) p = source.substr(source.starts_with("file://") ? 7 : 5);
+    std::vector<std::filesystem::path> tried;
+    auto found = [&](const std::filesystem::path& candidate) {
+        tried.push_back(candidate);
+        return std::filesystem::is_regular_file(candidate);
+    };
+    if (p.is_absolute()) {
+        if (found(p)) return p;
+    } else {
+        if (auto beside = description_.file.parent_path() / p; found(beside)) return beside;
+        for (const auto& dir : options.fmu_dirs) {
+            if (found(dir / p)) return dir / p;
+            if (found(dir / p.filename())) return dir / p.filename();
+        }
+    }
+    std::string where;
+    for (const auto& t : tried) where += "\n  " + t.string();
+    throw CosimError(description_.file.string() + ": FMU '" + source + "' not found; looked at:" + where);
+}
+
+void System::load_components(const SystemOptions& options) {
+    std::size_t states = 0, indicators = 0;
+    for (const auto& cd : description_.components) {
+        for (const auto& other : components_)
+            if (other.name == cd.name) throw CosimError(description_.file.string() + ": two components named '" + cd.name + "'");
+        Component c;
+        c.name = cd.name;
+        c.fmu = std::make_unique<fmi_loader::Fmu>(resolve_source(cd.source, options));
+        const auto& md = c.fmu->description();
+        const bool want_cs = std::find(options.co_simulation.begin(), options.co_simulation.end(), cd.name) !=
+                             options.co_simulation.end();
+        if (want_cs || !md.model_exchange) {
+            if (!md.co_simulation) throw CosimError(cd.name + ": the FMU offers no Co-Simulation interface");
+            c.interface = Interface::co_simulation;
+        }
+        c.instance = std::make_unique<Fmi2Instance>(
+            *c.fmu, c.interface == Interface::model_exchange ? fmi_loader::FmuKind::model_exchange
+                                                             : fmi_loader::FmuKind::co_simulation,
+            cd.name);
+        if (c.interface == Interface::model_exchange) {
+            c.state_offset = states;
+            c.state_count = md.number_of_continuous_states();
+            c.indicator_offset = indicators;
+            c.indicator_count = md.number_of_event_indicators;
+            states += c.state_count;
+            indicators += c.indicator_count;
+        }
+        components_.push_back(std::move(c));
+    }
+}
+
+void System::check_connectors() {
+    for (std::size_t i = 0; i < components_.size(); ++i) {
+        const auto& md = components_[i].description();
+        for (const auto& k : description_.components[i].connectors) {
+            const auto* v = md.find_variable(k.name);
+            if (!v) throw CosimError(components_[i].name + ": connector '" + k.name + "' is not a variable of its FMU");
+            if (!kind_matches(k.kind, v->causality))
+                throw CosimError(components_[i].name + "." + k.name + ": declared " + kind_name(k.kind) + " in the .ssd but " +
+                                 std::string(fmi_loader::to_string(v->causality)) + " in the FMU");
+            if (!k.type.empty() && k.type != fmi_loader::to_string(v->type) &&
+                !(k.type == "Integer" && v->type == VariableType::enumeration))
+                throw CosimError(components_[i].name + "." + k.name + ": declared " + k.type + " in the .ssd but " +
+                                 std::string(fmi_loader::to_string(v->type)) + " in the FMU");
+            if (!k.unit.empty() && !v->unit.empty() && k.unit != v->unit)
+                throw CosimError(components_[i].name + "." + k.name + ": unit " + k.unit + " in the .ssd but " + v->unit +
+                                 " in the FMU");
+        }
+    }
+}
+
+void System::connect() {
+    auto endpoint = [&](const std::string& comp, const std::string& conn) {
+        const std::size_t i = component_index(comp);
+        const auto& declared = description_.components[i].connectors;
+        if (!declared.empty() &&
+            std::none_of(declared.begin(), declared.end(), [&](const ConnectorDescription& d) { return d.name == conn; }))
+            throw CosimError(description_.file.string() + ": component '" + comp + "' declares no connector '" + conn + "'");
+        const auto* v = components_[i].description().find_variable(conn);
+        if (!v) throw CosimError(description_.file.string() + ": '" + comp + "' has no variable '" + conn + "'");
+        return std::pair{i, v};
+    };
+    for (const auto& cd : description_.connections) {
+        const auto [from, source] = endpoint(cd.start_element, cd.start_connector);
+        const auto [to, target] = endpoint(cd.end_element, cd.end_connector);
+        const std::string label = cd.start_element + "." + cd.start_connector + " -> " + cd.end_element + "." + cd.end_connector;
+        if (source->causality != Causality::output && source->causality != Causality::calculated_parameter)
+            throw CosimError(label + ": the start of a connection must be an output");
+        if (target->causality != Causality::input)
+            throw CosimError(label + ": the end of a connection must be an input");
+        if (!same_type(source->type, target->type))
+            throw CosimError(label + ": type mismatch (" + std::string(fmi_loader::to_string(source->type)) + " to " +
+                             std::string(fmi_loader::to_string(target->type)) + ")");
+        if (!source->unit.empty() && !target->unit.empty() && source->unit != target->unit)
+            throw CosimError(label + ": unit mismatch (" + source->unit + " to " + target->unit + ")");
+        for (const auto& existing : connections_)
+            if (existing.to == to && existing.target == target)
+                throw CosimError(label + ": the input already has a source (" + components_[existing.from].name + "." +
+                                 existing.source->name + ")");
+        connections_.push_back({from, to, source, target});
+    }
+}
+
+// Connection b must come after connection a when a feeds an input of a Model Exchange component
+// whose output, the start of b, depends on that input directly (ModelStructure/Outputs; no list
+// means "depends on every input"). A cycle of such edges is an algebraic loop, refused here.
+void System::order_connections() {
+    const std::size_t n = connections_.size();
+    auto feeds_through = [&](const Connection& a, const Connection& b) {
+        if (a.to != b.from || components_[a.to].interface != Interface::model_exchange) return false;
+        const auto& md = components_[a.to].description();
+        const std::size_t out_index = index_in(md, b.source) + 1;
+        const std::size_t in_index = index_in(md, a.target) + 1;
+        for (const auto& u : md.model_structure.outputs) {
+            if (u.index != out_index) continue;
+            if (!u.dependencies) return true;
+            return std::find(u.dependencies->begin(), u.dependencies->end(), in_index) != u.dependencies->end();
+        }
+        return b.source->causality == Causality::output;  // an output missing from ModelStructure: assume the worst
+    };
+    std::vector<std::vector<std::size_t>> after(n);
+    std::vector<std::size_t> indegree(n, 0);
+    for (std::size_t a = 0; a < n; ++a)
+        for (std::size_t b = 0; b < n; ++b)
+            if (feeds_through(connections_[a], connections_[b])) {
+                after[a].push_back(b);
+                ++indegree[b];
+            }
+    std::vector<std::size_t> order, ready;
+    for (std::size_t i = 0; i < n; ++i)
+        if (indegree[i] == 0) ready.push_back(i);
+    while (!ready.empty()) {
+        const std::size_t i = ready.front();
+        ready.erase(ready.begin());
+        order.push_back(i);
+        for (auto j : after[i])
+            if (--indegree[j] == 0) ready.push_back(j);
+    }
+    if (order.size() != n) {
+        std::string loop;
+        for (std::size_t i = 0; i < n; ++i)
+            if (indegree[i] > 0)
+                loop += "\n  " + components_[connections_[i].from].name + "." + connections_[i].source->name + " -> " +
+                        components_[connections_[i].to].name + "." + connections_[i].target->name;
+        throw CosimError(description_.file.string() + ": algebraic loop through direct feedthrough:" + loop);
+    }
+    std::vector<Connection> sorted;
+    for (auto i : order) sorted.push_back(connections_[i]);
+    connections_ = std::move(sorted);
+}
+
+void System::check_open_inputs() const {
+    for (std::size_t i = 0; i < components_.size(); ++i) {
+        for (const auto& v : components_[i].description().model_variables) {
+            if (v.causality != Causality::input || v.start) continue;
+            const bool connected = std::any_of(connections_.begin(), connections_.end(),
+                                               [&](const Connection& c) { return c.to == i && c.target == &v; });
+            const bool set = std::any_of(settings_.begin(), settings_.end(), [&](const auto& s) {
+                return s.first == i && s.second.substr(0, s.second.find('=')) == v.name;
+            });
+            if (!connected && !set)
+                throw CosimError(components_[i].name + "." + v.name + ": input is not connected and has no start value");
+        }
+    }
+}
+
+bool System::transfer(std::size_t index) {
+    const Connection& c = connections_[index];
+    auto& from = *components_[c.from].instance;
+    auto& to = *components_[c.to].instance;
+    const auto sv = c.source->value_reference, tv = c.target->value_reference;
+    std::string value;
+    switch (c.source->type) {
+        case VariableType::real: {
+            const double x = from.get_real(sv);
+            to.set_real(tv, x);
+            value.assign(reinterpret_cast<const char*>(&x), sizeof x);  // bit pattern: exact comparison
+            break;
+        }
+        case VariableType::integer:
+        case VariableType::enumeration: {
+            const auto x = from.get_integer(sv);
+            to.set_integer(tv, x);
+            value = std::to_string(x);
+            break;
+        }
+        case VariableType::boolean: {
+            const bool x = from.get_boolean(sv);
+            to.set_boolean(tv, x);
+            value = x ? "1" : "0";
+            break;
+        }
+        case VariableType::string: {
+            value = from.get_string(sv);
+            to.set_string(tv, value);
+            break;
+        }
+    }
+    if (last_values_.size() != connections_.size()) last_values_.resize(connections_.size());
+    const bool changed = last_values_[index] != value;
+    last_values_[index] = std::move(value);
+    return changed;
+}
+
+bool System::propagate(bool integrating, bool with_cs_sources) {
+    bool changed = false;
+    for (std::size_t i = 0; i < connections_.size(); ++i) {
+        const auto& c = connections_[i];
+        if (!with_cs_sources && components_[c.from].interface == Interface::co_simulation) continue;
+        if (integrating) {
+            if (components_[c.from].interface != Interface::model_exchange) continue;
+            if (components_[c.to].interface != Interface::model_exchange) continue;
+            if (c.target->type != VariableType::real || c.target->variability != fmi_loader::Variability::continuous)
+                continue;
+        }
+        changed = transfer(i) || changed;
+    }
+    return changed;
+}
+
+void System::propagate_into(Interface target_kind) {
+    for (std::size_t i = 0; i < connections_.size(); ++i)
+        if (components_[connections_[i].to].interface == target_kind) transfer(i);
+}
+
+void System::initialize(double start_time, std::optional<double> stop_time) {
+    for (std::size_t i = 0; i < components_.size(); ++i) {
+        auto& c = components_[i];
+        c.instance->setup_experiment(start_time, stop_time, tolerance_);
+        for (const auto& p : description_.components[i].parameters) c.instance->set_from_text(p.name, p.value);
+        for (const auto& [index, setting] : settings_) {
+            if (index != i) continue;
+            const auto eq = setting.find('=');
+            c.instance->set_from_text(setting.substr(0, eq), setting.substr(eq + 1));
+        }
+    }
+    for (auto& c : components_) c.instance->enter_initialization_mode();
+    propagate(false);  // in connection order: each input sees its source's initial value
+    for (auto& c : components_) c.instance->exit_initialization_mode();
+}
+
+}  // namespace cosim

@@ -1,0 +1,156 @@
+#include "system_description.hpp"
+
+#include <libxml/parser.h>
+#include <libxml/tree.h>
+
+#include <cstring>
+#include <memory>
+
+#include "cosim_error.hpp"
+#include "value_text.hpp"
+
+namespace cosim {
+
+namespace {
+
+struct DocDeleter {
+    void operator()(xmlDoc* d) const { xmlFreeDoc(d); }
+};
+using Doc = std::unique_ptr<xmlDoc, DocDeleter>;
+
+// No network, no DTD loading, no entity substitution: a system file cannot reach outside itself.
+Doc parse_file(const std::filesystem::path& path) {
+    Doc doc(xmlReadFile(path.c_str(), nullptr, XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING));
+    if (!doc) {
+        const xmlError* e = xmlGetLastError();
+        throw CosimError(path.string() + ": not well-formed XML" +
+                         (e && e->message ? std::string(" (line ") + std::to_string(e->line) + ": " + e->message + ")" : ""));
+    }
+    return doc;
+}
+
+bool is(const xmlNode* n, const char* local) {
+    return n && n->type == XML_ELEMENT_NODE && std::strcmp(reinterpret_cast<const char*>(n->name), local) == 0;
+}
+
+std::optional<std::string> attribute(const xmlNode* n, const char* name) {
+    xmlChar* v = xmlGetProp(n, BAD_CAST name);
+    if (!v) return std::nullopt;
+    std::string s(reinterpret_cast<const char*>(v));
+    xmlFree(v);
+    return s;
+}
+
+std::string required(const xmlNode* n, const char* name, const std::filesystem::path& file) {
+    auto v = attribute(n, name);
+    if (!v) throw CosimError(file.string() + ":" + std::to_string(n->line) + ": <" +
+                             reinterpret_cast<const char*>(n->name) + "> lacks the attribute '" + name + "'");
+    return *v;
+}
+
+template <class F>
+void for_children(const xmlNode* n, const char* local, F&& f) {
+    for (const xmlNode* c = n ? n->children : nullptr; c; c = c->next)
+        if (is(c, local)) f(c);
+}
+
+const xmlNode* first_child(const xmlNode* n, const char* local) {
+    for (const xmlNode* c = n ? n->children : nullptr; c; c = c->next)
+        if (is(c, local)) return c;
+    return nullptr;
+}
+
+ConnectorKind parse_kind(const std::string& kind, const std::filesystem::path& file, int line) {
+    if (kind == "input") return ConnectorKind::input;
+    if (kind == "output") return ConnectorKind::output;
+    if (kind == "parameter") return ConnectorKind::parameter;
+    if (kind == "calculatedParameter") return ConnectorKind::calculated_parameter;
+    if (kind == "inout") return ConnectorKind::inout;
+    throw CosimError(file.string() + ":" + std::to_string(line) + ": unknown connector kind '" + kind + "'");
+}
+
+// The type child of a connector or parameter: <ssc:Real unit="V"/>, <ssv:Integer value="3"/>, ...
+const xmlNode* type_child(const xmlNode* n) {
+    for (const char* t : {"Real", "Integer", "Boolean", "String", "Enumeration", "Binary"})
+        if (const xmlNode* c = first_child(n, t)) return c;
+    return nullptr;
+}
+
+void read_parameter_set(const xmlNode* set, const std::filesystem::path& file, std::vector<ParameterValue>& out) {
+    for_children(first_child(set, "Parameters"), "Parameter", [&](const xmlNode* p) {
+        const xmlNode* t = type_child(p);
+        if (!t) throw CosimError(file.string() + ":" + std::to_string(p->line) + ": parameter without a typed value");
+        out.push_back({required(p, "name", file), reinterpret_cast<const char*>(t->name), required(t, "value", file)});
+    });
+}
+
+void read_bindings(const xmlNode* component, const std::filesystem::path& file, std::vector<ParameterValue>& out) {
+    for_children(first_child(component, "ParameterBindings"), "ParameterBinding", [&](const xmlNode* binding) {
+        if (auto prefix = attribute(binding, "prefix"); prefix && !prefix->empty())
+            throw CosimError(file.string() + ":" + std::to_string(binding->line) + ": parameter prefixes are not supported");
+        if (const xmlNode* inline_values = first_child(binding, "ParameterValues")) {
+            for_children(inline_values, "ParameterSet", [&](const xmlNode* set) { read_parameter_set(set, file, out); });
+        } else if (auto source = attribute(binding, "source")) {
+            const auto ssv = file.parent_path() / *source;
+            const Doc doc = parse_file(ssv);
+            const xmlNode* root = xmlDocGetRootElement(doc.get());
+            if (!is(root, "ParameterSet")) throw CosimError(ssv.string() + ": the root element is not ssv:ParameterSet");
+            read_parameter_set(root, ssv, out);
+        }
+    });
+}
+
+}  // namespace
+
+SystemDescription read_system_description(const std::filesystem::path& ssd) {
+    if (!std::filesystem::exists(ssd)) throw CosimError(ssd.string() + ": no such file");
+    const Doc doc = parse_file(ssd);
+    const xmlNode* root = xmlDocGetRootElement(doc.get());
+    if (!is(root, "SystemStructureDescription"))
+        throw CosimError(ssd.string() + ": the root element is not ssd:SystemStructureDescription");
+    const xmlNode* system = first_child(root, "System");
+    if (!system) throw CosimError(ssd.string() + ": no <ssd:System>");
+
+    SystemDescription out;
+    out.file = ssd;
+    out.name = required(system, "name", ssd);
+    for (const xmlNode* e = first_child(system, "Elements") ? first_child(system, "Elements")->children : nullptr; e; e = e->next) {
+        if (e->type != XML_ELEMENT_NODE) continue;
+        if (!is(e, "Component"))
+            throw CosimError(ssd.string() + ":" + std::to_string(e->line) + ": <" + reinterpret_cast<const char*>(e->name) +
+                             "> elements are not supported (only flat systems of components)");
+        ComponentDescription c;
+        c.name = required(e, "name", ssd);
+        c.source = required(e, "source", ssd);
+        for_children(first_child(e, "Connectors"), "Connector", [&](const xmlNode* k) {
+            ConnectorDescription conn;
+            conn.name = required(k, "name", ssd);
+            conn.kind = parse_kind(required(k, "kind", ssd), ssd, k->line);
+            if (const xmlNode* t = type_child(k)) {
+                conn.type = reinterpret_cast<const char*>(t->name);
+                conn.unit = attribute(t, "unit").value_or("");
+            }
+            c.connectors.push_back(std::move(conn));
+        });
+        read_bindings(e, ssd, c.parameters);
+        out.components.push_back(std::move(c));
+    }
+    for_children(first_child(system, "Connections"), "Connection", [&](const xmlNode* k) {
+        ConnectionDescription conn;
+        conn.start_element = attribute(k, "startElement").value_or("");
+        conn.start_connector = required(k, "startConnector", ssd);
+        conn.end_element = attribute(k, "endElement").value_or("");
+        conn.end_connector = required(k, "endConnector", ssd);
+        if (conn.start_element.empty() || conn.end_element.empty())
+            throw CosimError(ssd.string() + ":" + std::to_string(k->line) +
+                             ": connections to the system's own connectors are not supported");
+        out.connections.push_back(std::move(conn));
+    });
+    if (const xmlNode* ex = first_child(root, "DefaultExperiment")) {
+        if (auto s = attribute(ex, "startTime")) out.start_time = parse_real(*s, ssd.string() + ": startTime");
+        if (auto s = attribute(ex, "stopTime")) out.stop_time = parse_real(*s, ssd.string() + ": stopTime");
+    }
+    return out;
+}
+
+}  // namespace cosim
