@@ -62,6 +62,12 @@ TEST(SsrCorePlant, FaceIrradianceIsDirectTimesCosinePlusAlbedo) {
     // Hand: +x sees cos β = 0.6, −z sees 0.8, the rest 0; −y gets 50 W/m² of albedo.
     const double expected[] = {600.0, 0.0, 0.0, 50.0, 0.0, 800.0};
     for (int k = 0; k < 6; ++k) EXPECT_NEAR(g[k], expected[k], 1e-12) << k;
+    // No sun direction (zero vector): no direct light, albedo still counts.
+    Inputs dark = sun_along(0, 0, 0, 1367.0);
+    dark.albedo_face = {10, 0, 0, 0, 0, 0};
+    const auto gd = face_irradiance(m, dark);
+    EXPECT_EQ(gd[0], 10.0);
+    for (int k = 1; k < 6; ++k) EXPECT_EQ(gd[k], 0.0);
     // A non-unit sun vector is normalized.
     const auto g2 = face_irradiance(m, sun_along(3.0, 0.0, -4.0, 1000.0));
     EXPECT_NEAR(g2[0], 600.0, 1e-12);

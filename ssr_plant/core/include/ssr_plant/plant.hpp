@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 
 #include "ssr_plant/parameters.hpp"
 #include "ssr_plant/pv_panel.hpp"
@@ -82,6 +83,11 @@ struct Model {
     DiodeModel diode;
     double pwm_period = 0.0;  // s
 };
+
+// The FMU runtime saves and restores a block's state as bytes.
+static_assert(std::is_trivially_copyable_v<Parameters> && std::is_trivially_copyable_v<Model> &&
+              std::is_trivially_copyable_v<DiscreteState> && std::is_trivially_copyable_v<Inputs> &&
+              std::is_trivially_copyable_v<Outputs>);
 
 // Validates the parameters and fits the panel circuit. Throws ParameterError with a clear message.
 Model make_model(const Parameters& p);
