@@ -1,13 +1,16 @@
-# add_fmu(<name> SOURCES <files...> [LIBRARIES <targets...>])
+# add_fmu(<name> SOURCES <files...> [LIBRARIES <targets...>] [OUTPUT_DIR <dir>])
 #
 # <name> is the model identifier, the folder, the shared library and the .fmu (one name everywhere).
 # Makes:
 #   <name>_model     static library of the block's sources (what its unit tests link)
 #   <name>           the FMU binary <name>.so: the block plus the FMI runtime, only fmi2* exported
 #   <name>_describe  the build-time writer of modelDescription.xml and documentation/index.html
-#   <name>_fmu       ${PVATT_FMU_DIR}/<name>.fmu, built by default
+#   <name>_fmu       ${PVATT_FMU_DIR}/<name>.fmu (or OUTPUT_DIR, for test FMUs), built by default
 function(add_fmu name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;LIBRARIES" ${ARGN})
+  cmake_parse_arguments(ARG "" "OUTPUT_DIR" "SOURCES;LIBRARIES" ${ARGN})
+  if(NOT ARG_OUTPUT_DIR)
+    set(ARG_OUTPUT_DIR ${PVATT_FMU_DIR})
+  endif()
 
   add_library(${name}_model STATIC ${ARG_SOURCES})
   target_link_libraries(${name}_model PUBLIC fmu_model ${ARG_LIBRARIES})
@@ -28,11 +31,11 @@ function(add_fmu name)
   target_link_libraries(${name}_describe PRIVATE ${name}_model fmu_description_writer)
 
   set(stage ${CMAKE_BINARY_DIR}/fmu_staging/${name})
-  set(fmu_file ${PVATT_FMU_DIR}/${name}.fmu)
+  set(fmu_file ${ARG_OUTPUT_DIR}/${name}.fmu)
   add_custom_command(
     OUTPUT ${fmu_file}
     COMMAND ${CMAKE_COMMAND} -E rm -rf ${stage}
-    COMMAND ${CMAKE_COMMAND} -E make_directory ${stage}/binaries/linux64 ${PVATT_FMU_DIR}
+    COMMAND ${CMAKE_COMMAND} -E make_directory ${stage}/binaries/linux64 ${ARG_OUTPUT_DIR}
     COMMAND $<TARGET_FILE:${name}_describe> ${stage}
     COMMAND ${CMAKE_COMMAND} -E copy $<TARGET_FILE:${name}> ${stage}/binaries/linux64/${name}.so
     COMMAND ${CMAKE_COMMAND} -E rm -f ${fmu_file}

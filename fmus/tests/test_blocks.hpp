@@ -46,8 +46,8 @@ public:
     }
     static fmu::ModelInfo describe() {
         fmu::ModelInfo info;
-        info.model_identifier = "ball";
-        info.model_name = "ball";
+        info.model_identifier = "test_ball";
+        info.model_name = "test_ball";
         info.description = "Test ball";
         return info;
     }

@@ -1,0 +1,2 @@
+#include "test_blocks.hpp"
+FMU_BLOCK(cosim_test::Gain)

@@ -1,0 +1,176 @@
+// The master on small systems with closed-form answers, and its refusals of broken systems.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "cosim_error.hpp"
+#include "execution.hpp"
+#include "system.hpp"
+#include "system_description.hpp"
+
+namespace cosim {
+namespace {
+
+const std::filesystem::path fmu_dir = COSIM_TEST_FMU_DIR;
+
+// Writes an .ssd with the given components ("name=fmu" pairs), connections and parameters.
+struct SsdFile {
+    std::filesystem::path path;
+    explicit SsdFile(const std::string& body) {
+        path = std::filesystem::temp_directory_path() /
+               ("cosim_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".ssd");
+        std::ofstream(path) << R"(<?xml version="1.0" encoding="UTF-8"?>
+<ssd:SystemStructureDescription xmlns:ssd="http://ssp-standard.org/SSP1/SystemStructureDescription"
+    xmlns:ssc="http://ssp-standard.org/SSP1/SystemStructureCommon"
+    xmlns:ssv="http://ssp-standard.org/SSP1/SystemStructureParameterValues" version="1.0" name="test">
+  <ssd:System name="test">)" << body
+                            << R"(  </ssd:System>
+  <ssd:DefaultExperiment startTime="0" stopTime="1"/>
+</ssd:SystemStructureDescription>
+)";
+    }
+    ~SsdFile() { std::filesystem::remove(path); }
+};
+
+std::string component(const std::string& name, const std::string& fmu, const std::string& params = "") {
+    std::string s = "<ssd:Component name=\"" + name + "\" source=\"" + fmu + ".fmu\">";
+    if (!params.empty())
+        s += "<ssd:ParameterBindings><ssd:ParameterBinding><ssd:ParameterValues><ssv:ParameterSet version=\"1.0\" "
+             "name=\"p\"><ssv:Parameters>" + params +
+             "</ssv:Parameters></ssv:ParameterSet></ssd:ParameterValues></ssd:ParameterBinding></ssd:ParameterBindings>";
+    return s + "</ssd:Component>\n";
+}
+std::string real(const std::string& name, double value) {
+    return "<ssv:Parameter name=\"" + name + "\"><ssv:Real value=\"" + std::to_string(value) + "\"/></ssv:Parameter>";
+}
+std::string connect(const std::string& a, const std::string& ac, const std::string& b, const std::string& bc) {
+    return "<ssd:Connection startElement=\"" + a + "\" startConnector=\"" + ac + "\" endElement=\"" + b +
+           "\" endConnector=\"" + bc + "\"/>\n";
+}
+std::string system_body(const std::string& elements, const std::string& connections = "") {
+    return "<ssd:Elements>" + elements + "</ssd:Elements><ssd:Connections>" + connections + "</ssd:Connections>";
+}
+
+// Records one variable at every sample.
+struct Probe : Observer {
+    std::size_t component;
+    fmi2ValueReference vr;
+    std::vector<std::pair<double, double>> samples;
+    Probe(System& s, const std::string& comp, const std::string& var)
+        : component(s.component_index(comp)),
+          vr(s.components()[component].description().find_variable(var)->value_reference) {}
+    void sample(double t, System& s) override { samples.emplace_back(t, s.components()[component].instance->get_real(vr)); }
+};
+
+SystemOptions options(std::vector<std::string> cs = {}) {
+    SystemOptions o;
+    o.fmu_dirs = {fmu_dir};
+    o.co_simulation = std::move(cs);
+    return o;
+}
+
+RunStatistics run(System& system, Observer& probe, double stop, double interval, double tol = 1e-9) {
+    ExecutionOptions ex;
+    ex.stop_time = stop;
+    ex.output_interval = interval;
+    ex.relative_tolerance = tol;
+    return Execution(system, ex).run({&probe});
+}
+
+TEST(CosimSystem, FeedbackLoopThroughAnIntegratorIsAnExponential) {
+    // integrator.x' = gain.y / tau = k x / tau: x(t) = exp(k t / tau) with k = -0.5, tau = 1.
+    SsdFile ssd(system_body(component("int", "test_integrator") + component("gain", "test_gain", real("k", -0.5)),
+                            connect("int", "y", "gain", "u") + connect("gain", "y", "int", "u")));
+    System system(read_system_description(ssd.path), options());
+    Probe probe(system, "int", "y");
+    const auto stats = run(system, probe, 2.0, 0.5);
+    ASSERT_EQ(probe.samples.size(), 5u);
+    for (const auto& [t, y] : probe.samples) EXPECT_NEAR(y, std::exp(-0.5 * t), 1e-6) << "t = " << t;
+    EXPECT_GT(stats.rhs_evaluations, 0);
+}
+
+TEST(CosimSystem, CoSimulationComponentFeedsModelExchangeWithAZeroOrderHold) {
+    // gain as Co-Simulation: y = k u = 2 (u's start is 1) from t = 0; the integrator ramps at 2/tau.
+    SsdFile ssd(system_body(component("gain", "test_gain") + component("int", "test_integrator", real("tau", 4.0)),
+                            connect("gain", "y", "int", "u")));
+    System system(read_system_description(ssd.path), options({"gain"}));
+    Probe probe(system, "int", "y");
+    const auto stats = run(system, probe, 1.0, 0.25);
+    EXPECT_NEAR(probe.samples.back().second, 1.0 + 2.0 / 4.0, 1e-9);
+    EXPECT_EQ(stats.communication_points, 5);  // at 0, 0.25, 0.5, 0.75 and the last at 1 (a zero-length step is not taken)
+}
+
+TEST(CosimSystem, StateEventsOfAComponentAreLocated) {
+    SsdFile ssd(system_body(component("ball", "test_ball")));
+    System system(read_system_description(ssd.path), options());
+    Probe probe(system, "ball", "y");
+    const auto stats = run(system, probe, 1.0, 0.1);
+    // The ball's first impact at sqrt(2/9.81) = 0.4515 s; 0.25 s ticks are time events (4 of them).
+    EXPECT_EQ(stats.state_events, 1);
+    EXPECT_EQ(stats.time_events, 4);
+    const auto& md = system.components()[0].description();
+    EXPECT_EQ(system.components()[0].instance->get_integer(md.find_variable("bounces")->value_reference), 1);
+}
+
+TEST(CosimSystem, SettingsOverrideTheSystemsParameters) {
+    SsdFile ssd(system_body(component("int", "test_integrator") + component("gain", "test_gain", real("k", -0.5)),
+                            connect("int", "y", "gain", "u") + connect("gain", "y", "int", "u")));
+    auto o = options();
+    o.settings = {"gain.k=1"};
+    System system(read_system_description(ssd.path), o);
+    Probe probe(system, "int", "y");
+    run(system, probe, 1.0, 0.5);
+    EXPECT_NEAR(probe.samples.back().second, std::exp(1.0), 1e-6);
+}
+
+void expect_refused(const std::string& body, const std::string& fragment) {
+    SsdFile ssd(body);
+    try {
+        System system(read_system_description(ssd.path), options());
+        FAIL() << "accepted a system that should be refused for: " << fragment;
+    } catch (const CosimError& e) {
+        EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+}
+
+TEST(CosimSystem, AlgebraicLoopIsRefused) {
+    expect_refused(system_body(component("a", "test_gain") + component("b", "test_gain"),
+                               connect("a", "y", "b", "u") + connect("b", "y", "a", "u")),
+                   "algebraic loop");
+}
+
+TEST(CosimSystem, BrokenConnectionsAreRefused) {
+    const auto two = component("a", "test_gain") + component("b", "test_integrator") + component("ball", "test_ball");
+    expect_refused(system_body(two, connect("a", "y", "nobody", "u")), "no component named 'nobody'");
+    expect_refused(system_body(two, connect("a", "nothing", "b", "u")), "has no variable 'nothing'");
+    expect_refused(system_body(two, connect("a", "u", "b", "u")), "must be an output");
+    expect_refused(system_body(two, connect("ball", "y", "b", "u")), "unit mismatch");
+    expect_refused(system_body(two, connect("ball", "bounces", "b", "u")), "type mismatch");
+    expect_refused(system_body(two, connect("a", "y", "b", "u") + connect("b", "y", "b", "u")), "already has a source");
+    expect_refused(system_body(component("a", "no_such_fmu")), "not found");
+}
+
+TEST(CosimSystem, MalformedFilesAreRefused) {
+    const auto path = std::filesystem::temp_directory_path() / "cosim_test_malformed.ssd";
+    std::ofstream(path) << "<ssd:SystemStructureDescription><unclosed>";
+    EXPECT_THROW(read_system_description(path), CosimError);
+    std::ofstream(path) << R"(<?xml version="1.0"?>
+<!DOCTYPE x [<!ENTITY e SYSTEM "file:///etc/passwd">]>
+<ssd:SystemStructureDescription xmlns:ssd="http://ssp-standard.org/SSP1/SystemStructureDescription" version="1.0" name="x">
+<ssd:System name="&e;"/></ssd:SystemStructureDescription>)";
+    // External entities are never loaded: the name stays unexpanded (empty), never the file's content.
+    try {
+        const auto d = read_system_description(path);
+        EXPECT_EQ(d.name.find("root"), std::string::npos);
+    } catch (const CosimError&) {
+    }
+    std::filesystem::remove(path);
+    EXPECT_THROW(read_system_description("/nonexistent/system.ssd"), CosimError);
+}
+
+}  // namespace
+}  // namespace cosim
