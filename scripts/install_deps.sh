@@ -12,6 +12,7 @@ packages=(
   libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libfftw3-dev        # spin-rate estimation from the acquired sun vector
+  gnuplot-nox         # cosim plot
   zip unzip
 )
 

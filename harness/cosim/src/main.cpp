@@ -7,6 +7,7 @@
 #include "cosim_error.hpp"
 #include "fmi_loader/loader_error.hpp"
 #include "info_command.hpp"
+#include "plot_command.hpp"
 #include "run_command.hpp"
 #include "simulate_command.hpp"
 
@@ -49,6 +50,11 @@ int main(int argc, char** argv) {
     run->add_flag("--realtime", run_options.realtime, "Pace simulated time to the wall clock");
     run->add_flag("--event-rows", run_options.event_rows, "Add CSV rows just before and after each event");
 
+    std::string plot_csv, plot_dir = "figures";
+    auto* plot = app.add_subcommand("plot", "Draw the standard figures of a results CSV as PNG files (gnuplot)");
+    plot->add_option("csv", plot_csv, "Results CSV written by cosim run")->required();
+    plot->add_option("--out-dir", plot_dir, "Folder for the PNG files")->capture_default_str();
+
     CLI11_PARSE(app, argc, argv);
     try {
         if (*info) cosim::print_info(info_path, std::cout);
@@ -57,6 +63,9 @@ int main(int argc, char** argv) {
             if (!run_csv.empty()) run_options.csv = run_csv;
             for (const auto& d : fmu_dirs) run_options.system.fmu_dirs.emplace_back(d);
             cosim::run_system(run_options, std::cout);
+        }
+        if (*plot) {
+            for (const auto& png : cosim::plot_results(plot_csv, plot_dir, std::cerr)) std::cout << png.string() << "\n";
         }
         if (*simulate) {
             sim.fmu = fmu_path;
