@@ -157,23 +157,28 @@ double panel_current(const DiodeModel& m, double iph, double v, double extra_ser
     // is strictly decreasing, so its root is unique. Bracket: g > 0 at x = min(0, V) − 1 (every term
     // is ≥ 0 and the last > 0); g < 0 beyond (I_ph + I_D + V/R_s) / (1/R_s + 1/R_sh) because
     // −I_D (e^{x/a} − 1) ≤ I_D.
-    auto g = [&](double x) { return iph - i0 * std::expm1(x / a) - x / rsh - (x - v) / rs; };
-    auto dg = [&](double x) { return -i0 * std::exp(x / a) / a - 1.0 / rsh - 1.0 / rs; };
     double lo = std::min(0.0, v) - 1.0;
     double hi = (iph + i0 + v / rs) / (1.0 / rs + 1.0 / rsh);
     hi += 1e-9 * (1.0 + std::abs(hi));
     // Start where the panel is near short circuit (the usual operating region on the bus).
     double x = std::clamp(v + rs * iph, lo, hi);
     for (int it = 0; it < 200; ++it) {
-        const double gx = g(x);
+        const double em1 = std::expm1(x / a);  // one exponential serves g and g'
+        const double gx = iph - i0 * em1 - x / rsh - (x - v) / rs;
+        const double dgx = -i0 * (em1 + 1.0) / a - 1.0 / rsh - 1.0 / rs;
         if (gx == 0.0) break;
         if (gx > 0) lo = x; else hi = x;
-        double next = x - gx / dg(x);
+        const double tol = 1e-14 * std::max(1.0, std::abs(x));
+        const double newton = x - gx / dgx;
+        // Converged: the Newton correction is below the tolerance (checked before the bracket test,
+        // which a vanishing step would fail by rounding onto the bound just moved to x).
+        if (std::abs(newton - x) <= tol) {
+            x = newton;
+            break;
+        }
         // Safeguard: a Newton step that leaves the bracket (or is not finite) becomes a bisection.
-        if (!std::isfinite(next) || next <= lo || next >= hi) next = 0.5 * (lo + hi);
-        const double step = std::abs(next - x);
-        x = next;
-        if (step <= 1e-14 * std::max(1.0, std::abs(x)) || hi - lo <= 1e-14 * std::max(1.0, std::abs(x))) break;
+        x = (std::isfinite(newton) && newton > lo && newton < hi) ? newton : 0.5 * (lo + hi);
+        if (hi - lo <= tol) break;
     }
     // Read the current off the less sensitive branch.
     const double diode_conductance = i0 * std::exp(x / a) / a + 1.0 / rsh;
