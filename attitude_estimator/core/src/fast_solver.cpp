@@ -50,51 +50,64 @@ Quaternion<T> solve_two(const detail::PreparedProblem<T>& p) noexcept {
   return quaternion_from_attitude_matrix(a);
 }
 
-// Determinant of the 3x3 matrix left from h by deleting row dr and column dc.
+// det(H) for H = K − λI with λ >= λmax, where −H is positive semidefinite: its LDLᵀ factorization (Cholesky
+// without square roots) needs no pivoting and is backward stable, so det H = det(−H) = Π d_j comes out to
+// rounding of K. A pivot that is not positive means −H is singular to rounding: the determinant is 0
+// there (for a semidefinite matrix a vanishing leading minor forces det = 0), which ends the Newton
+// iteration.
 template <class T>
-T minor3(const T (&h)[4][4], int dr, int dc) noexcept {
-  int r[3];
-  int c[3];
-  for (int i = 0, n = 0; i < 4; ++i) {
-    if (i != dr) r[n++] = i;
-  }
-  for (int i = 0, n = 0; i < 4; ++i) {
-    if (i != dc) c[n++] = i;
-  }
-  return h[r[0]][c[0]] * (h[r[1]][c[1]] * h[r[2]][c[2]] - h[r[1]][c[2]] * h[r[2]][c[1]]) -
-         h[r[0]][c[1]] * (h[r[1]][c[0]] * h[r[2]][c[2]] - h[r[1]][c[2]] * h[r[2]][c[0]]) +
-         h[r[0]][c[2]] * (h[r[1]][c[0]] * h[r[2]][c[1]] - h[r[1]][c[1]] * h[r[2]][c[0]]);
-}
-
-// det of a 4x4 matrix by Gaussian elimination with partial pivoting (backward stable).
-template <class T>
-T det4(const T (&in)[4][4]) noexcept {
-  T m[4][4];
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) m[r][c] = in[r][c];
+T det_ldlt(const T (&h)[4][4]) noexcept {
+  T l[4][4] = {};
+  T d[4] = {};
   T det = T(1);
-  for (int k = 0; k < 4; ++k) {
-    int p = k;
-    for (int i = k + 1; i < 4; ++i) {
-      if (std::fabs(m[i][k]) > std::fabs(m[p][k])) p = i;
-    }
-    if (m[p][k] == T(0)) return T(0);
-    if (p != k) {
-      for (int c = k; c < 4; ++c) {
-        const T t = m[k][c];
-        m[k][c] = m[p][c];
-        m[p][c] = t;
-      }
-      det = -det;
-    }
-    det *= m[k][k];
-    const T inv = T(1) / m[k][k];
-    for (int i = k + 1; i < 4; ++i) {
-      const T f = m[i][k] * inv;
-      for (int c = k + 1; c < 4; ++c) m[i][c] -= f * m[k][c];
+  for (int j = 0; j < 4; ++j) {
+    T dj = -h[j][j];
+    for (int k = 0; k < j; ++k) dj -= l[j][k] * l[j][k] * d[k];
+    if (!(dj > T(0))) return T(0);
+    d[j] = dj;
+    det *= dj;
+    const T inv = T(1) / dj;
+    for (int i = j + 1; i < 4; ++i) {
+      T v = -h[i][j];
+      for (int k = 0; k < j; ++k) v -= l[i][k] * l[j][k] * d[k];
+      l[i][j] = v * inv;
     }
   }
   return det;
+}
+
+// Adjugate of a 4x4 matrix from its 2x2 minors (Laplace expansion along the row pairs 0-1 and 2-3): all
+// sixteen cofactors for about a hundred multiplications, without branches.
+template <class T>
+void adjugate4(const T (&m)[4][4], T (&adj)[4][4]) noexcept {
+  const T s0 = m[0][0] * m[1][1] - m[1][0] * m[0][1];
+  const T s1 = m[0][0] * m[1][2] - m[1][0] * m[0][2];
+  const T s2 = m[0][0] * m[1][3] - m[1][0] * m[0][3];
+  const T s3 = m[0][1] * m[1][2] - m[1][1] * m[0][2];
+  const T s4 = m[0][1] * m[1][3] - m[1][1] * m[0][3];
+  const T s5 = m[0][2] * m[1][3] - m[1][2] * m[0][3];
+  const T c5 = m[2][2] * m[3][3] - m[3][2] * m[2][3];
+  const T c4 = m[2][1] * m[3][3] - m[3][1] * m[2][3];
+  const T c3 = m[2][1] * m[3][2] - m[3][1] * m[2][2];
+  const T c2 = m[2][0] * m[3][3] - m[3][0] * m[2][3];
+  const T c1 = m[2][0] * m[3][2] - m[3][0] * m[2][2];
+  const T c0 = m[2][0] * m[3][1] - m[3][0] * m[2][1];
+  adj[0][0] = m[1][1] * c5 - m[1][2] * c4 + m[1][3] * c3;
+  adj[0][1] = -m[0][1] * c5 + m[0][2] * c4 - m[0][3] * c3;
+  adj[0][2] = m[3][1] * s5 - m[3][2] * s4 + m[3][3] * s3;
+  adj[0][3] = -m[2][1] * s5 + m[2][2] * s4 - m[2][3] * s3;
+  adj[1][0] = -m[1][0] * c5 + m[1][2] * c2 - m[1][3] * c1;
+  adj[1][1] = m[0][0] * c5 - m[0][2] * c2 + m[0][3] * c1;
+  adj[1][2] = -m[3][0] * s5 + m[3][2] * s2 - m[3][3] * s1;
+  adj[1][3] = m[2][0] * s5 - m[2][2] * s2 + m[2][3] * s1;
+  adj[2][0] = m[1][0] * c4 - m[1][1] * c2 + m[1][3] * c0;
+  adj[2][1] = -m[0][0] * c4 + m[0][1] * c2 - m[0][3] * c0;
+  adj[2][2] = m[3][0] * s4 - m[3][1] * s2 + m[3][3] * s0;
+  adj[2][3] = -m[2][0] * s4 + m[2][1] * s2 - m[2][3] * s0;
+  adj[3][0] = -m[1][0] * c3 + m[1][1] * c1 - m[1][2] * c0;
+  adj[3][1] = m[0][0] * c3 - m[0][1] * c1 + m[0][2] * c0;
+  adj[3][2] = -m[3][0] * s3 + m[3][1] * s1 - m[3][2] * s0;
+  adj[3][3] = m[2][0] * s3 - m[2][1] * s1 + m[2][2] * s0;
 }
 
 // Three or more observations: QUEST's λmax, ESOQ's null vector (see fast_solver.hpp).
@@ -125,15 +138,15 @@ Quaternion<T> solve_many(const detail::PreparedProblem<T>& p) noexcept {
   // Newton from λ = Σ a_i = 1 >= λmax: to the right of the largest root f is increasing and convex, so the
   // iterates decrease monotonically to λmax; stop when the step is at rounding level. The cap only bounds
   // the time of a degenerate (double-root) problem, which converges linearly.
-  // f itself is evaluated as det(K − λI) by Gaussian elimination, not from the expanded quartic: the
-  // elimination is backward stable, so λmax comes out to rounding of K even when the next eigenvalue is
+  // f itself is evaluated as det(K − λI) by LDLᵀ, not from the expanded quartic: the factorization is
+  // backward stable, so λmax comes out to rounding of K even when the next eigenvalue is
   // close (nearly parallel observations), where the expanded coefficients lose digits as ε/gap and the
   // eigenvector as ε/gap² — fatal in float. The expanded derivative only sets the step size.
   constexpr int kMaxNewton = 32;
   const T tol = T(4) * std::numeric_limits<T>::epsilon();
   T lambda = T(1);
   for (int it = 0; it < kMaxNewton; ++it) {
-    const T f = det4({{s00 - sigma - lambda, s01, s02, z0},
+    const T f = det_ldlt({{s00 - sigma - lambda, s01, s02, z0},
                       {s01, s11 - sigma - lambda, s12, z1},
                       {s02, s12, s22 - sigma - lambda, z2},
                       {z0, z1, z2, sigma - lambda}});
@@ -145,25 +158,19 @@ Quaternion<T> solve_many(const detail::PreparedProblem<T>& p) noexcept {
   }
 
   // H = K − λmax I. adj(H) = Π_{j>1}(λj − λmax) q qᵀ, so its columns are all multiples of q; take the
-  // one with the largest diagonal element (|q_i| largest, >= ½), computed from 3x3 minors.
+  // one with the largest diagonal element (|q_i| largest, >= ½).
   const T h[4][4] = {{s00 - sigma - lambda, s01, s02, z0},
                      {s01, s11 - sigma - lambda, s12, z1},
                      {s02, s12, s22 - sigma - lambda, z2},
                      {z0, z1, z2, sigma - lambda}};
+  T adj[4][4];
+  adjugate4(h, adj);
   int best = 0;
-  T best_abs = T(-1);
-  for (int i = 0; i < 4; ++i) {
-    const T m = std::fabs(minor3(h, i, i));
-    if (m > best_abs) {
-      best_abs = m;
-      best = i;
-    }
+  for (int i = 1; i < 4; ++i) {
+    if (std::fabs(adj[i][i]) > std::fabs(adj[best][best])) best = i;
   }
-  T q[4];
-  for (int k = 0; k < 4; ++k) {
-    const T m = minor3(h, best, k);
-    q[k] = ((best + k) % 2 == 0) ? m : -m;  // cofactor (−1)^(i+k) M_ik
-  }
+  const T q[4] = {adj[0][best], adj[1][best], adj[2][best], adj[3][best]};
+
   // One step of the power method with K + I (eigenvalues λj + 1 in [0, 2], the largest for q): it cannot
   // grow any error component relative to q, and it all but removes the components along eigenvalues near
   // −1 — where the cofactors' rounding goes when the observations are nearly parallel (K's spectrum is then
