@@ -3,11 +3,15 @@
 //  - n == 2: closed form. The optimal A maps v1×v2 onto w1×w2 exactly; in that plane it is the rotation
 //    by the angle φ with (cos φ, sin φ) ∝ (a1 + a2 cos δ, a2 sin δ), δ = ∠(w1,w2) − ∠(v1,v2), which
 //    maximizes the gain a1 cos φ + a2 cos(φ − δ) (000 eq. 9). No trigonometric call.
-//  - n >= 3: λmax from Newton's method on the characteristic equation of K (Shuster & Oh 1981, QUEST),
-//    started at Σ a_i = 1 >= λmax where the quartic is increasing and convex, so the iteration descends
-//    monotonically onto λmax. The quaternion is then the null vector of H = K − λmax I taken, as in
-//    Mortari's ESOQ, from the column of adj(H) (∝ q qᵀ) with the largest diagonal element: that column
-//    has norm >= ½ of the largest, whatever the rotation angle, so 180° needs no sequential rotations.
+//  - n >= 3: λmax by Newton's method on det(K − λI) (the QUEST idea, Shuster & Oh 1981), started at
+//    Σ a_i = 1 >= λmax where the characteristic quartic is increasing and convex, so the iterates descend
+//    monotonically onto λmax. The determinant is evaluated by an LDLᵀ factorization of λI − K (positive
+//    semidefinite there, so no pivoting and backward stable), not from the expanded quartic, whose
+//    coefficients lose λmax to ε/gap — and the eigenvector to ε/gap² — when observations are nearly
+//    parallel. The quaternion is then the null vector of H = K − λmax I taken, as in Mortari's ESOQ, from
+//    the column of adj(H) = c q qᵀ with the largest diagonal element: that column has norm |c| max|q_i|
+//    >= |c|/2 whatever the rotation angle, so 180° needs no sequential rotations. One power step with K + I
+//    then damps rounding along the eigenvectors near λ = −1.
 #pragma once
 
 #include "attitude_estimator/wahba.hpp"
