@@ -27,14 +27,16 @@ ae::Vec3<T> random_unit(std::mt19937_64& g) {
   return {T(v[0] / s), T(v[1] / s), T(v[2] / s)};
 }
 
+// Rotation angles uniform in [0, max_angle]: π for arbitrary attitudes; a small max_angle keeps the
+// branch of Shepperd's method (which of w, x, y, z is largest) the same, as on a slowly turning satellite.
 template <class T>
-std::vector<ae::ObservationSet<T>> make_problems(std::size_t n) {
+std::vector<ae::ObservationSet<T>> make_problems(std::size_t n, double max_angle = M_PI) {
   std::mt19937_64 g(7);
   std::normal_distribution<double> noise(0.0, 1e-3);
   std::vector<ae::ObservationSet<T>> out(kProblems);
   for (auto& set : out) {
     const ae::Vec3<T> axis = random_unit<T>(g);
-    const T half = T(std::uniform_real_distribution<double>(0.0, M_PI)(g) / 2);
+    const T half = T(std::uniform_real_distribution<double>(0.0, max_angle)(g) / 2);
     const ae::Quaternion<T> q{axis[0] * std::sin(half), axis[1] * std::sin(half), axis[2] * std::sin(half),
                               std::cos(half)};
     const auto a = ae::attitude_matrix(q);
@@ -48,9 +50,9 @@ std::vector<ae::ObservationSet<T>> make_problems(std::size_t n) {
   return out;
 }
 
-template <class T, ae::SolverKind Kind, std::size_t N>
+template <class T, ae::SolverKind Kind, std::size_t N, bool Steady = false>
 void solver(benchmark::State& state) {
-  const auto problems = make_problems<T>(N);
+  const auto problems = make_problems<T>(N, Steady ? 1.0 : M_PI);
   std::size_t i = 0;
   for (auto _ : state) {
     const auto& p = problems[i++ % kProblems];
@@ -86,6 +88,8 @@ void whole_sample(benchmark::State& state) {
 
 BENCHMARK(solver<float, ae::SolverKind::fast, 2>)->Name("fast/2obs/float");
 BENCHMARK(solver<double, ae::SolverKind::fast, 2>)->Name("fast/2obs/double");
+BENCHMARK(solver<float, ae::SolverKind::fast, 2, true>)->Name("fast/2obs/float/angles<1rad");
+BENCHMARK(solver<double, ae::SolverKind::fast, 2, true>)->Name("fast/2obs/double/angles<1rad");
 BENCHMARK(solver<float, ae::SolverKind::fast, 6>)->Name("fast/6obs/float");
 BENCHMARK(solver<double, ae::SolverKind::fast, 6>)->Name("fast/6obs/double");
 BENCHMARK(solver<float, ae::SolverKind::qmethod, 2>)->Name("qmethod/2obs/float");

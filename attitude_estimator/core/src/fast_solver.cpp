@@ -47,7 +47,7 @@ Quaternion<T> solve_two(const detail::PreparedProblem<T>& p) noexcept {
       a[3 * r + col] = b1[r] * v1[col] + b2[r] * v1p[col] + w3[r] * v3[col];
     }
   }
-  return quaternion_from_attitude_matrix(a);
+  return shepperd_quaternion(a);
 }
 
 // det(H) for H = K − λI with λ >= λmax, where −H is positive semidefinite: its LDLᵀ factorization (Cholesky
@@ -191,8 +191,8 @@ WahbaSolution<T> solve_fast(const ObservationSet<T>& set, const WahbaOptions<T>&
   if (!p.solvable) return {};
   // The closed form needs both weights positive; prepare() only marks a two-observation problem solvable
   // when the single pair has positive weights and is not exactly parallel.
-  const Quaternion<T> q = p.n == 2 ? solve_two(p) : solve_many(p);
-  return detail::finish(p, q);
+  if (p.n == 2) return detail::finish(p, solve_two(p), /*unit=*/true);
+  return detail::finish(p, solve_many(p));
 }
 
 template WahbaSolution<float> solve_fast(const ObservationSet<float>&, const WahbaOptions<float>&) noexcept;

@@ -81,13 +81,15 @@ inline T wahba_loss(const PreparedProblem<T>& p, const Matrix3RowMajor<T>& a) no
   return T(0.5) * loss;
 }
 
-// From an (unnormalized, either-sign) quaternion to the full solution.
+// From an either-sign quaternion to the full solution. `unit` says q already has unit norm to rounding
+// (Shepperd's output from an orthonormal matrix), which saves a square root and a division on the
+// critical path of the two-observation solver; otherwise q is normalized here (000 eq. 12).
 template <class T>
-inline WahbaSolution<T> finish(const PreparedProblem<T>& p, Quaternion<T> q) noexcept {
+inline WahbaSolution<T> finish(const PreparedProblem<T>& p, Quaternion<T> q, bool unit = false) noexcept {
   WahbaSolution<T> s;
   const T n2 = q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w;
   if (!(n2 > T(0)) || !std::isfinite(n2)) return s;  // identity, invalid
-  const T k = (q.w < T(0) ? T(-1) : T(1)) / std::sqrt(n2);  // unit norm (000 eq. 12), w >= 0
+  const T k = (q.w < T(0) ? T(-1) : T(1)) / (unit ? T(1) : std::sqrt(n2));  // w >= 0
   q = {q.x * k, q.y * k, q.z * k, q.w * k};
   s.q = q;
   s.a = attitude_matrix(q);

@@ -20,11 +20,11 @@ constexpr Matrix3RowMajor<T> attitude_matrix(const Quaternion<T>& q) noexcept {
           two * (z * x + w * y),   two * (z * y - w * x), d + two * z * z};
 }
 
-// Unit quaternion of a rotation matrix in the same convention, by Shepperd's method: of the four
-// expressions 4w², 4x², 4y², 4z² the largest is used as the divisor, so the result never divides by a
-// small number (no trouble near 180°). Returned normalized with w >= 0.
+// Quaternion of a rotation matrix in the same convention, by Shepperd's method: of the four expressions
+// 4w², 4x², 4y², 4z² the largest is used as the divisor, so the result never divides by a small number
+// (no trouble near 180°). Of unit norm to rounding when A is orthonormal to rounding; either sign.
 template <class T>
-inline Quaternion<T> quaternion_from_attitude_matrix(const Matrix3RowMajor<T>& a) noexcept {
+inline Quaternion<T> shepperd_quaternion(const Matrix3RowMajor<T>& a) noexcept {
   // With the matrix above: A01 − A10 = 4wz, A12 − A21 = 4wx, A20 − A02 = 4wy,
   // A01 + A10 = 4xy, A02 + A20 = 4xz, A12 + A21 = 4yz, trace = 4w² − 1, A00 − A11 − A22 = 4x² − 1.
   const T tr = a[0] + a[4] + a[8];
@@ -46,6 +46,13 @@ inline Quaternion<T> quaternion_from_attitude_matrix(const Matrix3RowMajor<T>& a
     const T g = T(1) / f;
     q = {(a[2] + a[6]) * g, (a[5] + a[7]) * g, f * T(0.25), (a[1] - a[3]) * g};
   }
+  return q;
+}
+
+// The same, normalized exactly and with w >= 0.
+template <class T>
+inline Quaternion<T> quaternion_from_attitude_matrix(const Matrix3RowMajor<T>& a) noexcept {
+  const Quaternion<T> q = shepperd_quaternion(a);
   const T n = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
   const T s = (q.w < T(0) ? T(-1) : T(1)) / n;
   return {q.x * s, q.y * s, q.z * s, q.w * s};
