@@ -122,8 +122,9 @@ void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
   t.parameter("omega0", &D::omega0, "rad/s", "Rigid-body mode: initial angular velocity, body axes")
       .range(-100.0, 100.0);
   t.parameter("quaternion_norm_gain", &D::quaternion_norm_gain, "1/s",
-              "Rigid-body mode: gain k of the term k(1 - |q|^2) q added to dq/dt that pulls |q| back to 1 under "
-              "any integrator (zero on |q| = 1; 0 disables it)")
+              "Rigid-body mode: gain k of the term k(1 - |q|^2) q added to dq/dt that pulls |q| back to 1 at the "
+              "rate 2k under any integrator (zero on |q| = 1; 0 disables it). An explicit fixed-step host needs "
+              "steps below 1/k")
       .range(0.0, 1e3);
   // Orbit.
   t.parameter("orbit_altitude", &D::orbit_altitude, "m",
@@ -239,8 +240,8 @@ fmu::ModelInfo EnvironmentBlock::describe() {
       "<code>rigid_body</code> integrates the torque-free Euler equations J&omega;&#775; = &minus;&omega; &times; "
       "J&omega; and q&#775; = &frac12;&Omega;(&omega;)q + k(1 &minus; |q|&sup2;)q as the continuous states q[1..4], "
       "omega[1..3] (initial values q0, omega0). The second term (k = <code>quaternion_norm_gain</code>, default "
-      "1/s) is zero on |q| = 1 and pulls the norm back at the rate 2k under any integrator, so |q| does not "
-      "drift; outputs use q/|q|.</li>"
+      "0.01/s) is zero on |q| = 1 and pulls the norm back at the rate 2k under any integrator, so |q| does not "
+      "drift (an explicit fixed-step host needs steps below 1/k = 100 s); outputs use q/|q|.</li>"
       "<li><b>Orbit</b>: circular Kepler orbit from altitude, inclination, RAAN and argument of latitude at t = 0 "
       "(defaults 570 km, 64.9&deg;, seed 004).</li>"
       "<li><b>Sun</b> (<code>sun_model</code>): the Astronomical Almanac's low-precision formula "
