@@ -1,6 +1,8 @@
 #include "info_command.hpp"
 
+#include <algorithm>
 #include <iomanip>
+#include <string_view>
 
 #include "fmi_loader/fmu.hpp"
 
@@ -20,13 +22,27 @@ void print_info(const std::filesystem::path& fmu_path, std::ostream& out) {
             << ex.stop_time.value_or(0.0) << " s, step " << ex.step_size.value_or(0.0) << " s, tolerance "
             << ex.tolerance.value_or(0.0) << "\n";
     }
-    out << "\n" << std::left << std::setw(28) << "variable" << std::setw(20) << "causality" << std::setw(12)
-        << "type" << std::setw(8) << "unit" << std::setw(14) << "start" << "description\n";
+    // Columns as wide as their longest entry, so long names and start values never run together.
+    std::size_t w_name = 8, w_causality = 9, w_type = 4, w_unit = 4, w_start = 5;
     for (const auto& v : md.model_variables) {
         if (v.causality == fmi_loader::Causality::local) continue;
-        out << std::setw(28) << v.name << std::setw(20) << fmi_loader::to_string(v.causality) << std::setw(12)
-            << fmi_loader::to_string(v.type) << std::setw(8) << v.unit << std::setw(14) << v.start.value_or("")
-            << v.description << "\n";
+        w_name = std::max(w_name, v.name.size());
+        w_causality = std::max(w_causality, fmi_loader::to_string(v.causality).size());
+        w_unit = std::max(w_unit, v.unit.size());
+        w_start = std::max(w_start, v.start.value_or("").size());
+    }
+    auto row = [&](std::string_view name, std::string_view causality, std::string_view type, std::string_view unit,
+                   std::string_view start, std::string_view description) {
+        out << std::left << std::setw(static_cast<int>(w_name + 2)) << name << std::setw(static_cast<int>(w_causality + 2))
+            << causality << std::setw(static_cast<int>(w_type + 9)) << type << std::setw(static_cast<int>(w_unit + 2)) << unit
+            << std::setw(static_cast<int>(w_start + 2)) << start << description << "\n";
+    };
+    out << "\n";
+    row("variable", "causality", "type", "unit", "start", "description");
+    for (const auto& v : md.model_variables) {
+        if (v.causality == fmi_loader::Causality::local) continue;
+        row(v.name, fmi_loader::to_string(v.causality), fmi_loader::to_string(v.type), v.unit, v.start.value_or(""),
+            v.description);
     }
 }
 
