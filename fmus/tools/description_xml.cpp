@@ -54,9 +54,9 @@ private:
 
 std::string description_with_choices(const Variable& v) {
     if (v.allowed_values.empty()) return v.description;
-    std::string text = v.description + " One of:";
+    std::string text = v.description + " (one of:";
     for (std::size_t i = 0; i < v.allowed_values.size(); ++i) text += (i ? ", " : " ") + v.allowed_values[i];
-    return text + ".";
+    return text + ")";
 }
 
 void write_unit(Writer& w, const UnitDefinition& u) {
