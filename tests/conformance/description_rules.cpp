@@ -258,8 +258,9 @@ std::vector<std::string> description_violations(const ModelDescription& md) {
     }
     for (std::size_t d : listed_derivatives) {
         if (approx_or_calculated(vars[d - 1])) expected_initial.insert(d);
+        if (!vars[d - 1].derivative) continue;  // already reported above; no state to look at
         const std::size_t s = *vars[d - 1].derivative;
-        if (s <= n && approx_or_calculated(vars[s - 1])) expected_initial.insert(s);
+        if (s >= 1 && s <= n && approx_or_calculated(vars[s - 1])) expected_initial.insert(s);
     }
     std::set<std::size_t> listed_initial;
     for (const auto& u : md.model_structure.initial_unknowns) {
