@@ -21,6 +21,11 @@ bool reached(double t, double event_time) {
     return t >= event_time - 1e-12 * std::max(1.0, std::abs(event_time));
 }
 
+// The wall-clock time at which `elapsed` seconds of simulated time are due (--realtime).
+std::chrono::steady_clock::time_point wall_due(std::chrono::steady_clock::time_point wall_start, double elapsed) {
+    return wall_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(elapsed));
+}
+
 }  // namespace
 
 struct Execution::Impl {
@@ -158,6 +163,11 @@ struct Execution::Impl {
         if (!(stop > start) || !(h_out > 0.0) || !(h_comm > 0.0))
             throw CosimError("the stop time must exceed the start time, and the intervals be positive");
         const auto wall_start = std::chrono::steady_clock::now();
+        if (options.realtime) {
+            // Components that talk to hardware act at their instants' wall time, not only at output points.
+            for (auto& c : system.components())
+                c.instance->set_pacer([wall_start, start](double time) { std::this_thread::sleep_until(wall_due(wall_start, time - start)); });
+        }
 
         system.initialize(start, stop);
         t = start;
@@ -229,7 +239,7 @@ struct Execution::Impl {
             stats.rhs_evaluations = cvode->rhs_evaluations();
         }
         for (const auto& c : system.components()) {
-            ComponentStatistics cs_stats{c.name, c.rhs_evaluations, 0, 0};
+            ComponentStatistics cs_stats{c.name, c.rhs_evaluations, 0, 0, c.instance->link_statistics()};
             (c.interface == Interface::model_exchange ? cs_stats.events : cs_stats.steps) = c.events;
             stats.components.push_back(cs_stats);
         }
@@ -238,8 +248,7 @@ struct Execution::Impl {
 
     // Wait until the wall clock has caught up with simulated time; count the points already late.
     void pace(std::chrono::steady_clock::time_point wall_start, double start) {
-        const auto due = wall_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                          std::chrono::duration<double>(t - start));
+        const auto due = wall_due(wall_start, t - start);
         if (std::chrono::steady_clock::now() > due) {
             ++stats.late_realtime_points;
             return;

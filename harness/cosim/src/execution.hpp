@@ -30,6 +30,7 @@ struct ComponentStatistics {
     long rhs_evaluations = 0;
     long events = 0;
     long steps = 0;  // Co-Simulation steps
+    std::optional<LinkStatistics> link;  // hardware-bridged components
 };
 
 struct RunStatistics {

@@ -8,54 +8,55 @@
 #include <string_view>
 #include <vector>
 
+#include "component_instance.hpp"
 #include "fmi_loader/fmu.hpp"
 
 namespace cosim {
 
-class Fmi2Instance {
+class Fmi2Instance final : public ComponentInstance {
 public:
     Fmi2Instance(fmi_loader::Fmu& fmu, fmi_loader::FmuKind kind, std::string instance_name, bool logging_on = false);
-    ~Fmi2Instance();
+    ~Fmi2Instance() override;
     Fmi2Instance(const Fmi2Instance&) = delete;
     Fmi2Instance& operator=(const Fmi2Instance&) = delete;
 
     const fmi_loader::ModelDescription& description() const { return fmu_.description(); }
-    const std::string& name() const { return name_; }
+    const std::string& name() const override { return name_; }
 
-    void setup_experiment(double start_time, std::optional<double> stop_time, std::optional<double> tolerance);
-    void enter_initialization_mode();
-    void exit_initialization_mode();
-    void terminate();
+    void setup_experiment(double start_time, std::optional<double> stop_time, std::optional<double> tolerance) override;
+    void enter_initialization_mode() override;
+    void exit_initialization_mode() override;
+    void terminate() override;
 
     // Sets a variable from text ("0.5", "true", "qmethod"), parsed by the variable's declared type.
-    void set_from_text(std::string_view name, std::string_view text);
-    double get_real(fmi2ValueReference vr);
+    void set_from_text(std::string_view name, std::string_view text) override;
+    double get_real(fmi2ValueReference vr) override;
     // The value of any variable as text (for tables and CSV).
-    std::string get_as_text(const fmi_loader::ScalarVariable& v);
+    std::string get_as_text(const fmi_loader::ScalarVariable& v) override;
 
-    void do_step(double t, double h);
+    void do_step(double t, double h) override;
 
     // Typed access by value reference (the master's hot path: no name look-ups).
-    void set_real(fmi2ValueReference vr, double x);
-    fmi2Integer get_integer(fmi2ValueReference vr);
-    void set_integer(fmi2ValueReference vr, fmi2Integer x);
-    bool get_boolean(fmi2ValueReference vr);
-    void set_boolean(fmi2ValueReference vr, bool x);
-    std::string get_string(fmi2ValueReference vr);
-    void set_string(fmi2ValueReference vr, const std::string& x);
+    void set_real(fmi2ValueReference vr, double x) override;
+    fmi2Integer get_integer(fmi2ValueReference vr) override;
+    void set_integer(fmi2ValueReference vr, fmi2Integer x) override;
+    bool get_boolean(fmi2ValueReference vr) override;
+    void set_boolean(fmi2ValueReference vr, bool x) override;
+    std::string get_string(fmi2ValueReference vr) override;
+    void set_string(fmi2ValueReference vr, const std::string& x) override;
 
     // Model Exchange.
-    void set_time(double t);
-    void set_states(const double* x, std::size_t n);
-    void get_states(double* x, std::size_t n);
-    void get_derivatives(double* dx, std::size_t n);
-    void get_nominals(double* nominal, std::size_t n);
-    void get_event_indicators(double* z, std::size_t n);
-    void enter_event_mode();
-    fmi2EventInfo new_discrete_states();
-    void enter_continuous_time_mode();
+    void set_time(double t) override;
+    void set_states(const double* x, std::size_t n) override;
+    void get_states(double* x, std::size_t n) override;
+    void get_derivatives(double* dx, std::size_t n) override;
+    void get_nominals(double* nominal, std::size_t n) override;
+    void get_event_indicators(double* z, std::size_t n) override;
+    void enter_event_mode() override;
+    fmi2EventInfo new_discrete_states() override;
+    void enter_continuous_time_mode() override;
     // Returns true when the FMU asks for a step event.
-    bool completed_integrator_step(bool* terminate);
+    bool completed_integrator_step(bool* terminate) override;
 
     // Messages the FMU logged (status and text), newest last; the master prints warnings and errors.
     const std::vector<std::pair<fmi2Status, std::string>>& messages() const { return messages_; }

@@ -47,6 +47,9 @@ int main(int argc, char** argv) {
         ->default_val(std::vector<std::string>{PVATT_DEFAULT_FMU_DIR});
     run->add_option("--columns", run_options.columns, "component.variable columns of the CSV (default: every output)")
         ->delimiter(',');
+    run->add_option("--bridge-port", run_options.system.bridge_port,
+                    "UDP port of every hardware-bridged component (replaces the .ssd's)")
+        ->check(CLI::Range(0, 65535));
     run->add_flag("--realtime", run_options.realtime, "Pace simulated time to the wall clock");
     run->add_flag("--event-rows", run_options.event_rows, "Add CSV rows just before and after each event");
 

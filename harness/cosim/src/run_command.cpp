@@ -89,6 +89,14 @@ void print_statistics(const RunStatistics& s, std::ostream& out) {
         out << "  " << std::left << std::setw(20) << c.name << std::right;
         if (c.steps) out << " co-simulation steps " << c.steps << "\n";
         else out << " derivative evaluations " << c.rhs_evaluations << ", events " << c.events << "\n";
+        if (c.link) {
+            const auto& l = *c.link;
+            out << "    hardware link: " << l.exchanges << " frames, " << l.answered << " answered, " << l.misses
+                << " missed, " << l.late << " late, " << l.malformed << " malformed\n";
+            if (l.answered)
+                out << "    latency ms: min " << l.latency_min * 1e3 << ", median " << l.latency_median * 1e3 << ", p95 "
+                    << l.latency_p95 * 1e3 << ", max " << l.latency_max * 1e3 << "\n";
+        }
     }
 }
 

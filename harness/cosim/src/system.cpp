@@ -4,6 +4,8 @@
 #include <map>
 
 #include "cosim_error.hpp"
+#include "fmi2_instance.hpp"
+#include "hardware_bridge.hpp"
 
 namespace cosim {
 
@@ -101,6 +103,17 @@ void System::load_components(const SystemOptions& options) {
         const auto& md = c.fmu->description();
         const bool want_cs = std::find(options.co_simulation.begin(), options.co_simulation.end(), cd.name) !=
                              options.co_simulation.end();
+        if (cd.bridge) {
+            // The block runs elsewhere: its description stays, its binary is never loaded.
+            if (want_cs) throw CosimError(cd.name + ": a hardware-bridged component runs as Model Exchange only");
+            BridgeDescription bridge = *cd.bridge;
+            if (options.bridge_port && bridge.transport == "udp") bridge.port = *options.bridge_port;
+            c.instance = std::make_unique<HardwareBridge>(md, cd.name, bridge);
+            c.state_offset = states;
+            c.indicator_offset = indicators;
+            components_.push_back(std::move(c));
+            continue;
+        }
         if (want_cs || !md.model_exchange) {
             if (!md.co_simulation) throw CosimError(cd.name + ": the FMU offers no Co-Simulation interface");
             c.interface = Interface::co_simulation;

@@ -8,7 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "fmi2_instance.hpp"
+#include "component_instance.hpp"
+#include "fmi_loader/fmu.hpp"
 #include "system_description.hpp"
 
 namespace cosim {
@@ -17,8 +18,8 @@ enum class Interface { model_exchange, co_simulation };
 
 struct Component {
     std::string name;
-    std::unique_ptr<fmi_loader::Fmu> fmu;
-    std::unique_ptr<Fmi2Instance> instance;
+    std::unique_ptr<fmi_loader::Fmu> fmu;  // its modelDescription; its binary too unless bridged
+    std::unique_ptr<ComponentInstance> instance;  // Fmi2Instance, or HardwareBridge when bridged
     Interface interface = Interface::model_exchange;
     std::size_t state_offset = 0, state_count = 0;          // slice of the ME state vector
     std::size_t indicator_offset = 0, indicator_count = 0;  // slice of the root functions
@@ -39,6 +40,7 @@ struct SystemOptions {
     std::vector<std::string> settings;            // "component.variable=value", after the .ssd's parameters
     std::vector<std::string> co_simulation;       // components to run through their CS interface
     std::optional<double> tolerance;
+    std::optional<int> bridge_port;               // replaces the port of every UDP hardware bridge
 };
 
 class System {

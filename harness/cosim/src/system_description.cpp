@@ -100,6 +100,42 @@ void read_bindings(const xmlNode* component, const std::filesystem::path& file, 
     });
 }
 
+int int_attribute(const xmlNode* n, const char* name, int fallback, int lo, int hi, const std::filesystem::path& file) {
+    const auto text = attribute(n, name);
+    if (!text) return fallback;
+    const int x = parse_integer(*text, file.string() + ":" + std::to_string(n->line) + ": " + name);
+    if (x < lo || x > hi)
+        throw CosimError(file.string() + ":" + std::to_string(n->line) + ": " + name + " = " + *text + " is outside [" +
+                         std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return x;
+}
+
+std::optional<BridgeDescription> read_bridge(const xmlNode* component, const std::filesystem::path& file) {
+    std::optional<BridgeDescription> out;
+    for_children(first_child(component, "Annotations"), "Annotation", [&](const xmlNode* a) {
+        if (attribute(a, "type").value_or("") != hardware_bridge_annotation) return;
+        const xmlNode* b = first_child(a, "Bridge");
+        const std::string where = file.string() + ":" + std::to_string(a->line);
+        if (!b) throw CosimError(where + ": a hardware-bridge annotation needs a <Bridge> element");
+        BridgeDescription d;
+        d.transport = attribute(b, "transport").value_or(d.transport);
+        d.host = attribute(b, "host").value_or(d.host);
+        d.device = attribute(b, "device").value_or("");
+        d.policy = attribute(b, "policy").value_or(d.policy);
+        d.port = int_attribute(b, "port", d.port, 0, 65535, file);
+        d.baud = int_attribute(b, "baud", d.baud, 1, 4000000, file);
+        d.timeout_ms = int_attribute(b, "timeout_ms", d.timeout_ms, 1, 60000, file);
+        d.max_misses = int_attribute(b, "max_misses", d.max_misses, 1, 1000000, file);
+        if (d.transport != "udp" && d.transport != "serial")
+            throw CosimError(where + ": bridge transport '" + d.transport + "' is neither udp nor serial");
+        if (d.transport == "serial" && d.device.empty()) throw CosimError(where + ": a serial bridge needs device=\"...\"");
+        if (d.policy != "hold" && d.policy != "stop")
+            throw CosimError(where + ": bridge policy '" + d.policy + "' is neither hold nor stop");
+        out = d;
+    });
+    return out;
+}
+
 }  // namespace
 
 SystemDescription read_system_description(const std::filesystem::path& ssd) {
@@ -133,6 +169,7 @@ SystemDescription read_system_description(const std::filesystem::path& ssd) {
             c.connectors.push_back(std::move(conn));
         });
         read_bindings(e, ssd, c.parameters);
+        c.bridge = read_bridge(e, ssd);
         out.components.push_back(std::move(c));
     }
     for_children(first_child(system, "Connections"), "Connection", [&](const xmlNode* k) {

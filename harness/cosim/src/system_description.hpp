@@ -25,11 +25,27 @@ struct ParameterValue {
     std::string value;  // as written
 };
 
+// A component run on external hardware instead of its FMU (README of harness/bridge): the .ssd
+// marks it with <ssc:Annotation type="org.pvatt.hardware-bridge"><hw:Bridge .../></ssc:Annotation>.
+inline constexpr const char* hardware_bridge_annotation = "org.pvatt.hardware-bridge";
+
+struct BridgeDescription {
+    std::string transport = "udp";  // "udp" or "serial"
+    std::string host = "127.0.0.1";
+    int port = 50505;
+    std::string device;             // serial only
+    int baud = 115200;              // serial only
+    int timeout_ms = 200;           // how long to wait for each answer
+    int max_misses = 5;             // consecutive misses before policy "stop" gives up
+    std::string policy = "hold";    // "hold" (keep the last outputs) or "stop" (error)
+};
+
 struct ComponentDescription {
     std::string name;
     std::string source;  // as written in the .ssd
     std::vector<ConnectorDescription> connectors;
     std::vector<ParameterValue> parameters;
+    std::optional<BridgeDescription> bridge;
 };
 
 struct ConnectionDescription {

@@ -1,0 +1,53 @@
+// A board in software: one block (an fmu::Model) driven through fmu::ModelRunner and answering
+// request frames exactly as firmware on the DSP would: inputs from the frame (value-reference
+// order), the block advanced to the frame's time with its time event processed, outputs replied.
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "bridge/frame.hpp"
+#include "bridge/link.hpp"
+#include "fmu/model_runner.hpp"
+
+namespace bridge {
+
+class BoardEmulator {
+public:
+    // `settings` are "parameter=value" applied before the block initializes (the board's own
+    // configuration; the link carries no parameters).
+    explicit BoardEmulator(std::unique_ptr<fmu::Model> model, const std::vector<std::string>& settings = {});
+
+    std::size_t input_count() const { return inputs_.size(); }
+    std::size_t output_count() const { return outputs_.size(); }
+    // Throws FrameError for a request whose value count is not the block's input count, and
+    // fmu::Error when the block refuses its inputs.
+    Frame answer(const Frame& request);
+
+private:
+    void set_inputs(const std::vector<double>& values);
+
+    fmu::ModelRunner runner_;
+    std::vector<const fmu::Variable*> inputs_, outputs_;
+    bool initialized_ = false;
+};
+
+struct ServeOptions {
+    long drop_every = 0;           // leave every N-th request unanswered (0: none)
+    int delay_ms = 0;              // wait this long before each reply
+    long max_frames = 0;           // return after this many requests (0: no limit)
+    double idle_timeout_s = 0.0;   // return when no frame arrives for this long (0: never)
+    const std::atomic<bool>* stop = nullptr;  // return when it becomes true (checked every 50 ms)
+    std::ostream* log = nullptr;   // one line per rejected frame
+};
+
+struct ServeStatistics {
+    long requests = 0, replies = 0, dropped = 0, rejected = 0;
+};
+
+ServeStatistics serve(BoardEmulator& board, Link& link, const ServeOptions& options);
+
+}  // namespace bridge

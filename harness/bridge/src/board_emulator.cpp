@@ -1,0 +1,138 @@
+#include "bridge/board_emulator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <thread>
+
+#include "fmu/errors.hpp"
+#include "fmu/value_access.hpp"
+
+namespace bridge {
+
+namespace {
+
+std::vector<const fmu::Variable*> by_causality(const fmu::TableBase& table, fmu::Causality causality) {
+    std::vector<const fmu::Variable*> out;
+    for (const auto& v : table.variables())
+        if (v.causality == causality) out.push_back(&v);
+    std::sort(out.begin(), out.end(), [](auto* a, auto* b) { return a->value_reference < b->value_reference; });
+    return out;
+}
+
+// Every value on the wire is an f64: Integers travel exactly up to 2^53, Booleans as 0 or 1.
+void write_value(std::span<std::byte> data, const fmu::Variable& v, double x) {
+    switch (v.type) {
+        case fmu::ValueType::Real: fmu::write_real(data, v, x); break;
+        case fmu::ValueType::Integer: fmu::write_integer(data, v, static_cast<std::int32_t>(std::lround(x))); break;
+        case fmu::ValueType::Boolean: fmu::write_boolean(data, v, x != 0.0); break;
+        case fmu::ValueType::String: throw fmu::Error(v.name + ": String variables cannot cross the link");
+    }
+}
+
+double read_value(std::span<const std::byte> data, const fmu::Variable& v) {
+    switch (v.type) {
+        case fmu::ValueType::Real: return fmu::read_real(data, v);
+        case fmu::ValueType::Integer: return fmu::read_integer(data, v);
+        case fmu::ValueType::Boolean: return fmu::read_boolean(data, v) ? 1.0 : 0.0;
+        case fmu::ValueType::String: break;
+    }
+    throw fmu::Error(v.name + ": String variables cannot cross the link");
+}
+
+}  // namespace
+
+BoardEmulator::BoardEmulator(std::unique_ptr<fmu::Model> model, const std::vector<std::string>& settings)
+    : runner_(std::move(model)) {
+    inputs_ = by_causality(runner_.table(), fmu::Causality::input);
+    outputs_ = by_causality(runner_.table(), fmu::Causality::output);
+    if (inputs_.size() > max_values || outputs_.size() > max_values)
+        throw FrameError("the block has more inputs or outputs than a frame carries (" + std::to_string(max_values) + ")");
+    for (const auto& s : settings) {
+        const auto eq = s.find('=');
+        if (eq == std::string::npos) throw fmu::Error("--set expects name=value, got '" + s + "'");
+        const auto& v = runner_.table().by_name(s.substr(0, eq));
+        const std::string text = s.substr(eq + 1);
+        if (v.type == fmu::ValueType::String) {
+            if (text.size() > v.string_capacity) throw fmu::Error(v.name + ": value too long");
+            fmu::write_string(runner_.model().bytes(), v, text);
+        } else if (v.type == fmu::ValueType::Boolean) {
+            fmu::write_boolean(runner_.model().bytes(), v, text == "true" || text == "1");
+        } else {
+            std::size_t used = 0;
+            const double x = std::stod(text, &used);
+            if (used != text.size()) throw fmu::Error(v.name + ": '" + text + "' is not a number");
+            write_value(runner_.model().bytes(), v, x);
+        }
+    }
+}
+
+void BoardEmulator::set_inputs(const std::vector<double>& values) {
+    for (std::size_t i = 0; i < inputs_.size(); ++i) write_value(runner_.model().bytes(), *inputs_[i], values[i]);
+    runner_.mark_changed();
+}
+
+Frame BoardEmulator::answer(const Frame& request) {
+    if (request.type != FrameType::request) throw FrameError("expected a request frame, got a reply");
+    if (request.values.size() != inputs_.size())
+        throw FrameError("request carries " + std::to_string(request.values.size()) + " values, the block has " +
+                         std::to_string(inputs_.size()) + " inputs");
+    if (!initialized_) {
+        // As an FMU's initialization: the first frame's inputs are the initial inputs, its time
+        // the start time, and the block's event iteration at the start follows.
+        runner_.set_time(request.time);
+        runner_.set_initializing(true);
+        set_inputs(request.values);
+        runner_.model().validate();
+        runner_.ensure_evaluated();
+        runner_.set_initializing(false);
+        runner_.event_iteration();
+        initialized_ = true;
+    } else {
+        set_inputs(request.values);
+        runner_.set_time(request.time);
+        if (runner_.time_event_due()) runner_.event_iteration();
+    }
+    runner_.ensure_evaluated();
+    Frame reply;
+    reply.type = FrameType::reply;
+    reply.sequence = request.sequence;
+    reply.time = request.time;
+    reply.values.reserve(outputs_.size());
+    for (const auto* v : outputs_) reply.values.push_back(read_value(runner_.model().bytes(), *v));
+    return reply;
+}
+
+ServeStatistics serve(BoardEmulator& board, Link& link, const ServeOptions& options) {
+    ServeStatistics stats;
+    auto last_frame = Clock::now();
+    for (;;) {
+        if (options.stop && options.stop->load()) return stats;
+        if (options.max_frames > 0 && stats.requests >= options.max_frames) return stats;
+        if (options.idle_timeout_s > 0.0 &&
+            Clock::now() - last_frame > std::chrono::duration<double>(options.idle_timeout_s))
+            return stats;
+        const auto bytes = link.receive(Clock::now() + std::chrono::milliseconds(50));
+        if (!bytes) continue;
+        last_frame = Clock::now();
+        Frame reply;
+        try {
+            const Frame request = decode(*bytes);
+            ++stats.requests;
+            reply = board.answer(request);
+        } catch (const std::exception& e) {
+            ++stats.rejected;
+            if (options.log) *options.log << "board: rejected a frame: " << e.what() << "\n";
+            continue;
+        }
+        if (options.drop_every > 0 && stats.requests % options.drop_every == 0) {
+            ++stats.dropped;
+            continue;
+        }
+        if (options.delay_ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(options.delay_ms));
+        link.send(encode(reply));
+        ++stats.replies;
+    }
+}
+
+}  // namespace bridge

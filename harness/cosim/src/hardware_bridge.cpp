@@ -1,0 +1,243 @@
+#include "hardware_bridge.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <limits>
+
+#include "bridge/frame.hpp"
+#include "cosim_error.hpp"
+#include "value_text.hpp"
+
+namespace cosim {
+
+namespace {
+
+using fmi_loader::Causality;
+using fmi_loader::VariableType;
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+// The same tolerance as the execution's: an instant within rounding of the sample time is it.
+bool reached(double t, double event_time) { return t >= event_time - 1e-12 * std::max(1.0, std::abs(event_time)); }
+
+// Nearest-rank percentile of sorted values.
+double percentile(const std::vector<double>& sorted, double p) {
+    const auto rank = static_cast<std::size_t>(std::ceil(p * static_cast<double>(sorted.size())));
+    return sorted[std::clamp<std::size_t>(rank, 1, sorted.size()) - 1];
+}
+
+}  // namespace
+
+HardwareBridge::HardwareBridge(const fmi_loader::ModelDescription& description, std::string name,
+                               BridgeDescription settings)
+    : description_(description), name_(std::move(name)), settings_(std::move(settings)) {
+    std::vector<std::pair<fmi2ValueReference, std::size_t>> ins, outs;
+    for (const auto& v : description_.model_variables) {
+        Kind kind = Kind::real;
+        switch (v.type) {
+            case VariableType::real: kind = Kind::real; break;
+            case VariableType::integer:
+            case VariableType::enumeration: kind = Kind::integer; break;
+            case VariableType::boolean: kind = Kind::boolean; break;
+            case VariableType::string: kind = Kind::string; break;
+        }
+        if (kind == Kind::string) {
+            if (v.causality == Causality::input || v.causality == Causality::output)
+                throw CosimError(name_ + "." + v.name + ": String inputs and outputs cannot cross the hardware link");
+            slots_[{kind, v.value_reference}] = strings_.size();
+            strings_.push_back(v.start.value_or(""));
+            continue;
+        }
+        const std::size_t index = values_.size();
+        slots_[{kind, v.value_reference}] = index;
+        double start = 0.0;
+        if (kind == Kind::boolean) start = v.start_as_boolean().value_or(false) ? 1.0 : 0.0;
+        else start = v.start_as_real().value_or(0.0);
+        values_.push_back(start);
+        if (v.causality == Causality::input) ins.emplace_back(v.value_reference, index);
+        if (v.causality == Causality::output) outs.emplace_back(v.value_reference, index);
+        if (v.name == "sample_period") period_slot_ = index + 1;
+    }
+    // Frames carry inputs and outputs in value-reference order, as the block's own table numbers them.
+    std::sort(ins.begin(), ins.end());
+    std::sort(outs.begin(), outs.end());
+    for (const auto& [vr, i] : ins) inputs_.push_back(i);
+    for (const auto& [vr, i] : outs) outputs_.push_back(i);
+    if (!period_slot_)
+        throw CosimError(name_ + ": a hardware-bridged block needs a Real parameter 'sample_period' (its sampling instants)");
+    if (inputs_.size() > bridge::max_values || outputs_.size() > bridge::max_values)
+        throw CosimError(name_ + ": more inputs or outputs than one frame carries (" + std::to_string(bridge::max_values) + ")");
+}
+
+HardwareBridge::~HardwareBridge() = default;
+
+std::size_t HardwareBridge::slot(Kind kind, fmi2ValueReference vr) const {
+    const auto it = slots_.find({kind, vr});
+    if (it == slots_.end()) throw CosimError(name_ + ": no variable of that type with value reference " + std::to_string(vr));
+    return it->second;
+}
+
+void HardwareBridge::setup_experiment(double start_time, std::optional<double>, std::optional<double>) {
+    start_time_ = time_ = start_time;
+    next_sample_ = 0;
+    bridge::LinkSettings link;
+    link.transport = settings_.transport;
+    link.host = settings_.host;
+    link.port = static_cast<std::uint16_t>(settings_.port);
+    link.device = settings_.device;
+    link.baud = settings_.baud;
+    try {
+        link_ = bridge::open_link(link);
+    } catch (const bridge::LinkError& e) {
+        throw CosimError(name_ + ": cannot open the hardware link: " + e.what());
+    }
+}
+
+void HardwareBridge::exit_initialization_mode() {
+    period_ = values_[period_slot_ - 1];
+    if (!(period_ > 0.0) || !std::isfinite(period_))
+        throw CosimError(name_ + ": sample_period must be positive, got " + format_real(period_));
+}
+
+void HardwareBridge::terminate() { link_.reset(); }
+
+void HardwareBridge::set_from_text(std::string_view name, std::string_view text) {
+    const auto* v = description_.find_variable(name);
+    if (!v) throw CosimError(name_ + ": no variable named '" + std::string(name) + "'");
+    const std::string where = name_ + "." + std::string(name);
+    switch (v->type) {
+        case VariableType::real: set_real(v->value_reference, parse_real(text, where)); break;
+        case VariableType::integer:
+        case VariableType::enumeration: set_integer(v->value_reference, parse_integer(text, where)); break;
+        case VariableType::boolean: set_boolean(v->value_reference, parse_boolean(text, where)); break;
+        case VariableType::string: set_string(v->value_reference, std::string(text)); break;
+    }
+}
+
+std::string HardwareBridge::get_as_text(const fmi_loader::ScalarVariable& v) {
+    switch (v.type) {
+        case VariableType::real: return format_real(get_real(v.value_reference));
+        case VariableType::integer:
+        case VariableType::enumeration: return std::to_string(get_integer(v.value_reference));
+        case VariableType::boolean: return get_boolean(v.value_reference) ? "1" : "0";
+        case VariableType::string: return get_string(v.value_reference);
+    }
+    return {};
+}
+
+double HardwareBridge::get_real(fmi2ValueReference vr) { return values_[slot(Kind::real, vr)]; }
+void HardwareBridge::set_real(fmi2ValueReference vr, double x) { values_[slot(Kind::real, vr)] = x; }
+fmi2Integer HardwareBridge::get_integer(fmi2ValueReference vr) {
+    return static_cast<fmi2Integer>(std::lround(values_[slot(Kind::integer, vr)]));
+}
+void HardwareBridge::set_integer(fmi2ValueReference vr, fmi2Integer x) { values_[slot(Kind::integer, vr)] = x; }
+bool HardwareBridge::get_boolean(fmi2ValueReference vr) { return values_[slot(Kind::boolean, vr)] != 0.0; }
+void HardwareBridge::set_boolean(fmi2ValueReference vr, bool x) { values_[slot(Kind::boolean, vr)] = x ? 1.0 : 0.0; }
+std::string HardwareBridge::get_string(fmi2ValueReference vr) { return strings_[slot(Kind::string, vr)]; }
+void HardwareBridge::set_string(fmi2ValueReference vr, const std::string& x) { strings_[slot(Kind::string, vr)] = x; }
+
+void HardwareBridge::do_step(double, double) {
+    throw CosimError(name_ + ": a hardware bridge runs as a Model Exchange component only");
+}
+
+bool HardwareBridge::completed_integrator_step(bool* terminate) {
+    if (terminate) *terminate = false;
+    return false;
+}
+
+fmi2EventInfo HardwareBridge::new_discrete_states() {
+    // One exchange per sample instant, however many rounds the master's event iteration takes.
+    if (period_ > 0.0 && reached(time_, next_sample_time())) {
+        exchange();
+        while (reached(time_, next_sample_time())) ++next_sample_;
+    }
+    fmi2EventInfo info{};
+    info.newDiscreteStatesNeeded = fmi2False;
+    info.terminateSimulation = fmi2False;
+    info.nominalsOfContinuousStatesChanged = fmi2False;
+    info.valuesOfContinuousStatesChanged = fmi2False;
+    const double next = period_ > 0.0 ? next_sample_time() : infinity;
+    info.nextEventTimeDefined = fmi2True;
+    info.nextEventTime = next;
+    return info;
+}
+
+void HardwareBridge::exchange() {
+    if (pacer_) pacer_(time_);  // --realtime: the frame leaves at the sample instant's wall time
+    // Answers to frames already given up arrive late: take them off the link first.
+    while (auto stale = link_->receive(bridge::Clock::now())) {
+        try {
+            bridge::decode(*stale);
+            ++stats_.late;
+        } catch (const bridge::FrameError& e) {
+            ++stats_.malformed;
+            last_error_ = e.what();
+        }
+    }
+    bridge::Frame request;
+    request.type = bridge::FrameType::request;
+    request.sequence = ++sequence_;
+    request.time = time_;
+    for (const auto i : inputs_) request.values.push_back(values_[i]);
+    const auto sent = bridge::Clock::now();
+    const auto deadline = sent + std::chrono::milliseconds(settings_.timeout_ms);
+    link_->send(bridge::encode(request));
+    ++stats_.exchanges;
+    const long framing_before = link_->framing_errors();
+    while (auto bytes = link_->receive(deadline)) {
+        bridge::Frame reply;
+        try {
+            reply = bridge::decode(*bytes);
+        } catch (const bridge::FrameError& e) {
+            ++stats_.malformed;
+            last_error_ = e.what();
+            std::cerr << name_ << ": rejected a frame from the board: " << e.what() << "\n";
+            continue;
+        }
+        if (reply.type != bridge::FrameType::reply || reply.sequence != sequence_) {
+            ++stats_.late;  // an answer to an earlier frame (or an echo): not this one's
+            continue;
+        }
+        if (reply.values.size() != outputs_.size()) {
+            ++stats_.malformed;
+            last_error_ = "reply carries " + std::to_string(reply.values.size()) + " values, the block has " +
+                          std::to_string(outputs_.size()) + " outputs";
+            std::cerr << name_ << ": " << last_error_ << "\n";
+            continue;
+        }
+        latencies_.push_back(std::chrono::duration<double>(bridge::Clock::now() - sent).count());
+        for (std::size_t i = 0; i < outputs_.size(); ++i) values_[outputs_[i]] = reply.values[i];
+        ++stats_.answered;
+        consecutive_misses_ = 0;
+        return;
+    }
+    if (link_->framing_errors() > framing_before) {
+        stats_.malformed += link_->framing_errors() - framing_before;
+        last_error_ = link_->last_framing_error();
+    }
+    ++stats_.misses;
+    ++consecutive_misses_;
+    const std::string what = "frame " + std::to_string(sequence_) + " at t = " + format_real(time_) +
+                             " s got no valid answer within " + std::to_string(settings_.timeout_ms) + " ms" +
+                             (last_error_.empty() ? "" : " (last error: " + last_error_ + ")");
+    if (settings_.policy == "stop" && consecutive_misses_ >= settings_.max_misses)
+        throw CosimError(name_ + ": " + std::to_string(consecutive_misses_) + " consecutive misses, stopping (policy stop): " +
+                         what);
+    if (stats_.misses == 1) std::cerr << name_ << ": " << what << "; holding the last outputs\n";
+}
+
+std::optional<LinkStatistics> HardwareBridge::link_statistics() const {
+    LinkStatistics s = stats_;
+    if (!latencies_.empty()) {
+        std::vector<double> sorted = latencies_;
+        std::sort(sorted.begin(), sorted.end());
+        s.latency_min = sorted.front();
+        s.latency_median = percentile(sorted, 0.5);
+        s.latency_p95 = percentile(sorted, 0.95);
+        s.latency_max = sorted.back();
+    }
+    return s;
+}
+
+}  // namespace cosim
