@@ -2,6 +2,8 @@
 // tests showing each rule of the checker fires on a hand-made violation.
 #include <gtest/gtest.h>
 
+#include <csignal>
+
 #include "conformance_fixture.hpp"
 #include "description_rules.hpp"
 
@@ -126,4 +128,24 @@ TEST(ConformanceRules, StructuredNameGrammar) {
     const auto v = violations_of(R"x(<ScalarVariable name="a b" valueReference="0" causality="input"><Real start="0"/></ScalarVariable>)x",
                                  "", "variableNamingConvention=\"structured\"");
     EXPECT_TRUE(mentions(v, "not a valid structured name"));
+}
+
+TEST(ConformanceIsolation, CrashInChildIsReportedNotFatal) {
+    // The misuse checks rely on this: a crashing FMU call must come back as a failure description.
+    const IsolatedResult crashed = run_isolated([](bool&, std::string&) -> fmi2Status {
+        std::raise(SIGSEGV);
+        return fmi2OK;
+    });
+    EXPECT_FALSE(crashed.completed);
+    EXPECT_NE(crashed.crash.find("signal"), std::string::npos) << crashed.crash;
+
+    const IsolatedResult fine = run_isolated([](bool& logged, std::string& log) {
+        logged = true;
+        log = "message";
+        return fmi2Discard;
+    });
+    ASSERT_TRUE(fine.completed) << fine.crash;
+    EXPECT_EQ(fine.status, fmi2Discard);
+    EXPECT_TRUE(fine.logged);
+    EXPECT_EQ(fine.log, "message");
 }
