@@ -1,6 +1,7 @@
 // A sampled block like the estimator, small enough to check by hand: every sample_period (a time
 // event, first at the start time) it latches y[i] = k * u[i] and counts the samples; in between its
 // outputs hold. The bridge tests run it as an FMU and behind the board emulator.
+#include <array>
 #include <cstdint>
 
 #include "fmu/block.hpp"
@@ -10,8 +11,8 @@ namespace bridge_test {
 struct SamplerData {
     double sample_period = 0.05;
     double k = 2.0;
-    double u[2] = {0.0, 0.0};
-    double y[2] = {0.0, 0.0};
+    std::array<double, 2> u{};
+    std::array<double, 2> y{};
     std::int32_t samples = 0;
     bool valid = false;
     double start_time = 0.0;  // not a variable: the whole state stays one plain struct
@@ -23,8 +24,8 @@ public:
     static void declare(fmu::Table<SamplerData>& t) {
         t.parameter("sample_period", &SamplerData::sample_period, "s", "Time between samples").min(1e-6);
         t.parameter("k", &SamplerData::k, "1", "Gain applied at each sample");
-        t.input("u", &SamplerData::u, "1", "Sampled inputs");
-        t.output("y", &SamplerData::y, "1", "k times u at the last sample").depends_on({});
+        t.input("u", &SamplerData::u, "V", "Sampled inputs");
+        t.output("y", &SamplerData::y, "V", "k times u at the last sample").depends_on({});
         t.output("samples", &SamplerData::samples, "", "Samples so far").depends_on({});
         t.output("valid", &SamplerData::valid, "", "True once sampled").depends_on({});
     }
