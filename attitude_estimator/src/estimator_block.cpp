@@ -116,13 +116,18 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.output("loss", &D::loss, "1", "Wahba loss L(A) of the estimate (000 eq. 8); 0 when not valid")
         .discrete()
         .depends_on({});
-    t.output("valid", &D::valid, "", "The estimate is valid (sun and field valid and separated)").discrete().depends_on({});
-    t.output("sun_valid", &D::sun_valid, "", "The sun vector is valid (not in eclipse)").discrete().depends_on({});
+    t.output("valid", &D::valid, "", "The estimate is valid (sun and field valid and separated)")
+        .discrete()
+        .depends_on({});
+    t.output("sun_valid", &D::sun_valid, "", "The sun vector is valid (not in eclipse)")
+        .discrete()
+        .depends_on({});
     t.output("mag_valid", &D::mag_valid, "", "The field vector is valid (no channel saturated, field not tiny)")
         .discrete()
         .depends_on({});
     t.output("samples", &D::samples, "", "Number of samples taken, the one at the start time included")
-        .discrete().depends_on({});
+        .discrete()
+        .depends_on({});
 
     t.local("t_start", &D::t_start, "s", "Start time: sample k is due at t_start + k*sample_period").discrete();
 }

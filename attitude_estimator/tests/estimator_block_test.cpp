@@ -455,6 +455,17 @@ TEST(EstimatorFmuTable, OutputsAreDiscreteWithNoDirectDependencies) {
     ASSERT_EQ(solver.allowed_values.size(), 2u);
     EXPECT_EQ(solver.allowed_values[0], "qmethod");
     EXPECT_EQ(solver.allowed_values[1], "fast");
+    EXPECT_EQ(EstimatorData{}.solver.view(), "qmethod");  // the brief's default
+    // Defaults shared with the plant (ssr_plant panels, HMC2003): fixed by the brief, not by this code.
+    const EstimatorData d;
+    for (double i : d.i_sc_norm) EXPECT_EQ(i, 0.84754);
+    EXPECT_EQ(d.i_adc_min, -1.2);
+    EXPECT_EQ(d.i_adc_max, 1.2);
+    EXPECT_EQ(d.v_adc_min, 0.0);
+    EXPECT_EQ(d.v_adc_max, 5.0);
+    EXPECT_EQ(d.mag_sensitivity, 1e4);
+    EXPECT_EQ(d.adc_bits, 12);
+    EXPECT_EQ(d.sample_period, 0.05);
     EXPECT_EQ(table.by_name("mag_ref[1]").unit, "T");
     EXPECT_EQ(table.by_name("sun_ref[3]").unit, "1");
 }
