@@ -79,7 +79,7 @@ struct Result {
     LinkStatistics link;
 };
 
-Result run(const std::string& sampler_annotation, std::optional<int> port = std::nullopt) {
+Result run(const std::string& sampler_annotation, std::optional<int> port = std::nullopt, bool realtime = false) {
     SsdFile ssd(sampler_annotation);
     SystemOptions options;
     options.fmu_dirs = {test_fmu_dir};
@@ -89,6 +89,7 @@ Result run(const std::string& sampler_annotation, std::optional<int> port = std:
     ex.stop_time = 0.5;
     ex.output_interval = 0.025;
     ex.relative_tolerance = 1e-9;
+    ex.realtime = realtime;
     Result r;
     r.stats = Execution(system, ex).run({&r.recorder});
     for (const auto& c : r.stats.components)
@@ -243,6 +244,31 @@ TEST(Udp, MalformedRepliesAreRejected) {
     }
     stop = true;
     fake.join();
+}
+
+// --realtime: each request leaves at its sample instant's wall time, so the board sees frame k no
+// earlier than (k - 1) * sample_period after frame 1 (frame 0 leaves at once, after the initialization
+// the wall clock already counts). A lower bound only: a late wall clock is not a fault.
+TEST(Udp, RealtimePacesEachExchange) {
+    auto server = free_udp();
+    const int port = server->port();
+    bridge::BoardEmulator emulator(fmu::make_model());
+    std::vector<bridge::Clock::time_point> arrivals;
+    std::thread board([&] {
+        while (arrivals.size() < 11) {
+            const auto bytes = server->receive(bridge::Clock::now() + std::chrono::seconds(5));
+            if (!bytes) return;
+            arrivals.push_back(bridge::Clock::now());
+            server->send(bridge::encode(emulator.answer(bridge::decode(*bytes))));
+        }
+    });
+    const Result hw = run(annotation(R"(port="1" timeout_ms="2000")"), port, true);
+    board.join();
+    ASSERT_EQ(arrivals.size(), 11u);
+    for (std::size_t k = 2; k < arrivals.size(); ++k)
+        EXPECT_GE(std::chrono::duration<double>(arrivals[k] - arrivals[1]).count(), 0.05 * static_cast<double>(k - 1) - 2e-3)
+            << "frame " << k;
+    EXPECT_EQ(hw.link.answered, 11);
 }
 
 // The emulator's side: a bad frame is refused with a reason and the next good one still answered.
