@@ -79,9 +79,11 @@ struct Result {
     LinkStatistics link;
 };
 
-Result run(const std::string& sampler_annotation, std::optional<int> port = std::nullopt, bool realtime = false) {
+Result run(const std::string& sampler_annotation, std::optional<int> port = std::nullopt, bool realtime = false,
+           std::vector<std::string> settings = {}) {
     SsdFile ssd(sampler_annotation);
     SystemOptions options;
+    options.settings = std::move(settings);
     options.fmu_dirs = {test_fmu_dir};
     options.bridge_port = port;
     System system(read_system_description(ssd.path), options);
@@ -100,11 +102,12 @@ Result run(const std::string& sampler_annotation, std::optional<int> port = std:
 // The emulator serving the sampler block on a thread until the test ends (at most 20 s).
 struct Board {
     std::unique_ptr<bridge::Link> link;
-    bridge::BoardEmulator emulator{fmu::make_model()};
+    bridge::BoardEmulator emulator;
     std::atomic<bool> stop{false};
     bridge::ServeStatistics stats;
     std::thread thread;
-    Board(std::unique_ptr<bridge::Link> l, bridge::ServeOptions options) : link(std::move(l)) {
+    Board(std::unique_ptr<bridge::Link> l, bridge::ServeOptions options, const std::vector<std::string>& settings = {})
+        : link(std::move(l)), emulator(fmu::make_model(), settings) {
         options.stop = &stop;
         options.idle_timeout_s = 20.0;
         thread = std::thread([this, options] { stats = bridge::serve(emulator, *link, options); });
@@ -202,6 +205,20 @@ TEST(Udp, LatencyIncludesTheBoardsDelay) {
     const Result hw = run(annotation(R"(port="1" timeout_ms="2000")"), port);
     EXPECT_EQ(hw.link.answered, 11);
     EXPECT_GE(hw.link.latency_min, 0.020);
+}
+
+// The sample instants come from the component's sample_period as set for the run (here 0.1 s instead
+// of the block's 0.05 s): frames at 0, 0.1, ..., 0.5, and the board, told the same, samples at each.
+TEST(Udp, SamplePeriodSettingDrivesTheExchanges) {
+    auto link = free_udp();
+    const int port = link->port();
+    Board board(std::move(link), {}, {"sample_period=0.1"});
+    const Result hw = run(annotation(R"(port="1" timeout_ms="2000")"), port, false, {"s.sample_period=0.1"});
+    EXPECT_EQ(hw.link.exchanges, 6);
+    EXPECT_EQ(hw.link.answered, 6);
+    // At t = 0.25 the last frame was at 0.2: y1 = 2 (1 + 2 * 0.2), after samples at 0, 0.1 and 0.2.
+    EXPECT_NEAR(hw.recorder.rows[10][1], 2.0 * 1.4, 1e-7);
+    EXPECT_EQ(hw.recorder.rows[10][3], 3.0);
 }
 
 // A silent board (a bound socket nobody answers on): policy stop gives up after max_misses.
