@@ -170,7 +170,7 @@ TEST(Udp, LostFramesAreHeldAndCounted) {
     bridge::ServeOptions options;
     options.drop_every = 3;
     Board board(std::move(link), options);
-    const Result hw = run(annotation(R"(port="1" timeout_ms="40" policy="hold")"), port);
+    const Result hw = run(annotation(R"(port="1" timeout_ms="150" policy="hold")"), port);
     EXPECT_EQ(hw.link.exchanges, 11);
     EXPECT_EQ(hw.link.misses, 3);
     EXPECT_EQ(hw.link.answered, 8);
