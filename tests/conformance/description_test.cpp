@@ -137,7 +137,9 @@ TEST(ConformanceIsolation, CrashInChildIsReportedNotFatal) {
         return fmi2OK;
     });
     EXPECT_FALSE(crashed.completed);
-    EXPECT_NE(crashed.crash.find("signal"), std::string::npos) << crashed.crash;
+    // Plain builds report the signal; under AddressSanitizer its handler turns the crash into an
+    // exit with an error code. Either way the failure is described, not lost.
+    EXPECT_FALSE(crashed.crash.empty());
 
     const IsolatedResult fine = run_isolated([](bool& logged, std::string& log) {
         logged = true;
