@@ -43,12 +43,16 @@ double read_value(std::span<const std::byte> data, const fmu::Variable& v) {
 }  // namespace
 
 BoardEmulator::BoardEmulator(std::unique_ptr<fmu::Model> model, const std::vector<std::string>& settings)
-    : runner_(std::move(model)) {
+    : runner_(std::move(model)), settings_(settings) {
     inputs_ = by_causality(runner_.table(), fmu::Causality::input);
     outputs_ = by_causality(runner_.table(), fmu::Causality::output);
     if (inputs_.size() > max_values || outputs_.size() > max_values)
         throw FrameError("the block has more inputs or outputs than a frame carries (" + std::to_string(max_values) + ")");
-    for (const auto& s : settings) {
+    apply_settings();
+}
+
+void BoardEmulator::apply_settings() {
+    for (const auto& s : settings_) {
         const auto eq = s.find('=');
         if (eq == std::string::npos) throw fmu::Error("--set expects name=value, got '" + s + "'");
         const auto& v = runner_.table().by_name(s.substr(0, eq));
@@ -77,6 +81,12 @@ Frame BoardEmulator::answer(const Frame& request) {
     if (request.values.size() != inputs_.size())
         throw FrameError("request carries " + std::to_string(request.values.size()) + " values, the block has " +
                          std::to_string(inputs_.size()) + " inputs");
+    if (request.sequence == 1 && initialized_) {
+        // Sequence 1 opens a run: the board starts over from its defaults and configuration.
+        runner_.model().reset_to_defaults();
+        apply_settings();
+        initialized_ = false;
+    }
     if (!initialized_) {
         // As an FMU's initialization: the first frame's inputs are the initial inputs, its time
         // the start time, and the block's event iteration at the start follows.

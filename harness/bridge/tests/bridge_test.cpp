@@ -328,6 +328,12 @@ TEST(Emulator, RejectsMalformedRequestsAndGoesOn) {
     const auto answer = client->receive(bridge::Clock::now() + std::chrono::seconds(5));
     ASSERT_TRUE(answer);
     EXPECT_EQ(bridge::decode(*answer).values[2], 2.0);  // the second sample, at t = 0.05
+
+    // Sequence 1 again: a new run; the board starts over (one sample, y = 2 u) instead of going on.
+    bridge::Frame restart;
+    restart.sequence = 1;
+    restart.values = {0.5, 0.25};
+    EXPECT_EQ(board.answer(restart).values, (std::vector<double>{1.0, 0.5, 1.0, 1.0}));
 }
 
 TEST(Ssd, BridgeAnnotationIsReadAndChecked) {

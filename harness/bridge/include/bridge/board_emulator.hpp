@@ -29,8 +29,10 @@ public:
 
 private:
     void set_inputs(const std::vector<double>& values);
+    void apply_settings();
 
     fmu::ModelRunner runner_;
+    std::vector<std::string> settings_;
     std::vector<const fmu::Variable*> inputs_, outputs_;
     bool initialized_ = false;
 };
