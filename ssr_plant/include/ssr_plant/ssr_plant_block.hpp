@@ -1,0 +1,96 @@
+// The power system as an FMU block: the variable table over the plant core (core/), and the
+// mapping of the core's event-driven protocol onto the runtime's equations.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+
+#include "fmu/block.hpp"
+#include "fmu/fixed_string.hpp"
+#include "ssr_plant/plant.hpp"
+
+namespace ssr_plant {
+
+// Every variable of the block; defaults are the core's (parameters.hpp says which are the seed's).
+struct SsrPlantData {
+    // inputs
+    std::array<double, 3> sun_body{0.0, 0.0, 1.0};
+    double irradiance = 1367.0;
+    std::array<double, 6> albedo_face{};
+    // parameters: selections
+    fmu::FixedString<15> fidelity = "switching";
+    fmu::FixedString<15> angular_response = "kelly";
+    // panel datasheet
+    double rated_irradiance = 1000.0;
+    double panel_isc = 0.62;
+    double panel_voc = 21.5;
+    double panel_imp = 0.5714;
+    double panel_vmp = 17.5;
+    std::int32_t cells_in_series = 36;
+    double panel_shunt_resistance = 2000.0;
+    double cell_temperature = 298.15;
+    // regulator and bus
+    double or_diode_forward_voltage = 0.6;
+    double or_diode_resistance = 0.05;
+    double shunt_switch_resistance = 0.05;
+    double pwm_frequency = 5000.0;
+    double bus_capacitance = 1500e-6;
+    double load_resistance = 90.0;
+    double bus_voltage_reference = 15.0;
+    double controller_gain = 300.0;
+    // battery
+    double battery_capacity = 7200.0;
+    std::array<double, 11> battery_ocv{11.30, 11.51, 11.66, 11.81, 11.96, 12.10, 12.24, 12.37, 12.50, 12.62, 12.73};
+    double battery_internal_resistance = 0.05;
+    double charge_path_resistance = 5.0;
+    double battery_diode_forward_voltage = 0.6;
+    double battery_diode_resistance = 0.05;
+    double soc_connect = 0.80;
+    double soc_disconnect = 1.00;
+    // continuous states and derivatives
+    double v_cap = 15.0;
+    double soc_state = 0.9;
+    double der_v_cap = 0.0;
+    double der_soc_state = 0.0;
+    // outputs
+    std::array<double, 3> i_sh{};
+    std::array<double, 6> i_sc{};
+    std::array<double, 6> i_panel{};
+    double v_bus = 15.0;
+    double v_batt = 0.0;
+    double i_batt = 0.0;
+    double soc = 0.9;
+    double duty = 0.0;
+    bool gate = false;
+    double i_load = 0.0;
+    // discrete state of the core (PWM period, S/H, charge switch)
+    DiscreteState discrete{};
+};
+
+class SsrPlantBlock : public fmu::Block<SsrPlantBlock, SsrPlantData> {
+public:
+    static void declare(fmu::Table<SsrPlantData>& t);
+    static fmu::ModelInfo describe();
+
+    void initialize(double t) override;
+    void evaluate(double t) override;
+    std::size_t event_indicator_count() const override { return indicator_count; }
+    void event_indicators(double t, std::span<double> z) override;
+    fmu::EventUpdate event_update(double t, bool time_event_due) override;
+    double next_time_event() const override;
+    void validate() const override;
+
+private:
+    // The fitted plant (panel fit ~0.2 ms) kept outside Data and rebuilt whenever the parameters
+    // it was made from differ from the current ones (reset, FMU-state restore, tunable change).
+    const ssr_plant::Model& plant();
+    Inputs inputs() const;
+    State state() const;
+    Parameters parameters() const;
+
+    std::optional<ssr_plant::Model> model_;
+    Parameters model_parameters_{};
+};
+
+}  // namespace ssr_plant

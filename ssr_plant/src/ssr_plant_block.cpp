@@ -1,0 +1,206 @@
+#include "ssr_plant/ssr_plant_block.hpp"
+
+#include <cstring>
+
+#include "fmu/errors.hpp"
+
+namespace ssr_plant {
+
+void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
+    using D = SsrPlantData;
+    t.input("sun_body", &D::sun_body, "1", "Sun direction in body axes (normalized inside; zero: no direct sun)");
+    t.input("irradiance", &D::irradiance, "W/m2", "Direct solar irradiance, 0 in eclipse");
+    t.input("albedo_face", &D::albedo_face, "W/m2", "Earth albedo irradiance on each face (+x, -x, +y, -y, +z, -z)");
+
+    t.parameter("fidelity", &D::fidelity, "",
+                "switching: every PWM edge a time event, S/H tracks while the gate is on; averaged: state-space "
+                "average over a PWM period, no PWM events, S/H replaced by the continuous differential current")
+        .one_of({"switching", "averaged"});
+    t.parameter("angular_response", &D::angular_response, "",
+                "Panel response to the incidence angle: cosine law (seed 000 eq. 1) or Kelly cosine (fig. 4)")
+        .one_of({"cosine", "kelly"});
+    t.parameter("rated_irradiance", &D::rated_irradiance, "W/m2", "Irradiance of the datasheet ratings (seed: 10 Wp at 1000 W/m2)").min(1.0);
+    t.parameter("panel_isc", &D::panel_isc, "A", "Panel short-circuit current at the rated irradiance (assumed 36-cell 10 Wp panel)").min(1e-3);
+    t.parameter("panel_voc", &D::panel_voc, "V", "Panel open-circuit voltage (assumed)").min(0.1);
+    t.parameter("panel_imp", &D::panel_imp, "A", "Panel current at the maximum-power point (assumed)").min(1e-3);
+    t.parameter("panel_vmp", &D::panel_vmp, "V", "Panel voltage at the maximum-power point (assumed; Vmp Imp = 10 Wp)").min(0.1);
+    t.parameter("cells_in_series", &D::cells_in_series, "", "Cells in series per panel").range(1, 1000);
+    t.parameter("panel_shunt_resistance", &D::panel_shunt_resistance, "Ohm", "Shunt resistance R_sh of the panel (seed 000 fig. 2; assumed)").min(1.0);
+    t.parameter("cell_temperature", &D::cell_temperature, "K", "Cell temperature (thermal voltage of eq. 2)").range(100.0, 500.0);
+    t.parameter("or_diode_forward_voltage", &D::or_diode_forward_voltage, "V", "Forward drop of each panel's OR diode (assumed)").range(0.0, 2.0);
+    t.parameter("or_diode_resistance", &D::or_diode_resistance, "Ohm", "Forward slope of the OR diode (assumed)").range(1e-4, 10.0);
+    t.parameter("shunt_switch_resistance", &D::shunt_switch_resistance, "Ohm", "On-resistance of each shunt MOSFET (assumed)").range(1e-4, 10.0);
+    t.parameter("pwm_frequency", &D::pwm_frequency, "Hz", "PWM frequency of the shunt switches (seed: 5 kHz)").range(1.0, 1e6);
+    t.parameter("bus_capacitance", &D::bus_capacitance, "F", "Bus capacitor (seed: 1500 uF)").min(1e-9);
+    t.parameter("load_resistance", &D::load_resistance, "Ohm", "Resistive load on the bus (seed: 90 Ohm)").min(1e-3);
+    t.parameter("bus_voltage_reference", &D::bus_voltage_reference, "V", "Bus voltage reference of the controller (seed: 15 V)").range(0.0, 100.0);
+    t.parameter("controller_gain", &D::controller_gain, "%/V",
+                "Proportional gain, percent of duty per volt of bus error (seed: 300). Read as 300 per volt, the "
+                "once-per-period sampled loop is unstable (loop gain ~48 per sample); as %/V it is well damped but "
+                "leaves the offset D/K of a P controller (~0.28 V)")
+        .range(0.0, 1e7);
+    t.parameter("battery_capacity", &D::battery_capacity, "C", "Battery capacity (assumed 2 Ah = 7200 C)").min(1.0);
+    t.parameter("battery_ocv", &D::battery_ocv, "V", "Battery open-circuit voltage at soc = 0, 0.1, ..., 1 (assumed 12 V lead-acid)").range(0.0, 100.0);
+    t.parameter("battery_internal_resistance", &D::battery_internal_resistance, "Ohm", "Battery internal resistance (assumed)").range(1e-4, 100.0);
+    t.parameter("charge_path_resistance", &D::charge_path_resistance, "Ohm", "Current-limiting resistance of the charge path (assumed)").range(1e-3, 1e4);
+    t.parameter("battery_diode_forward_voltage", &D::battery_diode_forward_voltage, "V", "Forward drop of the battery's series (discharge) diode").range(0.0, 2.0);
+    t.parameter("battery_diode_resistance", &D::battery_diode_resistance, "Ohm", "Forward slope of the battery diode").range(1e-4, 10.0);
+    t.parameter("soc_connect", &D::soc_connect, "1", "Hysteresis: connect the battery for charging when soc falls to this").range(0.0, 1.0);
+    t.parameter("soc_disconnect", &D::soc_disconnect, "1", "Hysteresis: disconnect at this state of charge (full)").range(0.0, 1.0);
+
+    auto v = t.state("v_cap", &D::v_cap, &D::der_v_cap, "V", "Bus capacitor voltage (the bus voltage)").nominal(15.0);
+    auto q = t.state("soc_state", &D::soc_state, &D::der_soc_state, "1", "Battery state of charge (charge / capacity)").nominal(1.0);
+    v.derivative_depends_on({"v_cap", "soc_state", "sun_body", "irradiance", "albedo_face"});
+    q.derivative_depends_on({"v_cap", "soc_state"});
+
+    t.output("i_sh", &D::i_sh, "A", "Sample/hold of the differential Hall current I(+axis) - I(-axis) of the short-circuited panels")
+        .depends_on({"sun_body", "irradiance", "albedo_face"});
+    t.output("i_sc", &D::i_sc, "A", "Each panel's true short-circuit current").depends_on({"sun_body", "irradiance", "albedo_face"});
+    t.output("i_panel", &D::i_panel, "A", "Each panel's current delivered to the bus (averaged over the PWM state)")
+        .depends_on({"sun_body", "irradiance", "albedo_face", "v_cap"});
+    t.output("v_bus", &D::v_bus, "V", "Bus voltage").depends_on({"v_cap"});
+    t.output("v_batt", &D::v_batt, "V", "Battery terminal voltage").depends_on({"v_cap", "soc_state"});
+    t.output("i_batt", &D::i_batt, "A", "Battery current, positive charging").depends_on({"v_cap", "soc_state"});
+    t.output("soc", &D::soc, "1", "Battery state of charge").depends_on({"soc_state"});
+    t.output("duty", &D::duty, "1", "Shunt duty cycle (fraction of the PWM period the panels are shorted)").depends_on({"v_cap"});
+    t.output("gate", &D::gate, "", "Shunt MOSFETs on (switching); averaged: duty > 0 at the last event").depends_on({});
+    t.output("i_load", &D::i_load, "A", "Load current").depends_on({"v_cap"});
+}
+
+fmu::ModelInfo SsrPlantBlock::describe() {
+    fmu::ModelInfo info;
+    info.model_identifier = "ssr_plant";
+    info.model_name = "ssr_plant";
+    info.description = "Six PV panels (one per face), Sequential Shunt Regulator, 12 V battery and Hall sample/hold";
+    info.documentation_html =
+        "<p>The power system of seed paper 000 sections 2-4 and 001 sections 3-4: six photovoltaic panels, one per "
+        "box face (+x, -x, +y, -y, +z, -z), each a single-diode model (eq. 2) with series and shunt resistance "
+        "fitted to its datasheet points, lit by irradiance f(beta) (cosine law, eq. 1, or the Kelly cosine of "
+        "fig. 4) plus the face's albedo input. The Sequential Shunt Regulator (fig. 5/7) shorts all six panels "
+        "during the PWM on-time (5 kHz; every edge a time event in <code>switching</code> fidelity); a "
+        "proportional controller sampled once per period sets the duty; the 1500 uF bus feeds the 90 Ohm load; a "
+        "12 V battery charges through a charge switch with hysteresis (state events) and carries the load "
+        "through a series diode in eclipse. The Hall transducer of each axis measures I(+axis) - I(-axis) of the "
+        "shorted panels; its sample/hold tracks while the gate is on and holds while it is off (seed 001 "
+        "section 3): <code>i_sh / i_sc0</code> is the sun vector of eq. 5.</p>"
+        "<p>In <code>averaged</code> fidelity the PWM is replaced by its state-space average over one period (no "
+        "PWM events) and the sample/hold by the continuous differential current: use it for whole orbits.</p>"
+        "<p>The controller gain's unit is a modelling choice (see <code>controller_gain</code>). Assumed values "
+        "(not in the seeds): the panel datasheet, the battery curve and resistances, diode drops, thresholds.</p>";
+    info.default_experiment = {.start_time = 0.0, .stop_time = 10.0, .tolerance = 1e-6, .step_size = 1e-3};
+    return info;
+}
+
+Parameters SsrPlantBlock::parameters() const {
+    const auto& d = data();
+    Parameters p{};
+    if (d.fidelity == "switching") p.fidelity = Fidelity::switching;
+    else if (d.fidelity == "averaged") p.fidelity = Fidelity::averaged;
+    else throw fmu::Error("fidelity must be switching or averaged");
+    if (d.angular_response == "cosine") p.angular_response = AngularResponse::cosine;
+    else if (d.angular_response == "kelly") p.angular_response = AngularResponse::kelly;
+    else throw fmu::Error("angular_response must be cosine or kelly");
+    p.panel.rated_irradiance = d.rated_irradiance;
+    p.panel.short_circuit_current = d.panel_isc;
+    p.panel.open_circuit_voltage = d.panel_voc;
+    p.panel.max_power_current = d.panel_imp;
+    p.panel.max_power_voltage = d.panel_vmp;
+    p.panel.cells_in_series = d.cells_in_series;
+    p.panel.shunt_resistance = d.panel_shunt_resistance;
+    p.panel.cell_temperature = d.cell_temperature;
+    p.or_diode_forward_voltage = d.or_diode_forward_voltage;
+    p.or_diode_resistance = d.or_diode_resistance;
+    p.shunt_switch_resistance = d.shunt_switch_resistance;
+    p.pwm_frequency = d.pwm_frequency;
+    p.bus_capacitance = d.bus_capacitance;
+    p.load_resistance = d.load_resistance;
+    p.bus_voltage_reference = d.bus_voltage_reference;
+    p.controller_gain = d.controller_gain;
+    p.battery.capacity = d.battery_capacity;
+    p.battery.open_circuit_voltage = d.battery_ocv;
+    p.battery.internal_resistance = d.battery_internal_resistance;
+    p.battery.charge_path_resistance = d.charge_path_resistance;
+    p.battery.diode_forward_voltage = d.battery_diode_forward_voltage;
+    p.battery.diode_resistance = d.battery_diode_resistance;
+    p.battery.soc_connect = d.soc_connect;
+    p.battery.soc_disconnect = d.soc_disconnect;
+    return p;
+}
+
+const ssr_plant::Model& SsrPlantBlock::plant() {
+    const Parameters p = parameters();
+    // Parameters{} is value-initialized (padding zeroed) on both sides, so bytes compare values.
+    if (!model_ || std::memcmp(&p, &model_parameters_, sizeof p) != 0) {
+        model_ = make_model(p);
+        model_parameters_ = p;
+    }
+    return *model_;
+}
+
+Inputs SsrPlantBlock::inputs() const {
+    const auto& d = data();
+    Inputs u;
+    u.sun_body = d.sun_body;
+    u.irradiance = d.irradiance;
+    u.albedo_face = d.albedo_face;
+    check_inputs(u);
+    return u;
+}
+
+State SsrPlantBlock::state() const { return {data().v_cap, data().soc_state}; }
+
+void SsrPlantBlock::validate() const {
+    make_model(parameters());  // throws ParameterError (std::invalid_argument) with the reason
+    if (!(data().soc_connect < data().soc_disconnect)) throw fmu::Error("soc_connect must be below soc_disconnect");
+}
+
+void SsrPlantBlock::initialize(double t) {
+    auto& d = data();
+    const ssr_plant::Model& m = plant();
+    d.discrete = ssr_plant::initialize(m, inputs(), t, state());
+    d.gate = d.discrete.gate;
+}
+
+void SsrPlantBlock::evaluate(double t) {
+    auto& d = data();
+    const ssr_plant::Model& m = plant();
+    const Inputs u = inputs();
+    const State x = state();
+    const State dx = derivatives(m, u, d.discrete, t, x);
+    d.der_v_cap = dx[state_v_bus];
+    d.der_soc_state = dx[state_soc];
+    const Outputs y = outputs(m, u, d.discrete, t, x);
+    d.i_sh = y.i_sh;
+    d.i_sc = y.i_sc;
+    d.i_panel = y.i_panel;
+    d.v_bus = y.v_bus;
+    d.v_batt = y.v_batt;
+    d.i_batt = y.i_batt;
+    d.soc = y.soc;
+    d.duty = y.duty;
+    d.i_load = y.i_load;
+    // gate is discrete: it changes only in initialize/event_update (see its description).
+}
+
+void SsrPlantBlock::event_indicators(double t, std::span<double> z) {
+    const Indicators g = ssr_plant::event_indicators(plant(), inputs(), data().discrete, t, state());
+    std::copy(g.begin(), g.end(), z.begin());
+}
+
+fmu::EventUpdate SsrPlantBlock::event_update(double t, bool) {
+    auto& d = data();
+    const EventResult r = ssr_plant::event_update(plant(), inputs(), d.discrete, t, state());
+    d.discrete = r.discrete;
+    d.gate = d.discrete.gate;
+    return {};  // the core settles an instant in one call; states never jump
+}
+
+double SsrPlantBlock::next_time_event() const {
+    // model_ is current: the runtime calls this after initialize/event_update, which refreshed it.
+    if (!model_) return fmu::no_time_event;
+    return ssr_plant::next_time_event(*model_, data().discrete);
+}
+
+}  // namespace ssr_plant
+
+FMU_BLOCK(ssr_plant::SsrPlantBlock)
