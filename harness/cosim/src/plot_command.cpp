@@ -49,7 +49,8 @@ std::filesystem::path draw(const std::filesystem::path& out_dir, const std::stri
                          "'\nset grid\nset key outside right\nplot ";
     for (std::size_t i = 0; i < series.size(); ++i)
         script += (i ? ", " : "") + std::string("'") + data.string() + "' using 1:" + std::to_string(i + 2) +
-                  " with lines title '" + series[i].title + "'";
+                  (series[i].title.starts_with("acquired") ? " with points pt 7 ps 0.7" : " with lines lw 2") +
+                  " title '" + series[i].title + "'";
     script += "\n";
     FILE* gp = popen("gnuplot 2>&1", "w");
     if (!gp) throw CosimError("cannot start gnuplot (install the Debian package gnuplot-nox)");
