@@ -2,7 +2,9 @@
 // the physics (stated beside each check), never against numbers an earlier run printed.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <numbers>
 #include <string>
@@ -122,4 +124,65 @@ TEST(E2eSeedSpin, BusHeldSunAcquiredAttitudeEstimated) {
     EXPECT_GT(stats.time_events, 2.0 * 5000 * 2.0 * 0.9);  // two PWM edges per 200 us period
     RecordProperty("worst_sun_error_deg", std::to_string(worst_sun));
     RecordProperty("worst_attitude_error_deg", std::to_string(worst_attitude));
+}
+
+// The LEO system (seed 004's orbit, tumbling, albedo, eclipse, averaged power system) over its first
+// 2400 s, which include the eclipse entry near 1900 s. Shortened sampling (1 s estimator samples,
+// 1 s magnetometer noise samples) keeps the test quick; the physics is unchanged.
+TEST(E2eLeoOrbit, EclipseInvalidatesTheEstimateAndDrainsTheBattery) {
+    cosim::SystemOptions options;
+    options.fmu_dirs = {PVATT_FMU_DIR};
+    options.settings = {"est.sample_period=1", "mag.noise_sample_period=1"};
+    System system(cosim::read_system_description(PVATT_SYSTEMS_DIR "/leo_orbit.ssd"), options);
+    cosim::ExecutionOptions ex;
+    ex.stop_time = 2400.0;
+    ex.output_interval = 10.0;
+    ex.relative_tolerance = 1e-6;
+    auto cols = columns();
+    cols.push_back("plant.i_load");
+    Recorder rec(system, cols);
+    cosim::Execution(system, ex).run({&rec});
+
+    int dark = 0, lit = 0, lit_valid = 0;
+    std::vector<double> errors;
+    double soc_enter = -1, t_enter = 0, soc_last = 0, t_last = 0, i_load = 0;
+    for (std::size_t k = 1; k < rec.time.size(); ++k) {
+        const bool eclipse = rec["env.irradiance"][k] == 0.0;
+        const bool valid = rec["est.valid"][k] > 0.5;
+        if (eclipse) {
+            ++dark;
+            EXPECT_FALSE(valid) << "estimate claimed valid in eclipse at t = " << rec.time[k];
+            EXPECT_LT(rec["plant.v_bus"][k], 12.5);  // the battery through its diode carries the load
+            if (soc_enter < 0 && rec.time[k] > 0) {
+                soc_enter = rec["plant.soc"][k];
+                t_enter = rec.time[k];
+            }
+            soc_last = rec["plant.soc"][k];
+            t_last = rec.time[k];
+            i_load = rec["plant.i_load"][k];
+        } else {
+            ++lit;
+            EXPECT_GT(rec["plant.v_bus"][k], 14.8) << "t = " << rec.time[k];
+            if (valid) {
+                ++lit_valid;
+                const double qt[4] = {rec["env.q_true[1]"][k], rec["env.q_true[2]"][k], rec["env.q_true[3]"][k], rec["env.q_true[4]"][k]};
+                const double qe[4] = {rec["est.q_est[1]"][k], rec["est.q_est[2]"][k], rec["est.q_est[3]"][k], rec["est.q_est[4]"][k]};
+                errors.push_back(cosim::attitude_error_degrees(qt, qe));
+            }
+        }
+    }
+    ASSERT_GT(dark, 20);  // eclipse was reached
+    EXPECT_GT(lit_valid, lit * 3 / 4);  // lit and not parallel: mostly valid
+    // soc falls at the rate the load predicts (charge switch open above soc 0.8; no self-discharge).
+    const double rate = (soc_last - soc_enter) / (t_last - t_enter);
+    EXPECT_NEAR(rate, -i_load / 7200.0, std::abs(i_load / 7200.0) * 0.05);
+    // Attitude with eq. 5 on Kelly-responding panels under albedo: the literature reports errors up
+    // to 20 degrees without albedo handling (issue 8); the median must stay below that.
+    std::sort(errors.begin(), errors.end());
+    ASSERT_FALSE(errors.empty());
+    const double median = errors[errors.size() / 2];
+    EXPECT_LT(median, 20.0);
+    RecordProperty("median_attitude_error_deg", std::to_string(median));
+    std::printf("LEO: %d dark, %d lit (%d valid) samples; median attitude error %.2f deg, 90th pct %.2f deg; soc rate %.3e /s vs %.3e\n",
+                dark, lit, lit_valid, median, errors[errors.size() * 9 / 10], rate, -i_load / 7200.0);
 }
