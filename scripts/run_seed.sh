@@ -1,15 +1,15 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds everything, and runs the main job.
-# Until the master's seed system lands (issue 6), the main job simulates the HMC2003 magnetometer FMU
-# for three seconds in a constant field (Earth-like, 44 µT) with set/reset every second, and prints
-# the table of its outputs.
+# Installs what is missing, builds everything, and runs the seed scenario end to end: the environment
+# (seed spin), the six panels with the Sequential Shunt Regulator switching at 5 kHz, the HMC2003 and
+# the on-board computer, wired by harness/systems/seed_spin.ssd and run by the master for 10 s.
+# Results: results/seed_spin.csv, and the figures in results/ (sun vector real vs acquired, bus
+# voltage, attitude error, battery state of charge).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPVATT_BENCHMARKS=OFF > /dev/null
+cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
 cmake --build build -j"$(nproc)"
-echo
-./build/bin/cosim info build/fmus/magnetometer.fmu
-echo
-./build/bin/cosim simulate build/fmus/magnetometer.fmu --stop-time 3 --output-interval 0.25 \
-  --set 'mag_body[1]=2.1e-5' --set 'mag_body[2]=-0.5e-5' --set 'mag_body[3]=3.9e-5' --set set_reset_period=1
+mkdir -p results
+./build/bin/cosim run harness/systems/seed_spin.ssd --stop-time "${SEED_STOP_TIME:-10}" --output results/seed_spin.csv \
+  --output-interval 0.01
+./build/bin/cosim plot results/seed_spin.csv --out-dir results
