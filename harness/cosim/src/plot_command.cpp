@@ -44,7 +44,7 @@ std::filesystem::path draw(const std::filesystem::path& out_dir, const std::stri
         }
     }
     const auto png = out_dir / (name + ".png");
-    std::string script = "set terminal pngcairo size 1100,600 font 'sans,11'\nset output '" + png.string() +
+    std::string script = "set terminal pngcairo noenhanced size 1100,600 font 'sans,11'\nset output '" + png.string() +
                          "'\nset title '" + title + "'\nset xlabel 'time (s)'\nset ylabel '" + ylabel +
                          "'\nset grid\nset key outside right\nplot ";
     for (std::size_t i = 0; i < series.size(); ++i)
