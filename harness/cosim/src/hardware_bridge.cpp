@@ -184,7 +184,13 @@ void HardwareBridge::exchange() {
     const auto deadline = sent + std::chrono::milliseconds(settings_.timeout_ms);
     link_->send(bridge::encode(request));
     ++stats_.exchanges;
+    // Frames the SLIP layer dropped (noise, oversized) count as malformed too.
     const long framing_before = link_->framing_errors();
+    auto count_framing_errors = [&] {
+        if (link_->framing_errors() == framing_before) return;
+        stats_.malformed += link_->framing_errors() - framing_before;
+        last_error_ = link_->last_framing_error();
+    };
     while (auto bytes = link_->receive(deadline)) {
         bridge::Frame reply;
         try {
@@ -210,12 +216,10 @@ void HardwareBridge::exchange() {
         for (std::size_t i = 0; i < outputs_.size(); ++i) values_[outputs_[i]] = reply.values[i];
         ++stats_.answered;
         consecutive_misses_ = 0;
+        count_framing_errors();
         return;
     }
-    if (link_->framing_errors() > framing_before) {
-        stats_.malformed += link_->framing_errors() - framing_before;
-        last_error_ = link_->last_framing_error();
-    }
+    count_framing_errors();
     ++stats_.misses;
     ++consecutive_misses_;
     const std::string what = "frame " + std::to_string(sequence_) + " at t = " + format_real(time_) +
