@@ -133,8 +133,19 @@ const ssr_plant::Model& SsrPlantBlock::plant() {
     if (!model_ || std::memcmp(&p, &model_parameters_, sizeof p) != 0) {
         model_ = make_model(p);
         model_parameters_ = p;
+        illumination_.reset();
     }
     return *model_;
+}
+
+const Illumination& SsrPlantBlock::illumination(const ssr_plant::Model& m) {
+    const Inputs u = inputs();  // checked on every use: a bad input is reported where it is used
+    // Inputs{} fields are all doubles (no padding): equal bytes are equal values.
+    if (!illumination_ || std::memcmp(&u, &illumination_inputs_, sizeof u) != 0) {
+        illumination_ = illuminate(m, u);
+        illumination_inputs_ = u;
+    }
+    return *illumination_;
 }
 
 Inputs SsrPlantBlock::inputs() const {
@@ -164,12 +175,10 @@ void SsrPlantBlock::initialize(double t) {
 void SsrPlantBlock::evaluate(double t) {
     auto& d = data();
     const ssr_plant::Model& m = plant();
-    const Inputs u = inputs();
-    const State x = state();
-    const State dx = derivatives(m, u, d.discrete, t, x);
-    d.der_v_cap = dx[state_v_bus];
-    d.der_soc_state = dx[state_soc];
-    const Outputs y = outputs(m, u, d.discrete, t, x);
+    const Evaluation e = ssr_plant::evaluate(m, illumination(m), d.discrete, t, state());
+    d.der_v_cap = e.derivatives[state_v_bus];
+    d.der_soc_state = e.derivatives[state_soc];
+    const Outputs& y = e.outputs;
     d.i_sh = y.i_sh;
     d.i_sc = y.i_sc;
     d.i_panel = y.i_panel;
@@ -183,13 +192,15 @@ void SsrPlantBlock::evaluate(double t) {
 }
 
 void SsrPlantBlock::event_indicators(double t, std::span<double> z) {
-    const Indicators g = ssr_plant::event_indicators(plant(), inputs(), data().discrete, t, state());
+    const ssr_plant::Model& m = plant();
+    const Indicators g = ssr_plant::event_indicators(m, inputs(), data().discrete, t, state());
     std::copy(g.begin(), g.end(), z.begin());
 }
 
 fmu::EventUpdate SsrPlantBlock::event_update(double t, bool) {
     auto& d = data();
-    const EventResult r = ssr_plant::event_update(plant(), inputs(), d.discrete, t, state());
+    const ssr_plant::Model& m = plant();
+    const EventResult r = ssr_plant::event_update(m, illumination(m), d.discrete, t, state());
     d.discrete = r.discrete;
     d.gate = d.discrete.gate;
     return {};  // the core settles an instant in one call; states never jump

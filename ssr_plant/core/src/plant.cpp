@@ -43,14 +43,16 @@ std::array<double, face_count> photocurrents(const Model& m, const Inputs& u) {
 }
 
 // Current each panel pushes through its OR diode into the bus when its shunt switch is off: the panel
-// sits at v_bus + V_f + I R_or; a reverse-biased diode (panel below bus + V_f) passes nothing.
+// sits at v_bus + V_f + I R_or; a reverse-biased diode (panel below bus + V_f) passes nothing, and such a
+// panel (every dark face) is recognised without a solve.
 std::array<double, face_count> bus_side_currents(const Model& m, const std::array<double, face_count>& iph,
                                                  double v_bus) {
     const auto& p = m.parameters;
+    const double v_anode = v_bus + p.or_diode_forward_voltage;
     std::array<double, face_count> i{};
     for (std::size_t k = 0; k < face_count; ++k)
-        i[k] = std::max(0.0, panel_current(m.diode, iph[k], v_bus + p.or_diode_forward_voltage,
-                                           p.or_diode_resistance));
+        if (panel_delivers(m.diode, iph[k], v_anode))
+            i[k] = std::max(0.0, panel_current(m.diode, iph[k], v_anode, p.or_diode_resistance));
     return i;
 }
 
@@ -83,6 +85,31 @@ void update_charge_switch(const Model& m, DiscreteState& d, double soc) {
     const auto& b = m.parameters.battery;
     if (!d.charge_connected && soc <= b.soc_connect) d.charge_connected = true;
     else if (d.charge_connected && soc >= b.soc_disconnect) d.charge_connected = false;
+}
+
+// The bus node and the battery at one instant: what derivatives() and outputs() share.
+struct BusBalance {
+    double sigma = 0.0;                        // shunt fraction
+    std::array<double, face_count> i_pv = {};  // A, bus-side panel currents with the shunts open
+    BatteryPoint batt;
+    State dx = {};
+};
+
+BusBalance bus_balance(const Model& m, const std::array<double, face_count>& iph, const DiscreteState& d,
+                       const State& x) {
+    const auto& p = m.parameters;
+    const double v = x[state_v_bus];
+    BusBalance b;
+    b.sigma = shunt_fraction(m, d, v);
+    // With the shunts closed all period long (gate on, or D = 1) no panel feeds the bus: no solve.
+    if (b.sigma < 1.0) b.i_pv = bus_side_currents(m, iph, v);
+    double i_in = 0.0;
+    for (double i : b.i_pv) i_in += i;
+    i_in *= (1.0 - b.sigma);  // eq. 4: I_bus = (1 − D) I; σ ∈ {0, 1} when switching
+    b.batt = battery_operating_point(p.battery, x[state_soc], v, d.charge_connected);
+    b.dx[state_v_bus] = (i_in - v / p.load_resistance - b.batt.current) / p.bus_capacitance;  // C dv/dt = Σ i
+    b.dx[state_soc] = b.batt.current / p.battery.capacity;  // charge balance, coulombic efficiency 1
+    return b;
 }
 
 }  // namespace
@@ -139,12 +166,20 @@ std::array<double, face_count> face_irradiance(const Model& m, const Inputs& u) 
     return g;
 }
 
+Illumination illuminate(const Model& m, const Inputs& u) {
+    Illumination l;
+    l.photocurrent = photocurrents(m, u);
+    for (std::size_t k = 0; k < face_count; ++k) l.i_sc[k] = panel_current(m.diode, l.photocurrent[k], 0.0);
+    l.i_hall = differential_currents(shunted_currents(m, l.photocurrent));
+    return l;
+}
+
 DiscreteState initialize(const Model& m, const Inputs& u, double t0, const State& x0) {
     DiscreteState d;
     d.period_origin = t0;
     d.charge_connected = x0[state_soc] <= m.parameters.battery.soc_connect;
     // The S/H starts as if it had been tracking: it holds the live differential current.
-    d.held_current = differential_currents(shunted_currents(m, photocurrents(m, u)));
+    d.held_current = illuminate(m, u).i_hall;
     if (m.parameters.fidelity == Fidelity::switching) {
         start_period(m, d, 0, x0[state_v_bus]);
     } else {
@@ -156,42 +191,33 @@ DiscreteState initialize(const Model& m, const Inputs& u, double t0, const State
 }
 
 State derivatives(const Model& m, const Inputs& u, const DiscreteState& d, double /*t*/, const State& x) {
-    const auto& p = m.parameters;
-    const double v = x[state_v_bus];
-    const double sigma = shunt_fraction(m, d, v);
-    const auto i_pv = bus_side_currents(m, photocurrents(m, u), v);
-    double i_in = 0.0;
-    for (double i : i_pv) i_in += i;
-    i_in *= (1.0 - sigma);  // eq. 4: I_bus = (1 − D) I; σ ∈ {0, 1} when switching
-    const auto batt = battery_operating_point(p.battery, x[state_soc], v, d.charge_connected);
-    State dx{};
-    dx[state_v_bus] = (i_in - v / p.load_resistance - batt.current) / p.bus_capacitance;  // C dv/dt = Σ i
-    dx[state_soc] = batt.current / p.battery.capacity;  // charge balance, coulombic efficiency 1
-    return dx;
+    return bus_balance(m, photocurrents(m, u), d, x).dx;
 }
 
-Outputs outputs(const Model& m, const Inputs& u, const DiscreteState& d, double /*t*/, const State& x) {
+Evaluation evaluate(const Model& m, const Illumination& l, const DiscreteState& d, double /*t*/, const State& x) {
     const auto& p = m.parameters;
     const double v = x[state_v_bus];
-    const auto iph = photocurrents(m, u);
-    Outputs y;
-    for (std::size_t k = 0; k < face_count; ++k) y.i_sc[k] = panel_current(m.diode, iph[k], 0.0);
-    const double sigma = shunt_fraction(m, d, v);
-    const auto i_pv = bus_side_currents(m, iph, v);
-    for (std::size_t k = 0; k < face_count; ++k) y.i_panel[k] = (1.0 - sigma) * i_pv[k];
-    const auto live = differential_currents(shunted_currents(m, iph));
+    const BusBalance b = bus_balance(m, l.photocurrent, d, x);
+    Evaluation e;
+    e.derivatives = b.dx;
+    Outputs& y = e.outputs;
+    y.i_sc = l.i_sc;
+    for (std::size_t k = 0; k < face_count; ++k) y.i_panel[k] = (1.0 - b.sigma) * b.i_pv[k];
     // Seed 001 §3: the S/H samples while the shunts are on and holds while they are off.
-    if (p.fidelity == Fidelity::averaged) y.i_sh = live;
-    else y.i_sh = d.gate ? live : d.held_current;
-    const auto batt = battery_operating_point(p.battery, x[state_soc], v, d.charge_connected);
+    if (p.fidelity == Fidelity::averaged) y.i_sh = l.i_hall;
+    else y.i_sh = d.gate ? l.i_hall : d.held_current;
     y.v_bus = v;
-    y.v_batt = batt.terminal_voltage;
-    y.i_batt = batt.current;
+    y.v_batt = b.batt.terminal_voltage;
+    y.i_batt = b.batt.current;
     y.soc = x[state_soc];
-    y.duty = p.fidelity == Fidelity::averaged ? sigma : d.duty;
-    y.gate = p.fidelity == Fidelity::averaged ? sigma > 0.0 : d.gate;
+    y.duty = p.fidelity == Fidelity::averaged ? b.sigma : d.duty;
+    y.gate = p.fidelity == Fidelity::averaged ? b.sigma > 0.0 : d.gate;
     y.i_load = v / p.load_resistance;
-    return y;
+    return e;
+}
+
+Outputs outputs(const Model& m, const Inputs& u, const DiscreteState& d, double t, const State& x) {
+    return evaluate(m, illuminate(m, u), d, t, x).outputs;
 }
 
 Indicators event_indicators(const Model& m, const Inputs&, const DiscreteState& d, double, const State& x) {
@@ -204,7 +230,11 @@ double next_time_event(const Model& m, const DiscreteState& d) {
     return d.next_event_time;
 }
 
-EventResult event_update(const Model& m, const Inputs& u, const DiscreteState& d0, double t, const State& x) {
+EventResult event_update(const Model& m, const Inputs& u, const DiscreteState& d, double t, const State& x) {
+    return event_update(m, illuminate(m, u), d, t, x);
+}
+
+EventResult event_update(const Model& m, const Illumination& l, const DiscreteState& d0, double t, const State& x) {
     DiscreteState d = d0;
     if (m.parameters.fidelity == Fidelity::switching) {
         // A bounded loop: normally one edge is due; more only if a host stepped past edges.
@@ -214,12 +244,11 @@ EventResult event_update(const Model& m, const Inputs& u, const DiscreteState& d
                 d.off_edge_pending = false;
                 d.next_event_time = period_start(d, m, d.period_index + 1);
                 // The S/H holds what it tracked up to this instant.
-                d.held_current = differential_currents(shunted_currents(m, photocurrents(m, u)));
+                d.held_current = l.i_hall;
             } else {
                 const bool gate_before = d.gate;
                 start_period(m, d, d.period_index + 1, x[state_v_bus]);  // controller sample (digital P)
-                if (gate_before && !d.gate)
-                    d.held_current = differential_currents(shunted_currents(m, photocurrents(m, u)));
+                if (gate_before && !d.gate) d.held_current = l.i_hall;
             }
         }
     }

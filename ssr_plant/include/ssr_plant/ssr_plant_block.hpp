@@ -85,12 +85,17 @@ private:
     // The fitted plant (panel fit ~0.2 ms) kept outside Data and rebuilt whenever the parameters
     // it was made from differ from the current ones (reset, FMU-state restore, tunable change).
     const ssr_plant::Model& plant();
+    // What the current inputs fix (panel photocurrents, short-circuit and Hall currents), checked and
+    // recomputed only when the inputs or the model changed: inputs are constant over a step.
+    const Illumination& illumination(const ssr_plant::Model& m);
     Inputs inputs() const;
     State state() const;
     Parameters parameters() const;
 
     std::optional<ssr_plant::Model> model_;
     Parameters model_parameters_{};
+    std::optional<Illumination> illumination_;
+    Inputs illumination_inputs_{};
 };
 
 }  // namespace ssr_plant

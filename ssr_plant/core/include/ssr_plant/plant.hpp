@@ -89,6 +89,24 @@ static_assert(std::is_trivially_copyable_v<Parameters> && std::is_trivially_copy
               std::is_trivially_copyable_v<DiscreteState> && std::is_trivially_copyable_v<Inputs> &&
               std::is_trivially_copyable_v<Outputs>);
 
+// What the inputs alone fix, independent of the states and the discrete state: each face's
+// photocurrent and true short-circuit current, and the Hall transducer's live differential current of
+// the shorted panels. Inputs are constant over a host's communication step, so a wrapper computes this
+// once per input change instead of once per right-hand side (12 of the 18 panel solves of outputs()).
+struct Illumination {
+    std::array<double, face_count> photocurrent = {};  // A, I_ph of each face
+    std::array<double, face_count> i_sc = {};          // A, each panel's short-circuit current (V = 0)
+    std::array<double, axis_count> i_hall = {};        // A, I(+axis) − I(−axis) through the closed shunts
+};
+
+// derivatives() and outputs() in one pass (the bus-side panel solves shared).
+struct Evaluation {
+    State derivatives = {};
+    Outputs outputs;
+};
+
+static_assert(std::is_trivially_copyable_v<Illumination> && std::is_trivially_copyable_v<Evaluation>);
+
 // Validates the parameters and fits the panel circuit. Throws ParameterError with a clear message.
 Model make_model(const Parameters& p);
 
@@ -104,6 +122,10 @@ Outputs outputs(const Model& m, const Inputs& u, const DiscreteState& d, double 
 Indicators event_indicators(const Model& m, const Inputs& u, const DiscreteState& d, double t, const State& x);
 double next_time_event(const Model& m, const DiscreteState& d);  // no_time_event if none
 
+// The same through a precomputed illumination (inputs checked by the caller): identical results.
+Illumination illuminate(const Model& m, const Inputs& u);
+Evaluation evaluate(const Model& m, const Illumination& l, const DiscreteState& d, double t, const State& x);
+
 struct EventResult {
     DiscreteState discrete;
     bool changed = false;  // any discrete variable changed (for valuesOfContinuousStatesChanged = false,
@@ -113,5 +135,6 @@ struct EventResult {
 // controller sample at a period start, the S/H hold when the gate opens, and the charge switch.
 // Idempotent: a second call at the same t with the result changes nothing.
 EventResult event_update(const Model& m, const Inputs& u, const DiscreteState& d, double t, const State& x);
+EventResult event_update(const Model& m, const Illumination& l, const DiscreteState& d, double t, const State& x);
 
 }  // namespace ssr_plant
