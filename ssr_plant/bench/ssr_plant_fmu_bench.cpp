@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <string_view>
 
 #include "fmu/cs_solver.hpp"
 #include "fmu/model_runner.hpp"
@@ -13,8 +14,10 @@
 
 int main(int argc, char** argv) {
     const double duration = argc > 1 ? std::atof(argv[1]) : 10.0;
-    const double h = argc > 2 ? std::atof(argv[2]) : 1e-3;  // communication step
+    const double h = argc > 2 ? std::atof(argv[2]) : 0.5e-3;  // communication step: inputs every 0.5 ms
+    const char* only = argc > 3 ? argv[3] : nullptr;
     for (const char* fidelity : {"switching", "averaged"}) {
+        if (only && std::string_view(only) != fidelity) continue;
         fmu::ModelRunner runner{std::make_unique<ssr_plant::SsrPlantBlock>()};
         auto& d = static_cast<ssr_plant::SsrPlantBlock&>(runner.model()).data();
         d.fidelity.assign(fidelity);

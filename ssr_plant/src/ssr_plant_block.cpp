@@ -1,6 +1,7 @@
 #include "ssr_plant/ssr_plant_block.hpp"
 
 #include <cstring>
+#include <stdexcept>
 
 #include "fmu/errors.hpp"
 
@@ -127,11 +128,22 @@ Parameters SsrPlantBlock::parameters() const {
     return p;
 }
 
+namespace {
+// The core reports bad parameters as ParameterError; the runtime's error type carries the same reason.
+ssr_plant::Model fitted(const Parameters& p) {
+    try {
+        return make_model(p);
+    } catch (const std::invalid_argument& e) {
+        throw fmu::Error(e.what());
+    }
+}
+}  // namespace
+
 const ssr_plant::Model& SsrPlantBlock::plant() {
     const Parameters p = parameters();
     // Parameters{} is value-initialized (padding zeroed) on both sides, so bytes compare values.
     if (!model_ || std::memcmp(&p, &model_parameters_, sizeof p) != 0) {
-        model_ = make_model(p);
+        model_ = fitted(p);
         model_parameters_ = p;
         illumination_.reset();
     }
@@ -154,14 +166,18 @@ Inputs SsrPlantBlock::inputs() const {
     u.sun_body = d.sun_body;
     u.irradiance = d.irradiance;
     u.albedo_face = d.albedo_face;
-    check_inputs(u);
+    try {
+        check_inputs(u);
+    } catch (const std::invalid_argument& e) {
+        throw fmu::Error(e.what());  // a bad input value is the caller's error (fmi2Error), not a crash
+    }
     return u;
 }
 
 State SsrPlantBlock::state() const { return {data().v_cap, data().soc_state}; }
 
 void SsrPlantBlock::validate() const {
-    make_model(parameters());  // throws ParameterError (std::invalid_argument) with the reason
+    fitted(parameters());  // throws fmu::Error with the core's reason
     if (!(data().soc_connect < data().soc_disconnect)) throw fmu::Error("soc_connect must be below soc_disconnect");
 }
 

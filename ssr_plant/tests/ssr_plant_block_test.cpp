@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <memory>
 
 #include "fmu/cs_solver.hpp"
+#include "fmu/errors.hpp"
 #include "fmu/model_runner.hpp"
 #include "ssr_plant/ssr_plant_block.hpp"
 
@@ -101,40 +103,78 @@ void expect_seed_physics(const SeedResult& r, const char* fidelity) {
 }
 
 TEST(SsrFmu, SeedScenarioSwitchingHoldsTheBusAndFollowsTheSun) {
-    const auto r = seed_scenario("switching", 0.5);
+    const auto r = seed_scenario("switching", 1.0);
     expect_seed_physics(r, "switching");
 }
 
 TEST(SsrFmu, SeedScenarioAveragedAgreesWithSwitching) {
-    const auto avg = seed_scenario("averaged", 0.5);
+    const auto avg = seed_scenario("averaged", 1.0);
     expect_seed_physics(avg, "averaged");
-    const auto sw = seed_scenario("switching", 0.5);
+    const auto sw = seed_scenario("switching", 1.0);
     EXPECT_NEAR(avg.v_mean, sw.v_mean, 0.03);  // the average of the switched bus is the averaged bus
 }
 
-TEST(SsrFmu, EclipseBatteryCarriesTheLoadAtThePredictedRate) {
+// Eclipse load current from the circuit laws alone (KCL at the battery terminal and at the bus, written
+// here independently of the core): EMF e behind R_int; from terminal to bus the charge path R_sw (only
+// when the charge switch is closed) in parallel with the series diode (V_f, R_d); bus load R_L; the panels
+// are dark, so the regulator idles and the battery feeds the load:
+//   i (R_L + R_int + 1/(g_sw + g_d)) = e − V_f g_d / (g_sw + g_d),   g = 1/R.
+// e is the linear interpolation of the OCV table at soc (the table is a parameter, read here).
+double eclipse_load_current(const SsrPlantData& d, double soc, bool connected) {
+    const double x = soc * 10.0;
+    const auto k = static_cast<std::size_t>(x);
+    const double e = d.battery_ocv[k] + (x - k) * (d.battery_ocv[k + 1] - d.battery_ocv[k]);
+    const double g_sw = connected ? 1.0 / d.charge_path_resistance : 0.0;
+    const double g_d = 1.0 / d.battery_diode_resistance;
+    return (e - d.battery_diode_forward_voltage * g_d / (g_sw + g_d)) /
+           (d.load_resistance + d.battery_internal_resistance + 1.0 / (g_sw + g_d));
+}
+
+void expect_eclipse_rate(double soc_start, bool connected) {
     PlantRun run;
     run.data().irradiance = 0.0;
-    run.data().soc_state = 0.85;  // above the connect threshold: charge switch open
+    run.data().soc_state = soc_start;  // below soc_connect (0.8): switch closed; above: open
     run.start();
-    run.step_to(0.5);  // the bus capacitor discharges to the battery's level first (RC = 0.135 s)
-    const double soc0 = run.data().soc, i_load = run.data().i_load;
-    EXPECT_LT(run.data().v_bus, 12.5);  // battery minus the series diode, not the 15 V bus
-    run.step_to(1.5);
-    const double rate = run.data().soc - soc0;  // per second
-    const double predicted = -i_load / run.data().battery_capacity;  // the load drawn from the battery
-    EXPECT_NEAR(rate, predicted, std::abs(predicted) * 0.02);
-    EXPECT_LT(run.data().i_batt, 0.0);  // discharging
+    // The 1500 uF bus falls from its 15 V start to the battery's level through the 90 Ohm load in
+    // RC ln(15/11.8) = 0.135 s x 0.24 = 33 ms; then the bus follows the battery with C (R_int + R_path)
+    // = 0.15 ms. From 0.1 s on the battery alone carries the load.
+    run.step_to(0.1);
+    const double soc0 = run.data().soc;
+    const double i_load = run.data().i_load;
+    const double i_expected = eclipse_load_current(run.data(), soc0, connected);
+    // The OCV moves by 1.3 V x 2e-5 over the run: the load current stays within 1e-5 relative.
+    EXPECT_NEAR(i_load, i_expected, 1e-4 * i_expected);
+    EXPECT_NEAR(run.data().i_batt, -i_load, 1e-6);  // bus capacitor current has died out
+    run.step_to(1.0);
+    const double slope = (run.data().soc - soc0) / 0.9;
+    // soc' = i_batt / capacity = −i_load / capacity (seed: coulomb counting). The slope is constant to 1e-5,
+    // which BDF integrates exactly; what remains is the integrator's error on a ~1.6e-5 change with
+    // absolute tolerance 1e-6 (rtol x nominal 1) — bounded loosely by 2 %.
+    const double predicted = -i_expected / run.data().battery_capacity;
+    EXPECT_NEAR(slope, predicted, 0.02 * std::abs(predicted));
+    std::printf("eclipse soc %.2f (%s): i_load %.6f A (hand %.6f), soc slope %.6e /s (predicted %.6e)\n", soc_start,
+                connected ? "switch closed" : "switch open", i_load, i_expected, slope, predicted);
+}
+
+TEST(SsrFmu, EclipseBatteryConnectedCarriesTheLoadAtThePredictedRate) {
+    expect_eclipse_rate(0.75, true);
+}
+
+TEST(SsrFmu, EclipseBatteryThroughItsDiodeCarriesTheLoadAtThePredictedRate) {
+    expect_eclipse_rate(0.85, false);
 }
 
 TEST(SsrFmu, InputsAreCheckedAndParametersValidated) {
     PlantRun run;
     run.data().irradiance = -1.0;
-    EXPECT_THROW(run.start(), std::exception);
+    EXPECT_THROW(run.start(), fmu::Error);
     PlantRun bad;
     bad.data().soc_connect = 0.95;
     bad.data().soc_disconnect = 0.9;
-    EXPECT_THROW(bad.runner.model().validate(), std::exception);
+    EXPECT_THROW(bad.runner.model().validate(), fmu::Error);
+    PlantRun inconsistent;
+    inconsistent.data().panel_imp = 0.7;  // above the short-circuit current: no single-diode fit
+    EXPECT_THROW(inconsistent.runner.model().validate(), fmu::Error);
 }
 
 }  // namespace
