@@ -1,5 +1,6 @@
 #include "ssr_plant/ssr_plant_block.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 
@@ -64,7 +65,8 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
     t.output("i_batt", &D::i_batt, "A", "Battery current, positive charging").depends_on({"v_cap", "soc_state"});
     t.output("soc", &D::soc, "1", "Battery state of charge").depends_on({"soc_state"});
     t.output("duty", &D::duty, "1", "Shunt duty cycle (fraction of the PWM period the panels are shorted)").depends_on({"v_cap"});
-    t.output("gate", &D::gate, "", "Shunt MOSFETs on (switching); averaged: duty > 0 at the last event").depends_on({});
+    t.output("gate", &D::gate, "", "Shunt MOSFETs on (switching fidelity); always false in averaged fidelity, which has no gate")
+        .depends_on({});
     t.output("i_load", &D::i_load, "A", "Load current").depends_on({"v_cap"});
 }
 
@@ -139,18 +141,17 @@ ssr_plant::Model fitted(const Parameters& p) {
 }
 }  // namespace
 
-const ssr_plant::Model& SsrPlantBlock::plant() {
-    const Parameters p = parameters();
-    // Parameters{} is value-initialized (padding zeroed) on both sides, so bytes compare values.
-    if (!model_ || std::memcmp(&p, &model_parameters_, sizeof p) != 0) {
-        model_ = fitted(p);
-        model_parameters_ = p;
+const ssr_plant::Model& SsrPlantBlock::plant() const {
+    const std::byte* now = reinterpret_cast<const std::byte*>(&data()) + parameter_bytes_begin;
+    if (!model_ || std::memcmp(now, model_key_.data(), model_key_.size()) != 0) {
+        model_ = make_model(parameters());
+        std::memcpy(model_key_.data(), now, model_key_.size());
         illumination_.reset();
     }
     return *model_;
 }
 
-const Illumination& SsrPlantBlock::illumination(const ssr_plant::Model& m) {
+const Illumination& SsrPlantBlock::illumination(const ssr_plant::Model& m) const {
     const Inputs u = inputs();  // checked on every use: a bad input is reported where it is used
     // Inputs{} fields are all doubles (no padding): equal bytes are equal values.
     if (!illumination_ || std::memcmp(&u, &illumination_inputs_, sizeof u) != 0) {
@@ -158,6 +159,11 @@ const Illumination& SsrPlantBlock::illumination(const ssr_plant::Model& m) {
         illumination_inputs_ = u;
     }
     return *illumination_;
+}
+
+bool SsrPlantBlock::gate_output() const {
+    // The averaged plant has no gate, only a continuous duty (an output of its own).
+    return plant().parameters.fidelity == Fidelity::switching && data().discrete.gate;
 }
 
 Inputs SsrPlantBlock::inputs() const {
@@ -185,7 +191,7 @@ void SsrPlantBlock::initialize(double t) {
     auto& d = data();
     const ssr_plant::Model& m = plant();
     d.discrete = ssr_plant::initialize(m, inputs(), t, state());
-    d.gate = d.discrete.gate;
+    d.gate = gate_output();
 }
 
 void SsrPlantBlock::evaluate(double t) {
@@ -218,14 +224,12 @@ fmu::EventUpdate SsrPlantBlock::event_update(double t, bool) {
     const ssr_plant::Model& m = plant();
     const EventResult r = ssr_plant::event_update(m, illumination(m), d.discrete, t, state());
     d.discrete = r.discrete;
-    d.gate = d.discrete.gate;
+    d.gate = gate_output();
     return {};  // the core settles an instant in one call; states never jump
 }
 
 double SsrPlantBlock::next_time_event() const {
-    // model_ is current: the runtime calls this after initialize/event_update, which refreshed it.
-    if (!model_) return fmu::no_time_event;
-    return ssr_plant::next_time_event(*model_, data().discrete);
+    return ssr_plant::next_time_event(plant(), data().discrete);  // PWM edges (switching) or none
 }
 
 }  // namespace ssr_plant

@@ -43,15 +43,15 @@ std::array<double, face_count> photocurrents(const Model& m, const Inputs& u) {
 }
 
 // Current each panel pushes through its OR diode into the bus when its shunt switch is off: the panel
-// sits at v_bus + V_f + I R_or; a reverse-biased diode (panel below bus + V_f) passes nothing, and such a
-// panel (every dark face) is recognised without a solve.
+// sits at v_bus + V_f + I R_or; a reverse-biased diode (panel below bus + V_f) passes nothing. A dark
+// panel (I_ph = 0: every face turned away from the sun without albedo) is below any bus V >= 0: no solve.
 std::array<double, face_count> bus_side_currents(const Model& m, const std::array<double, face_count>& iph,
                                                  double v_bus) {
     const auto& p = m.parameters;
     const double v_anode = v_bus + p.or_diode_forward_voltage;
     std::array<double, face_count> i{};
     for (std::size_t k = 0; k < face_count; ++k)
-        if (panel_delivers(m.diode, iph[k], v_anode))
+        if (iph[k] > 0.0 || v_anode < 0.0)
             i[k] = std::max(0.0, panel_current(m.diode, iph[k], v_anode, p.or_diode_resistance));
     return i;
 }

@@ -186,10 +186,4 @@ double panel_current(const DiodeModel& m, double iph, double v, double extra_ser
     return (x - v) / rs;
 }
 
-bool panel_delivers(const DiodeModel& m, double iph, double v) {
-    iph = std::max(0.0, iph);
-    if (iph == 0.0 && v >= 0.0) return false;  // a dark panel never forward-biases into V >= 0
-    return iph - m.saturation_current * std::expm1(v / m.ideality_voltage) - v / m.shunt_resistance > 0.0;
-}
-
 }  // namespace ssr_plant

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 
@@ -12,7 +13,9 @@
 
 namespace ssr_plant {
 
-// Every variable of the block; defaults are the core's (parameters.hpp says which are the seed's).
+// Every variable of the block; defaults are the core's (parameters.hpp says which are the seed's and
+// which are assumed), except angular_response: the FMU defaults to the measured Kelly cosine of a real
+// panel (seed 000 fig. 4); the seed-scenario systems select "cosine", the law eq. 5 assumes.
 struct SsrPlantData {
     // inputs
     std::array<double, 3> sun_body{0.0, 0.0, 1.0};
@@ -68,6 +71,12 @@ struct SsrPlantData {
     DiscreteState discrete{};
 };
 
+// The parameter fields of SsrPlantData are contiguous, from `fidelity` up to (not including) `v_cap`:
+// the fitted model is keyed on these bytes (a test checks that every declared parameter lies inside).
+// Equal bytes are equal values; unequal bytes (padding, a string's tail) only cost a refit.
+inline constexpr std::size_t parameter_bytes_begin = offsetof(SsrPlantData, fidelity);
+inline constexpr std::size_t parameter_bytes_end = offsetof(SsrPlantData, v_cap);
+
 class SsrPlantBlock : public fmu::Block<SsrPlantBlock, SsrPlantData> {
 public:
     static void declare(fmu::Table<SsrPlantData>& t);
@@ -84,18 +93,20 @@ public:
 private:
     // The fitted plant (panel fit ~0.2 ms) kept outside Data and rebuilt whenever the parameters
     // it was made from differ from the current ones (reset, FMU-state restore, tunable change).
-    const ssr_plant::Model& plant();
+    // const: a cache, refreshed from any call (next_time_event() too, after an FMU-state restore).
+    const ssr_plant::Model& plant() const;
     // What the current inputs fix (panel photocurrents, short-circuit and Hall currents), checked and
     // recomputed only when the inputs or the model changed: inputs are constant over a step.
-    const Illumination& illumination(const ssr_plant::Model& m);
+    const Illumination& illumination(const ssr_plant::Model& m) const;
     Inputs inputs() const;
     State state() const;
+    bool gate_output() const;
     Parameters parameters() const;
 
-    std::optional<ssr_plant::Model> model_;
-    Parameters model_parameters_{};
-    std::optional<Illumination> illumination_;
-    Inputs illumination_inputs_{};
+    mutable std::optional<ssr_plant::Model> model_;
+    mutable std::array<std::byte, parameter_bytes_end - parameter_bytes_begin> model_key_{};  // its parameter bytes
+    mutable std::optional<Illumination> illumination_;
+    mutable Inputs illumination_inputs_{};
 };
 
 }  // namespace ssr_plant

@@ -39,10 +39,4 @@ double photocurrent(const DiodeModel& m, double effective_irradiance);
 // for finite arguments (photocurrent ≥ 0).
 double panel_current(const DiodeModel& m, double photocurrent, double voltage, double extra_series_resistance = 0.0);
 
-// Whether the panel pushes a positive current into a node held at V: eq. 2 at I = 0,
-// I_ph − I_D (e^{V/a} − 1) − V/R_sh > 0 (the diode voltage then lies above V, so I = (x − V)/R_s > 0;
-// the series resistance does not enter). One exponential instead of a Newton solve: a panel below the
-// bus (dark face, or one lit too weakly) is skipped exactly.
-bool panel_delivers(const DiodeModel& m, double photocurrent, double voltage);
-
 }  // namespace ssr_plant
