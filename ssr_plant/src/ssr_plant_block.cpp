@@ -34,7 +34,9 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
     t.parameter("shunt_switch_resistance", &D::shunt_switch_resistance, "Ohm", "On-resistance of each shunt MOSFET (assumed)").range(1e-4, 10.0);
     t.parameter("pwm_frequency", &D::pwm_frequency, "Hz", "PWM frequency of the shunt switches (seed: 5 kHz)").range(1.0, 1e6);
     t.parameter("bus_capacitance", &D::bus_capacitance, "F", "Bus capacitor (seed: 1500 uF)").min(1e-9);
-    t.parameter("load_resistance", &D::load_resistance, "Ohm", "Resistive load on the bus (seed: 90 Ohm)").min(1e-3);
+    t.parameter("load_resistance", &D::load_resistance, "Ohm", "Resistive load on the bus (seed: 90 Ohm); tunable: a load step")
+        .min(1e-3)
+        .tunable();
     t.parameter("bus_voltage_reference", &D::bus_voltage_reference, "V", "Bus voltage reference of the controller (seed: 15 V)").range(0.0, 100.0);
     t.parameter("controller_gain", &D::controller_gain, "%/V",
                 "Proportional gain, percent of duty per volt of bus error (seed: 300). Read as 300 per volt, the "

@@ -276,6 +276,67 @@ TEST(SsrFmu, EclipseBatteryThroughItsDiodeCarriesTheLoadAtThePredictedRate) {
     expect_eclipse_rate(0.85, false);
 }
 
+// The fitted model is keyed on the bytes [parameter_bytes_begin, parameter_bytes_end) of the data: every
+// parameter must lie inside (or a change of it would go unnoticed), and nothing else (or every input or
+// state change would refit the panel).
+TEST(SsrFmu, ModelKeyCoversExactlyTheParameters) {
+    int parameters = 0;
+    for (const auto& v : SsrPlantBlock::static_table().variables()) {
+        const bool inside = v.offset >= parameter_bytes_begin && v.offset < parameter_bytes_end;
+        EXPECT_EQ(inside, v.causality == fmu::Causality::parameter) << v.name;
+        parameters += v.causality == fmu::Causality::parameter;
+    }
+    EXPECT_GE(parameters, 30);
+}
+
+// A load step mid-run (load_resistance is tunable): the cached model must follow. Averaged fidelity, the
+// sun on +z: in steady state the panels' current into the bus equals the new load's V / R (KCL at the bus,
+// battery idle) and the duty is the P law 3 (V − 15).
+TEST(SsrFmu, LoadStepRefitsTheCachedModel) {
+    PlantRun run;
+    run.data().fidelity = "averaged";
+    run.data().sun_body = {0.0, 0.0, 1.0};
+    run.start();
+    run.step_to(0.2);
+    const double v90 = run.data().v_bus;
+    EXPECT_NEAR(run.data().i_load, v90 / 90.0, 1e-12);
+    run.data().load_resistance = 45.0;
+    run.step_to(0.4);
+    const auto& d = run.data();
+    EXPECT_NEAR(d.i_load, d.v_bus / 45.0, 1e-12);
+    double into_bus = 0.0;
+    for (double i : d.i_panel) into_bus += i;
+    EXPECT_NEAR(into_bus, d.v_bus / 45.0, 1e-6);
+    EXPECT_NEAR(d.duty, 3.0 * (d.v_bus - 15.0), 1e-9);
+    EXPECT_LT(d.v_bus, v90);  // twice the load: less to shunt, lower duty, lower bus
+}
+
+// An FMU-state restore across a parameter change: the restored bytes bring back their parameters, and
+// the model cached for the changed ones must not survive. The run after the restore equals, bit for bit,
+// a run continued from a copy of the saved block.
+TEST(SsrFmu, RestoreAcrossAParameterChangeUsesTheRestoredParameters) {
+    PlantRun run;
+    run.data().sun_body = seed_sun(0.7);
+    run.start();
+    run.step_to(0.01);
+    const auto saved = run.runner.model().clone();
+    const double t_saved = run.runner.time();
+    run.data().bus_voltage_reference = 14.0;  // as if set between save and restore (a reset, another run)
+    run.step_to(0.02);
+    EXPECT_LT(run.data().v_bus, 14.5);  // the change took effect: regulated near 14 + D/3
+    run.runner.restore(*saved, t_saved);
+    run.step_to(0.03);
+
+    PlantRun copy;
+    copy.runner.restore(*saved, t_saved);
+    copy.solver = std::make_unique<fmu::CsSolver>(copy.runner, 1e-6);
+    copy.step_to(0.03);
+    EXPECT_EQ(run.data().bus_voltage_reference, 15.0);
+    EXPECT_EQ(run.data().v_bus, copy.data().v_bus);
+    EXPECT_EQ(run.data().duty, copy.data().duty);
+    EXPECT_GT(run.data().v_bus, 15.0);  // regulated to the restored 15 V reference, not 14 V
+}
+
 TEST(SsrFmu, InputsAreCheckedAndParametersValidated) {
     PlantRun run;
     run.data().irradiance = -1.0;
