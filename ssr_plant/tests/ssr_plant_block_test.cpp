@@ -329,6 +329,36 @@ TEST(SsrFmu, EclipseBatteryThroughItsDiodeCarriesTheLoadAtThePredictedRate) {
     expect_eclipse_rate(0.85, false);
 }
 
+// The hysteresis charge switch through the FMU: a battery of 7.2 C (2 mAh, so that it fills in seconds)
+// starting at soc 0.79 (below soc_connect 0.8: switch closed) charges from the 15.28 V bus through its 5 Ω
+// path, ~(15.28 − 12.5) / 5.05 = 0.55 A, i.e. soc' ≈ 0.076 /s: full (soc_disconnect 1.0) after ~3 s. Then
+// exactly one state event opens the switch, the diode blocks (bus above battery) and soc stays at 1.
+void expect_charge_cycle(const char* fidelity) {
+    PlantRun run;
+    auto& d = run.data();
+    d.fidelity.assign(fidelity);
+    d.sun_body = {0.0, 0.0, 1.0};
+    d.battery_capacity = 7.2;
+    d.soc_state = 0.79;
+    run.start();
+    run.step_to(0.5);
+    EXPECT_GT(d.i_batt, 0.4) << fidelity;  // charging at about C/4 of the real battery
+    EXPECT_EQ(run.solver->statistics().state_events, 0) << fidelity;
+    run.step_to(5.0);
+    EXPECT_EQ(run.solver->statistics().state_events, 1) << fidelity;
+    EXPECT_NEAR(d.soc, 1.0, 1e-6) << fidelity;  // stopped at the threshold, located by CVODE's root finding
+    EXPECT_EQ(d.i_batt, 0.0) << fidelity;
+    const double soc_full = d.soc;
+    run.step_to(6.0);
+    EXPECT_EQ(d.soc, soc_full) << fidelity;
+    EXPECT_EQ(run.solver->statistics().state_events, 1) << fidelity;  // no chattering at the threshold
+}
+
+TEST(SsrFmu, ChargeSwitchOpensOnceAtFullCharge) {
+    expect_charge_cycle("averaged");
+    expect_charge_cycle("switching");
+}
+
 // The fitted model is keyed on the bytes [parameter_bytes_begin, parameter_bytes_end) of the data: every
 // parameter must lie inside (or a change of it would go unnoticed), and nothing else (or every input or
 // state change would refit the panel).
