@@ -157,16 +157,18 @@ double panel_current(const DiodeModel& m, double iph, double v, double extra_ser
     // is strictly decreasing, so its root is unique. Bracket: g > 0 at x = min(0, V) − 1 (every term
     // is ≥ 0 and the last > 0); g < 0 beyond (I_ph + I_D + V/R_s) / (1/R_s + 1/R_sh) because
     // −I_D (e^{x/a} − 1) ≤ I_D.
+    // Conductances and 1/a once: the loop below then divides only for the Newton step.
+    const double inv_a = 1.0 / a, g_s = 1.0 / rs, g_sh = 1.0 / rsh;
     double lo = std::min(0.0, v) - 1.0;
-    double hi = (iph + i0 + v / rs) / (1.0 / rs + 1.0 / rsh);
+    double hi = (iph + i0 + v * g_s) / (g_s + g_sh);
     hi += 1e-9 * (1.0 + std::abs(hi));
     // Start where the panel is near short circuit (the usual operating region on the bus).
     double x = std::clamp(v + rs * iph, lo, hi);
-    double em1 = std::expm1(x / a);  // kept equal to expm1(x / a): one exponential serves g and g'
+    double em1 = std::expm1(x * inv_a);  // kept equal to expm1(x / a): one exponential serves g and g'
     for (int it = 0; it < 200; ++it) {
-        const double gx = iph - i0 * em1 - x / rsh - (x - v) / rs;
+        const double gx = iph - i0 * em1 - x * g_sh - (x - v) * g_s;
         if (gx == 0.0) break;
-        const double dgx = -i0 * (em1 + 1.0) / a - 1.0 / rsh - 1.0 / rs;
+        const double dgx = -i0 * (em1 + 1.0) * inv_a - g_sh - g_s;
         if (gx > 0) lo = x; else hi = x;
         const double tol = 1e-14 * std::max(1.0, std::abs(x));
         const double step = -gx / dgx;
@@ -176,7 +178,7 @@ double panel_current(const DiodeModel& m, double iph, double v, double extra_ser
         // just moved to x). The exponential follows without a call: e^{δ/a} = 1 + r + r²/2 (r = δ/a,
         // |r| < 1e-6: the dropped r³/6 is below rounding).
         if (step * step <= 2.0 * a * tol) {
-            const double r = step / a;
+            const double r = step * inv_a;
             em1 += (em1 + 1.0) * (r + 0.5 * r * r);
             x += step;
             break;
@@ -184,12 +186,12 @@ double panel_current(const DiodeModel& m, double iph, double v, double extra_ser
         // Safeguard: a Newton step that leaves the bracket (or is not finite) becomes a bisection.
         const double newton = x + step;
         x = (std::isfinite(newton) && newton > lo && newton < hi) ? newton : 0.5 * (lo + hi);
-        em1 = std::expm1(x / a);
+        em1 = std::expm1(x * inv_a);
         if (hi - lo <= tol) break;
     }
     // Read the current off the less sensitive branch.
-    const double diode_conductance = i0 * (em1 + 1.0) / a + 1.0 / rsh;
-    if (diode_conductance < 1.0 / rs) return iph - i0 * em1 - x / rsh;
+    const double diode_conductance = i0 * (em1 + 1.0) * inv_a + g_sh;
+    if (diode_conductance < g_s) return iph - i0 * em1 - x * g_sh;
     return (x - v) / rs;
 }
 
