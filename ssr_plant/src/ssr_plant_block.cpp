@@ -59,6 +59,10 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
 
     t.output("i_sh", &D::i_sh, "A", "Sample/hold of the differential Hall current I(+axis) - I(-axis) of the short-circuited panels")
         .depends_on({"sun_body", "irradiance", "albedo_face"});
+    t.output("i_face_sh", &D::i_face_sh, "A",
+             "Sample/hold of each face's Hall channel (+x, -x, +y, -y, +z, -z), the current of its short-circuited "
+             "panel; i_sh[k] = i_face_sh[2k-1] - i_face_sh[2k]")
+        .depends_on({"sun_body", "irradiance", "albedo_face"});
     t.output("i_sc", &D::i_sc, "A", "Each panel's true short-circuit current").depends_on({"sun_body", "irradiance", "albedo_face"});
     t.output("i_panel", &D::i_panel, "A", "Each panel's current delivered to the bus (averaged over the PWM state)")
         .depends_on({"sun_body", "irradiance", "albedo_face", "v_cap"});
@@ -87,9 +91,12 @@ fmu::ModelInfo SsrPlantBlock::describe() {
         "12 V battery charges through a charge switch with hysteresis (state events) and carries the load "
         "through a series diode in eclipse. The Hall transducer of each axis measures I(+axis) - I(-axis) of the "
         "shorted panels; its sample/hold tracks while the gate is on and holds while it is off (seed 001 "
-        "section 3): <code>i_sh / i_sc0</code> is the sun vector of eq. 5.</p>"
+        "section 3): <code>i_sh / i_sc0</code> is the sun vector of eq. 5. The same sample/hold on each face's "
+        "own Hall channel gives <code>i_face_sh[1..6]</code> (faces +x, -x, +y, -y, +z, -z), for an estimator "
+        "that uses each panel separately: <code>i_sh[k] = i_face_sh[2k-1] - i_face_sh[2k]</code>.</p>"
         "<p>In <code>averaged</code> fidelity the PWM is replaced by its state-space average over one period (no "
-        "PWM events) and the sample/hold by the continuous differential current: use it for whole orbits.</p>"
+        "PWM events) and the sample/hold by the continuous current (per axis and per face: the live current of "
+        "the panel short-circuited through its shunt switch): use it for whole orbits.</p>"
         "<p>The controller gain's unit is a modelling choice (see <code>controller_gain</code>). Assumed values "
         "(not in the seeds): the panel datasheet, the battery curve and resistances, diode drops, thresholds.</p>";
     info.default_experiment = {.start_time = 0.0, .stop_time = 10.0, .tolerance = 1e-6, .step_size = 1e-3};
@@ -204,6 +211,7 @@ void SsrPlantBlock::evaluate(double t) {
     d.der_soc_state = e.derivatives[state_soc];
     const Outputs& y = e.outputs;
     d.i_sh = y.i_sh;
+    d.i_face_sh = y.i_face_sh;
     d.i_sc = y.i_sc;
     d.i_panel = y.i_panel;
     d.v_bus = y.v_bus;

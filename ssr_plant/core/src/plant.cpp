@@ -170,7 +170,8 @@ Illumination illuminate(const Model& m, const Inputs& u) {
     Illumination l;
     l.photocurrent = photocurrents(m, u);
     for (std::size_t k = 0; k < face_count; ++k) l.i_sc[k] = panel_current(m.diode, l.photocurrent[k], 0.0);
-    l.i_hall = differential_currents(shunted_currents(m, l.photocurrent));
+    l.i_shunt = shunted_currents(m, l.photocurrent);
+    l.i_hall = differential_currents(l.i_shunt);
     return l;
 }
 
@@ -179,7 +180,7 @@ DiscreteState initialize(const Model& m, const Inputs& u, double t0, const State
     d.period_origin = t0;
     d.charge_connected = x0[state_soc] <= m.parameters.battery.soc_connect;
     // The S/H starts as if it had been tracking: it holds the live differential current.
-    d.held_current = illuminate(m, u).i_hall;
+    d.held_face_current = illuminate(m, u).i_shunt;
     if (m.parameters.fidelity == Fidelity::switching) {
         start_period(m, d, 0, x0[state_v_bus]);
     } else {
@@ -204,8 +205,15 @@ Evaluation evaluate(const Model& m, const Illumination& l, const DiscreteState& 
     y.i_sc = l.i_sc;
     for (std::size_t k = 0; k < face_count; ++k) y.i_panel[k] = (1.0 - b.sigma) * b.i_pv[k];
     // Seed 001 §3: the S/H samples while the shunts are on and holds while they are off.
-    if (p.fidelity == Fidelity::averaged) y.i_sh = l.i_hall;
-    else y.i_sh = d.gate ? l.i_hall : d.held_current;
+    // Averaged: no S/H, the live currents. The per-axis value is the difference of the per-face ones in
+    // both branches, computed the same way, so i_sh[k] == i_face_sh[2k] − i_face_sh[2k+1] bit for bit.
+    if (p.fidelity == Fidelity::averaged || d.gate) {
+        y.i_face_sh = l.i_shunt;
+        y.i_sh = l.i_hall;
+    } else {
+        y.i_face_sh = d.held_face_current;
+        y.i_sh = differential_currents(d.held_face_current);
+    }
     y.v_bus = v;
     y.v_batt = b.batt.terminal_voltage;
     y.i_batt = b.batt.current;
@@ -244,11 +252,11 @@ EventResult event_update(const Model& m, const Illumination& l, const DiscreteSt
                 d.off_edge_pending = false;
                 d.next_event_time = period_start(d, m, d.period_index + 1);
                 // The S/H holds what it tracked up to this instant.
-                d.held_current = l.i_hall;
+                d.held_face_current = l.i_shunt;
             } else {
                 const bool gate_before = d.gate;
                 start_period(m, d, d.period_index + 1, x[state_v_bus]);  // controller sample (digital P)
-                if (gate_before && !d.gate) d.held_current = l.i_hall;
+                if (gate_before && !d.gate) d.held_face_current = l.i_shunt;
             }
         }
     }

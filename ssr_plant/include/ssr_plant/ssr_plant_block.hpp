@@ -58,6 +58,7 @@ struct SsrPlantData {
     double der_soc_state = 0.0;
     // outputs
     std::array<double, 3> i_sh{};
+    std::array<double, 6> i_face_sh{};
     std::array<double, 6> i_sc{};
     std::array<double, 6> i_panel{};
     double v_bus = 15.0;

@@ -1,7 +1,7 @@
 // The whole power system (seed 000 §2–4, 001 §3–4) as an event-driven ODE for an external integrator:
 // six panels (one per face), the Sequential Shunt Regulator with its PWM and P controller, bus capacitor,
-// resistive load, battery with series diode and hysteresis charge switch, and the per-axis differential
-// Hall transducer with sample/hold.
+// resistive load, battery with series diode and hysteresis charge switch, and the Hall transducers with
+// sample/hold: one channel per face on its shunt current, and the per-axis differential (their difference).
 //
 // Protocol (FMI Model Exchange style), all functions pure:
 //   model = make_model(parameters)                      (throws ParameterError)
@@ -59,12 +59,15 @@ struct DiscreteState {
     bool off_edge_pending = false;    // the gate turns off at origin + (index + duty) · T
     bool charge_connected = false;    // battery charge MOSFET on
     double next_event_time = no_time_event;                  // s, next PWM edge (switching)
-    std::array<double, axis_count> held_current = {};        // A, S/H value, updated when the gate opens
+    // A, S/H value of each face's shunt current, updated when the gate opens. The per-axis S/H is their
+    // difference (one hold instant for both, so i_sh = i_face_sh[+] − i_face_sh[−] exactly).
+    std::array<double, face_count> held_face_current = {};
     friend bool operator==(const DiscreteState&, const DiscreteState&) = default;
 };
 
 struct Outputs {
     std::array<double, axis_count> i_sh = {};        // A, S/H of I(+axis) − I(−axis)
+    std::array<double, face_count> i_face_sh = {};   // A, S/H of each face's shunt current (i_sh per face)
     std::array<double, face_count> i_sc = {};        // A, each panel's true short-circuit current (V = 0)
     std::array<double, face_count> i_panel = {};     // A, each panel's current into the bus (period
                                                      // average in averaged mode)
@@ -90,13 +93,14 @@ static_assert(std::is_trivially_copyable_v<Parameters> && std::is_trivially_copy
               std::is_trivially_copyable_v<Outputs>);
 
 // What the inputs alone fix, independent of the states and the discrete state: each face's
-// photocurrent and true short-circuit current, and the Hall transducer's live differential current of
-// the shorted panels. Inputs are constant over a host's communication step, so a wrapper computes this
+// photocurrent and true short-circuit current, and the Hall transducers' live currents of the shorted
+// panels (per face, and per axis: their difference). Inputs are constant over a host's communication step, so a wrapper computes this
 // once per input change instead of once per right-hand side (12 of the 18 panel solves of outputs()).
 struct Illumination {
     std::array<double, face_count> photocurrent = {};  // A, I_ph of each face
     std::array<double, face_count> i_sc = {};          // A, each panel's short-circuit current (V = 0)
-    std::array<double, axis_count> i_hall = {};        // A, I(+axis) − I(−axis) through the closed shunts
+    std::array<double, face_count> i_shunt = {};       // A, each face's current through its closed shunt
+    std::array<double, axis_count> i_hall = {};        // A, I(+axis) − I(−axis) of i_shunt
 };
 
 // derivatives() and outputs() in one pass (the bus-side panel solves shared).
