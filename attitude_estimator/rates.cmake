@@ -16,7 +16,7 @@ target_include_directories(attitude_estimator_rates PUBLIC ${CMAKE_CURRENT_SOURC
 target_link_libraries(attitude_estimator_rates PUBLIC attitude_estimator_angular_rate PRIVATE PkgConfig::FFTW3)
 
 add_executable(attitude_estimator_rates_tests tests/spin_spectrum_test.cpp tests/angular_rate_test.cpp)
-target_link_libraries(attitude_estimator_rates_tests PRIVATE attitude_estimator_rates attitude_estimator_core
+target_link_libraries(attitude_estimator_rates_tests PRIVATE attitude_estimator_rates
                       Eigen3::Eigen GTest::gtest_main)
 gtest_discover_tests(attitude_estimator_rates_tests DISCOVERY_TIMEOUT 60)
 

@@ -59,7 +59,7 @@ struct SpinRates {
   double phi_dot = 0.0;     // rad/s, φ̇ (half the x/y pair's distance)
   SpectralLine z_line;      // the s_z line
   SpectralLine xy_lower;    // the lower line of the s_x/s_y pair (|θ̇ − φ̇|)
-  SpectralLine xy_upper;    // the upper line (θ̇ + φ̇)
+  SpectralLine xy_upper;    // the upper line (θ̇ + φ̇); with no_xy_pair, the single x/y line if one was found
   double bin_width = 0.0;   // rad/s, 2π / (N T)
   double window_seconds = 0.0;  // N T
   std::size_t samples = 0;  // samples in the window when analysed (N when valid)
