@@ -182,6 +182,17 @@ TEST(AngularRate, EqFourAndFiveBookkeeping) {
   EXPECT_EQ(est.result().increments, 0u);
 }
 
+TEST(AngularRate, AngleTripleIsEqFourAsPrinted) {
+  // Two ε triples 60 s apart: |Δε| = sqrt(0.3² + 0.4² + 1.2²) = 1.3 rad → 1.3/60 rad/s.
+  MeanAngularRate<double> est({.measure = RateMeasure::angle_triple});
+  EXPECT_FALSE(est.push(0.0, Vec3<double>{0.1, 0.2, 0.3}));
+  EXPECT_TRUE(est.push(60.0, Vec3<double>{0.4, -0.2, 1.5}));
+  EXPECT_TRUE(est.result().valid);
+  EXPECT_NEAR(est.result().rate, 1.3 / 60.0, 1e-15);
+  EXPECT_NEAR(angle_triple_distance(Vec3<float>{0, 0, 0}, Vec3<float>{3, 4, 0}), 5.0f, 1e-6f);
+  EXPECT_EQ(angle_triple_distance(Vec3<double>{NAN, 0, 0}, Vec3<double>{3, 4, 0}), 0.0);
+}
+
 TEST(AngularRate, DecimationAndGaps) {
   MeanAngularRate<float> est({.measure = RateMeasure::vector_angle, .window = 2, .min_interval = 2.0f,
                               .max_interval = 10.0f});

@@ -56,6 +56,13 @@ T direction_angle_distance(const Vec3<T>& a, const Vec3<T>& b) noexcept {
 }
 
 template <class T>
+T angle_triple_distance(const Vec3<T>& a, const Vec3<T>& b) noexcept {
+  if (!finite3(a) || !finite3(b)) return T(0);
+  const Vec3<T> d{a[0] - b[0], a[1] - b[1], a[2] - b[2]};  // ε10 − ε11, ε20 − ε21, ε30 − ε31   (004 eq. 4)
+  return std::sqrt(squared_norm(d));
+}
+
+template <class T>
 MeanAngularRate<T>::MeanAngularRate(const MeanAngularRateConfig<T>& config) noexcept : config_(config) {
   config_.window = std::clamp<std::size_t>(config_.window, 1, kMaxRateWindow);
   if (!(config_.min_interval >= T(0)) || !std::isfinite(config_.min_interval)) config_.min_interval = T(0);
@@ -108,7 +115,11 @@ bool MeanAngularRate<T>::accept(T t, const std::array<T, 4>& x, bool valid) noex
                                     Quaternion<T>{x[0], x[1], x[2], x[3]});
   } else {
     const Vec3<T> a{last_[0], last_[1], last_[2]}, b{x[0], x[1], x[2]};
-    angle = config_.measure == RateMeasure::vector_angle ? vector_angle(a, b) : direction_angle_distance(a, b);
+    switch (config_.measure) {
+      case RateMeasure::vector_angle: angle = vector_angle(a, b); break;
+      case RateMeasure::direction_angles: angle = direction_angle_distance(a, b); break;
+      default: angle = angle_triple_distance(a, b); break;
+    }
   }
   rate_[head_] = angle / dt;  // one increment of 004 eq. 4 (|ω̄_i| of eq. 5)
   dt_[head_] = dt;
@@ -141,6 +152,8 @@ template float vector_angle(const Vec3<float>&, const Vec3<float>&) noexcept;
 template double vector_angle(const Vec3<double>&, const Vec3<double>&) noexcept;
 template float direction_angle_distance(const Vec3<float>&, const Vec3<float>&) noexcept;
 template double direction_angle_distance(const Vec3<double>&, const Vec3<double>&) noexcept;
+template float angle_triple_distance(const Vec3<float>&, const Vec3<float>&) noexcept;
+template double angle_triple_distance(const Vec3<double>&, const Vec3<double>&) noexcept;
 template class MeanAngularRate<float>;
 template class MeanAngularRate<double>;
 

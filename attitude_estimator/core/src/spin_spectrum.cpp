@@ -243,7 +243,10 @@ const SpinRates& SpinSpectrum::analyze() noexcept {
 
   const auto* out = static_cast<const fftw_complex*>(out_);
   for (std::size_t c = 0; c < 3; ++c)
-    for (std::size_t k = 0; k < bins_; ++k) mag_[c * bins_ + k] = std::hypot(out[c * bins_ + k][0], out[c * bins_ + k][1]);
+    for (std::size_t k = 0; k < bins_; ++k) {
+      const fftw_complex& x = out[c * bins_ + k];
+      mag_[c * bins_ + k] = std::hypot(x[0], x[1]);
+    }
 
   // A line of amplitude A gives |X| = A · Σw / 2 at its bin (Hann coherent gain).
   const double to_amplitude = 2.0 / hann_sum_;

@@ -13,6 +13,9 @@
 //   vector_angle     — the angle between two successive measured vectors (sun or field), atan2(|a×b|, a·b):
 //                      it sees only the rate component perpendicular to the vector.
 //   direction_angles — eq. 5 as printed: sqrt(K² + L² + M²) from the direction angles of the vector.
+//   angle_triple     — eq. 4 as printed: the pushed Vec3 IS a triple of angles (rad), e.g. 004 eq. 2's
+//                      ε1, ε2, ε3 (sun_methods' three_faces printed_epsilon) or any Euler-angle set; the
+//                      increment is the Euclidean distance of the two triples.
 // The increments' rates are averaged as eq. 5 prints it: the arithmetic mean of angle_i / Δt_i over the
 // last `window` increments (window = 1 is eq. 4 exactly).
 //
@@ -30,7 +33,7 @@ namespace attitude_estimator {
 
 inline constexpr std::size_t kMaxRateWindow = 64;
 
-enum class RateMeasure { attitude_angle, vector_angle, direction_angles };
+enum class RateMeasure { attitude_angle, vector_angle, direction_angles, angle_triple };
 
 template <class T>
 struct MeanAngularRateConfig {
@@ -65,6 +68,11 @@ T vector_angle(const Vec3<T>& a, const Vec3<T>& b) noexcept;
 template <class T>
 T direction_angle_distance(const Vec3<T>& a, const Vec3<T>& b) noexcept;
 
+// sqrt((a1 − b1)² + (a2 − b2)² + (a3 − b3)²): the numerator of 004 eq. 4 for two angle triples (rad);
+// 0 if either is not finite.
+template <class T>
+T angle_triple_distance(const Vec3<T>& a, const Vec3<T>& b) noexcept;
+
 template <class T>
 class MeanAngularRate {
  public:
@@ -73,8 +81,8 @@ class MeanAngularRate {
   // One estimate at time t (s). A sample with valid == false or not finite breaks the chain (the next
   // valid sample starts a new pair; increments already taken stay in the window). A time not after the
   // last used sample is ignored. Returns true when the sample completed an increment.
-  // push(q) needs measure == attitude_angle; push(v) needs one of the vector measures; the wrong kind is
-  // ignored (returns false).
+  // push(q) needs measure == attitude_angle; push(v) one of the others (a vector, or an angle triple for
+  // angle_triple); the wrong kind is ignored (returns false).
   bool push(T t, const Quaternion<T>& q, bool valid = true) noexcept;
   bool push(T t, const Vec3<T>& v, bool valid = true) noexcept;
 
@@ -101,6 +109,8 @@ extern template float vector_angle(const Vec3<float>&, const Vec3<float>&) noexc
 extern template double vector_angle(const Vec3<double>&, const Vec3<double>&) noexcept;
 extern template float direction_angle_distance(const Vec3<float>&, const Vec3<float>&) noexcept;
 extern template double direction_angle_distance(const Vec3<double>&, const Vec3<double>&) noexcept;
+extern template float angle_triple_distance(const Vec3<float>&, const Vec3<float>&) noexcept;
+extern template double angle_triple_distance(const Vec3<double>&, const Vec3<double>&) noexcept;
 extern template class MeanAngularRate<float>;
 extern template class MeanAngularRate<double>;
 
