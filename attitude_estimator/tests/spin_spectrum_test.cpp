@@ -5,6 +5,7 @@
 // counting wrappers, as the core's no_allocation_test does; skipped under AddressSanitizer.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <atomic>
 #include <cmath>
 #include <cstddef>
@@ -192,6 +193,69 @@ TEST(SpinSpectrum, SpinAboutZOnlyHasNoPair) {
   EXPECT_EQ(spec.analyze().status, SpinStatus::no_z_line);
 }
 
+TEST(SpinSpectrum, PureSpinAboutOneAxisIsNoPairButShowsTheRate) {
+  // A constant spin ω about a fixed body axis n: the sun vector runs on a cone about n, every component has
+  // one line at |ω|. Not the seed's two-rate form → no x/y pair → invalid; the z line still shows |ω|.
+  const double w = 3.0;
+  const Eigen::Vector3d n = Eigen::Vector3d(0.3, 0.5, 0.8).normalized();
+  const Eigen::Vector3d s0 = Eigen::Vector3d(0.9, -0.2, 0.1).normalized();
+  SpinSpectrum spec(kDt, 512);
+  for (int i = 0; i < 512; ++i) {
+    const Eigen::Vector3d s = Eigen::AngleAxisd(-w * kDt * i, n) * s0;
+    spec.push(Vec3<double>{s.x(), s.y(), s.z()});
+  }
+  const SpinRates& r = spec.analyze();
+  EXPECT_FALSE(r.valid);
+  EXPECT_EQ(r.status, SpinStatus::no_xy_pair) << to_string(r.status);
+  EXPECT_NEAR(r.z_line.frequency, w, 0.1 * r.bin_width);
+  EXPECT_NEAR(r.xy_upper.frequency, w, 0.1 * r.bin_width);
+}
+
+TEST(SpinSpectrum, GeneralTumbleIsNotTakenForTheSeedForm) {
+  // A torque-free tumble (Euler's equations, RK4 at 5 ms, sun fixed in inertial space) has lines at
+  // combinations of its spin and nutation frequencies, not the seed's θ̇ and θ̇ ± φ̇ pattern. None of these
+  // six cases may come out valid (the 1:2:3 body at 1 rad/s has a centred but very unequal x/y pair, caught
+  // by min_pair_amplitude_ratio).
+  for (const Eigen::Vector3d& moments : {Eigen::Vector3d(3.2, 2.9, 3.6), Eigen::Vector3d(1.0, 2.0, 3.0)}) {
+    for (double w0 : {1.0, 3.0, 6.0}) {
+      const Eigen::Matrix3d j = moments.asDiagonal(), j_inv = j.inverse();
+      using State = Eigen::Matrix<double, 7, 1>;  // q (x, y, z, w; A(q) inertial → body), ω body
+      auto f = [&](const State& x) {
+        const Eigen::Vector3d q = x.segment<3>(0), w = x.segment<3>(4);
+        State d;
+        d.segment<3>(0) = 0.5 * (x[3] * w - w.cross(q));
+        d[3] = -0.5 * w.dot(q);
+        d.segment<3>(4) = j_inv * (-w.cross(j * w));
+        return d;
+      };
+      State x;
+      x << 0.1, -0.2, 0.3, 0.927, w0 * Eigen::Vector3d(1.0, -0.8, 1.0).normalized();
+      x.head<4>().normalize();
+      SpinSpectrum spec(kDt, 512);
+      const double h = kDt / 10;
+      const Eigen::Vector3d sun_eci = Eigen::Vector3d(0.6, -0.48, 0.64).normalized();
+      for (int i = 0; i < 512 * 10; ++i) {
+        if (i % 10 == 0) {
+          // Body sun = A(q) sun_eci; Eigen's active rotation matrix is A(q)ᵀ (quaternion constructor w first).
+          const Eigen::Quaterniond q(x[3], x[0], x[1], x[2]);
+          const Eigen::Vector3d sb = q.toRotationMatrix().transpose() * sun_eci;
+          spec.push(Vec3<double>{sb.x(), sb.y(), sb.z()});
+        }
+        const State k1 = f(x), k2 = f(x + 0.5 * h * k1), k3 = f(x + 0.5 * h * k2), k4 = f(x + h * k3);
+        x += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+        x.head<4>().normalize();
+      }
+      const SpinRates& r = spec.analyze();
+      EXPECT_FALSE(r.valid) << moments.transpose() << " |w0| " << w0 << ": theta_dot " << r.theta_dot << " phi_dot "
+                            << r.phi_dot;
+      std::printf("[rates] general tumble J (%.1f, %.1f, %.1f) |w0| %.0f rad/s: %s, z %.3f, x/y %.3f (A %.2f) "
+                  "%.3f (A %.2f)\n",
+                  moments.x(), moments.y(), moments.z(), w0, to_string(r.status), r.z_line.frequency,
+                  r.xy_lower.frequency, r.xy_lower.amplitude, r.xy_upper.frequency, r.xy_upper.amplitude);
+    }
+  }
+}
+
 TEST(SpinSpectrum, AutomaticAnalysisEveryMSamples) {
   SpinSpectrum spec(kDt, 256, 20);
   int runs = 0;
@@ -209,6 +273,9 @@ TEST(SpinSpectrum, BadArgumentsThrow) {
   EXPECT_THROW(SpinSpectrum(kDt, 8), std::invalid_argument);
   SpinSpectrumConfig c;
   c.min_snr = -1.0;
+  EXPECT_THROW(SpinSpectrum{c}, std::invalid_argument);
+  c = SpinSpectrumConfig{};
+  c.min_pair_amplitude_ratio = 1.5;
   EXPECT_THROW(SpinSpectrum{c}, std::invalid_argument);
 }
 

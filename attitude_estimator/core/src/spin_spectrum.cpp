@@ -75,7 +75,8 @@ SpinSpectrum::SpinSpectrum(const SpinSpectrumConfig& config) : config_(config) {
     throw std::invalid_argument("SpinSpectrum: sample_period must be positive and finite");
   if (config_.window < 16) throw std::invalid_argument("SpinSpectrum: window must be at least 16 samples");
   if (!(config_.min_snr >= 0.0) || !(config_.min_line_amplitude >= 0.0) ||
-      !(config_.max_center_mismatch_bins > 0.0))
+      !(config_.max_center_mismatch_bins > 0.0) || !(config_.min_pair_amplitude_ratio >= 0.0) ||
+      !(config_.min_pair_amplitude_ratio <= 1.0))
     throw std::invalid_argument("SpinSpectrum: thresholds must be non-negative (mismatch positive)");
   const std::size_t n = config_.window;
   bins_ = n / 2 + 1;
@@ -321,7 +322,10 @@ const SpinRates& SpinSpectrum::analyze() noexcept {
   const double centre = 0.5 * (l1.frequency + l2.frequency);
   const double half = 0.5 * (l2.frequency - l1.frequency);
   const double tol = config_.max_center_mismatch_bins * r.bin_width;
-  if (std::fabs(centre - r.z_line.frequency) <= tol) {
+  const double ratio = std::min(l1.amplitude, l2.amplitude) / std::max(l1.amplitude, l2.amplitude);
+  if (ratio < config_.min_pair_amplitude_ratio) {
+    r.status = SpinStatus::inconsistent;
+  } else if (std::fabs(centre - r.z_line.frequency) <= tol) {
     r.theta_dot = r.z_line.frequency;
     r.phi_dot = half;
   } else if (std::fabs(half - r.z_line.frequency) <= tol) {
@@ -329,6 +333,8 @@ const SpinRates& SpinSpectrum::analyze() noexcept {
     r.phi_dot = centre;
   } else {
     r.status = SpinStatus::inconsistent;
+  }
+  if (r.status == SpinStatus::inconsistent) {
     result_ = r;
     return result_;
   }

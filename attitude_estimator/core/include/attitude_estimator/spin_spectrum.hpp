@@ -35,6 +35,9 @@ struct SpinSpectrumConfig {
   double min_snr = 10.0;
   // The x/y pair must be centred on the z line to within this many bins (consistency check).
   double max_center_mismatch_bins = 1.0;
+  // The two x/y lines have equal amplitude in the seed's form (½ each in s_x and in s_y); a pair whose
+  // weaker line is below this fraction of the stronger one is not that form (status inconsistent).
+  double min_pair_amplitude_ratio = 0.25;
 };
 
 enum class SpinStatus {
@@ -42,7 +45,8 @@ enum class SpinStatus {
   window_not_full,    // fewer than N samples since construction, reset() or the last invalid sample
   no_z_line,          // no line in s_z above the floor (static sun, or a motion not of the seed's form)
   no_xy_pair,         // fewer than two lines in s_x/s_y: weak, or merged (φ̇ below about two bins)
-  inconsistent,       // the x/y pair is not centred on the z line (neither θ̇ ± φ̇ nor φ̇ ± θ̇)
+  inconsistent,       // the x/y pair is not centred on the z line (neither θ̇ ± φ̇ nor φ̇ ± θ̇), or its two
+                      // amplitudes differ by more than min_pair_amplitude_ratio
 };
 
 const char* to_string(SpinStatus s) noexcept;
@@ -70,7 +74,7 @@ struct SpinRates {
 class SpinSpectrum {
  public:
   // Throws std::invalid_argument unless sample_period > 0 and finite, window >= 16, min_snr >= 0,
-  // min_line_amplitude >= 0, max_center_mismatch_bins > 0.
+  // min_line_amplitude >= 0, max_center_mismatch_bins > 0, 0 <= min_pair_amplitude_ratio <= 1.
   explicit SpinSpectrum(const SpinSpectrumConfig& config);
   SpinSpectrum(double sample_period, std::size_t window, std::size_t analysis_interval = 0);
   ~SpinSpectrum();
