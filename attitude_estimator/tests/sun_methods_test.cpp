@@ -352,6 +352,42 @@ TYPED_TEST(EstimatorCoreSunMethods, ConesRefuseForbiddenCubeJumpsUntilDarkness) 
   EXPECT_EQ(st.cube_state, cube_state_of(1, 0, 0));
 }
 
+TYPED_TEST(EstimatorCoreSunMethods, ConesAllowASmallStepAcrossAnAxisWhenAsked) {
+  using T = TypeParam;
+  // (0.7, 0.1, 0.707) to (0.7, −0.1, 0.707): 11.5° apart, y flips sign without a sample in the y-dark band.
+  const Eigen::Vector3d a = Eigen::Vector3d(0.7, 0.1, 0.707).normalized();
+  const Eigen::Vector3d b = Eigen::Vector3d(0.7, -0.1, 0.707).normalized();
+  auto cfg = config<T>(SunMethod::cones, Law::cosine);
+  cfg.cube_refusals_before_reset = 0;
+  SunMethodState<T> st;
+  ASSERT_TRUE(sun_from_faces(currents<T>(a, Law::cosine), cfg, st).valid);
+  EXPECT_FALSE(sun_from_faces(currents<T>(b, Law::cosine), cfg, st).valid);  // the graph alone: refused
+  cfg.cube_max_step = T(15 * kDeg);
+  const auto r = sun_from_faces(currents<T>(b, Law::cosine), cfg, st);
+  ASSERT_TRUE(r.valid);
+  EXPECT_LT(angle_to(r.unit, b), tol<T>(1e-5, 1e-12));
+  // A 180° jump stays refused.
+  EXPECT_FALSE(sun_from_faces(currents<T>(Eigen::Vector3d(-b), Law::cosine), cfg, st).valid);
+}
+
+TYPED_TEST(EstimatorCoreSunMethods, ConesInvalidOnAlbedoAlone) {
+  using T = TypeParam;
+  // Eclipse with the Earth lighting one, two or three faces: no sun direction explains the readings (each
+  // candidate would light some face far more than it reads).
+  const auto cfg = config<T>(SunMethod::cones, Law::cosine);
+  SunMethodState<T> st;
+  const std::array<std::array<double, 6>, 3> cases = {{{0, 0, 0, 0, 0, 0.3},
+                                                       {0, 0.2, 0, 0, 0, 0.3},
+                                                       {0, 0.1, 0.15, 0, 0, 0.3}}};
+  for (const auto& c : cases) {
+    std::array<T, 6> i{};
+    for (int k = 0; k < 6; ++k) i[k] = T(c[k] * kNorm);
+    const auto r = sun_from_faces(i, cfg, st);
+    EXPECT_FALSE(r.valid);
+    EXPECT_EQ(st.cube_state, kCubeDark);
+  }
+}
+
 // ---- three faces ----
 
 TYPED_TEST(EstimatorCoreSunMethods, ThreeFacesPrintedVersusConsistentVersusTruth) {

@@ -123,7 +123,9 @@ SunMethodResult<T> sun_cones(const std::array<T, 6>& i_face, const SunMethodConf
   for (int i = 0; i < n; ++i) {
     if (!cand[i].feasible) continue;
     if (best_any < 0 || better(cand[i], cand[best_any], state)) best_any = i;
-    if (!cube_transition_allowed(state.cube_state, cand[i].cube)) continue;
+    const bool small_step = state.has_last && cfg.cube_max_step > T(0) &&
+                            dot(cand[i].v, state.last_unit) >= std::cos(cfg.cube_max_step);
+    if (!small_step && !cube_transition_allowed(state.cube_state, cand[i].cube)) continue;
     if (best < 0 || better(cand[i], cand[best], state)) best = i;
   }
   if (best < 0 && best_any >= 0) {

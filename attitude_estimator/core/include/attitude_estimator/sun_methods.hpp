@@ -70,6 +70,10 @@ struct SunMethodConfig {
   // cones: after this many consecutive samples refused by the cube graph the new state is accepted anyway
   // (recovery from a missed sample); 0 = refuse until darkness.
   int cube_refusals_before_reset = 4;
+  // cones: a graph-forbidden transition is allowed anyway when the new direction is within this angle (rad)
+  // of the last accepted one (a spin too fast for the sampling to catch the narrow single-face states);
+  // 0 (default) = the seed's graph alone.
+  T cube_max_step = T(0);
   // three_faces: the consistent admissibility |c1² + c2² + c3² − 1| ≤ this (the normalization of eq. 3).
   T normalization_tolerance = T(0.05);
   // three_faces: the printed admissibility |3c1 + c2 − c3 − 2| ≤ this (eq. 3 as printed; reported only).
