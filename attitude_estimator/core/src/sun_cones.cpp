@@ -145,7 +145,9 @@ SunMethodResult<T> sun_cones(const std::array<T, 6>& i_face, const SunMethodConf
     return out;
   }
   const Candidate<T>& b = cand[best];
-  // Average the candidates of the agreeing pairs that cluster around the chosen one.
+  // Average the candidates of the agreeing pairs that cluster around the chosen one. The chosen candidate's
+  // mirror joins when it explains exactly the same faces (both feasible: the third component is inside the
+  // dark band of both its faces, sign unknown): the average puts it at 0, halving the worst error.
   Vec3<T> sum{};
   const T cos_cluster = std::cos(cfg.cone_cluster_angle);
   int used = 0;
@@ -153,21 +155,29 @@ SunMethodResult<T> sun_cones(const std::array<T, 6>& i_face, const SunMethodConf
     const Candidate<T>& k = cand[i];
     if (!k.feasible || (k.faces & ~b.agree) != 0) continue;
     if (k.faces != b.faces && (k.faces & (k.faces - 1)) == 0) continue;  // single-face: only as the choice
-    if (dot(k.v, b.v) < cos_cluster) continue;
+    const bool mirror = k.faces == b.faces && k.agree == b.agree && k.excess == b.excess;
+    if (!mirror && dot(k.v, b.v) < cos_cluster) continue;
     for (int j = 0; j < 3; ++j) sum[j] += k.v[j];
     ++used;
   }
   const T len = std::sqrt(squared_norm(sum));
   out.unit = (used > 0 && len > T(0)) ? scaled(sum, T(1) / len) : b.v;
   out.rejected_faces = static_cast<std::uint8_t>(fr.lit & ~b.agree);
-  out.cube_state = b.cube;
+  {
+    int s[3] = {0, 0, 0};  // the cube state of the direction returned
+    for (int k = 0; k < 6; ++k)
+      if (panel_response::response_from_cos(cfg.response, T(face_sign(k)) * out.unit[face_axis(k)]) >
+          cfg.dark_threshold)
+        s[face_axis(k)] = face_sign(k);
+    out.cube_state = cube_state_of(s[0], s[1], s[2]);
+  }
   out.residual = b.n_agree > 0 ? std::sqrt(b.sq / T(b.n_agree)) : T(0);
   T n2 = T(0);
   for (int k = 0; k < 6; ++k)
     if (b.agree & face_bit(k)) n2 += c[k] * c[k];
   out.norm = std::sqrt(n2);
   out.valid = b.n_agree >= 1;
-  state.cube_state = b.cube;
+  state.cube_state = out.cube_state;
   state.refusals = 0;
   state.last_unit = out.unit;
   state.has_last = true;
