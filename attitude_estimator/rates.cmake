@@ -6,6 +6,9 @@
 # The heap-free attitude_estimator_core is not touched.
 
 pkg_check_modules(FFTW3 REQUIRED IMPORTED_TARGET fftw3)
+# attitude_estimator.fmu links this library, and an FMU binary may need nothing but the C runtime: link
+# FFTW's static archive (Debian's is position-independent) when there is one, the shared library otherwise.
+find_library(FFTW3_STATIC_LIBRARY NAMES libfftw3.a HINTS ${FFTW3_LIBRARY_DIRS})
 
 add_library(attitude_estimator_angular_rate STATIC core/src/angular_rate.cpp)
 target_include_directories(attitude_estimator_angular_rate PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/core/include)
@@ -13,7 +16,13 @@ target_compile_options(attitude_estimator_angular_rate PRIVATE -fno-exceptions)
 
 add_library(attitude_estimator_rates STATIC core/src/spin_spectrum.cpp)
 target_include_directories(attitude_estimator_rates PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/core/include)
-target_link_libraries(attitude_estimator_rates PUBLIC attitude_estimator_angular_rate PRIVATE PkgConfig::FFTW3)
+target_link_libraries(attitude_estimator_rates PUBLIC attitude_estimator_angular_rate)
+if(FFTW3_STATIC_LIBRARY)
+  target_include_directories(attitude_estimator_rates PRIVATE ${FFTW3_INCLUDE_DIRS})
+  target_link_libraries(attitude_estimator_rates PRIVATE ${FFTW3_STATIC_LIBRARY} m)
+else()
+  target_link_libraries(attitude_estimator_rates PRIVATE PkgConfig::FFTW3)
+endif()
 
 add_executable(attitude_estimator_rates_tests tests/spin_spectrum_test.cpp tests/angular_rate_test.cpp)
 target_link_libraries(attitude_estimator_rates_tests PRIVATE attitude_estimator_rates

@@ -1,9 +1,11 @@
 #include "attitude_estimator/estimator_block.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
 
+#include "attitude_estimator/spin_spectrum.hpp"
 #include "fmu/errors.hpp"
 
 namespace attitude_estimator {
@@ -11,6 +13,27 @@ namespace attitude_estimator {
 namespace {
 
 constexpr const char* kSolverNames[] = {"qmethod", "fast"};  // SolverKind, in the core's spelling
+constexpr SunMethod kSunMethods[] = {SunMethod::difference, SunMethod::inverse_response, SunMethod::cones,
+                                     SunMethod::three_faces};
+
+// The rates' state must travel with the FMU state as bytes.
+static_assert(std::is_trivially_copyable_v<MeanAngularRate<double>> &&
+              std::is_trivially_copyable_v<SunMethodState<double>>);
+
+panel_response::Response<double> response_from(const EstimatorData& d) {
+    if (d.angular_response == "cosine") return panel_response::cosine<double>();
+    std::array<panel_response::Knot<double>, 6> knots{};
+    for (std::size_t i = 0; i < knots.size(); ++i) knots[i] = {d.kelly_angle[i], d.kelly_value[i]};
+    return panel_response::table<double>(knots);
+}
+
+MeanAngularRateConfig<double> rate_config_from(const EstimatorData& d) {
+    MeanAngularRateConfig<double> c;
+    c.measure = RateMeasure::attitude_angle;
+    c.window = static_cast<std::size_t>(d.rate_window);
+    c.min_interval = d.rate_interval;
+    return c;
+}
 
 AdcConfig<double> adc(std::int32_t bits, double min, double max) {
     return AdcConfig<double>{static_cast<unsigned>(bits), min, max};
@@ -22,6 +45,13 @@ SolverKind solver_from(std::string_view name) {
     if (name == kSolverNames[0]) return SolverKind::qmethod;
     if (name == kSolverNames[1]) return SolverKind::fast;
     throw fmu::Error("solver = '" + std::string(name) + "' is not one of: qmethod, fast");
+}
+
+SunMethod sun_method_from(std::string_view name) {
+    for (SunMethod m : kSunMethods)
+        if (name == sun_method_name(m)) return m;
+    throw fmu::Error("sun_method = '" + std::string(name) +
+                     "' is not one of: difference, inverse_response, cones, three_faces");
 }
 
 EstimatorConfig<double> config_from(const EstimatorData& d) {
@@ -40,18 +70,28 @@ EstimatorConfig<double> config_from(const EstimatorData& d) {
     c.mag_rail_margin = d.mag_rail_margin;
     c.min_field = d.min_field;
     c.min_separation_sin = d.min_separation_sin;
+    c.sun.method = sun_method_from(d.sun_method.view());
+    c.sun.i_face_norm = d.i_face_norm;
+    c.sun.response = response_from(d);
+    c.sun.dark_threshold = d.face_dark_threshold;
+    c.sun.min_sun_norm = d.min_sun_norm;
+    c.sun.cone_tolerance = d.cone_tolerance;
+    c.face_adc.fill(adc(d.adc_bits, 0.0, d.i_face_adc_max));
     return c;
 }
 
 SampleInputs<double> inputs_from(const EstimatorData& d) {
     return SampleInputs<double>{
-        .i_sh = d.i_sh, .v_mag = d.v_mag, .v_mag_ref = d.v_mag_ref, .sun_ref = d.sun_ref, .mag_ref = d.mag_ref};
+        .i_sh = d.i_sh, .i_face = d.i_face, .v_mag = d.v_mag, .v_mag_ref = d.v_mag_ref, .sun_ref = d.sun_ref, .mag_ref = d.mag_ref};
 }
 
 void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     using D = EstimatorData;
     t.input("i_sh", &D::i_sh, "A",
             "Sample/hold differential currents I_sc+k - I_sc-k of the x, y, z panel pairs (ssr_plant i_sh)");
+    t.input("i_face", &D::i_face, "A",
+            "Per-face sample/hold currents of the faces +x, -x, +y, -y, +z, -z (ssr_plant i_face_sh); read by "
+            "every sun_method except difference");
     t.input("v_mag", &D::v_mag, "V", "Magnetometer output voltages X, Y, Z (magnetometer v_out)");
     t.input("v_mag_ref", &D::v_mag_ref, "V", "Magnetometer zero-field reference voltage (magnetometer v_ref)");
     t.input("sun_ref", &D::sun_ref, "1", "Sun direction in the inertial frame, any nonzero length (environment sun_eci)");
@@ -95,6 +135,42 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
                 "The attitude is invalid unless sun and field are more than asin(this) from (anti)parallel")
         .range(0.0, 1.0);
 
+    t.parameter("sun_method", &D::sun_method, "",
+                "Sun vector from the panel currents: difference (000 eq. 5 on i_sh, the seed), inverse_response "
+                "(per-face incidence from the inverted angular response), cones (002: cone pairs with albedo "
+                "rejection and the panel cube), three_faces (004 eq. 2-3)")
+        .one_of({"difference", "inverse_response", "cones", "three_faces"});
+    t.parameter("angular_response", &D::angular_response, "",
+                "The panels' angular response the face-based methods invert: cosine (000 eq. 1) or kelly "
+                "(the table kelly_angle/kelly_value); must match ssr_plant's angular_response")
+        .one_of({"cosine", "kelly"});
+    t.parameter("kelly_angle", &D::kelly_angle, "deg",
+                "Kelly table: incidence angles, increasing, the first 0, the second where the cosine ends, all "
+                "below 90 (default ssr_plant's, 000 fig. 4)")
+        .range(0.0, 90.0);
+    t.parameter("kelly_value", &D::kelly_value, "1",
+                "Kelly table: relative response at kelly_angle, the first 1 (default ssr_plant's)")
+        .range(0.0, 1.0);
+    t.parameter("i_face_norm", &D::i_face_norm, "A",
+                "Each face's current facing the sun squarely in full sun (default ssr_plant's i_sc at 1367 W/m2)")
+        .min(1e-6);
+    t.parameter("face_dark_threshold", &D::face_dark_threshold, "1",
+                "A face counts as lit above this fraction of its i_face_norm")
+        .range(0.0, 1.0);
+    t.parameter("i_face_adc_max", &D::i_face_adc_max, "A", "Face-current channels span 0 to this").min(1e-6);
+    t.parameter("cone_tolerance", &D::cone_tolerance, "1",
+                "cones: agreement tolerance on a face's relative response (larger: fewer faces rejected)")
+        .range(1e-6, 1.0);
+    t.parameter("spin_window", &D::spin_window, "",
+                "Samples in the spin-rate FFT window (0: no spin-rate analysis); at most 2048")
+        .range(0.0, static_cast<double>(kMaxSpinWindow));
+    t.parameter("rate_interval", &D::rate_interval, "s",
+                "Shortest time between the two attitudes of one mean-rate increment (004 eq. 4; 004 samples once "
+                "a minute, 2 s or more keeps attitude noise from dominating)")
+        .min(0.0);
+    t.parameter("rate_window", &D::rate_window, "", "Mean-rate increments averaged (1 = 004 eq. 4 alone), 1 to 64")
+        .range(1.0, static_cast<double>(kMaxRateWindow));
+
     t.output("q_est", &D::q_est, "1", "Estimated attitude quaternion, scalar-last [x, y, z, w], w >= 0")
         .discrete()
         .depends_on({});
@@ -126,6 +202,46 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
         .discrete()
         .depends_on({});
     t.output("samples", &D::samples, "", "Number of samples taken, the one at the start time included")
+        .discrete()
+        .depends_on({});
+
+    t.output("lit_faces", &D::lit_faces, "",
+             "Bit k set: face k (+x, -x, +y, -y, +z, -z) above the dark threshold (face-based sun methods)")
+        .discrete()
+        .depends_on({});
+    t.output("rejected_faces", &D::rejected_faces, "",
+             "Bit k set: lit face k not used for the sun vector (albedo-polluted or the dimmer of a pair)")
+        .discrete()
+        .depends_on({});
+    t.output("cube_state", &D::cube_state, "",
+             "cones: panel-cube state 9(x+1) + 3(y+1) + (z+1), each axis -1/0/+1 for its lit face; 13 = dark")
+        .discrete()
+        .depends_on({});
+    t.output("spin_theta_dot", &D::spin_theta_dot, "rad/s",
+             "Spin rate theta-dot of the seed's sun motion, from the FFT of sun_meas (000 sec. 4)")
+        .discrete()
+        .depends_on({});
+    t.output("spin_phi_dot", &D::spin_phi_dot, "rad/s", "Spin rate phi-dot, from the same FFT")
+        .discrete()
+        .depends_on({});
+    t.output("spin_bin_width", &D::spin_bin_width, "rad/s", "Frequency resolution of the spin-rate FFT")
+        .discrete()
+        .depends_on({});
+    t.output("spin_window_time", &D::spin_window_time, "s", "Length of the spin-rate FFT window")
+        .discrete()
+        .depends_on({});
+    t.output("spin_valid", &D::spin_valid, "",
+             "The spin rates are valid (window full of valid sun vectors, the seed's two-rate lines found)")
+        .discrete()
+        .depends_on({});
+    t.output("rate_mean", &D::rate_mean, "rad/s",
+             "Mean angular-rate magnitude from successive valid estimates (004 eq. 4, averaged over rate_window)")
+        .discrete()
+        .depends_on({});
+    t.output("rate_window_time", &D::rate_window_time, "s", "Time spanned by the averaged mean-rate increments")
+        .discrete()
+        .depends_on({});
+    t.output("rate_valid", &D::rate_valid, "", "rate_mean is valid (rate_window increments collected)")
         .discrete()
         .depends_on({});
 
@@ -173,11 +289,23 @@ void EstimatorBlock::validate() const {
         throw fmu::Error("v_adc_max - v_adc_min must exceed twice mag_rail_margin (else every field reads saturated)");
     if (!(d.weight_sun + d.weight_mag > 0.0)) throw fmu::Error("weight_sun + weight_mag must be positive");
     if (!(d.sample_period > 0.0)) throw fmu::Error("sample_period must be positive");
+    sun_method_from(d.sun_method.view());
+    if (d.angular_response == "kelly") {
+        if (d.kelly_angle[0] != 0.0 || d.kelly_value[0] != 1.0)
+            throw fmu::Error("kelly_angle[1], kelly_value[1] must be 0 deg, 1 (normal incidence)");
+        for (std::size_t i = 1; i < d.kelly_angle.size(); ++i) {
+            if (!(d.kelly_angle[i] > d.kelly_angle[i - 1]) || !(d.kelly_angle[i] < 90.0))
+                throw fmu::Error("kelly_angle must increase and stay below 90 deg");
+            if (i >= 2 && d.kelly_value[i] > d.kelly_value[i - 1])
+                throw fmu::Error("kelly_value must not increase with the angle (the inverse needs a monotone curve)");
+        }
+    }
+    if (d.spin_window != 0 && d.spin_window < 16) throw fmu::Error("spin_window must be 0 (off) or 16 to 2048");
 }
 
-void EstimatorBlock::take_sample(double) {
+void EstimatorBlock::take_sample(double t) {
     auto& d = data();
-    const SampleResult<double> r = estimate_sample(inputs_from(d), config_from(d));
+    const SampleResult<double> r = estimate_sample(inputs_from(d), config_from(d), d.sun_state);
     d.q_est = {r.q.x, r.q.y, r.q.z, r.q.w};
     d.A_est = r.a;
     d.sun_meas = r.sun_meas;
@@ -188,7 +316,56 @@ void EstimatorBlock::take_sample(double) {
     d.valid = r.valid;
     d.sun_valid = r.sun_valid;
     d.mag_valid = r.mag_valid;
+    d.lit_faces = r.lit_faces;
+    d.rejected_faces = r.rejected_faces;
+    d.cube_state = r.cube_state;
     if (d.samples < std::numeric_limits<std::int32_t>::max()) ++d.samples;
+    update_rates(t);
+}
+
+void EstimatorBlock::update_rates(double t) {
+    auto& d = data();
+    // Mean |ω| (004 eq. 4) from successive valid attitudes; an invalid one breaks the chain.
+    const Quaternion<double> q{d.q_est[0], d.q_est[1], d.q_est[2], d.q_est[3]};
+    d.rate_state.push(t, q, d.valid);
+    const MeanRate<double> mean = d.rate_state.result();
+    d.rate_mean = mean.rate;
+    d.rate_window_time = mean.window_seconds;
+    d.rate_valid = mean.valid;
+
+    // Spin rates (000 §4): the history of valid sun vectors; an invalid one empties the window (the FFT
+    // needs evenly spaced samples).
+    const auto n = d.spin_window;
+    if (n == 0) return;
+    if (!d.sun_valid) {
+        d.history_filled = 0;
+    } else {
+        d.sun_history[static_cast<std::size_t>(d.history_head)] = d.sun_meas;
+        d.history_head = (d.history_head + 1) % kMaxSpinWindow;
+        d.history_filled = std::min(d.history_filled + 1, n);
+    }
+    SpinSpectrum& spectrum = spin_.get(d.sample_period, n);
+    spectrum.reset();
+    SpinRates rates = spectrum.analyze();  // window_not_full: bin width and window length still reported
+    if (d.history_filled >= n) {
+        for (std::int32_t i = n; i > 0; --i)
+            spectrum.push(d.sun_history[static_cast<std::size_t>((d.history_head - i + kMaxSpinWindow) % kMaxSpinWindow)]);
+        rates = spectrum.analyze();
+    }
+    d.spin_theta_dot = rates.valid ? rates.theta_dot : 0.0;
+    d.spin_phi_dot = rates.valid ? rates.phi_dot : 0.0;
+    d.spin_bin_width = rates.bin_width;
+    d.spin_window_time = rates.window_seconds;
+    d.spin_valid = rates.valid;
+}
+
+SpinWorkspace::~SpinWorkspace() = default;
+
+SpinSpectrum& SpinWorkspace::get(double sample_period, std::int32_t window) {
+    if (!spectrum_ || spectrum_->sample_period() != sample_period ||
+        spectrum_->window() != static_cast<std::size_t>(window))
+        spectrum_ = std::make_unique<SpinSpectrum>(sample_period, static_cast<std::size_t>(window));
+    return *spectrum_;
 }
 
 void EstimatorBlock::initialize(double t) {
@@ -197,6 +374,10 @@ void EstimatorBlock::initialize(double t) {
     // start time sees the inputs as they are when initialization ends.
     d.t_start = t;
     d.samples = 0;
+    d.sun_state = {};
+    d.rate_state = MeanAngularRate<double>(rate_config_from(d));
+    d.history_head = 0;
+    d.history_filled = 0;
     take_sample(t);
     d.next_index = 1;
 }

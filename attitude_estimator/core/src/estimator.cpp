@@ -2,22 +2,45 @@
 
 namespace attitude_estimator {
 
+namespace {
+
+// The sun vector by the configured method: eq. 5 on the per-axis Hall currents (the seed's hardware), or
+// one of the face-based methods on the six digitized face currents.
 template <class T>
-SampleResult<T> estimate_sample(const SampleInputs<T>& in, const EstimatorConfig<T>& config) noexcept {
+void measure_sun(const SampleInputs<T>& in, const EstimatorConfig<T>& config, SunMethodState<T>& state,
+                 SampleResult<T>& r) noexcept {
+  if (config.sun.method == SunMethod::difference) {
+    Vec3<T> i_digital{};
+    for (int k = 0; k < 3; ++k) i_digital[k] = convert(config.sun_adc[k], in.i_sh[k]).value;
+    const SunMeasurement<T> sun = sun_vector_from_currents(i_digital, config.i_sc_norm, config.min_sun_norm);
+    r.sun_meas = sun.unit;
+    r.sun_norm = sun.norm;
+    r.sun_valid = sun.valid;
+    return;
+  }
+  std::array<T, 6> i_digital{};
+  for (std::size_t k = 0; k < 6; ++k) i_digital[k] = convert(config.face_adc[k], in.i_face[k]).value;
+  const SunMethodResult<T> sun = sun_from_faces(i_digital, config.sun, state);
+  r.sun_valid = sun.valid;
+  r.sun_meas = sun.valid ? sun.unit : Vec3<T>{};
+  r.sun_norm = sun.norm;
+  r.lit_faces = sun.lit_faces;
+  r.rejected_faces = sun.rejected_faces;
+  r.cube_state = sun.cube_state;
+}
+
+}  // namespace
+
+template <class T>
+SampleResult<T> estimate_sample(const SampleInputs<T>& in, const EstimatorConfig<T>& config,
+                                SunMethodState<T>& sun_state) noexcept {
   SampleResult<T> r;
 
-  Vec3<T> i_digital{};
   Vec3<T> v_digital{};
-  for (int k = 0; k < 3; ++k) {
-    i_digital[k] = convert(config.sun_adc[k], in.i_sh[k]).value;
-    v_digital[k] = convert(config.mag_adc[k], in.v_mag[k]).value;
-  }
+  for (int k = 0; k < 3; ++k) v_digital[k] = convert(config.mag_adc[k], in.v_mag[k]).value;
   const T v_ref_digital = convert(config.mag_ref_adc, in.v_mag_ref).value;
 
-  const SunMeasurement<T> sun = sun_vector_from_currents(i_digital, config.i_sc_norm, config.min_sun_norm);
-  r.sun_meas = sun.unit;
-  r.sun_norm = sun.norm;
-  r.sun_valid = sun.valid;
+  measure_sun(in, config, sun_state, r);
 
   Vec3<T> rail_low{};
   Vec3<T> rail_high{};
@@ -45,6 +68,16 @@ SampleResult<T> estimate_sample(const SampleInputs<T>& in, const EstimatorConfig
   return r;
 }
 
+template <class T>
+SampleResult<T> estimate_sample(const SampleInputs<T>& in, const EstimatorConfig<T>& config) noexcept {
+  SunMethodState<T> fresh;
+  return estimate_sample(in, config, fresh);
+}
+
+template SampleResult<float> estimate_sample(const SampleInputs<float>&, const EstimatorConfig<float>&,
+                                             SunMethodState<float>&) noexcept;
+template SampleResult<double> estimate_sample(const SampleInputs<double>&, const EstimatorConfig<double>&,
+                                              SunMethodState<double>&) noexcept;
 template SampleResult<float> estimate_sample(const SampleInputs<float>&, const EstimatorConfig<float>&) noexcept;
 template SampleResult<double> estimate_sample(const SampleInputs<double>&, const EstimatorConfig<double>&) noexcept;
 

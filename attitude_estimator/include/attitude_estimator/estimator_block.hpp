@@ -6,13 +6,22 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 
+#include "attitude_estimator/angular_rate.hpp"
 #include "attitude_estimator/estimator.hpp"
+#include "attitude_estimator/spin_spectrum.hpp"
 #include "fmu/block.hpp"
 
 namespace attitude_estimator {
 
 using Vec3d = std::array<double, 3>;
+using Faces = std::array<double, 6>;  // one value per face: +x, −x, +y, −y, +z, −z
+
+// Longest sun-vector history the spin-rate FFT can analyse (samples; 102 s at 20 Hz). The history is part
+// of the FMU state, so it has a fixed size inside the data struct.
+inline constexpr std::int32_t kMaxSpinWindow = 2048;
+
 
 // Every variable of the block (double precision throughout). Defaults of the sensor chain match the other
 // blocks: i_sc_norm is ssr_plant's short-circuit current of one panel at normal incidence and 1367 W/m²,
@@ -21,6 +30,7 @@ struct EstimatorData {
     // inputs. Their start values describe a consistent, lit, identity attitude (+x face towards the sun,
     // a 30 µT field along +z), so the block alone, unconnected, produces a valid estimate.
     Vec3d i_sh{0.84754, 0.0, 0.0};  // A, held differential currents I_sc+k − I_sc−k
+    Faces i_face{0.84754, 0.0, 0.0, 0.0, 0.0, 0.0};  // A, per-face sample/holds (ssr_plant i_face_sh)
     Vec3d v_mag{2.5, 2.5, 2.8};     // V, magnetometer outputs X, Y, Z
     double v_mag_ref = 2.5;         // V, magnetometer zero-field reference output
     Vec3d sun_ref{1.0, 0.0, 0.0};   // 1, sun direction, inertial frame (any length)
@@ -42,6 +52,19 @@ struct EstimatorData {
     double mag_rail_margin = kDefaultRailMargin<double>;      // V: saturation margin at the range ends
     double min_field = kDefaultMinField<double>;              // T
     double min_separation_sin = kDefaultMinSeparationSin<double>;  // 1: sin 5°
+    // Sun sensing (sun_methods.hpp, docs/sun_methods.md).
+    fmu::FixedString<24> sun_method = "difference";   // difference | inverse_response | cones | three_faces
+    fmu::FixedString<16> angular_response = "cosine"; // cosine (000 eq. 1) | kelly (the table below), as ssr_plant
+    Faces kelly_angle{0.0, 30.0, 50.0, 60.0, 80.0, 85.0};      // deg: ssr_plant's Kelly table (000 fig. 4)
+    Faces kelly_value{1.0, 0.866, 0.635, 0.450, 0.100, 0.0};   // 1: relative response at those angles
+    Faces i_face_norm{0.84754, 0.84754, 0.84754, 0.84754, 0.84754, 0.84754};  // A: face current at β = 0
+    double face_dark_threshold = 0.02;   // 1: a face is lit above this fraction of i_face_norm
+    double i_face_adc_max = 1.2;         // A: face-current channels span 0 … this
+    double cone_tolerance = 0.03;        // 1: cones' agreement tolerance on the relative response
+    // Rates (rates.md): spin frequencies from the FFT of sun_meas; mean |ω| from successive q_est (004 eq. 4).
+    std::int32_t spin_window = 512;      // samples per FFT window (0: off)
+    double rate_interval = 2.0;          // s: shortest time between two attitudes in one eq. 4 increment
+    std::int32_t rate_window = 8;        // increments averaged (1 = eq. 4 alone)
 
     // outputs (discrete: set at sample instants, held in between). Before the first sample: identity.
     std::array<double, 4> q_est{0.0, 0.0, 0.0, 1.0};  // scalar-last [x, y, z, w], w >= 0
@@ -55,12 +78,43 @@ struct EstimatorData {
     bool sun_valid = false;
     bool mag_valid = false;
     std::int32_t samples = 0;  // samples taken so far (saturates at 2^31 − 1)
+    std::int32_t lit_faces = 0;       // bit k: face k above the dark threshold (face-based methods)
+    std::int32_t rejected_faces = 0;  // bit k: lit face k not used (albedo)
+    std::int32_t cube_state = kCubeDark;  // cones: panel-cube state 9(x+1) + 3(y+1) + (z+1)
+    double spin_theta_dot = 0.0;      // rad/s, θ̇ of the seed's spin (FFT of sun_meas, 000 §4)
+    double spin_phi_dot = 0.0;        // rad/s, φ̇
+    double spin_bin_width = 0.0;      // rad/s, frequency resolution 2π/(N T)
+    double spin_window_time = 0.0;    // s, N T
+    bool spin_valid = false;
+    double rate_mean = 0.0;           // rad/s, mean |ω| from successive estimates (004 eq. 4)
+    double rate_window_time = 0.0;    // s, time the averaged increments span
+    bool rate_valid = false;
 
     // discrete state
     double t_start = 0.0;  // s, the start time: sample k is due at t_start + k·sample_period
     // Index k of the next sample. 64 bits (not an FMI Integer, so not declared): never overflows, and
     // t_start + k·sample_period is computed from it afresh each time, so sample instants never drift.
     std::int64_t next_index = 0;
+    SunMethodState<double> sun_state{};        // cones' panel-cube tracking
+    MeanAngularRate<double> rate_state{};      // eq. 4 increments
+    std::array<Vec3d, kMaxSpinWindow> sun_history{};  // ring of sun_meas for the FFT
+    std::int32_t history_head = 0;             // next write position
+    std::int32_t history_filled = 0;           // consecutive valid samples in the ring (≤ spin_window)
+};
+
+// The FFTW workspace of the spin-rate analysis. Not part of the FMU state (the history it analyses is):
+// a copy of the block (FMU state, clone) starts without one and builds its own on first use.
+class SpinWorkspace {
+public:
+    SpinWorkspace() = default;
+    SpinWorkspace(const SpinWorkspace&) {}
+    SpinWorkspace& operator=(const SpinWorkspace&) { return *this; }
+    ~SpinWorkspace();
+    // The analyser for this window and sample period (rebuilt when either changed).
+    SpinSpectrum& get(double sample_period, std::int32_t window);
+
+private:
+    std::unique_ptr<SpinSpectrum> spectrum_;
 };
 
 class EstimatorBlock : public fmu::Block<EstimatorBlock, EstimatorData> {
@@ -75,6 +129,9 @@ public:
 
 private:
     void take_sample(double t);
+    void update_rates(double t);
+
+    SpinWorkspace spin_;
 };
 
 // The core's configuration and inputs from the block's variables (exposed for the tests).
@@ -82,5 +139,7 @@ EstimatorConfig<double> config_from(const EstimatorData& d);
 SampleInputs<double> inputs_from(const EstimatorData& d);
 // SolverKind of the `solver` parameter's text; throws fmu::Error for any other text.
 SolverKind solver_from(std::string_view name);
+// SunMethod of the `sun_method` parameter's text; throws fmu::Error for any other text.
+SunMethod sun_method_from(std::string_view name);
 
 }  // namespace attitude_estimator

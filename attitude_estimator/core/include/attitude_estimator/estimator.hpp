@@ -1,11 +1,13 @@
 // One whole sample of the on-board attitude computer (000 §7, fig. 11): digitize the sample/hold currents
 // and the magnetometer voltages, form the sun and field vectors, solve Wahba's problem against their
-// reference directions. Plain structs in, plain struct out, no heap, no exceptions, no state between
-// calls — what an FMU's doStep or a DSP's timer interrupt calls once per sample.
+// reference directions. Plain structs in, plain struct out, no heap, no exceptions — what an FMU's doStep
+// or a DSP's timer interrupt calls once per sample. The only memory between samples is the sun method's
+// (SunMethodState: the cones method's panel-cube tracking), owned by the caller.
 #pragma once
 
 #include "attitude_estimator/adc.hpp"
 #include "attitude_estimator/field_vector.hpp"
+#include "attitude_estimator/sun_methods.hpp"
 #include "attitude_estimator/sun_vector.hpp"
 #include "attitude_estimator/types.hpp"
 #include "attitude_estimator/wahba.hpp"
@@ -31,11 +33,20 @@ struct EstimatorConfig {
   T mag_rail_margin = kDefaultRailMargin<T>;    // V, field_vector.hpp; rails = each mag_adc's min/max
   T min_field = kDefaultMinField<T>;            // T, field_vector.hpp
   T min_separation_sin = kDefaultMinSeparationSin<T>;  // wahba.hpp
+  // How the sun vector is formed (sun_methods.hpp). `difference` is eq. 5 on the three per-axis Hall
+  // sample/holds i_sh (the seed's hardware, through sun_adc and i_sc_norm above); every other method reads
+  // the six per-face currents i_face through face_adc, normalized by sun.i_face_norm.
+  SunMethodConfig<T> sun{};
+  // Face-current channels: 0 … 1.2 A (a face's current is never negative; 1.4 × i_sc0 of full scale
+  // leaves room for albedo on top of normal incidence).
+  std::array<AdcConfig<T>, 6> face_adc{{{12, T(0), T(1.2)}, {12, T(0), T(1.2)}, {12, T(0), T(1.2)},
+                                        {12, T(0), T(1.2)}, {12, T(0), T(1.2)}, {12, T(0), T(1.2)}}};
 };
 
 template <class T>
 struct SampleInputs {
   Vec3<T> i_sh{};          // A, sample/hold differential currents I_sc+k − I_sc−k
+  std::array<T, 6> i_face{};  // A, per-face sample/hold currents +x, −x, +y, −y, +z, −z (not `difference`)
   Vec3<T> v_mag{};         // V, magnetometer outputs X, Y, Z
   T v_mag_ref = T(2.5);    // V, magnetometer zero-field reference output
   Vec3<T> sun_ref{};       // sun direction in the reference (inertial) frame, any nonzero length
@@ -54,12 +65,23 @@ struct SampleResult {
   bool sun_valid = false;
   bool mag_valid = false;
   bool valid = false;   // both vectors valid, separated (min_separation_sin) and the solve succeeded
+  std::uint8_t lit_faces = 0;       // face-based methods: faces above the dark threshold (bit k = face k)
+  std::uint8_t rejected_faces = 0;  // face-based methods: lit faces the method did not use (albedo)
+  int cube_state = kCubeDark;       // cones: the panel-cube state of this sample (sun_methods.hpp)
 };
 // When sun or field is invalid no attitude is computed: q and A are the identity, loss 0, valid false.
 
 template <class T>
+SampleResult<T> estimate_sample(const SampleInputs<T>& in, const EstimatorConfig<T>& config,
+                                SunMethodState<T>& sun_state) noexcept;
+// The same with no memory between samples (a fresh SunMethodState: as after darkness).
+template <class T>
 SampleResult<T> estimate_sample(const SampleInputs<T>& in, const EstimatorConfig<T>& config) noexcept;
 
+extern template SampleResult<float> estimate_sample(const SampleInputs<float>&, const EstimatorConfig<float>&,
+                                                    SunMethodState<float>&) noexcept;
+extern template SampleResult<double> estimate_sample(const SampleInputs<double>&, const EstimatorConfig<double>&,
+                                                     SunMethodState<double>&) noexcept;
 extern template SampleResult<float> estimate_sample(const SampleInputs<float>&,
                                                     const EstimatorConfig<float>&) noexcept;
 extern template SampleResult<double> estimate_sample(const SampleInputs<double>&,
