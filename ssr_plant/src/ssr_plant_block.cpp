@@ -166,6 +166,7 @@ const Illumination& SsrPlantBlock::illumination(const ssr_plant::Model& m) const
     if (!illumination_ || std::memcmp(&u, &illumination_inputs_, sizeof u) != 0) {
         illumination_ = illuminate(m, u);
         illumination_inputs_ = u;
+        bus_side_memo_.clear();
     }
     return *illumination_;
 }
@@ -206,7 +207,8 @@ void SsrPlantBlock::initialize(double t) {
 void SsrPlantBlock::evaluate(double t) {
     auto& d = data();
     const ssr_plant::Model& m = plant();
-    const Evaluation e = ssr_plant::evaluate(m, illumination(m), d.discrete, t, state());
+    const Illumination& l = illumination(m);  // first: a new illumination empties the memo
+    const Evaluation e = ssr_plant::evaluate(m, l, d.discrete, t, state(), bus_side_memo_);
     d.der_v_cap = e.derivatives[state_v_bus];
     d.der_soc_state = e.derivatives[state_soc];
     const Outputs& y = e.outputs;

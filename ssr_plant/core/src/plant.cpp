@@ -95,14 +95,26 @@ struct BusBalance {
     State dx = {};
 };
 
+// The bus-side currents at v through the caller's memo (if any): a hit is the earlier solve's result.
+std::array<double, face_count> memoized_bus_side_currents(const Model& m, const std::array<double, face_count>& iph,
+                                                          double v, BusSideMemo* memo) {
+    if (!memo) return bus_side_currents(m, iph, v);
+    for (const auto& e : memo->entries)
+        if (e.valid && e.v_bus == v) return e.current;
+    auto& e = memo->entries[memo->next];
+    memo->next = (memo->next + 1) % memo->entries.size();
+    e = {true, v, bus_side_currents(m, iph, v)};
+    return e.current;
+}
+
 BusBalance bus_balance(const Model& m, const std::array<double, face_count>& iph, const DiscreteState& d,
-                       const State& x) {
+                       const State& x, BusSideMemo* memo = nullptr) {
     const auto& p = m.parameters;
     const double v = x[state_v_bus];
     BusBalance b;
     b.sigma = shunt_fraction(m, d, v);
     // With the shunts closed all period long (gate on, or D = 1) no panel feeds the bus: no solve.
-    if (b.sigma < 1.0) b.i_pv = bus_side_currents(m, iph, v);
+    if (b.sigma < 1.0) b.i_pv = memoized_bus_side_currents(m, iph, v, memo);
     double i_in = 0.0;
     for (double i : b.i_pv) i_in += i;
     i_in *= (1.0 - b.sigma);  // eq. 4: I_bus = (1 − D) I; σ ∈ {0, 1} when switching
@@ -110,6 +122,37 @@ BusBalance bus_balance(const Model& m, const std::array<double, face_count>& iph
     b.dx[state_v_bus] = (i_in - v / p.load_resistance - b.batt.current) / p.bus_capacitance;  // C dv/dt = Σ i
     b.dx[state_soc] = b.batt.current / p.battery.capacity;  // charge balance, coulombic efficiency 1
     return b;
+}
+
+// derivatives and outputs in one pass; memo: see BusSideMemo (nullptr: solve every time).
+Evaluation evaluation(const Model& m, const Illumination& l, const DiscreteState& d, const State& x,
+                      BusSideMemo* memo) {
+    const auto& p = m.parameters;
+    const double v = x[state_v_bus];
+    const BusBalance b = bus_balance(m, l.photocurrent, d, x, memo);
+    Evaluation e;
+    e.derivatives = b.dx;
+    Outputs& y = e.outputs;
+    y.i_sc = l.i_sc;
+    for (std::size_t k = 0; k < face_count; ++k) y.i_panel[k] = (1.0 - b.sigma) * b.i_pv[k];
+    // Seed 001 §3: the S/H samples while the shunts are on and holds while they are off.
+    // Averaged: no S/H, the live currents. The per-axis value is the difference of the per-face ones in
+    // both branches, computed the same way, so i_sh[k] == i_face_sh[2k] − i_face_sh[2k+1] bit for bit.
+    if (p.fidelity == Fidelity::averaged || d.gate) {
+        y.i_face_sh = l.i_shunt;
+        y.i_sh = l.i_hall;
+    } else {
+        y.i_face_sh = d.held_face_current;
+        y.i_sh = differential_currents(d.held_face_current);
+    }
+    y.v_bus = v;
+    y.v_batt = b.batt.terminal_voltage;
+    y.i_batt = b.batt.current;
+    y.soc = x[state_soc];
+    y.duty = p.fidelity == Fidelity::averaged ? b.sigma : d.duty;
+    y.gate = p.fidelity == Fidelity::averaged ? b.sigma > 0.0 : d.gate;
+    y.i_load = v / p.load_resistance;
+    return e;
 }
 
 }  // namespace
@@ -196,32 +239,12 @@ State derivatives(const Model& m, const Inputs& u, const DiscreteState& d, doubl
 }
 
 Evaluation evaluate(const Model& m, const Illumination& l, const DiscreteState& d, double /*t*/, const State& x) {
-    const auto& p = m.parameters;
-    const double v = x[state_v_bus];
-    const BusBalance b = bus_balance(m, l.photocurrent, d, x);
-    Evaluation e;
-    e.derivatives = b.dx;
-    Outputs& y = e.outputs;
-    y.i_sc = l.i_sc;
-    for (std::size_t k = 0; k < face_count; ++k) y.i_panel[k] = (1.0 - b.sigma) * b.i_pv[k];
-    // Seed 001 §3: the S/H samples while the shunts are on and holds while they are off.
-    // Averaged: no S/H, the live currents. The per-axis value is the difference of the per-face ones in
-    // both branches, computed the same way, so i_sh[k] == i_face_sh[2k] − i_face_sh[2k+1] bit for bit.
-    if (p.fidelity == Fidelity::averaged || d.gate) {
-        y.i_face_sh = l.i_shunt;
-        y.i_sh = l.i_hall;
-    } else {
-        y.i_face_sh = d.held_face_current;
-        y.i_sh = differential_currents(d.held_face_current);
-    }
-    y.v_bus = v;
-    y.v_batt = b.batt.terminal_voltage;
-    y.i_batt = b.batt.current;
-    y.soc = x[state_soc];
-    y.duty = p.fidelity == Fidelity::averaged ? b.sigma : d.duty;
-    y.gate = p.fidelity == Fidelity::averaged ? b.sigma > 0.0 : d.gate;
-    y.i_load = v / p.load_resistance;
-    return e;
+    return evaluation(m, l, d, x, nullptr);
+}
+
+Evaluation evaluate(const Model& m, const Illumination& l, const DiscreteState& d, double /*t*/, const State& x,
+                    BusSideMemo& memo) {
+    return evaluation(m, l, d, x, &memo);
 }
 
 Outputs outputs(const Model& m, const Inputs& u, const DiscreteState& d, double t, const State& x) {

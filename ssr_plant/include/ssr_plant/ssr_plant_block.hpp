@@ -108,6 +108,9 @@ private:
     mutable std::array<std::byte, parameter_bytes_end - parameter_bytes_begin> model_key_{};  // its parameter bytes
     mutable std::optional<Illumination> illumination_;
     mutable Inputs illumination_inputs_{};
+    // The last bus-side panel solves (see BusSideMemo), emptied with every new illumination (and so
+    // with every refit, which drops the illumination).
+    mutable BusSideMemo bus_side_memo_;
 };
 
 }  // namespace ssr_plant

@@ -109,6 +109,25 @@ struct Evaluation {
     Outputs outputs;
 };
 
+// The panels' currents into the bus with the shunts open at one bus voltage: the costly part of an
+// evaluation (one Newton solve per lit face), a function of the model, the illumination and v_bus
+// alone. An integrator asks for the same v_bus more than once (CVODE's difference-quotient Jacobian
+// perturbs soc with v_bus unchanged; a restart evaluates its starting point for the root functions
+// and again for the first step), so a caller may keep the last two solves here: evaluate() looks
+// them up and stores what it solves. A hit returns the very values the solve would (the solve is
+// pure), so results stay bit-identical. The caller empties it whenever the model or illumination
+// changes.
+struct BusSideMemo {
+    struct Entry {
+        bool valid = false;
+        double v_bus = 0.0;
+        std::array<double, face_count> current = {};
+    };
+    std::array<Entry, 2> entries = {};  // two: the Jacobian's v_bus column sits between base and soc column
+    std::size_t next = 0;               // the entry the next solve replaces
+    void clear() { *this = BusSideMemo{}; }
+};
+
 static_assert(std::is_trivially_copyable_v<Illumination> && std::is_trivially_copyable_v<Evaluation>);
 
 // Validates the parameters and fits the panel circuit. Throws ParameterError with a clear message.
@@ -129,6 +148,9 @@ double next_time_event(const Model& m, const DiscreteState& d);  // no_time_even
 // The same through a precomputed illumination (inputs checked by the caller): identical results.
 Illumination illuminate(const Model& m, const Inputs& u);
 Evaluation evaluate(const Model& m, const Illumination& l, const DiscreteState& d, double t, const State& x);
+// The same, reusing and filling a memo of bus-side solves (see BusSideMemo): identical results.
+Evaluation evaluate(const Model& m, const Illumination& l, const DiscreteState& d, double t, const State& x,
+                    BusSideMemo& memo);
 
 struct EventResult {
     DiscreteState discrete;
