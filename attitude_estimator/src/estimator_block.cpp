@@ -76,6 +76,7 @@ EstimatorConfig<double> config_from(const EstimatorData& d) {
     c.sun.dark_threshold = d.face_dark_threshold;
     c.sun.min_sun_norm = d.min_sun_norm;
     c.sun.cone_tolerance = d.cone_tolerance;
+    c.sun.cube_max_step = d.cube_max_step;
     c.face_adc.fill(adc(d.adc_bits, 0.0, d.i_face_adc_max));
     return c;
 }
@@ -161,6 +162,10 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.parameter("cone_tolerance", &D::cone_tolerance, "1",
                 "cones: agreement tolerance on a face's relative response (larger: fewer faces rejected)")
         .range(1e-6, 1.0);
+    t.parameter("cube_max_step", &D::cube_max_step, "rad",
+                "cones: a transition the panel-cube graph forbids is accepted when the sun moved less than this "
+                "since the last sample (0: the seed's graph alone; fast spin: about 1.5 x the turn per sample)")
+        .range(0.0, 3.14159);
     t.parameter("spin_window", &D::spin_window, "",
                 "Samples in the spin-rate FFT window (0: no spin-rate analysis); at most 2048")
         .range(0.0, static_cast<double>(kMaxSpinWindow));
