@@ -12,36 +12,14 @@
 #include "fmu/cs_solver.hpp"
 #include "fmu/errors.hpp"
 #include "fmu/model_runner.hpp"
+#include "block_simulation.hpp"
 
 namespace attitude_estimator {
 namespace {
 
 constexpr double kIsc0 = 0.84754;  // A, ssr_plant's i_sc at 1367 W/m² and normal incidence
 
-struct Simulation {
-    fmu::ModelRunner runner{std::make_unique<EstimatorBlock>()};
-    std::unique_ptr<fmu::CsSolver> solver;
-
-    EstimatorData& data() { return static_cast<EstimatorBlock&>(runner.model()).data(); }
-    void start() {
-        runner.set_time(0.0);
-        runner.set_initializing(true);
-        runner.ensure_evaluated();
-        runner.model().validate();
-        runner.set_initializing(false);
-        solver = std::make_unique<fmu::CsSolver>(runner, 1e-8);
-        runner.event_iteration();
-    }
-    void inputs_changed() {
-        runner.mark_changed();
-        if (solver) solver->invalidate();
-    }
-    void advance_to(double t) {
-        solver->invalidate();
-        solver->advance(t);
-        runner.ensure_evaluated();
-    }
-};
+using test::Simulation;
 
 // Cosine-law panels (000 eq. 1) facing sun direction s (body): face k's current i_sc0 · max(0, n_k · s),
 // and the per-axis differences for i_sh.
