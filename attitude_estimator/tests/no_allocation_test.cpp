@@ -1,5 +1,5 @@
 // The core must not touch the heap at run time (it is meant for a DSP without one). The C allocator is
-// replaced in this test program by counting wrappers around glibc's own functions; every solver and one
+// replaced in this test program by counting wrappers (malloc_counter.hpp); every solver and one
 // whole sample, in float and double, must make zero calls. Skipped under AddressSanitizer, which owns
 // malloc itself.
 #include <atomic>
@@ -10,33 +10,7 @@
 #include "attitude_estimator/q_method.hpp"
 #include "test_support.hpp"
 
-#if defined(__SANITIZE_ADDRESS__)
-#define EST_COUNT_MALLOC 0
-#else
-#define EST_COUNT_MALLOC 1
-namespace {
-std::atomic<long> g_allocations{0};
-}
-extern "C" {
-void* __libc_malloc(std::size_t);
-void* __libc_calloc(std::size_t, std::size_t);
-void* __libc_realloc(void*, std::size_t);
-void __libc_free(void*);
-void* malloc(std::size_t n) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_malloc(n);
-}
-void* calloc(std::size_t n, std::size_t s) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_calloc(n, s);
-}
-void* realloc(void* p, std::size_t n) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_realloc(p, n);
-}
-void free(void* p) { __libc_free(p); }
-}
-#endif
+#include "malloc_counter.hpp"
 
 namespace attitude_estimator::test {
 namespace {
@@ -45,8 +19,8 @@ template <class T>
 class EstimatorCoreNoAllocation : public ::testing::Test {};
 TYPED_TEST_SUITE(EstimatorCoreNoAllocation, Scalars, ScalarName);
 
-TYPED_TEST(EstimatorCoreNoAllocation, SolversAndWholeSampleNeverCallMalloc) {
-#if !EST_COUNT_MALLOC
+TYPED_TEST(EstimatorCoreNoAllocation, SolversSunMethodsAndWholeSampleNeverCallMalloc) {
+#if !PVATT_COUNT_MALLOC
   GTEST_SKIP() << "malloc belongs to the sanitizer in this build";
 #else
   using T = TypeParam;
@@ -67,19 +41,30 @@ TYPED_TEST(EstimatorCoreNoAllocation, SolversAndWholeSampleNeverCallMalloc) {
   const EstimatorConfig<T> fast_config;
   EstimatorConfig<T> q_config;
   q_config.solver = SolverKind::qmethod;
+  // Every face-based sun method, with the Kelly table (the inverse response iterates), on three lit faces
+  // and an albedo-lit fourth.
+  in.i_face = {T(0.5), T(0.1), T(0.0), T(0.3), T(0.6), T(0.0)};
+  std::array<EstimatorConfig<T>, 3> face_configs;
+  const SunMethod face_methods[] = {SunMethod::inverse_response, SunMethod::cones, SunMethod::three_faces};
+  for (std::size_t m = 0; m < face_configs.size(); ++m) {
+    face_configs[m].sun.method = face_methods[m];
+    face_configs[m].sun.response = panel_response::kelly<T>();
+  }
+  SunMethodState<T> sun_state;
   // Sanity: the counter does count (a malloc made here must register).
-  const long before_probe = g_allocations.load();
+  const long before_probe = allocation_count();
   void* probe = std::malloc(16);
-  ASSERT_GT(g_allocations.load(), before_probe);
+  ASSERT_GT(allocation_count(), before_probe);
   std::free(probe);
 
-  const long before = g_allocations.load();
+  const long before = allocation_count();
   T sink = T(0);
   for (int k = 0; k < 100; ++k) {
     sink += solve_q_method(two).loss + solve_q_method(six).loss + solve_fast(two).loss + solve_fast(six).loss;
     sink += estimate_sample(in, fast_config).loss + estimate_sample(in, q_config).loss;
+    for (const auto& c : face_configs) sink += estimate_sample(in, c, sun_state).sun_norm;
   }
-  const long after = g_allocations.load();
+  const long after = allocation_count();
   EXPECT_EQ(after - before, 0) << "heap allocations in the core";
   EXPECT_TRUE(std::isfinite(static_cast<double>(sink)));
 #endif

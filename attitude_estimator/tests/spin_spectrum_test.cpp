@@ -16,33 +16,7 @@
 #include "attitude_estimator/adc.hpp"
 #include "attitude_estimator/spin_spectrum.hpp"
 
-#if defined(__SANITIZE_ADDRESS__)
-#define RATES_COUNT_MALLOC 0
-#else
-#define RATES_COUNT_MALLOC 1
-namespace {
-std::atomic<long> g_allocations{0};
-}
-extern "C" {
-void* __libc_malloc(std::size_t);
-void* __libc_calloc(std::size_t, std::size_t);
-void* __libc_realloc(void*, std::size_t);
-void __libc_free(void*);
-void* malloc(std::size_t n) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_malloc(n);
-}
-void* calloc(std::size_t n, std::size_t s) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_calloc(n, s);
-}
-void* realloc(void* p, std::size_t n) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_realloc(p, n);
-}
-void free(void* p) { __libc_free(p); }
-}
-#endif
+#include "malloc_counter.hpp"
 
 namespace attitude_estimator::test {
 namespace {
@@ -291,19 +265,19 @@ TEST(SpinSpectrum, MoveKeepsTheWindow) {
 }
 
 TEST(SpinSpectrum, PushAndAnalyzeNeverAllocate) {
-#if !RATES_COUNT_MALLOC
+#if !PVATT_COUNT_MALLOC
   GTEST_SKIP() << "malloc belongs to the sanitizer in this build";
 #else
   SpinSpectrum spec(kDt, 500, 25);  // a non-power-of-two window, automatic analysis every 25 samples
   std::array<Vec3<double>, 1000> in{};
   for (std::size_t i = 0; i < in.size(); ++i) in[i] = seed_sun(kDt * static_cast<double>(i));
-  const long before = g_allocations.load();
+  const long before = allocation_count();
   int runs = 0;
   bool valid = true;
   for (const auto& s : in) runs += spec.push(s) ? 1 : 0;
   valid = valid && spec.analyze().valid;
   spec.push(Vec3<float>{0.f, 0.f, 1.f});
-  const long after = g_allocations.load();
+  const long after = allocation_count();
   EXPECT_EQ(after - before, 0);
   EXPECT_EQ(runs, 20);
   EXPECT_TRUE(valid);
