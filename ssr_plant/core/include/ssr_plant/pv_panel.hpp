@@ -35,8 +35,8 @@ double photocurrent(const DiodeModel& m, double effective_irradiance);
 
 // The current the panel delivers at the terminal voltage V (eq. 2 solved for I), with
 // `extra_series_resistance` in series outside the panel (a shunt switch's R_DS(on), say).
-// Safeguarded Newton on the diode voltage with a guaranteed bracket: always returns a finite value
-// for finite arguments (photocurrent ≥ 0).
+// Safeguarded Halley (Newton far from the root) on the diode voltage with a guaranteed bracket: always
+// returns a finite value for finite arguments (photocurrent ≥ 0).
 double panel_current(const DiodeModel& m, double photocurrent, double voltage, double extra_series_resistance = 0.0);
 
 }  // namespace ssr_plant
