@@ -4,7 +4,10 @@
 // evaluated here or by hand — never from the code under test.
 #include "attitude_estimator/sun_methods.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <vector>
 
 #include "attitude_estimator/sun_vector.hpp"
 #include "test_support.hpp"
@@ -255,7 +258,12 @@ TYPED_TEST(EstimatorCoreSunMethods, ConesRejectAnAlbedoLitNadirFace) {
   using T = TypeParam;
   Random rng(83);
   for (Law law : {Law::cosine, Law::kelly}) {
-    const auto cfg = config<T>(SunMethod::cones, law);
+    // The model-free cones (albedo model off): the offsets below light single faces only, which the Earth
+    // cannot do from LEO (it is 133° wide at 570 km: a face at 90° to the nadir gets ~30 % of the nadir
+    // face's albedo, and both y faces cannot be dark at once); the model's own test is
+    // ConesAlbedoModelRecoversTheSunUnderAnEarthLikeAlbedo.
+    auto cfg = config<T>(SunMethod::cones, law);
+    cfg.cone_fit_tolerance = T(0);
     for (int n = 0; n < 100; ++n) {
       SunMethodState<T> st;
       Eigen::Vector3d s = lit_direction(rng, 0.3);
@@ -278,7 +286,10 @@ TYPED_TEST(EstimatorCoreSunMethods, ConesRejectAnAlbedoLitNadirFace) {
 
 TYPED_TEST(EstimatorCoreSunMethods, ConesRejectAPollutedSunlitFace) {
   using T = TypeParam;
-  const auto cfg = config<T>(SunMethod::cones, Law::cosine);
+  // The model-free cones (albedo model off): an offset on one sunlit face alone is not an Earth-like albedo
+  // (see ConesRejectAnAlbedoLitNadirFace).
+  auto cfg = config<T>(SunMethod::cones, Law::cosine);
+  cfg.cone_fit_tolerance = T(0);
   // Sun (0.7, 0.6, 0.387): the +z face reads 0.9 (albedo 0.51 on top of its 0.387): its cone no longer meets
   // the others (0.9² + 0.6² > 1), the seed's criterion; only the (+x, +y) pair remains and +z is rejected.
   {
@@ -294,7 +305,8 @@ TYPED_TEST(EstimatorCoreSunMethods, ConesRejectAPollutedSunlitFace) {
   // A small offset leaves every pair intersecting and the three readings alone ambiguous (any of the three
   // faces could carry it); continuity decides: after a clean sample 1° away, the polluted face is found.
   for (Law law : {Law::cosine, Law::kelly}) {
-    const auto cfgl = config<T>(SunMethod::cones, law);
+    auto cfgl = config<T>(SunMethod::cones, law);
+    cfgl.cone_fit_tolerance = T(0);
     Random rng(84);
     for (int n = 0; n < 50; ++n) {
       const Eigen::Vector3d s0 = lit_direction(rng, 0.25);
@@ -385,6 +397,72 @@ TYPED_TEST(EstimatorCoreSunMethods, ConesInvalidOnAlbedoAlone) {
     const auto r = sun_from_faces(i, cfg, st);
     EXPECT_FALSE(r.valid);
     EXPECT_EQ(st.cube_state, kCubeDark);
+  }
+}
+
+// Earth albedo on the six faces as the Earth gives it from 570 km (sin λ = R_E/(R_E + h) = 0.91788): a
+// Lambertian sphere of reflectivity 0.3 lit by the sun s, radiance 0.3 cos z/π at each point (z its solar
+// zenith), integrated over the visible cap by a midpoint rule in the angle from the nadir and the azimuth —
+// independent of the closed-form view factor inside the method (which assumes a uniformly bright sphere).
+inline std::array<double, 6> earth_albedo(const Eigen::Vector3d& s, const Eigen::Vector3d& nadir) {
+  const double sin_l = 0.91788, h = 1.0 / sin_l, lambda = std::asin(sin_l);
+  Eigen::Vector3d e1 = nadir.unitOrthogonal(), e2 = nadir.cross(e1);
+  std::array<double, 6> a{};
+  const int ng = 120, np = 120;
+  for (int i = 0; i < ng; ++i) {
+    const double g = (i + 0.5) * lambda / ng;
+    for (int j = 0; j < np; ++j) {
+      const double psi = (j + 0.5) * 2 * M_PI / np;
+      const Eigen::Vector3d u = std::cos(g) * nadir + std::sin(g) * (std::cos(psi) * e1 + std::sin(psi) * e2);
+      // The ray from the satellite (at −h·nadir from the Earth's centre, radius 1) meets the sphere at p.
+      const double b = h * std::cos(g);
+      const double t = b - std::sqrt(std::max(0.0, b * b - (h * h - 1)));
+      const Eigen::Vector3d p = -h * nadir + t * u;
+      const double cos_z = p.normalized().dot(s);
+      if (cos_z <= 0) continue;
+      const double w = 0.3 * cos_z / M_PI * std::sin(g) * (lambda / ng) * (2 * M_PI / np);
+      for (int k = 0; k < 6; ++k) a[k] += w * std::max(0.0, (k % 2 == 0 ? 1.0 : -1.0) * u[k / 2]);
+    }
+  }
+  return a;
+}
+
+TYPED_TEST(EstimatorCoreSunMethods, ConesAlbedoModelRecoversTheSunUnderAnEarthLikeAlbedo) {
+  using T = TypeParam;
+  for (Law law : {Law::cosine, Law::kelly}) {
+    Random rng(86);
+    const auto cfg = config<T>(SunMethod::cones, law);
+    auto free_cfg = cfg;
+    free_cfg.cone_fit_tolerance = T(0);  // the model-free cones, for comparison
+    std::vector<double> err, free_err;
+    double largest_albedo = 0;
+    for (int n = 0; n < 200; ++n) {
+      const Eigen::Vector3d s = lit_direction(rng, 0.15);
+      Eigen::Vector3d nadir;
+      do nadir = rng.unit();
+      while (nadir.dot(s) > std::cos(75 * kDeg));  // sunlit: the sun at least 66.6° from the nadir
+      const auto a = earth_albedo(s, nadir);
+      auto i = currents<T>(s, law);
+      for (int k = 0; k < 6; ++k) {
+        i[k] += T(a[k] * kNorm);
+        largest_albedo = std::max(largest_albedo, a[k]);
+      }
+      SunMethodState<T> st, st_free;
+      const auto r = sun_from_faces(i, cfg, st);
+      const auto rf = sun_from_faces(i, free_cfg, st_free);
+      ASSERT_TRUE(r.valid);
+      err.push_back(angle_to(r.unit, s) / kDeg);
+      free_err.push_back(rf.valid ? angle_to(rf.unit, s) / kDeg : 180.0);
+    }
+    std::sort(err.begin(), err.end());
+    std::sort(free_err.begin(), free_err.end());
+    const char* name = law == Law::kelly ? "kelly" : "cosine";
+    std::printf("%s: albedo model median %.3f° p90 %.3f°, model-free median %.3f° p90 %.3f°\n", name, err[100],
+                err[179], free_err[100], free_err[179]);
+    EXPECT_GT(largest_albedo, 0.15) << name;  // a real test: the Earth lights faces by up to a fifth of the sun
+    EXPECT_LT(err[100], 0.2) << name;         // median
+    EXPECT_LT(err[179], 1.0) << name;         // 90th percentile
+    EXPECT_GT(free_err[179], 2.0 * err[179]) << name;
   }
 }
 

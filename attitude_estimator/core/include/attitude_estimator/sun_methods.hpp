@@ -78,6 +78,15 @@ struct SunMethodConfig {
   T normalization_tolerance = T(0.05);
   // three_faces: the printed admissibility |3c1 + c2 − c3 − 2| ≤ this (eq. 3 as printed; reported only).
   T printed_tolerance = T(0.05);
+  // cones, albedo model (docs/sun_methods.md): each per-axis face hypothesis is fitted with the sun plus the
+  // Earth as a uniformly bright sphere seen from the orbit (plate-to-sphere view factor): sin of the Earth's
+  // angular radius R_E/(R_E + h) (0.91788 = 570 km); a fit is accepted when its RMS response misfit over the
+  // six faces is at most cone_fit_tolerance (else the model-free candidates above decide); the fitted albedo
+  // of a face squarely toward the Earth is bounded by cone_albedo_max (relative). cone_fit_tolerance = 0 turns
+  // the model off.
+  T cone_earth_sin_radius = T(0.91788);
+  T cone_fit_tolerance = T(0.01);
+  T cone_albedo_max = T(0.4);
 };
 
 // Caller-owned memory between samples (cones' cube state). Default-constructed = after darkness.
