@@ -61,7 +61,8 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
         .depends_on({"sun_body", "irradiance", "albedo_face"});
     t.output("i_face_sh", &D::i_face_sh, "A",
              "Sample/hold of each face's Hall channel (+x, -x, +y, -y, +z, -z), the current of its short-circuited "
-             "panel; i_sh[k] = i_face_sh[2k-1] - i_face_sh[2k]")
+             "panel: tracks while the gate is on, holds while it is off (averaged fidelity: the live current); "
+             "i_sh[k] = i_face_sh[2k-1] - i_face_sh[2k]")
         .depends_on({"sun_body", "irradiance", "albedo_face"});
     t.output("i_sc", &D::i_sc, "A", "Each panel's true short-circuit current").depends_on({"sun_body", "irradiance", "albedo_face"});
     t.output("i_panel", &D::i_panel, "A", "Each panel's current delivered to the bus (averaged over the PWM state)")
