@@ -5,6 +5,7 @@
 #include <string>
 
 #include "fmu/errors.hpp"
+#include "fmu/indicator_bisection.hpp"
 
 namespace fmu {
 
@@ -61,27 +62,13 @@ bool CsSolver::integrate_to(double t_stop) {
 
 bool CsSolver::locate_without_states(double t_stop) {
     const std::size_t m = runner_.indicator_count();
-    if (m == 0) {
-        runner_.set_time(t_stop);
-        return false;
-    }
-    std::vector<double> z0(m), z(m);
-    runner_.get_indicators(z0);
-    auto crossed = [&](double t) {
-        runner_.set_time(t);
-        runner_.get_indicators(z);
-        for (std::size_t i = 0; i < m; ++i)
-            if ((z0[i] > 0) != (z[i] > 0)) return true;
-        return false;
-    };
-    double lo = runner_.time(), hi = t_stop;
-    if (!crossed(hi)) return false;
-    for (int i = 0; i < 60 && hi - lo > 1e-13 * std::max(1.0, std::abs(hi)); ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (crossed(mid) ? hi : lo) = mid;
-    }
-    runner_.set_time(hi);  // just past the crossing, as CVODE's root finding reports
-    return true;
+    const auto crossing = m == 0 ? std::nullopt
+                                 : bisect_indicator_crossing(runner_.time(), t_stop, m, [this](double t, std::span<double> z) {
+                                       runner_.set_time(t);
+                                       runner_.get_indicators(z);
+                                   });
+    runner_.set_time(crossing.value_or(t_stop));
+    return crossing.has_value();
 }
 
 CsSolver::Outcome CsSolver::advance(double t_end) {

@@ -80,7 +80,9 @@ TEST(SunScene, AlbedoLightsTheFaceTowardNadir) {
             EXPECT_LE(s.albedo[k], config.reflectivity * config.irradiance);
             const double c = (k % 2 == 0 ? 1.0 : -1.0) * s.nadir_body[k / 2];
             // A face turned more than 90° + the Earth's angular radius (66.6° at 570 km) from nadir sees none of it.
-            if (c < -0.95) EXPECT_EQ(s.albedo[k], 0.0) << "face " << k;
+            if (c < -0.95) {
+                EXPECT_EQ(s.albedo[k], 0.0) << "face " << k;
+            }
         }
         ++draws;
         if (s.albedo[best] > 0.0) ++nadir_lit;

@@ -9,6 +9,7 @@
 
 #include "cosim_error.hpp"
 #include "fmu/cvode_integrator.hpp"
+#include "fmu/indicator_bisection.hpp"
 
 namespace cosim {
 
@@ -112,25 +113,10 @@ struct Execution::Impl {
 
     // No continuous states but event indicators: locate a sign change by bisection on time.
     bool bisect(double t_stop) {
-        std::vector<double> z0(m), z(m);
-        indicators(t, x, z0);
-        auto crossed = [&](double time) {
-            indicators(time, x, z);
-            for (std::size_t i = 0; i < m; ++i)
-                if ((z0[i] > 0) != (z[i] > 0)) return true;
-            return false;
-        };
-        if (!crossed(t_stop)) {
-            t = t_stop;
-            return false;
-        }
-        double lo = t, hi = t_stop;
-        for (int i = 0; i < 60 && hi - lo > 1e-13 * std::max(1.0, std::abs(hi)); ++i) {
-            const double mid = 0.5 * (lo + hi);
-            (crossed(mid) ? hi : lo) = mid;
-        }
-        t = hi;
-        return true;
+        const auto crossing = fmu::bisect_indicator_crossing(
+            t, t_stop, m, [this](double time, std::span<double> z) { indicators(time, x, z); });
+        t = crossing.value_or(t_stop);
+        return crossing.has_value();
     }
 
     // Integrate the Model Exchange part to t_target or the first state event; true on a state event.
