@@ -431,25 +431,44 @@ bool cones_albedo_model(const FaceReadings<T>& fr, const SunMethodConfig<T>& cfg
     fit_model(m, fr, cfg, inv_h, cos_lambda);
     if (!(m.cost <= max_cost)) continue;
     settle_dark_axes(m, fr, cfg, inv_h);
-    const int cube = cube_of_direction(m.s, cfg);
-    const bool small_step = state.has_last && cfg.cube_max_step > T(0) &&
-                            dot(m.s, state.last_unit) >= std::cos(cfg.cube_max_step);
-    if (!small_step && !cube_transition_allowed(state.cube_state, cube)) continue;
     fits[h] = m;
     ok[h] = true;
     if (best < 0 || m.cost < fits[best].cost) best = h;
   }
   if (best < 0) return false;
-  // Fits that explain the readings as well as the best one (within a tenth of the tolerance in RMS) are the
-  // single-sample ambiguities (the mirror of sun and Earth across an axis whose two faces read alike): the
-  // one closest to the last accepted direction is taken when there is one.
-  if (state.has_last) {
-    const T near_cost = fits[best].cost + max_cost / T(100);
-    for (int h = 0; h < 27; ++h)
-      if (ok[h] && fits[h].cost <= near_cost &&
-          dot(fits[h].s, state.last_unit) > dot(fits[best].s, state.last_unit) + T(1e-4))
-        best = h;
+  // Fits that explain the readings as well as the best one (within a hundredth of the cost budget) are the
+  // single-sample ambiguities (the mirror of sun and Earth across an axis whose two faces read alike). Among
+  // them the cube graph's allowed ones, and of those the one closest to the last accepted direction when
+  // there is one, else the best.
+  const T near_cost = fits[best].cost + max_cost / T(100);
+  int pick = -1;
+  for (int h = 0; h < 27; ++h) {
+    if (!ok[h] || fits[h].cost > near_cost) continue;
+    const bool small_step = state.has_last && cfg.cube_max_step > T(0) &&
+                            dot(fits[h].s, state.last_unit) >= std::cos(cfg.cube_max_step);
+    if (!small_step && !cube_transition_allowed(state.cube_state, cube_of_direction(fits[h].s, cfg))) continue;
+    if (pick < 0) {
+      pick = h;
+    } else if (state.has_last) {
+      if (dot(fits[h].s, state.last_unit) > dot(fits[pick].s, state.last_unit) + T(1e-4)) pick = h;
+    } else if (fits[h].cost < fits[pick].cost) {
+      pick = h;
+    }
   }
+  if (pick < 0) {
+    // The readings' explanation needs a jump the panel cube forbids (e.g. +x straight to −x): refused as in
+    // the model-free path (the candidates there would only explain the Earth's light as sun), until
+    // darkness or cube_refusals_before_reset consecutive refusals (then the jump is accepted).
+    ++state.refusals;
+    if (!(cfg.cube_refusals_before_reset > 0 && state.refusals >= cfg.cube_refusals_before_reset)) {
+      out.valid = false;
+      out.cube_state = state.cube_state;
+      out.rejected_faces = fr.lit;
+      return true;
+    }
+    pick = best;
+  }
+  best = pick;
   const ModelFit<T>& m = fits[best];
   out.unit = m.s;
   out.valid = true;
