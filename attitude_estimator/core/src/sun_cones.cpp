@@ -284,9 +284,11 @@ bool solve5(std::array<std::array<T, 5>, 5> a, std::array<T, 5> b, std::array<T,
 }
 
 // Levenberg–Marquardt on (s, d on the unit sphere, α ≥ 0), forward-difference Jacobian.
+// Stops early when converged (a step that lowers the cost by less than 1e-6 of it) or hopeless
+// (still 100 × the admissible cost budget `max_cost` after 3 iterations, 16 × after 6).
 template <class T>
 void fit_model(ModelFit<T>& m, const FaceReadings<T>& fr, const SunMethodConfig<T>& cfg, T inv_h,
-               T cos_lambda) noexcept {
+               T cos_lambda, T max_cost) noexcept {
   constexpr int kIterations = 20;
   const T step = sizeof(T) < sizeof(double) ? T(1e-3) : T(1e-6);
   std::array<T, kResiduals> e{};
@@ -294,6 +296,7 @@ void fit_model(ModelFit<T>& m, const FaceReadings<T>& fr, const SunMethodConfig<
   m.cost = sum_sq(e);
   T mu = T(1e-3);
   for (int it = 0; it < kIterations && m.cost > T(0); ++it) {
+    if ((it >= 3 && m.cost > T(100) * max_cost) || (it >= 6 && m.cost > T(16) * max_cost)) break;
     Vec3<T> s1, s2, d1, d2;
     tangent_basis(m.s, s1, s2);
     tangent_basis(m.d, d1, d2);
@@ -321,7 +324,7 @@ void fit_model(ModelFit<T>& m, const FaceReadings<T>& fr, const SunMethodConfig<
       for (int k = 0; k < kResiduals; ++k) v += jac[p][k] * e[k];
       g[p] = -v;
     }
-    bool improved = false;
+    bool improved = false, converged = false;
     for (int tries = 0; tries < 6 && !improved; ++tries) {
       std::array<std::array<T, 5>, 5> b = a;
       for (int p = 0; p < 5; ++p) b[p][p] += mu * (a[p][p] + T(1e-6));
@@ -338,6 +341,7 @@ void fit_model(ModelFit<T>& m, const FaceReadings<T>& fr, const SunMethodConfig<
       model_residuals(n, fr, cfg, inv_h, cos_lambda, en);
       n.cost = sum_sq(en);
       if (n.cost < m.cost) {
+        converged = n.cost > m.cost * T(1 - 1e-6);
         m = n;
         e = en;
         mu = std::max(mu * T(0.3), T(1e-7));
@@ -346,7 +350,7 @@ void fit_model(ModelFit<T>& m, const FaceReadings<T>& fr, const SunMethodConfig<
         mu *= T(10);
       }
     }
-    if (!improved) break;
+    if (!improved || converged) break;
   }
 }
 
@@ -428,7 +432,7 @@ bool cones_albedo_model(const FaceReadings<T>& fr, const SunMethodConfig<T>& cfg
     m.s = unit_of(m.s);
     m.d = squared_norm(earth) > T(1e-8) ? unit_of(earth) : scaled(m.s, T(-1));
     m.alpha = std::min(seed_alpha, cfg.cone_albedo_max);
-    fit_model(m, fr, cfg, inv_h, cos_lambda);
+    fit_model(m, fr, cfg, inv_h, cos_lambda, max_cost);
     if (!(m.cost <= max_cost)) continue;
     settle_dark_axes(m, fr, cfg, inv_h);
     fits[h] = m;
