@@ -13,6 +13,7 @@ namespace attitude_estimator {
 namespace {
 
 constexpr const char* kSolverNames[] = {"qmethod", "fast"};  // SolverKind, in the core's spelling
+constexpr double kEarthMeanRadius = 6371e3;  // m: the albedo model's sphere (the core's 570 km default uses it)
 constexpr SunMethod kSunMethods[] = {SunMethod::difference, SunMethod::inverse_response, SunMethod::cones,
                                      SunMethod::three_faces};
 
@@ -32,6 +33,9 @@ MeanAngularRateConfig<double> rate_config_from(const EstimatorData& d) {
     c.measure = RateMeasure::attitude_angle;
     c.window = static_cast<std::size_t>(d.rate_window);
     c.min_interval = d.rate_interval;
+    // A few invalid estimates in between (a refused cones sample, a grazing sun) do not break an increment;
+    // a gap longer than two increments (an eclipse) does: the rotation across it could alias past π.
+    c.max_interval = std::max(2.0 * d.rate_interval, 5.0 * d.sample_period);
     return c;
 }
 
@@ -77,6 +81,9 @@ EstimatorConfig<double> config_from(const EstimatorData& d) {
     c.sun.min_sun_norm = d.min_sun_norm;
     c.sun.cone_tolerance = d.cone_tolerance;
     c.sun.cube_max_step = d.cube_max_step;
+    c.sun.cone_earth_sin_radius = kEarthMeanRadius / (kEarthMeanRadius + d.orbit_altitude);
+    c.sun.cone_fit_tolerance = d.cone_fit_tolerance;
+    c.sun.cone_albedo_max = d.cone_albedo_max;
     c.face_adc.fill(adc(d.adc_bits, 0.0, d.i_face_adc_max));
     return c;
 }
@@ -166,6 +173,16 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
                 "cones: a transition the panel-cube graph forbids is accepted when the sun moved less than this "
                 "since the last sample (0: the seed's graph alone; fast spin: about 1.5 x the turn per sample)")
         .range(0.0, 3.14159);
+    t.parameter("orbit_altitude", &D::orbit_altitude, "m",
+                "cones: altitude of the orbit, for the Earth-albedo model's view of the Earth (default 570 km, seed 004)")
+        .range(100e3, 100e6);
+    t.parameter("cone_fit_tolerance", &D::cone_fit_tolerance, "1",
+                "cones: an albedo-model fit is accepted below this RMS misfit of the relative face responses; 0 "
+                "turns the model off (face rejection only)")
+        .range(0.0, 1.0);
+    t.parameter("cone_albedo_max", &D::cone_albedo_max, "1",
+                "cones: largest albedo the model may fit on a face squarely toward the Earth (fraction of full sun)")
+        .range(0.0, 1.0);
     t.parameter("spin_window", &D::spin_window, "",
                 "Samples in the spin-rate FFT window (0: no spin-rate analysis); at most 2048")
         .range(0.0, static_cast<double>(kMaxSpinWindow));
@@ -330,9 +347,9 @@ void EstimatorBlock::take_sample(double t) {
 
 void EstimatorBlock::update_rates(double t) {
     auto& d = data();
-    // Mean |ω| (004 eq. 4) from successive valid attitudes; an invalid one breaks the chain.
-    const Quaternion<double> q{d.q_est[0], d.q_est[1], d.q_est[2], d.q_est[3]};
-    d.rate_state.push(t, q, d.valid);
+    // Mean |ω| (004 eq. 4) from successive valid attitudes; invalid ones are skipped, and a gap longer than
+    // the rate config's max_interval starts a new chain.
+    if (d.valid) d.rate_state.push(t, Quaternion<double>{d.q_est[0], d.q_est[1], d.q_est[2], d.q_est[3]});
     const MeanRate<double> mean = d.rate_state.result();
     d.rate_mean = mean.rate;
     d.rate_window_time = mean.window_seconds;

@@ -110,11 +110,16 @@ TEST(E2eLeoSunMethods, EverySunMethodRunsAndTheResponseInversionRemovesTheKellyB
     EXPECT_GT(difference.median, 2.0);
     EXPECT_LT(inverse.median, 0.75 * difference.median);
     EXPECT_LT(three.median, 0.75 * difference.median);
+    // The cones method's Earth-albedo model removes most of the albedo error eq. 5 and the plain inversion
+    // carry (the Monte-Carlo over random scenes: median 0.13° against 5.6° and 2.3°, docs/sun_methods.md).
+    EXPECT_LT(cones.median, 0.25 * difference.median);
+    EXPECT_LT(cones.median, inverse.median);
+    EXPECT_LT(cones.p95, difference.p95);
     // 004 eq. 4 on the estimated attitudes a minute apart: the tumble (|ω| = 0.94 °/s) turns 56° per
     // increment, the attitude errors (several degrees, partly common to successive estimates) enter as
     // error/56°, averaged over 4 increments: within the 10 % at the seed-004 sampling.
     for (const SunScore* s : {&difference, &inverse, &cones}) {
-        EXPECT_GT(s->rate_rows, 100);
+        EXPECT_GT(s->rate_rows, 120);
         EXPECT_LT(s->rate_error_median, 0.10);
     }
     RecordProperty("difference_median_deg", std::to_string(difference.median));

@@ -17,6 +17,27 @@ double angle_deg(const std::array<double, 3>& a, const std::array<double, 3>& b)
     return std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), dot) * 180.0 / std::numbers::pi;
 }
 
+namespace {
+
+void summarize(std::vector<double>& e, ErrorStatistics& st) {
+    st.valid = e.size();
+    if (e.empty()) return;
+    std::sort(e.begin(), e.end());
+    double sum = 0.0;
+    for (double x : e) sum += x;
+    st.mean_deg = sum / static_cast<double>(e.size());
+    // Nearest-rank percentiles.
+    const auto percentile = [&e](double p) {
+        const auto rank = static_cast<std::size_t>(std::ceil(p * static_cast<double>(e.size())));
+        return e[std::clamp<std::size_t>(rank, 1, e.size()) - 1];
+    };
+    st.median_deg = percentile(0.5);
+    st.p95_deg = percentile(0.95);
+    st.max_deg = e.back();
+}
+
+}  // namespace
+
 std::vector<ErrorStatistics> run_study(const SceneConfig& scene, std::size_t samples, std::uint64_t seed) {
     SceneGenerator generator(scene, seed);
     constexpr std::size_t n_methods = std::size(kAllMethods);
@@ -39,25 +60,29 @@ std::vector<ErrorStatistics> run_study(const SceneConfig& scene, std::size_t sam
             errors[m].push_back(angle_deg(r.unit, s.sun_body));
         }
     }
-    for (std::size_t m = 0; m < n_methods; ++m) {
-        auto& e = errors[m];
-        auto& st = stats[m];
-        st.valid = e.size();
-        if (e.empty()) continue;
-        std::sort(e.begin(), e.end());
-        double sum = 0.0;
-        for (double x : e) sum += x;
-        st.mean_deg = sum / static_cast<double>(e.size());
-        // Nearest-rank percentiles.
-        const auto percentile = [&e](double p) {
-            const auto rank = static_cast<std::size_t>(std::ceil(p * static_cast<double>(e.size())));
-            return e[std::clamp<std::size_t>(rank, 1, e.size()) - 1];
-        };
-        st.median_deg = percentile(0.5);
-        st.p95_deg = percentile(0.95);
-        st.max_deg = e.back();
-    }
+    for (std::size_t m = 0; m < n_methods; ++m) summarize(errors[m], stats[m]);
     return stats;
+}
+
+ErrorStatistics dark_band_floor(const SceneConfig& scene, std::size_t samples, std::uint64_t seed) {
+    SceneGenerator generator(scene, seed);
+    const auto law = scene.response == ssr_plant::AngularResponse::kelly ? panel_response::kelly<double>()
+                                                                         : panel_response::cosine<double>();
+    ErrorStatistics st;
+    st.samples = samples;
+    std::vector<double> e;
+    e.reserve(samples);
+    for (std::size_t i = 0; i < samples; ++i) {
+        const Scene s = generator.next();
+        std::array<double, 3> seen = s.sun_body;
+        for (double& c : seen)
+            if (panel_response::response_from_cos(law, std::abs(c)) <= 0.0) c = 0.0;
+        const double n = std::hypot(seen[0], seen[1], seen[2]);
+        for (double& c : seen) c /= n;
+        e.push_back(angle_deg(seen, s.sun_body));
+    }
+    summarize(e, st);
+    return st;
 }
 
 }  // namespace montecarlo

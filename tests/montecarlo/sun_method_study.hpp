@@ -35,6 +35,11 @@ attitude_estimator::SunMethodConfig<double> method_config(const SceneConfig& sce
 // tracking state starts fresh for every scene (the scenes are independent draws, not a trajectory).
 std::vector<ErrorStatistics> run_study(const SceneConfig& scene, std::size_t samples, std::uint64_t seed);
 
+// The one-sample floor of the panel law over the same scenes: the true sun with every component a face
+// cannot see (both faces of its axis at zero response: |s_k| below the law's zero, cos 85° for Kelly)
+// replaced by 0, scored like a method. No method reading one sample of the faces can know more.
+ErrorStatistics dark_band_floor(const SceneConfig& scene, std::size_t samples, std::uint64_t seed);
+
 // Angle in degrees between two unit vectors (robust near 0 and 180°).
 double angle_deg(const std::array<double, 3>& a, const std::array<double, 3>& b);
 

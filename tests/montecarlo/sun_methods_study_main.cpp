@@ -28,6 +28,12 @@ int main(int argc, char** argv) {
             scene.response = response;
             scene.albedo = albedo;
             scene.adc_bits = bits;
+            if (!albedo) {
+                const auto f = montecarlo::dark_band_floor(scene, samples, seed);
+                std::printf("| %s | — | (floor: unseen components set to 0) | — | %.3f | %.3f | %.3f | %.3f | — |\n",
+                            response == ssr_plant::AngularResponse::kelly ? "Kelly" : "cosine", f.mean_deg,
+                            f.median_deg, f.p95_deg, f.max_deg);
+            }
             for (const auto& s : montecarlo::run_study(scene, samples, seed)) {
                 std::printf("| %s | %s | %s | %.2f %% | %.3f | %.3f | %.3f | %.3f | %zu |\n",
                             response == ssr_plant::AngularResponse::kelly ? "Kelly" : "cosine",

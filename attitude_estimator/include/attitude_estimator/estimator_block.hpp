@@ -62,6 +62,9 @@ struct EstimatorData {
     double i_face_adc_max = 1.2;         // A: face-current channels span 0 … this
     double cone_tolerance = 0.03;        // 1: cones' agreement tolerance on the relative response
     double cube_max_step = 0.0;          // rad: cones may cross the panel cube's forbidden edges by this much
+    double orbit_altitude = 570e3;       // m: cones' Earth-albedo model sees the Earth from this height
+    double cone_fit_tolerance = 0.01;    // 1: cones' albedo-model fit accepted below this RMS misfit (0: off)
+    double cone_albedo_max = 0.4;        // 1: cones' largest fitted albedo on a face toward nadir
     // Rates (rates.md): spin frequencies from the FFT of sun_meas; mean |ω| from successive q_est (004 eq. 4).
     std::int32_t spin_window = 512;      // samples per FFT window (0: off)
     double rate_interval = 2.0;          // s: shortest time between two attitudes in one eq. 4 increment
