@@ -20,6 +20,11 @@ std::mutex& planner_mutex() {
   return m;
 }
 
+// Plans alive, guarded by planner_mutex. FFTW keeps planner tables of its own (allocated on the first plan,
+// freed only by fftw_cleanup); when the last plan goes, they are freed, so a host that unloads the FMU (or a
+// leak checker at exit) finds nothing left behind. fftw_cleanup is only legal with no plan alive.
+std::size_t live_plans = 0;
+
 // First bin searched for lines: mean removal empties bin 0 and the Hann main lobe is ±2 bins wide, so a
 // line below two bins cannot be told from the window's own leakage of a trend.
 constexpr std::size_t kFirstBin = 2;
@@ -97,6 +102,7 @@ SpinSpectrum::SpinSpectrum(const SpinSpectrumConfig& config) : config_(config) {
     const int len = static_cast<int>(n);
     plan_ = fftw_plan_many_dft_r2c(1, &len, 3, in_, nullptr, 1, len, static_cast<fftw_complex*>(out_), nullptr,
                                    1, static_cast<int>(bins_), FFTW_ESTIMATE);
+    if (plan_) ++live_plans;
   }
   if (!plan_) {
     release();
@@ -119,6 +125,7 @@ void SpinSpectrum::release() noexcept {
   if (plan_) {
     const std::lock_guard lock(planner_mutex());  // fftw_destroy_plan is not thread-safe either
     fftw_destroy_plan(static_cast<fftw_plan>(plan_));
+    if (--live_plans == 0) fftw_cleanup();
   }
   fftw_free(ring_);
   fftw_free(hann_);
