@@ -60,7 +60,11 @@ SunMethod sun_method_from(std::string_view name) {
 
 EstimatorConfig<double> config_from(const EstimatorData& d) {
     EstimatorConfig<double> c;
-    c.i_sc_norm = d.i_sc_norm;
+    // The panels' currents scale with the irradiance, (1 AU / distance)² of the 1 AU normalization
+    // (±3.4 % over a year): the cones method's albedo fit needs the absolute scale.
+    const double au_ratio = kAstronomicalUnit / d.sun_distance;
+    const double scale = au_ratio * au_ratio;
+    for (std::size_t k = 0; k < 3; ++k) c.i_sc_norm[k] = d.i_sc_norm[k] * scale;
     c.mag_sensitivity = d.mag_sensitivity;
     c.sun_weight = d.weight_sun;
     c.mag_weight = d.weight_mag;
@@ -75,7 +79,7 @@ EstimatorConfig<double> config_from(const EstimatorData& d) {
     c.min_field = d.min_field;
     c.min_separation_sin = d.min_separation_sin;
     c.sun.method = sun_method_from(d.sun_method.view());
-    c.sun.i_face_norm = d.i_face_norm;
+    for (std::size_t k = 0; k < 6; ++k) c.sun.i_face_norm[k] = d.i_face_norm[k] * scale;
     c.sun.response = response_from(d);
     c.sun.dark_threshold = d.face_dark_threshold;
     c.sun.min_sun_norm = d.min_sun_norm;
@@ -106,11 +110,15 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.input("mag_ref", &D::mag_ref, "T",
             "Geomagnetic field in the inertial frame, any nonzero length (environment mag_eci)");
 
+    t.input("sun_distance", &D::sun_distance, "m",
+            "Distance satellite to sun from the on-board ephemeris (environment sun_distance); scales i_sc_norm "
+            "and i_face_norm, which hold at 1 AU")
+        .min(1e9);
     t.parameter("sample_period", &D::sample_period, "s",
                 "Time between samples; sample k is taken at start time + k*sample_period (default 20 Hz)")
         .min(1e-6);
     t.parameter("i_sc_norm", &D::i_sc_norm, "A",
-                "Differential current of each axis with one panel facing the sun squarely (000 eq. 5 "
+                "Differential current of each axis with one panel facing the sun squarely at 1 AU (000 eq. 5 "
                 "denominators; default ssr_plant's short-circuit current at 1367 W/m2)")
         .min(1e-6);
     t.parameter("mag_sensitivity", &D::mag_sensitivity, "V/T",
@@ -160,7 +168,7 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
                 "Kelly table: relative response at kelly_angle, the first 1 (default ssr_plant's)")
         .range(0.0, 1.0);
     t.parameter("i_face_norm", &D::i_face_norm, "A",
-                "Each face's current facing the sun squarely in full sun (default ssr_plant's i_sc at 1367 W/m2)")
+                "Each face's current facing the sun squarely in full sun at 1 AU (default ssr_plant's i_sc at 1367 W/m2)")
         .min(1e-6);
     t.parameter("face_dark_threshold", &D::face_dark_threshold, "1",
                 "A face counts as lit above this fraction of its i_face_norm")

@@ -89,6 +89,23 @@ TEST(EstimatorFmuSun, KellyTableIsInvertedOnlyWhenSelected) {
     EXPECT_GT(angle_deg(cosine.data().sun_meas, s), 2.0);
 }
 
+TEST(EstimatorFmuSun, SunDistanceScalesTheExpectedCurrents) {
+    // At perihelion (0.9833 AU) the panels deliver (1/0.9833)² = 3.4 % more than at 1 AU. The albedo model
+    // of `cones` needs the absolute scale: with the distance given the sun comes out as without the offset.
+    const Eigen::Vector3d s = Eigen::Vector3d(0.5, -0.6, 0.62).normalized();
+    const double au = 1.495978707e11, d_sun = 0.9833 * au, gain = std::pow(au / d_sun, 2);
+    Simulation sim;
+    sim.data().sun_method.assign("cones");
+    sim.data().adc_bits = 0;
+    sim.data().sun_distance = d_sun;
+    feed_sun(sim.data(), s);
+    for (double& i : sim.data().i_face) i *= gain;
+    sim.start();
+    ASSERT_TRUE(sim.data().sun_valid);
+    EXPECT_LT(angle_deg(sim.data().sun_meas, s), 0.01);
+    EXPECT_NEAR(sim.data().sun_norm, 1.0, 1e-6);  // |c| of the faces used: the scale was removed
+}
+
 TEST(EstimatorFmuSun, BadSunMethodAndKellyTableAreRefused) {
     EstimatorBlock b;
     b.data().sun_method = "average";

@@ -218,7 +218,9 @@ void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
   t.output("r_eci", &D::r_eci, "m", "Satellite position, ECI (J2000)").depends_on({});
 
   t.local("sunlight_fraction", &D::sunlight_fraction, "1", "Visible fraction of the solar disc (1 lit, 0 umbra)");
-  t.local("sun_distance", &D::sun_distance, "m", "Distance satellite to sun");
+  t.output("sun_distance", &D::sun_distance, "m",
+           "Distance satellite to sun (what an on-board ephemeris knows: scales the expected panel currents)")
+      .depends_on({});
 }
 
 fmu::ModelInfo EnvironmentBlock::describe() {
@@ -256,7 +258,7 @@ fmu::ModelInfo EnvironmentBlock::describe() {
       "view factor integrated over the sunlit visible cap, per face; <code>albedo_enabled = false</code> gives "
       "zeros.</li>"
       "</ul>"
-      "<p>Outputs: sun_body, sun_eci (unit), irradiance, albedo_face, mag_body, mag_eci (T), q_true, omega_body, "
+      "<p>Outputs: sun_body, sun_eci (unit), sun_distance (m), irradiance, albedo_face, mag_body, mag_eci (T), q_true, omega_body, "
       "r_eci (m). In spin mode sun_body = A(q_true) sun_eci is the seed formula up to the sun's orbital parallax "
       "(&lt; 5e-5 rad) and its motion of 2e-7 rad/s. Default experiment: the seed scenario, 10 s in 0.01 s "
       "steps.</p>";

@@ -22,6 +22,9 @@ using Faces = std::array<double, 6>;  // one value per face: +x, −x, +y, −y,
 // of the FMU state, so it has a fixed size inside the data struct.
 inline constexpr std::int32_t kMaxSpinWindow = 2048;
 
+// The distance at which i_sc_norm and i_face_norm hold (1367 W/m², seed 000 §4): 1 AU (IAU 2012).
+inline constexpr double kAstronomicalUnit = 1.495978707e11;  // m
+
 
 // Every variable of the block (double precision throughout). Defaults of the sensor chain match the other
 // blocks: i_sc_norm is ssr_plant's short-circuit current of one panel at normal incidence and 1367 W/m²,
@@ -35,6 +38,7 @@ struct EstimatorData {
     double v_mag_ref = 2.5;         // V, magnetometer zero-field reference output
     Vec3d sun_ref{1.0, 0.0, 0.0};   // 1, sun direction, inertial frame (any length)
     Vec3d mag_ref{0.0, 0.0, 30e-6}; // T, geomagnetic field, inertial frame (any length)
+    double sun_distance = kAstronomicalUnit;  // m, satellite to sun (on-board ephemeris; environment sun_distance)
 
     // parameters
     double sample_period = 0.05;                     // s: 20 Hz, the seed asks for more than 10 Hz
