@@ -1,8 +1,11 @@
-// Per-solution time of each Wahba solver (2 and 6 observations) and of one whole sample, float and double.
+// Per-solution time of each Wahba solver (2 and 6 observations), of each sun method on six face currents,
+// and of one whole sample, float and double.
 // Problems are drawn once (noisy observations of random rotations) and cycled through, so the branch
 // predictor cannot learn a single problem.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -11,6 +14,7 @@
 #include "attitude_estimator/estimator.hpp"
 #include "attitude_estimator/fast_solver.hpp"
 #include "attitude_estimator/q_method.hpp"
+#include "attitude_estimator/sun_methods.hpp"
 #include "attitude_estimator/vec3_math.hpp"
 
 namespace ae = attitude_estimator;
@@ -84,8 +88,43 @@ void whole_sample(benchmark::State& state) {
   }
 }
 
+// Face currents of Kelly panels for random sun directions, with a crude albedo (a random nadir half-space at
+// up to 15 % of full sun, falling with the face's angle to nadir): timing only, the physics is in
+// tests/montecarlo.
+template <class T, ae::SunMethod Method>
+void sun_method(benchmark::State& state) {
+  std::mt19937_64 g(11);
+  std::uniform_real_distribution<double> level(0.0, 0.15);
+  const auto kelly = panel_response::kelly<T>();
+  std::vector<std::array<T, 6>> faces(kProblems);
+  for (auto& f : faces) {
+    const ae::Vec3<T> s = random_unit<T>(g);
+    const ae::Vec3<T> e = random_unit<T>(g);
+    const double a = level(g);
+    for (int k = 0; k < 6; ++k) {
+      const T sign = k % 2 == 0 ? T(1) : T(-1);
+      const double albedo = a * std::max(0.0, 0.3 + 0.7 * static_cast<double>(sign * e[k / 2]));
+      f[k] = T(0.84754) * (panel_response::response_from_cos(kelly, sign * s[k / 2]) + T(albedo));
+    }
+  }
+  ae::SunMethodConfig<T> config;
+  config.method = Method;
+  config.response = kelly;
+  ae::SunMethodState<T> memory;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    auto r = ae::sun_from_faces(faces[i++ % kProblems], config, memory);
+    benchmark::DoNotOptimize(r);
+  }
+}
+
 }  // namespace
 
+BENCHMARK(sun_method<double, ae::SunMethod::difference>)->Name("sun/difference/double");
+BENCHMARK(sun_method<double, ae::SunMethod::inverse_response>)->Name("sun/inverse_response/double");
+BENCHMARK(sun_method<double, ae::SunMethod::cones>)->Name("sun/cones/double");
+BENCHMARK(sun_method<float, ae::SunMethod::cones>)->Name("sun/cones/float");
+BENCHMARK(sun_method<double, ae::SunMethod::three_faces>)->Name("sun/three_faces/double");
 BENCHMARK(solver<float, ae::SolverKind::fast, 2>)->Name("fast/2obs/float");
 BENCHMARK(solver<double, ae::SolverKind::fast, 2>)->Name("fast/2obs/double");
 BENCHMARK(solver<float, ae::SolverKind::fast, 2, true>)->Name("fast/2obs/float/angles<1rad");
