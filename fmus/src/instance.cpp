@@ -235,23 +235,22 @@ template <class T, class Check, class Write>
 void Instance::set_values(std::span<const fmi2ValueReference> vr, const T* values, ValueType type, Check&& check,
                           Write&& write) {
     require_arrays(vr, values);
+    bool parameter_changed = false;
     for (std::size_t i = 0; i < vr.size(); ++i) {
         const Variable& v = variable(vr[i], type);
         check_settable(v);
         check(v, values[i]);
+        parameter_changed = parameter_changed || v.causality == Causality::parameter;
     }
     const bool initialized = mode_ != Mode::instantiated && mode_ != Mode::initialization;
+    // A tunable parameter set after initialization is validated with the others and rolled back if the
+    // block refuses it: only then is the whole data worth a copy (inputs are set at every step of a host).
     std::vector<std::byte> before;
-    if (initialized) {
+    if (initialized && parameter_changed) {
         auto b = runner_.model().bytes();
         before.assign(b.begin(), b.end());
     }
-    bool parameter_changed = false;
-    for (std::size_t i = 0; i < vr.size(); ++i) {
-        const Variable& v = variable(vr[i], type);
-        write(v, values[i]);
-        parameter_changed = parameter_changed || v.causality == Causality::parameter;
-    }
+    for (std::size_t i = 0; i < vr.size(); ++i) write(variable(vr[i], type), values[i]);
     runner_.mark_changed();
     if (initialized && parameter_changed) {
         try {
