@@ -16,11 +16,15 @@ constexpr char serial_magic[8] = {'P', 'V', 'A', 'T', 'F', 'M', 'U', '1'};
 constexpr std::size_t serial_guid_bytes = 40;
 constexpr std::size_t serial_header = sizeof serial_magic + 8 + 8 + 8 + 1 + serial_guid_bytes;
 
-std::size_t category_index(std::string_view name) {
+constexpr std::size_t category_index(std::string_view name) {
     for (std::size_t i = 0; i < std::size(log_categories); ++i)
         if (name == log_categories[i]) return i;
     return std::size(log_categories);
 }
+
+// Looked up once: category_on runs on every FMI call (log_call), and the lookup compares C strings.
+constexpr std::size_t kLogAll = category_index("logAll");
+static_assert(kLogAll < std::size(log_categories));
 
 std::string format_time(double t) {
     char buf[32];
@@ -49,8 +53,7 @@ Instance::~Instance() {
 }
 
 bool Instance::category_on(const char* category) const {
-    const auto all = category_index("logAll");
-    if (category_enabled_[all]) return true;
+    if (category_enabled_[kLogAll]) return true;
     const auto i = category_index(category);
     return i < category_enabled_.size() && category_enabled_[i];
 }
@@ -63,7 +66,7 @@ void Instance::log(fmi2Status status, const char* category, const std::string& m
 }
 
 void Instance::log_call(const char* function) const {
-    if (category_on("logAll") && logger_) log(fmi2OK, "logAll", function);
+    if (logger_ && category_enabled_[kLogAll]) log(fmi2OK, "logAll", function);
 }
 
 void Instance::set_debug_logging(bool on, std::span<const fmi2String> categories) {
