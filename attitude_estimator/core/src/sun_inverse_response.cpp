@@ -9,13 +9,8 @@ namespace attitude_estimator {
 template <class T>
 SunMethodResult<T> sun_inverse_response(const std::array<T, 6>& i_face, const SunMethodConfig<T>& cfg) noexcept {
   SunMethodResult<T> out;
-  const FaceReadings<T> fr = face_readings(i_face, cfg);
-  if (!fr.ok) return out;
-  out.lit_faces = fr.lit;
-  const detail::AxisChoice<T> a = detail::choose_axes(fr, cfg);
-  out.rejected_faces = a.rejected;
-  out.cube_state = detail::cube_of_choice(a);
-  if (a.lit_axes == 0) return out;
+  detail::AxisChoice<T> a;
+  if (!detail::start_from_axes(i_face, cfg, out, a) || a.lit_axes == 0) return out;
   // s_k = ±cos β_k on each lit axis (sign of the lit face), 0 on an unlit axis (only |s_k| ≤ dark is known).
   Vec3<T> c{};
   for (int ax = 0; ax < 3; ++ax)

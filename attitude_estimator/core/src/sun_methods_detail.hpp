@@ -53,6 +53,20 @@ int cube_of_choice(const AxisChoice<T>& a) noexcept {
   return cube_state_of(s[0], s[1], s[2]);
 }
 
+// The start every per-axis method shares: the readings, the lit faces, the per-axis choice, the faces it
+// rejects and the cube state, written into `out`. False (out left as is) when the readings are unusable.
+template <class T>
+bool start_from_axes(const std::array<T, 6>& i_face, const SunMethodConfig<T>& cfg, SunMethodResult<T>& out,
+                     AxisChoice<T>& a) noexcept {
+  const FaceReadings<T> fr = face_readings(i_face, cfg);
+  if (!fr.ok) return false;
+  out.lit_faces = fr.lit;
+  a = choose_axes(fr, cfg);
+  out.rejected_faces = a.rejected;
+  out.cube_state = cube_of_choice(a);
+  return true;
+}
+
 // The largest |s| the lit-face cosines c and the unlit axes (each |s_k| ≤ dark) can make; albedo alone
 // (eclipse) stays well below min_sun_norm.
 template <class T>

@@ -7,12 +7,12 @@
 
 namespace attitude_estimator {
 
+namespace {
+
+// 004 eq. 2–3 and the consistent form from the per-axis choice of lit faces.
 template <class T>
-ThreeFacesResult<T> three_faces(const std::array<T, 6>& i_face, const SunMethodConfig<T>& cfg) noexcept {
+ThreeFacesResult<T> three_faces_of(const detail::AxisChoice<T>& a, const SunMethodConfig<T>& cfg) noexcept {
   ThreeFacesResult<T> out;
-  const FaceReadings<T> fr = face_readings(i_face, cfg);
-  if (!fr.ok) return out;
-  const detail::AxisChoice<T> a = detail::choose_axes(fr, cfg);
   Vec3<T> s{};
   for (int ax = 0; ax < 3; ++ax) {
     out.face[ax] = a.face[ax];
@@ -44,16 +44,21 @@ ThreeFacesResult<T> three_faces(const std::array<T, 6>& i_face, const SunMethodC
   return out;
 }
 
+}  // namespace
+
+template <class T>
+ThreeFacesResult<T> three_faces(const std::array<T, 6>& i_face, const SunMethodConfig<T>& cfg) noexcept {
+  const FaceReadings<T> fr = face_readings(i_face, cfg);
+  if (!fr.ok) return {};
+  return three_faces_of(detail::choose_axes(fr, cfg), cfg);
+}
+
 template <class T>
 SunMethodResult<T> sun_three_faces(const std::array<T, 6>& i_face, const SunMethodConfig<T>& cfg) noexcept {
   SunMethodResult<T> out;
-  const FaceReadings<T> fr = face_readings(i_face, cfg);
-  if (!fr.ok) return out;
-  out.lit_faces = fr.lit;
-  const detail::AxisChoice<T> a = detail::choose_axes(fr, cfg);
-  out.rejected_faces = a.rejected;
-  out.cube_state = detail::cube_of_choice(a);
-  const ThreeFacesResult<T> t = three_faces(i_face, cfg);
+  detail::AxisChoice<T> a;
+  if (!detail::start_from_axes(i_face, cfg, out, a)) return out;
+  const ThreeFacesResult<T> t = three_faces_of(a, cfg);  // the readings and the choice taken once
   out.unit = t.unit;
   out.norm = std::sqrt(t.consistent_check + T(1));
   out.residual = std::abs(t.consistent_check);
