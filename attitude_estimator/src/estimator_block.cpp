@@ -375,17 +375,18 @@ void EstimatorBlock::update_rates(double t) {
         d.history_filled = std::min(d.history_filled + 1, n);
     }
     SpinSpectrum& spectrum = spin_.get(d.sample_period, n);
-    spectrum.reset();
-    SpinRates rates = spectrum.analyze();  // window_not_full: bin width and window length still reported
+    SpinRates rates;  // not valid until the window is full
     if (d.history_filled >= n) {
+        // The analyser gets the window afresh from the history, which (unlike the analyser) is FMU state.
+        spectrum.reset();
         for (std::int32_t i = n; i > 0; --i)
             spectrum.push(d.sun_history[static_cast<std::size_t>((d.history_head - i + kMaxSpinWindow) % kMaxSpinWindow)]);
         rates = spectrum.analyze();
     }
     d.spin_theta_dot = rates.valid ? rates.theta_dot : 0.0;
     d.spin_phi_dot = rates.valid ? rates.phi_dot : 0.0;
-    d.spin_bin_width = rates.bin_width;
-    d.spin_window_time = rates.window_seconds;
+    d.spin_bin_width = spectrum.bin_width();
+    d.spin_window_time = spectrum.window_seconds();
     d.spin_valid = rates.valid;
 }
 
