@@ -65,7 +65,11 @@ std::vector<ErrorStatistics> run_study(const SceneConfig& scene, std::size_t sam
 }
 
 ErrorStatistics dark_band_floor(const SceneConfig& scene, std::size_t samples, std::uint64_t seed) {
-    SceneGenerator generator(scene, seed);
+    // Only the true sun matters here: the same scenes (albedo draws no random numbers) without the albedo
+    // integration.
+    SceneConfig sun_only = scene;
+    sun_only.albedo = false;
+    SceneGenerator generator(sun_only, seed);
     const auto law = scene.response == ssr_plant::AngularResponse::kelly ? panel_response::kelly<double>()
                                                                          : panel_response::cosine<double>();
     ErrorStatistics st;
