@@ -226,6 +226,13 @@ void SsrPlantBlock::evaluate(double t) {
     // gate is discrete: it changes only in initialize/event_update (see its description).
 }
 
+void SsrPlantBlock::evaluate_derivatives(double t) {
+    auto& d = data();
+    const State dx = ssr_plant::derivatives(plant(), inputs(), d.discrete, t, state());
+    d.der_v_cap = dx[state_v_bus];
+    d.der_soc_state = dx[state_soc];
+}
+
 void SsrPlantBlock::event_indicators(double t, std::span<double> z) {
     const ssr_plant::Model& m = plant();
     const Indicators g = ssr_plant::event_indicators(m, inputs(), data().discrete, t, state());

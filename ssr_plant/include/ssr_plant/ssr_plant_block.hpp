@@ -85,6 +85,8 @@ public:
 
     void initialize(double t) override;
     void evaluate(double t) override;
+    // The bus balance alone (no Hall or short-circuit solves): what a solver needs between outputs.
+    void evaluate_derivatives(double t) override;
     std::size_t event_indicator_count() const override { return indicator_count; }
     void event_indicators(double t, std::span<double> z) override;
     fmu::EventUpdate event_update(double t, bool time_event_due) override;
