@@ -32,7 +32,8 @@ void MagnetometerBlock::declare(fmu::Table<MagnetometerData>& t) {
                 "RMS output noise, field-equivalent (datasheet resolution 40 ugauss = 4 nT); 0 disables it")
         .range(0.0, 1e-3);
     t.parameter("noise_sample_period", &D::noise_sample_period, "s",
-                "Noise is a new Gaussian sample every period, held in between (band-limits it)")
+                "Noise is a new Gaussian sample every period, held in between (band-limits it); the samples are "
+                "counted from the start time, not scheduled as time events")
         .min(1e-5);
     t.parameter("noise_seed", &D::noise_seed, "", "Seed of the noise generator: the same seed gives the same run");
     t.parameter("temperature", &D::temperature, "degC", "Sensor temperature").range(-55.0, 125.0).tunable();
@@ -69,7 +70,8 @@ fmu::ModelInfo MagnetometerBlock::describe() {
         "S(T) = S<sub>0</sub>(1 + k<sub>T</sub>(T &minus; 25 &deg;C)), shifted by the bridge offset whose sign "
         "flips with each set/reset pulse (time events every <code>set_reset_period</code>; the mean of a set and "
         "a reset reading cancels the offset), plus seeded Gaussian noise held for "
-        "<code>noise_sample_period</code> (its generator is part of the FMU state), and clamped to the rails.</p>"
+        "<code>noise_sample_period</code> (a counter-based generator keyed by the seed, the hold interval "
+        "and the axis, so the noise needs no time events and an FMU state reproduces it), and clamped to the rails.</p>"
         "<p>Defaults are the datasheet's typical values; <code>bridge_offset</code>, <code>cross_axis</code> and "
         "<code>set_reset_period</code> are assumptions to be replaced by a calibration of the flight unit. "
         "Linearity error, hysteresis and the set/reset pulse's own transient are not modelled.</p>";
@@ -83,9 +85,19 @@ void MagnetometerBlock::validate() const {
     if (d.v_null < d.v_rail_low || d.v_null > d.v_rail_high) throw fmu::Error("v_null must lie between the rails");
 }
 
-void MagnetometerBlock::draw_noise() {
+// The noise enters the outputs only (after the filter), never a derivative: a new sample is a jump of
+// v_out alone, which needs no event, so the hold intervals are counted from the time, not scheduled.
+void MagnetometerBlock::update_noise(double t) {
     auto& d = data();
-    for (auto& n : d.noise) n = d.noise_rms > 0.0 ? d.noise_rms * d.random.normal() : 0.0;
+    if (!(d.noise_rms > 0.0)) {
+        d.noise = {};
+        return;
+    }
+    const std::int64_t k = noise_index(t, d.noise_start, d.noise_sample_period);
+    if (k == d.noise_index) return;
+    const auto seed = static_cast<std::uint64_t>(static_cast<std::uint32_t>(d.noise_seed));
+    for (int axis = 0; axis < 3; ++axis) d.noise[axis] = d.noise_rms * held_normal(seed, k, axis);
+    d.noise_index = k;
 }
 
 void MagnetometerBlock::initialize(double t) {
@@ -94,13 +106,13 @@ void MagnetometerBlock::initialize(double t) {
     d.b_filt = multiply(sensor_matrix(d.cross_axis, d.misalignment), d.mag_body);
     d.set_polarity = true;  // the first pulse at power-up is a set pulse
     d.next_set_reset = d.set_reset_enabled ? t + d.set_reset_period : fmu::no_time_event;
-    d.random.seed(static_cast<std::uint64_t>(static_cast<std::uint32_t>(d.noise_seed)));
-    draw_noise();
-    d.next_noise = d.noise_rms > 0.0 ? t + d.noise_sample_period : fmu::no_time_event;
+    d.noise_start = t;
+    d.noise_index = no_noise_index;  // interval 0 is drawn by the first evaluate
 }
 
-void MagnetometerBlock::evaluate(double) {
+void MagnetometerBlock::evaluate(double t) {
     auto& d = data();
+    update_noise(t);
     const Vec3 sensed = multiply(sensor_matrix(d.cross_axis, d.misalignment), d.mag_body);
     d.der_b_filt = filter_derivative(sensed, d.b_filt, d.bandwidth);
     const OutputStage stage{.sensitivity = sensitivity_at(d.sensitivity, d.sensitivity_tempco, d.temperature),
@@ -120,16 +132,10 @@ fmu::EventUpdate MagnetometerBlock::event_update(double t, bool time_event_due) 
         d.set_polarity = !d.set_polarity;  // pulses alternate set, reset, set, ...
         d.next_set_reset += d.set_reset_period;
     }
-    if (fmu::reached(t, d.next_noise)) {
-        draw_noise();
-        d.next_noise += d.noise_sample_period;
-    }
     return {};
 }
 
-double MagnetometerBlock::next_time_event() const {
-    return std::min(data().next_set_reset, data().next_noise);
-}
+double MagnetometerBlock::next_time_event() const { return data().next_set_reset; }
 
 }  // namespace magnetometer
 

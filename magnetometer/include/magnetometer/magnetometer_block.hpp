@@ -4,12 +4,16 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 
 #include "fmu/block.hpp"
-#include "fmu/random.hpp"
+#include "magnetometer/held_noise.hpp"
 #include "magnetometer/hmc2003.hpp"
 
 namespace magnetometer {
+
+// Marks `noise` as not yet drawn; noise_index() never returns it (its range is ±max_noise_index).
+inline constexpr std::int64_t no_noise_index = std::numeric_limits<std::int64_t>::min();
 
 // Every variable of the block. Defaults are the HMC2003 datasheet's typical values where it gives
 // one (Honeywell, "HMC2003 Three-axis magnetic sensor hybrid"); the others are marked as assumptions.
@@ -40,10 +44,10 @@ struct MagnetometerData {
     double v_ref = 2.5;
     bool set_polarity = true;  // true after a set pulse, false after a reset pulse
     // discrete state (locals)
-    Vec3 noise{};
     double next_set_reset = 0.0;
-    double next_noise = 0.0;
-    fmu::Random random{};
+    double noise_start = 0.0;         // s: start of hold interval 0 (the initialization time)
+    std::int64_t noise_index = no_noise_index;  // hold interval whose samples `noise` holds (a cache)
+    Vec3 noise{};                     // T
 };
 
 class MagnetometerBlock : public fmu::Block<MagnetometerBlock, MagnetometerData> {
@@ -58,7 +62,7 @@ public:
     void validate() const override;
 
 private:
-    void draw_noise();
+    void update_noise(double t);
 };
 
 }  // namespace magnetometer
