@@ -40,7 +40,15 @@ void ModelRunner::input_value_set(std::size_t variable) {
 
 void ModelRunner::apply_input_slopes() {
     const auto& vars = table().variables();
-    for (const auto& s : input_slopes_) write_real(model_->bytes(), vars[s.variable], s.base_value + s.slope * (time_ - s.base_time));
+    for (const auto& s : input_slopes_) {
+        const Variable& v = vars[s.variable];
+        double u = s.base_value + s.slope * (time_ - s.base_time);
+        // A host's line between two admissible values stays admissible but for rounding (an
+        // irradiance falling to 0 at the end of a step must not come out as -1e-17).
+        if (v.min) u = std::max(u, *v.min);
+        if (v.max) u = std::min(u, *v.max);
+        write_real(model_->bytes(), v, u);
+    }
 }
 
 void ModelRunner::ensure_evaluated() {

@@ -11,8 +11,8 @@ namespace ssr_plant {
 void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
     using D = SsrPlantData;
     t.input("sun_body", &D::sun_body, "1", "Sun direction in body axes (normalized inside; zero: no direct sun)");
-    t.input("irradiance", &D::irradiance, "W/m2", "Direct solar irradiance, 0 in eclipse");
-    t.input("albedo_face", &D::albedo_face, "W/m2", "Earth albedo irradiance on each face (+x, -x, +y, -y, +z, -z)");
+    t.input("irradiance", &D::irradiance, "W/m2", "Direct solar irradiance, 0 in eclipse").min(0.0);
+    t.input("albedo_face", &D::albedo_face, "W/m2", "Earth albedo irradiance on each face (+x, -x, +y, -y, +z, -z)").min(0.0);
 
     t.parameter("fidelity", &D::fidelity, "",
                 "switching: every PWM edge a time event, S/H tracks while the gate is on; averaged: state-space "
