@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 
 #include "fmu/errors.hpp"
@@ -72,6 +73,10 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
     t.output("i_batt", &D::i_batt, "A", "Battery current, positive charging").depends_on({"v_cap", "soc_state"});
     t.output("soc", &D::soc, "1", "Battery state of charge").depends_on({"soc_state"});
     t.output("duty", &D::duty, "1", "Shunt duty cycle (fraction of the PWM period the panels are shorted)").depends_on({"v_cap"});
+    t.output("pwm_period", &D::pwm_period, "",
+             "Index of the PWM period in progress (the controller's samples so far; switching fidelity; 0 in averaged "
+             "fidelity; saturates at 2^31 - 1, 5 days at 5 kHz)")
+        .depends_on({});
     t.output("gate", &D::gate, "", "Shunt MOSFETs on (switching fidelity); always false in averaged fidelity, which has no gate")
         .depends_on({});
     t.output("i_load", &D::i_load, "A", "Load current").depends_on({"v_cap"});
@@ -177,6 +182,11 @@ bool SsrPlantBlock::gate_output() const {
     return plant().parameters.fidelity == Fidelity::switching && data().discrete.gate;
 }
 
+std::int32_t SsrPlantBlock::pwm_period_output() const {
+    const auto index = data().discrete.period_index;
+    return static_cast<std::int32_t>(std::clamp<std::int64_t>(index, 0, std::numeric_limits<std::int32_t>::max()));
+}
+
 Inputs SsrPlantBlock::inputs() const {
     const auto& d = data();
     Inputs u;
@@ -203,6 +213,7 @@ void SsrPlantBlock::initialize(double t) {
     const ssr_plant::Model& m = plant();
     d.discrete = ssr_plant::initialize(m, inputs(), t, state());
     d.gate = gate_output();
+    d.pwm_period = pwm_period_output();
 }
 
 void SsrPlantBlock::evaluate(double t) {
@@ -245,6 +256,7 @@ fmu::EventUpdate SsrPlantBlock::event_update(double t, bool) {
     const EventResult r = ssr_plant::event_update(m, illumination(m), d.discrete, t, state());
     d.discrete = r.discrete;
     d.gate = gate_output();
+    d.pwm_period = pwm_period_output();
     return {};  // the core settles an instant in one call; states never jump
 }
 

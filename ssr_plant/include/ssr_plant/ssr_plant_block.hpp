@@ -67,6 +67,7 @@ struct SsrPlantData {
     double soc = 0.9;
     double duty = 0.0;
     bool gate = false;
+    std::int32_t pwm_period = 0;
     double i_load = 0.0;
     // discrete state of the core (PWM period, S/H, charge switch)
     DiscreteState discrete{};
@@ -104,6 +105,7 @@ private:
     Inputs inputs() const;
     State state() const;
     bool gate_output() const;
+    std::int32_t pwm_period_output() const;
     Parameters parameters() const;
 
     mutable std::optional<ssr_plant::Model> model_;
