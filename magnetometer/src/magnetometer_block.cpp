@@ -9,17 +9,25 @@ namespace magnetometer {
 void MagnetometerBlock::declare(fmu::Table<MagnetometerData>& t) {
     using D = MagnetometerData;
     t.input("mag_body", &D::mag_body, "T", "Magnetic flux density at the sensor, body axes");
+    t.input("set_reset_command", &D::set_reset_command, "",
+            "Last set/reset strap pulse commanded by the on-board computer: true = set, false = reset "
+            "(set_reset_source = input; a change is a pulse)");
 
     t.parameter("sensitivity", &D::sensitivity, "V/T", "Sensitivity at 25 degC (datasheet: 1 V/gauss = 1e4 V/T)")
         .min(1e-3);
     t.parameter("v_null", &D::v_null, "V", "Zero-field output voltage, also the reference pin (datasheet: 2.5 V)")
         .range(0.0, 5.0);
     t.parameter("bridge_offset", &D::bridge_offset, "V",
-                "Bridge offset referred to the output; its sign flips with each set/reset pulse")
+                "Bridge and amplifier offset referred to the output; unchanged by set/reset pulses (the pulses "
+                "flip the field term)")
         .range(-1.0, 1.0);
-    t.parameter("set_reset_enabled", &D::set_reset_enabled, "",
-                "Apply periodic set/reset pulses (alternating set and reset) every set_reset_period");
-    t.parameter("set_reset_period", &D::set_reset_period, "s", "Time between set/reset pulses").min(1e-4);
+    t.parameter("set_reset_source", &D::set_reset_source, "",
+                "Who pulses the set/reset strap: input (set_reset_command, the on-board computer), timer (the "
+                "sensor alternates set and reset every set_reset_period by itself) or none (set at power-up only)")
+        .one_of({"input", "timer", "none"});
+    t.parameter("set_reset_period", &D::set_reset_period, "s",
+                "Time between set/reset pulses when set_reset_source = timer")
+        .min(1e-4);
     t.parameter("cross_axis", &D::cross_axis, "1",
                 "Cross-axis sensitivity: fraction of each transverse field seen by an axis")
         .range(-0.1, 0.1);
@@ -50,10 +58,11 @@ void MagnetometerBlock::declare(fmu::Table<MagnetometerData>& t) {
         .derivative_depends_on({"mag_body"});
 
     t.output("v_out", &D::v_out, "V", "Output voltages X, Y, Z (0-5 V, v_ref at zero field)")
-        .depends_elementwise({"b_filt"});
+        .depends_elementwise({"b_filt"})
+        .depends_on({"set_reset_command"});
     t.output("v_ref", &D::v_ref, "V", "Zero-field reference voltage (+2.5 V pin)").depends_on({});
     t.output("set_polarity", &D::set_polarity, "", "True after a set pulse, false after a reset pulse")
-        .depends_on({});
+        .depends_on({"set_reset_command"});
 }
 
 fmu::ModelInfo MagnetometerBlock::describe() {
@@ -67,9 +76,12 @@ fmu::ModelInfo MagnetometerBlock::describe() {
         "ADC. Signal chain per axis: the body-frame field is mixed by the cross-axis and misalignment matrix "
         "M = C&middot;(I &minus; [&theta;&times;]), filtered by the sensor bandwidth (first order, continuous "
         "states <code>b_filt</code>), scaled by the temperature-dependent sensitivity "
-        "S(T) = S<sub>0</sub>(1 + k<sub>T</sub>(T &minus; 25 &deg;C)), shifted by the bridge offset whose sign "
-        "flips with each set/reset pulse (time events every <code>set_reset_period</code>; the mean of a set and "
-        "a reset reading cancels the offset), plus seeded Gaussian noise held for "
+        "S(T) = S<sub>0</sub>(1 + k<sub>T</sub>(T &minus; 25 &deg;C)) with the sign of the last set/reset pulse "
+        "(a pulse re-magnetises the permalloy and reverses the field term; the bridge offset stays, so half the "
+        "difference of a set and a reset reading is the field without it), shifted by the offset. The pulses "
+        "come from the on-board computer through <code>set_reset_command</code> "
+        "(<code>set_reset_source</code> = input, the default), from the sensor's own timer (time events every "
+        "<code>set_reset_period</code>), or not at all (none), plus seeded Gaussian noise held for "
         "<code>noise_sample_period</code> (a counter-based generator keyed by the seed, the hold interval "
         "and the axis, so the noise needs no time events and an FMU state reproduces it), and clamped to the rails.</p>"
         "<p>Defaults are the datasheet's typical values; <code>bridge_offset</code>, <code>cross_axis</code> and "
@@ -105,7 +117,7 @@ void MagnetometerBlock::initialize(double t) {
     // The sensor has been powered long before the simulation starts: its filter is in steady state.
     d.b_filt = multiply(sensor_matrix(d.cross_axis, d.misalignment), d.mag_body);
     d.set_polarity = true;  // the first pulse at power-up is a set pulse
-    d.next_set_reset = d.set_reset_enabled ? t + d.set_reset_period : fmu::no_time_event;
+    d.next_set_reset = d.set_reset_source == "timer" ? t + d.set_reset_period : fmu::no_time_event;
     d.noise_start = t;
     d.noise_index = no_noise_index;  // interval 0 is drawn by the first evaluate
 }
@@ -120,6 +132,7 @@ void MagnetometerBlock::evaluate(double t) {
                             .offset = d.bridge_offset,
                             .v_low = d.v_rail_low,
                             .v_high = d.v_rail_high};
+    if (d.set_reset_source == "input") d.set_polarity = d.set_reset_command;
     const double polarity = d.set_polarity ? 1.0 : -1.0;
     for (int i = 0; i < 3; ++i) d.v_out[i] = output_voltage(stage, d.b_filt[i], d.noise[i], polarity);
     d.v_ref = std::clamp(d.v_null, d.v_rail_low, d.v_rail_high);

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "fmu/block.hpp"
+#include "fmu/fixed_string.hpp"
 #include "magnetometer/held_noise.hpp"
 #include "magnetometer/hmc2003.hpp"
 
@@ -20,12 +21,16 @@ inline constexpr std::int64_t no_noise_index = std::numeric_limits<std::int64_t>
 struct MagnetometerData {
     // inputs
     Vec3 mag_body{};  // T
+    bool set_reset_command = true;  // the strap driver's last pulse (true: set, false: reset), source "input"
     // parameters
     double sensitivity = 1.0 / tesla_per_gauss;  // V/T: datasheet 1 V/gauss
     double v_null = 2.5;                         // V: zero-field output and the reference pin
     double bridge_offset = 0.02;                 // V: assumed; the datasheet's null spread is 2.3–2.7 V
-    bool set_reset_enabled = true;
-    double set_reset_period = 1.0;    // s: assumed; the seed says "occasionally"
+    // Who pulses the set/reset strap: "input" (the on-board computer, through set_reset_command, as in
+    // flight: seed 000 fig. 10 drives the strap from MOSFETs), "timer" (the sensor alternates set and
+    // reset by itself every set_reset_period: a stand-alone run) or "none" (set once at power-up).
+    fmu::FixedString<8> set_reset_source = "input";
+    double set_reset_period = 1.0;    // s: source "timer" only; assumed, the seed says "occasionally"
     double cross_axis = 0.003;        // 1: assumed 0.3 % cross-field pick-up
     Vec3 misalignment{};              // rad
     double bandwidth = 1000.0;        // Hz: datasheet 1 kHz
