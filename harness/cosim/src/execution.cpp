@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <thread>
@@ -158,7 +159,7 @@ struct Execution::Impl {
 
     // fmi2NewDiscreteStates for the components in event mode, with values re-propagated and the
     // components whose inputs changed drawn in, until nobody asks for another round. Returns true
-    // when something continuous may have changed (CVODE must restart).
+    // when a component said its continuous states changed (CVODE must restart).
     bool event_iteration() {
         bool continuous_change = options.reference;
         const auto join_for_discrete_input = [this](std::size_t i) {
@@ -176,7 +177,7 @@ struct Execution::Impl {
                 const fmi2EventInfo info = c.instance->new_discrete_states();
                 again = again || info.newDiscreteStatesNeeded;
                 terminate = terminate || info.terminateSimulation;
-                continuous_change = continuous_change || info.valuesOfContinuousStatesChanged || c.has_dynamics();
+                continuous_change = continuous_change || info.valuesOfContinuousStatesChanged;
                 c.next_time_event = info.nextEventTimeDefined ? info.nextEventTime : infinity;
             }
             system.clear_changes();
@@ -199,6 +200,25 @@ struct Execution::Impl {
         }
         throw CosimError("the event iteration at t = " + std::to_string(t) + " did not settle after " +
                          std::to_string(max_event_rounds) + " rounds");
+    }
+
+    // What CVODE integrates, at the current instant: the derivatives and indicators of every Model
+    // Exchange component. An event that leaves both unchanged, bit for bit, changed nothing the
+    // integrator sees here (a sampler's output that only feeds discrete inputs, a set/reset pulse
+    // that flips a sensor's output but not its filter): CVODE goes on with its step size and order.
+    // One that changes them restarts it: a switch of the PWM, a new input to a state's derivative.
+    std::vector<double> seen_before, seen_after;
+    void what_the_integrator_sees(std::vector<double>& out) {
+        out.resize(n + m);
+        for (auto i : me) {
+            auto& c = comp(i);
+            if (c.state_count) c.instance->get_derivatives(out.data() + c.state_offset, c.state_count);
+            if (c.indicator_count) c.instance->get_event_indicators(out.data() + n + c.indicator_offset, c.indicator_count);
+        }
+    }
+    bool integrator_sees_a_change() {
+        what_the_integrator_sees(seen_after);
+        return std::memcmp(seen_before.data(), seen_after.data(), seen_before.size() * sizeof(double)) != 0;
     }
 
     // Hard instants stop CVODE exactly: time events of components whose right-hand side or
@@ -367,7 +387,9 @@ struct Execution::Impl {
                 stats.state_events += state_event;
                 stats.time_events += time_event;
                 stats.step_events += step_event;
-                if (event_iteration()) {
+                if (!options.reference) what_the_integrator_sees(seen_before);
+                const bool states_changed = event_iteration();
+                if (options.reference || states_changed || integrator_sees_a_change()) {
                     gather_states();
                     restart = true;
                 }

@@ -6,9 +6,9 @@
 // - Only the components with something to do enter event mode: a time, state or step event of
 //   their own, or an input that changed at the instant and matters (a discrete input, or any input
 //   of a component with states or event indicators). The others keep integrating.
-// - CVODE is restarted only when something continuous may have jumped: a component with states or
-//   event indicators went through event mode. Samplers without states (the on-board computer) cost
-//   no restart.
+// - CVODE is restarted only when something it integrates jumped: a component said its states
+//   changed, or the derivatives or event indicators differ after the event from before it. Samplers
+//   (the on-board computer) and pulses that flip a sensor's output but not its dynamics cost no restart.
 // - Only the time events of components with states or indicators stop the integrator exactly; the
 //   other instants (output points, samples of stateless components, communication points) take
 //   CVODE's interpolated solution and let it go on with its step.
