@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 
 #include "fmu/errors.hpp"
@@ -11,8 +12,8 @@ namespace ssr_plant {
 void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
     using D = SsrPlantData;
     t.input("sun_body", &D::sun_body, "1", "Sun direction in body axes (normalized inside; zero: no direct sun)");
-    t.input("irradiance", &D::irradiance, "W/m2", "Direct solar irradiance, 0 in eclipse");
-    t.input("albedo_face", &D::albedo_face, "W/m2", "Earth albedo irradiance on each face (+x, -x, +y, -y, +z, -z)");
+    t.input("irradiance", &D::irradiance, "W/m2", "Direct solar irradiance, 0 in eclipse").min(0.0);
+    t.input("albedo_face", &D::albedo_face, "W/m2", "Earth albedo irradiance on each face (+x, -x, +y, -y, +z, -z)").min(0.0);
 
     t.parameter("fidelity", &D::fidelity, "",
                 "switching: every PWM edge a time event, S/H tracks while the gate is on; averaged: state-space "
@@ -77,6 +78,10 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
     t.output("i_batt", &D::i_batt, "A", "Battery current, positive charging").depends_on({"v_cap", "soc_state"});
     t.output("soc", &D::soc, "1", "Battery state of charge").depends_on({"soc_state"});
     t.output("duty", &D::duty, "1", "Shunt duty cycle (fraction of the PWM period the panels are shorted)").depends_on({"v_cap"});
+    t.output("pwm_period", &D::pwm_period, "",
+             "Index of the PWM period in progress (the controller's samples so far; switching fidelity; 0 in averaged "
+             "fidelity; saturates at 2^31 - 1, 5 days at 5 kHz)")
+        .depends_on({});
     t.output("gate", &D::gate, "", "Shunt MOSFETs on (switching fidelity); always false in averaged fidelity, which has no gate")
         .depends_on({});
     t.output("i_load", &D::i_load, "A", "Load current").depends_on({"v_cap"});
@@ -188,6 +193,11 @@ bool SsrPlantBlock::gate_output() const {
     return plant().parameters.fidelity == Fidelity::switching && data().discrete.gate;
 }
 
+std::int32_t SsrPlantBlock::pwm_period_output() const {
+    const auto index = data().discrete.period_index;
+    return static_cast<std::int32_t>(std::clamp<std::int64_t>(index, 0, std::numeric_limits<std::int32_t>::max()));
+}
+
 Inputs SsrPlantBlock::inputs() const {
     const auto& d = data();
     Inputs u;
@@ -214,6 +224,7 @@ void SsrPlantBlock::initialize(double t) {
     const ssr_plant::Model& m = plant();
     d.discrete = ssr_plant::initialize(m, inputs(), t, state());
     d.gate = gate_output();
+    d.pwm_period = pwm_period_output();
 }
 
 void SsrPlantBlock::evaluate(double t) {
@@ -237,6 +248,13 @@ void SsrPlantBlock::evaluate(double t) {
     // gate is discrete: it changes only in initialize/event_update (see its description).
 }
 
+void SsrPlantBlock::evaluate_derivatives(double t) {
+    auto& d = data();
+    const State dx = ssr_plant::derivatives(plant(), inputs(), d.discrete, t, state());
+    d.der_v_cap = dx[state_v_bus];
+    d.der_soc_state = dx[state_soc];
+}
+
 void SsrPlantBlock::event_indicators(double t, std::span<double> z) {
     const ssr_plant::Model& m = plant();
     const Indicators g = ssr_plant::event_indicators(m, inputs(), data().discrete, t, state());
@@ -249,6 +267,7 @@ fmu::EventUpdate SsrPlantBlock::event_update(double t, bool) {
     const EventResult r = ssr_plant::event_update(m, illumination(m), d.discrete, t, state());
     d.discrete = r.discrete;
     d.gate = gate_output();
+    d.pwm_period = pwm_period_output();
     return {};  // the core settles an instant in one call; states never jump
 }
 

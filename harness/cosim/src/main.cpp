@@ -38,8 +38,10 @@ int main(int argc, char** argv) {
     run->add_option("--stop-time", run_options.stop_time, "Stop time in s (default: the .ssd's DefaultExperiment)");
     run->add_option("--output", run_csv, "CSV results file");
     run->add_option("--output-interval", run_options.output_interval,
-                    "Output interval in s (default: the smallest DefaultExperiment stepSize of the FMUs)");
-    run->add_option("--step", run_options.communication_step, "Communication step of Co-Simulation components");
+                    "Output interval in s (default: the .ssd's, else the FMUs' smallest DefaultExperiment stepSize "
+                    "but no finer than a thousandth of the run)");
+    run->add_option("--step", run_options.communication_step,
+                    "Communication step of every Co-Simulation component (default: the .ssd's, else the output interval)");
     run->add_option("--tolerance", run_options.tolerance, "Relative tolerance (default: the FMUs' smallest)");
     run->add_option("--set", run_options.system.settings, "component.variable=value before initialization (repeatable)");
     run->add_option("--cs", run_options.system.co_simulation, "Run this component through its Co-Simulation interface");
@@ -52,6 +54,9 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0, 65535));
     run->add_flag("--realtime", run_options.realtime, "Pace simulated time to the wall clock");
     run->add_flag("--event-rows", run_options.event_rows, "Add CSV rows just before and after each event");
+    run->add_flag("--reference", run_options.reference,
+                  "The reference execution: every component as Model Exchange, every event through every component "
+                  "with an integrator restart, every output point a stop (slow; to check the fast path against)");
 
     std::string plot_csv, plot_dir = "figures";
     auto* plot = app.add_subcommand("plot", "Draw the standard figures of a results CSV as PNG files (gnuplot)");
