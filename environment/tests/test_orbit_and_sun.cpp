@@ -47,6 +47,29 @@ TEST(EnvironmentCoreSun, MatchesMeeusExample25a) {
   EXPECT_NEAR(s.distance / env::kAstronomicalUnit, 0.99766, 2e-4);
 }
 
+TEST(EnvironmentCoreSun, J2000SunIsTheAlmanacSunWithoutThePrecessionSince2000) {
+  // Independent reference (a Python script, not this code): the almanac's ecliptic longitude of date minus
+  // the IAU 1976 general precession in longitude 5029.0966" T, on the J2000 ecliptic (obliquity
+  // 23.4392911 deg). That method neglects the motion of the ecliptic itself (0.47"/yr: 0.004 deg by 2026).
+  // 2026-01-01 0h (JD 2461041.5): (0.177163610, -0.902968793, -0.391484884), 0.3632 deg from of-date;
+  // 2026-07-01 0h (JD 2461222.5): (-0.153572079, 0.906598384, 0.393058504), 0.3702 deg from of-date.
+  struct Case {
+    double jd;
+    Eigen::Vector3d j2000;
+    double from_date_deg;
+  };
+  const Case cases[] = {{2461041.5, {0.177163610, -0.902968793, -0.391484884}, 0.3632},
+                        {2461222.5, {-0.153572079, 0.906598384, 0.393058504}, 0.3702}};
+  for (const Case& c : cases) {
+    const Eigen::Vector3d j = env::sun_almanac_j2000(c.jd).direction_eci;
+    const Eigen::Vector3d d = env::sun_almanac(c.jd).direction_eci;
+    EXPECT_LT(std::acos(std::min(1.0, j.dot(c.j2000.normalized()))) * env::kRadToDeg, 0.005) << c.jd;
+    EXPECT_NEAR(std::acos(std::min(1.0, j.dot(d))) * env::kRadToDeg, c.from_date_deg, 0.005) << c.jd;
+    EXPECT_NEAR(j.norm(), 1.0, 1e-14);
+    EXPECT_EQ(env::sun_almanac_j2000(c.jd).distance, env::sun_almanac(c.jd).distance);
+  }
+}
+
 TEST(EnvironmentCoreSun, DeclinationAtEquinoxesAndSolstices2024) {
   // US Naval Observatory, "Earth's Seasons" 2024 (UTC): March equinox Mar 20 03:06, June solstice
   // Jun 20 20:51, September equinox Sep 22 12:44, December solstice Dec 21 09:20. Declination there:

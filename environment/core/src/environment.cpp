@@ -46,7 +46,7 @@ Environment::Environment(const EnvironmentParams& params)
 Eigen::Vector3d Environment::sun_position_eci(double jd) const {
   const SunPosition s = (params_.sun_model == SunModel::seed002)
                             ? sun_seed002(jd, jd_equinox_, params_.seed002_elevation_amplitude)
-                            : sun_almanac(jd);
+                            : sun_almanac_j2000(jd);  // the field's frame too: one ECI, J2000
   return s.direction_eci * s.distance;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "environment/constants.hpp"
+#include "environment/earth_rotation.hpp"
 
 namespace environment {
 
@@ -17,6 +18,12 @@ SunPosition sun_almanac(double jd) {
   SunPosition s;
   s.direction_eci = Eigen::Vector3d(std::cos(lambda), std::cos(eps) * std::sin(lambda), std::sin(eps) * std::sin(lambda));
   s.distance = r_au * kAstronomicalUnit;
+  return s;
+}
+
+SunPosition sun_almanac_j2000(double jd) {
+  SunPosition s = sun_almanac(jd);
+  s.direction_eci = precession_matrix(jd).transpose() * s.direction_eci;  // of date -> J2000
   return s;
 }
 
