@@ -57,6 +57,24 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
     t.parameter("battery_diode_resistance", &D::battery_diode_resistance, "Ohm", "Forward slope of the battery diode").range(1e-4, 10.0);
     t.parameter("soc_connect", &D::soc_connect, "1", "Hysteresis: connect the battery for charging when soc falls to this").range(0.0, 1.0);
     t.parameter("soc_disconnect", &D::soc_disconnect, "1", "Hysteresis: disconnect at this state of charge (full)").range(0.0, 1.0);
+    t.parameter("charge_control", &D::charge_control, "",
+                "What the charge hysteresis watches: voltage (default: connect when the battery's terminal voltage "
+                "falls to v_connect and the bus can charge it, disconnect when the charge current tapers to "
+                "charge_end_current) or state_of_charge (soc_connect, soc_disconnect)")
+        .one_of({"voltage", "state_of_charge"});
+    t.parameter("v_connect", &D::v_connect, "V",
+                "Battery terminal voltage at which the charge switch connects (assumed 12.5 V: rested soc 0.8)")
+        .range(1.0, 100.0);
+    t.parameter("charge_end_current", &D::charge_end_current, "A",
+                "Charge current at which the battery counts as full and is disconnected (assumed C/20 = 0.1 A)")
+        .range(1e-6, 100.0);
+    t.parameter("charge_voltage", &D::charge_voltage, "V",
+                "Constant-voltage limit of the charger on the battery terminal (assumed 14.4 V, 2.4 V per cell; 0 = none)")
+        .range(0.0, 100.0);
+    t.parameter("charge_polarization", &D::charge_polarization, "Ohm",
+                "K of the charge polarization resistance K soc/(1 - soc + 0.01) (Shepherd/Tremblay form; assumed 0.2; "
+                "0 = none)")
+        .range(0.0, 100.0);
 
     auto v = t.state("v_cap", &D::v_cap, &D::der_v_cap, "V", "Bus capacitor voltage (the bus voltage)").nominal(15.0);
     auto q = t.state("soc_state", &D::soc_state, &D::der_soc_state, "1", "Battery state of charge (charge / capacity)").nominal(1.0);
@@ -153,6 +171,13 @@ Parameters SsrPlantBlock::parameters() const {
     p.battery.diode_resistance = d.battery_diode_resistance;
     p.battery.soc_connect = d.soc_connect;
     p.battery.soc_disconnect = d.soc_disconnect;
+    if (d.charge_control == "voltage") p.battery.charge_control = ChargeControl::voltage;
+    else if (d.charge_control == "state_of_charge") p.battery.charge_control = ChargeControl::state_of_charge;
+    else throw fmu::Error("charge_control must be voltage or state_of_charge");
+    p.battery.v_connect = d.v_connect;
+    p.battery.charge_end_current = d.charge_end_current;
+    p.battery.charge_voltage = d.charge_voltage;
+    p.battery.charge_polarization = d.charge_polarization;
     return p;
 }
 

@@ -6,8 +6,15 @@ namespace {
 
 using namespace ssr_plant;
 
-// Defaults typed by hand: OCV table 11.30 … 12.73 V, R_int 0.05 Ω, charge path 5 Ω, diode 0.6 V / 0.05 Ω.
-const BatteryParameters b{};
+// Defaults typed by hand: OCV table 11.30 … 12.73 V, R_int 0.05 Ω, charge path 5 Ω, diode 0.6 V / 0.05 Ω;
+// the tests of the plain network leave out the charge polarization and the charger's voltage limit.
+BatteryParameters plain_network() {
+    BatteryParameters p;
+    p.charge_polarization = 0.0;
+    p.charge_voltage = 0.0;
+    return p;
+}
+const BatteryParameters b = plain_network();
 
 TEST(SsrCoreBattery, OpenCircuitVoltageInterpolatesTheTable) {
     EXPECT_DOUBLE_EQ(open_circuit_voltage(b, 0.0), 11.30);
@@ -49,6 +56,31 @@ TEST(SsrCoreBattery, ContinuousAtTheDiodeThreshold) {
     const double v0 = 12.10 - 0.6;
     EXPECT_NEAR(battery_operating_point(b, 0.5, v0 + 1e-9, false).current, 0.0, 1e-7);
     EXPECT_NEAR(battery_operating_point(b, 0.5, v0 - 1e-9, false).current, 0.0, 1e-7);
+}
+
+TEST(SsrCoreBattery, ChargeCurrentTapersWithPolarizationAndStopsAtTheChargeVoltage) {
+    // Independent script (Python, the same hand formulas written out, not this code): loop current
+    // (15 − EMF)/(5 + 0.05 + R_p), R_p = 0.2 s/(1.01 − s), limited to (14.4 − EMF)/(0.05 + R_p):
+    //   soc 0.5: 0.552794 A; 0.9: 0.355948 A; 0.99: 0.152575 A (unlimited: terminal 14.24 V);
+    //   0.997: 0.108737 A (the 14.4 V limit binds: terminal exactly 14.4 V).
+    const BatteryParameters d{};  // the defaults: K = 0.2 Ω, 14.4 V
+    struct Case {
+        double soc, current;
+        bool limited;
+    };
+    for (const Case& c : {Case{0.5, 0.552794, false}, Case{0.9, 0.355948, false}, Case{0.99, 0.152575, false},
+                          Case{0.997, 0.108737, true}}) {
+        const auto pt = battery_operating_point(d, c.soc, 15.0, true);
+        EXPECT_NEAR(pt.current, c.current, 1e-6) << c.soc;
+        if (c.limited) EXPECT_NEAR(pt.terminal_voltage, 14.4, 1e-12) << c.soc;
+        else EXPECT_LT(pt.terminal_voltage, 14.4) << c.soc;
+    }
+    // Discharging through the closed switch (bus below the EMF) sees no polarization: the plain network.
+    EXPECT_NEAR(battery_operating_point(d, 0.5, 11.0, true).current, battery_operating_point(b, 0.5, 11.0, true).current,
+                1e-12);
+    // Continuous where charging starts (bus = EMF).
+    EXPECT_NEAR(battery_operating_point(d, 0.5, 12.10 + 1e-9, true).current, 0.0, 1e-9);
+    EXPECT_NEAR(battery_operating_point(d, 0.5, 12.10 - 1e-9, true).current, 0.0, 1e-7);
 }
 
 }  // namespace

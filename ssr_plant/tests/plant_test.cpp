@@ -335,4 +335,39 @@ TEST(SsrCorePlant, HysteresisRunHasFiniteSwitchingsAndRespectsFullCharge) {
     }
 }
 
+TEST(SsrCorePlant, VoltageControlledChargeConnectsInTheSunAtTheMinimumVoltageAndStopsAtTheTaper) {
+    // The defaults (terminal-voltage control, 14.4 V charger, K = 0.2 Ω) with a 1 C battery so a cycle
+    // takes seconds: 0.5 s of eclipse from soc 0.82 (the terminal falls below v_connect = 12.5 V near soc
+    // 0.806, but there is no sun to charge: no connection), then sun: connect as soon as the bus can charge,
+    // charge with the tapering current, disconnect at 0.1 A. Independent script (the hand charge-branch
+    // formulas, bisection): the current falls to 0.1 A at soc 0.998027.
+    Parameters p;
+    p.fidelity = Fidelity::averaged;
+    p.battery.capacity = 1.0;
+    const Model m = make_model(p);
+    auto u = [](double t) { return sun_along(1 / std::sqrt(3.0), 1 / std::sqrt(3.0), 1 / std::sqrt(3.0), t < 0.5 ? 0.0 : 1367.0); };
+    State x{12.0, 0.82};
+    double t_connect = -1, t_disconnect = -1, soc_at_disconnect = -1, soc_max = 0.0;
+    bool prev = false;
+    const auto st = ssr_plant_test::simulate(m, u, x, 0.0, 3.0, 20e-6, 1e-4,
+        [&](double t, const State& xs, const DiscreteState& d, bool) {
+            soc_max = std::max(soc_max, xs[state_soc]);
+            if (d.charge_connected && !prev) t_connect = t;
+            if (!d.charge_connected && prev) {
+                t_disconnect = t;
+                soc_at_disconnect = xs[state_soc];
+            }
+            prev = d.charge_connected;
+        });
+    EXPECT_EQ(st.charge_switchings, 2);
+    EXPECT_GT(t_connect, 0.5);   // not in eclipse
+    EXPECT_LT(t_connect, 0.51);  // but as soon as the sun is back
+    EXPECT_GT(t_disconnect, t_connect);
+    EXPECT_NEAR(soc_at_disconnect, 0.998027, 1e-3);
+    EXPECT_LT(soc_max, 0.9995);  // no longer a constant 0.5 A up to 100 %
+    EXPECT_NEAR(x[state_soc], soc_at_disconnect, 1e-6);  // standby after the disconnect
+    std::cout << "[voltage-controlled charge] connect at " << t_connect << " s, disconnect at " << t_disconnect
+              << " s at soc " << soc_at_disconnect << "\n";
+}
+
 }  // namespace

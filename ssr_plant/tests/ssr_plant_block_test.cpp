@@ -25,12 +25,16 @@ struct PlantRun {
     std::unique_ptr<fmu::CsSolver> solver;
     SsrPlantData& data() { return static_cast<SsrPlantBlock&>(runner.model()).data(); }
     // The hand bounds of the tests in this file are derived for the regular modulator at 3 per volt (the
-    // model's earlier reading of the seed's "300" as 300 %/V); the seed's 300 per volt with the
-    // latched_natural modulator is tested in ssr_plant_modulation_test.cpp.
+    // model's earlier reading of the seed's "300" as 300 %/V) and the battery controlled on its state of
+    // charge without charge polarization; the seed's 300 per volt with the latched_natural modulator is
+    // tested below (SsrFmuModulation), the voltage-controlled charge in the core tests.
     explicit PlantRun(bool earlier_reading = true) {
         if (!earlier_reading) return;
         data().controller_gain = 3.0;
         data().modulation = "regular";
+        data().charge_control = "state_of_charge";  // and the earlier battery (see earlier_reading.hpp)
+        data().charge_voltage = 0.0;
+        data().charge_polarization = 0.0;
     }
     void start() {
         runner.set_initializing(true);

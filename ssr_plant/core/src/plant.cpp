@@ -92,10 +92,28 @@ bool comparator_armed(const Model& m, const DiscreteState& d) {
            d.gate;
 }
 
-void update_charge_switch(const Model& m, DiscreteState& d, double soc) {
+// The charge controller's distance to its next switch (positive between switches):
+//   state_of_charge: disconnected soc − soc_connect; connected soc_disconnect − soc.
+//   voltage: disconnected max(v_terminal − v_connect, EMF + Δ − v_bus): falls to 0 when the battery is
+//            down to v_connect and the bus can charge it with twice charge_end_current (Δ = 2 I_end (R_path +
+//            R_int + R_p)): no connecting in eclipse, and the connected indicator starts at +I_end, so the
+//            two never chatter;
+//            connected: I_charge − charge_end_current (full: the constant-voltage taper; or no more sun).
+double charge_switch_indicator(const Model& m, bool connected, const State& x) {
     const auto& b = m.parameters.battery;
-    if (!d.charge_connected && soc <= b.soc_connect) d.charge_connected = true;
-    else if (d.charge_connected && soc >= b.soc_disconnect) d.charge_connected = false;
+    const double soc = x[state_soc], v_bus = x[state_v_bus];
+    if (b.charge_control == ChargeControl::state_of_charge)
+        return connected ? b.soc_disconnect - soc : soc - b.soc_connect;
+    const BatteryPoint p = battery_operating_point(b, soc, v_bus, connected);
+    if (connected) return p.current - b.charge_end_current;
+    const double margin = 2.0 * b.charge_end_current *
+                          (b.charge_path_resistance + b.internal_resistance + charge_polarization_resistance(b, soc));
+    return std::max(p.terminal_voltage - b.v_connect, open_circuit_voltage(b, soc) + margin - v_bus);
+}
+
+void update_charge_switch(const Model& m, DiscreteState& d, const State& x) {
+    if (charge_switch_indicator(m, d.charge_connected, x) > 0.0) return;
+    d.charge_connected = !d.charge_connected;
 }
 
 // The bus node and the battery at one instant: what derivatives() and outputs() share.
@@ -189,6 +207,10 @@ Model make_model(const Parameters& p) {
     for (double v : b.open_circuit_voltage) require(positive(v), "battery open-circuit voltages must be > 0");
     require(std::isfinite(b.soc_connect) && std::isfinite(b.soc_disconnect) && b.soc_connect < b.soc_disconnect,
             "hysteresis needs soc_connect < soc_disconnect");
+    require(positive(b.v_connect) && positive(b.charge_end_current), "v_connect and charge_end_current must be > 0");
+    require(non_negative(b.charge_voltage) && non_negative(b.charge_polarization),
+            "charge_voltage and charge_polarization must be >= 0");
+    require(b.charge_voltage == 0.0 || b.charge_voltage > b.v_connect, "charge_voltage must exceed v_connect");
     Model m;
     m.parameters = p;
     m.diode = fit_diode_model(p.panel);
@@ -232,7 +254,7 @@ Illumination illuminate(const Model& m, const Inputs& u) {
 DiscreteState initialize(const Model& m, const Inputs& u, double t0, const State& x0) {
     DiscreteState d;
     d.period_origin = t0;
-    d.charge_connected = x0[state_soc] <= m.parameters.battery.soc_connect;
+    d.charge_connected = charge_switch_indicator(m, false, x0) <= 0.0;
     // The S/H starts as if it had been tracking: it holds the live differential current.
     d.held_face_current = illuminate(m, u).i_shunt;
     if (m.parameters.fidelity == Fidelity::switching) {
@@ -263,8 +285,7 @@ Outputs outputs(const Model& m, const Inputs& u, const DiscreteState& d, double 
 }
 
 Indicators event_indicators(const Model& m, const Inputs&, const DiscreteState& d, double t, const State& x) {
-    const auto& b = m.parameters.battery;
-    return {d.charge_connected ? b.soc_disconnect - x[state_soc] : x[state_soc] - b.soc_connect,
+    return {charge_switch_indicator(m, d.charge_connected, x),
             comparator_armed(m, d) ? comparator(m, d, t, x[state_v_bus]) : 1.0};
 }
 
@@ -301,7 +322,7 @@ EventResult event_update(const Model& m, const Illumination& l, const DiscreteSt
             d.held_face_current = l.i_shunt;  // the S/H holds what it tracked up to this instant
         }
     }
-    update_charge_switch(m, d, x[state_soc]);
+    update_charge_switch(m, d, x);
     return {d, !(d == d0)};
 }
 

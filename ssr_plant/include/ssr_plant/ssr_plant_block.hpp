@@ -52,6 +52,11 @@ struct SsrPlantData {
     double battery_diode_resistance = 0.05;
     double soc_connect = 0.80;
     double soc_disconnect = 1.00;
+    fmu::FixedString<16> charge_control = "voltage";
+    double v_connect = 12.50;
+    double charge_end_current = 0.1;
+    double charge_voltage = 14.4;
+    double charge_polarization = 0.2;
     // continuous states and derivatives
     double v_cap = 15.0;
     double soc_state = 0.9;

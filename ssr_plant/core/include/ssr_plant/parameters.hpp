@@ -40,6 +40,17 @@ struct PanelDatasheet {
     double cell_temperature = 298.15;         // K, thermal voltage V_T = k T / q of eq. 2
 };
 
+// What the battery's hysteresis charge controller watches (seed 000 §2: it "connects the battery to the
+// power bus when its voltage level is the minimum" and disconnects it "when the maximum charge is reached").
+enum class ChargeControl : std::int32_t {
+    // The battery's terminal voltage, what the computer measures: connect when it falls to v_connect (and
+    // the bus can charge it), disconnect when the charge current has fallen to charge_end_current (the
+    // taper of the constant-voltage phase: full charge; also when the bus stops charging it).
+    voltage = 0,
+    // The state of charge itself (soc_connect, soc_disconnect): an idealisation the computer cannot measure.
+    state_of_charge = 1,
+};
+
 // A 12 V battery (assumed lead-acid): open-circuit voltage vs state of charge, tabulated at
 // soc = 0, 0.1, …, 1 (typical rested voltages of a 12 V lead-acid battery as in common published
 // charts; an assumption, the seed only says "12 V battery"). Linear between points, held outside [0, 1].
@@ -58,6 +69,21 @@ struct BatteryParameters {
     // threshold, disconnect when it reaches full charge. The band makes the switching count finite.
     double soc_connect = 0.80;     // (assumed)
     double soc_disconnect = 1.00;  // "maximum charge" (seed)
+    ChargeControl charge_control = ChargeControl::voltage;
+    // Voltage control (assumed values): connect at 12.50 V, the table's rested voltage at soc 0.8 (the soc
+    // controller's threshold); disconnect when the charge current tapers to C/20 = 0.1 A of a 2 Ah battery.
+    double v_connect = 12.50;           // V
+    double charge_end_current = 0.1;    // A
+    // Charge model. The charger holds the terminal voltage at most at charge_voltage (constant-voltage
+    // phase; 2.40 V per cell, a common lead-acid absorption voltage; 0 = no limit), and charging sees a
+    // polarization resistance that grows as the battery fills, R_p = K soc / (1 − soc + 0.01), the form of
+    // the Shepherd/Tremblay models (C. M. Shepherd, J. Electrochem. Soc. 112 (1965) 657; O. Tremblay, L.-A.
+    // Dessaint, A.-I. Dekkiche, IEEE VPPC 2007). With K = 0.2 Ω (assumed) the current from the 15 V bus
+    // through the 5 Ω path tapers from 0.55 A at soc 0.5 to 0.36 A at 0.9 and 0.15 A at 0.99; the 14.4 V
+    // limit takes over above soc 0.996 and the controller disconnects at 0.1 A (soc 0.998). K = 0: no
+    // overpotential (a constant ~0.5 A up to full, the earlier model). Discharge does not see it.
+    double charge_voltage = 14.4;       // V
+    double charge_polarization = 0.2;   // Ω (K)
 };
 
 // How the switching plant's PWM turns the controller output into gate pulses (switching fidelity only).

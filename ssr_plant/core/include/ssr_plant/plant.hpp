@@ -32,10 +32,14 @@ inline constexpr std::size_t state_soc = 1;    // 1, battery state of charge (ch
 inline constexpr std::size_t state_count = 2;
 using State = std::array<double, state_count>;
 
-// Event indicators (state events). One: the hysteresis charge controller's distance to its next switch,
+// Event indicators (state events). First: the hysteresis charge controller's distance to its next switch,
+// by default on the battery's terminal voltage and charge current (ChargeControl::voltage):
+//   disconnected: max(v_terminal − v_connect, EMF + Δ − v_bus)  (falls to 0 → connect for charging)
+//   connected:    I_charge − charge_end_current                  (falls to 0 at full charge → disconnect)
+// or on the state of charge (ChargeControl::state_of_charge):
 //   disconnected: soc − soc_connect      (falls to 0 → connect for charging)
 //   connected:    soc_disconnect − soc   (falls to 0 at full charge → disconnect)
-// Positive between events; after a switch it restarts at the band width (no indicator stays at 0, so a
+// Positive between events; after a switch it restarts well above 0 (no indicator stays at 0, so a
 // battery resting at full charge does not leave a root function identically zero).
 inline constexpr std::size_t indicator_charge_switch = 0;
 // Second: the latched_natural modulator's comparator while the gate is on, D(v_bus) − (t − t_k)/T (the live
