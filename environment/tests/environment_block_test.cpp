@@ -88,6 +88,26 @@ Vec3 almanac_sun(double julian_date) {
   return {std::cos(lambda), std::cos(eps) * std::sin(lambda), std::sin(eps) * std::sin(lambda)};
 }
 
+// The almanac sun above is of date; the environment's one inertial frame is J2000 (README). Mean of date
+// -> J2000 by the IAU 1976 precession (Lieske et al. 1977, A&A 58, 1): r_date = R3(-z) R2(theta) R3(-zeta)
+// r_J2000 with the published polynomials in Julian centuries T from J2000, so r_J2000 = R3(zeta)
+// R2(-theta) R3(z) r_date (R_i the frame rotations).
+Vec3 of_date_to_j2000(const Vec3& v, double julian_date) {
+  const double t = (julian_date - 2451545.0) / 36525.0;
+  const double as = pi / (180.0 * 3600.0);
+  const double zeta = (2306.2181 * t + 0.30188 * t * t + 0.017998 * t * t * t) * as;
+  const double z = (2306.2181 * t + 1.09468 * t * t + 0.018203 * t * t * t) * as;
+  const double theta = (2004.3109 * t - 0.42665 * t * t - 0.041833 * t * t * t) * as;
+  // Frame rotations: R3(a) v = (c x + s y, -s x + c y, z); R2(a) v = (c x - s z, y, s x + c z).
+  auto r3 = [](double a, const Vec3& u) {
+    return Vec3{std::cos(a) * u[0] + std::sin(a) * u[1], -std::sin(a) * u[0] + std::cos(a) * u[1], u[2]};
+  };
+  auto r2 = [](double a, const Vec3& u) {
+    return Vec3{std::cos(a) * u[0] - std::sin(a) * u[2], u[1], std::sin(a) * u[0] + std::cos(a) * u[2]};
+  };
+  return r3(zeta, r2(-theta, r3(z, v)));
+}
+
 TEST(EnvironmentFmu, SpinModeFollowsTheSeedFormula) {
   Simulation sim;
   auto& d = sim.data();
@@ -96,7 +116,7 @@ TEST(EnvironmentFmu, SpinModeFollowsTheSeedFormula) {
   sim.start();
   // The spin attitude is built on the geocentric sun at the epoch, 2026-03-20 00:00 UTC = JD 2461119.5
   // (Meeus ch. 7 by hand: JD of 2026 Mar 20.0).
-  const Vec3 s0 = almanac_sun(2461119.5);
+  const Vec3 s0 = of_date_to_j2000(almanac_sun(2461119.5), 2461119.5);
   for (double t : {0.0, 0.01, 0.37, 1.0, 2.5, 7.31, 10.0}) {
     if (t > 0.0) sim.advance_to(t);
     const double phi = 0.3 + 1.26 * t, theta = -0.7 + 6.28 * t;
