@@ -98,6 +98,8 @@ EnvironmentParams environment_params(const EnvironmentData& d) {
                           .reflectivity = d.albedo_reflectivity,
                           .rings = d.albedo_rings,
                           .sectors = d.albedo_sectors};
+  if (d.albedo_response == "kelly") p.albedo.response = AlbedoResponse::kelly;
+  else if (d.albedo_response != "cosine") throw fmu::Error("albedo_response must be cosine or kelly");
   return p;
 }
 
@@ -187,6 +189,10 @@ void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
       .range(1, 1000);
   t.parameter("albedo_sectors", &D::albedo_sectors, "", "Albedo quadrature: midpoint points in azimuth")
       .range(3, 4000);
+  t.parameter("albedo_response", &D::albedo_response, "",
+              "Angular response the faces weigh albedo with: cosine (ideal) or kelly (seed 000 fig. 4, set it as the "
+              "plant's angular_response: albedo_face is then the equivalent normal-incidence irradiance)")
+      .one_of({"cosine", "kelly"});
   t.calculated_parameter("orbit_period", &D::orbit_period, "s", "Period of the circular orbit, 2 pi sqrt(a^3/mu)");
 
   // States: used in rigid_body mode only (derivatives 0 in spin mode).

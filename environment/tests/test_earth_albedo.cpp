@@ -71,6 +71,28 @@ TEST(EnvironmentCoreAlbedo, NadirFaceAboveSubsolarPoint) {
   }
 }
 
+TEST(EnvironmentCoreAlbedo, KellyPanelsSeeLessOfTheGrazingDisc) {
+  // Independent reference: a Python midpoint integral over the central angle (200000 panels, azimuthal
+  // symmetry) of the same geometry, with the Kelly curve sampled every 0.01 deg from panel_response (the
+  // curve the plant uses; it is tested on its own) and interpolated linearly: nadir face above the
+  // sub-solar point at 570 km, rho 0.3: cosine 343.173 W/m^2, Kelly 334.863 W/m^2, ratio 0.975784.
+  // (With the table interpolated linearly in angle instead of panel_response's cubic: 0.96968.)
+  env::AlbedoParams cosine_face, kelly_face;
+  kelly_face.response = env::AlbedoResponse::kelly;
+  const double r = env::kEarthRadius + 570.0e3;
+  const Eigen::Vector3d sun = Eigen::Vector3d::UnitX();
+  const auto c = env::earth_albedo(cosine_face, r * sun, sun, 1367.0, Eigen::Matrix3d::Identity());
+  const auto k = env::earth_albedo(kelly_face, r * sun, sun, 1367.0, Eigen::Matrix3d::Identity());
+  EXPECT_NEAR(c[1], 343.173, 0.01);
+  EXPECT_NEAR(k[1] / c[1], 0.975784, 5e-4);  // the 16-ring quadrature
+  // Every face sees less through the Kelly response (it lies below cos at every angle of the table), and
+  // the side faces, which see the disc only at grazing incidence, lose far more than the nadir face.
+  for (int f = 1; f < 6; ++f) EXPECT_LT(k[f], c[f]) << "face " << f;
+  for (int f = 2; f < 6; ++f) EXPECT_LT(k[f] / c[f], k[1] / c[1] - 0.05) << "face " << f;
+  std::printf("albedo through the Kelly response: nadir %.3f of the cosine value, side faces %.3f\n", k[1] / c[1],
+              k[2] / c[2]);
+}
+
 TEST(EnvironmentCoreAlbedo, ZeroOverTheNightSide) {
   // Satellite above the anti-solar point at 570 km: the visible cap (half-angle 23.4 deg) is all dark.
   env::AlbedoParams p;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "environment/constants.hpp"
+#include "panel_response/kelly.hpp"
 
 namespace environment {
 
@@ -57,6 +58,22 @@ const Quadrature& quadrature(int rings, int sectors) {
   q.rings = rings;
   q.sectors = sectors;
   return q;
+}
+
+// The Kelly response f(cos θ) tabulated once (panel_response's curve, acos and a Hermite per call otherwise)
+// on a uniform grid in cos θ; linear interpolation between 1025 points is within 3e-6 of the curve.
+constexpr int kKellyGrid = 1024;
+double kelly_of_cos(double c) {
+  static const std::array<double, kKellyGrid + 1> table = [] {
+    constexpr auto law = panel_response::kelly<double>();
+    std::array<double, kKellyGrid + 1> t{};
+    for (int i = 0; i <= kKellyGrid; ++i)
+      t[i] = panel_response::response_from_cos(law, static_cast<double>(i) / kKellyGrid);
+    return t;
+  }();
+  const double x = std::clamp(c, 0.0, 1.0) * kKellyGrid;
+  const int i = std::min(static_cast<int>(x), kKellyGrid - 1);
+  return table[i] + (x - i) * (table[i + 1] - table[i]);
 }
 
 }  // namespace
@@ -112,6 +129,18 @@ std::array<double, 6> earth_albedo(const AlbedoParams& params, const Eigen::Vect
       // cos of the solar zenith angle at the element
       const double cos_z = cg * s_dot_e3 + sg * sun_horizontal[j];
       if (cos_z <= 0.0) continue;
+      if (params.response == AlbedoResponse::kelly) {
+        const double a = ring_weight * cos_z, inv_l = 1.0 / l;
+        for (int k = 0; k < 3; ++k) {
+          const double c = (vertical(k) + radial * horizontal[j](k)) * inv_l;  // cos of incidence on face ±k
+          if (c > 0.0) {
+            e[2 * k] += a * kelly_of_cos(c);
+          } else {
+            e[2 * k + 1] += a * kelly_of_cos(-c);
+          }
+        }
+        continue;
+      }
       const double w = ring_weight * cos_z / l;  // 1/l normalises d below
       for (int k = 0; k < 3; ++k) {
         const double c = w * (vertical(k) + radial * horizontal[j](k));

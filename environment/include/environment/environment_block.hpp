@@ -65,6 +65,7 @@ struct EnvironmentData {
   double albedo_reflectivity = AlbedoParams{}.reflectivity;  // 1
   std::int32_t albedo_rings = AlbedoParams{}.rings;
   std::int32_t albedo_sectors = AlbedoParams{}.sectors;
+  fmu::FixedString<8> albedo_response = "cosine";  // cosine | kelly: the faces' angular response to albedo
   // --- calculated parameter
   double orbit_period = 0.0;  // s
   // --- continuous states and derivatives
