@@ -58,8 +58,9 @@ void run_distributed(const CampaignSetup& setup, const std::vector<long>& to_do,
         local_done = true;
     });
     int stopped = 0;
+    bool local_finished = false;  // the thread has ended and its last row is taken
     try {
-        while (stopped < ranks - 1 || !local_done || !local_rows.empty()) {
+        while (stopped < ranks - 1 || !local_finished) {
             bool busy = false;
             int flag = 0;
             MPI_Status status;
@@ -80,6 +81,8 @@ void run_distributed(const CampaignSetup& setup, const std::vector<long>& to_do,
                 std::lock_guard lock(mutex);
                 rows.swap(local_rows);
                 if (local_error) std::rethrow_exception(local_error);
+                // local_done is set after the last row was pushed under this lock: all rows are in `rows`.
+                local_finished = local_done;
             }
             for (const auto& row : rows) collector.accept(0, row);
             busy = busy || !rows.empty();
