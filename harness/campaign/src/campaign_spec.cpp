@@ -122,11 +122,11 @@ Draw read_draw(const Context& cx, const toml::table& t, std::size_t index) {
             cx.fail(t, where + ": '" + hi + "' must be " + (allow_equal ? "at least" : "above") + " '" + lo + "'");
     };
     if (kind == "uniform") {
-        only_keys(cx, t, where, {"kind", "target", "min", "max"});
+        only_keys(cx, t, where, {"kind", "target", "figure", "min", "max"});
         d.kind = DrawKind::uniform;
         range("min", "max", false);
     } else if (kind == "normal") {
-        only_keys(cx, t, where, {"kind", "target", "mean", "sd", "min", "max"});
+        only_keys(cx, t, where, {"kind", "target", "figure", "mean", "sd", "min", "max"});
         d.kind = DrawKind::normal;
         d.mean = number(cx, required(cx, t, "mean", where), where + ": 'mean'");
         d.sd = number(cx, required(cx, t, "sd", where), where + ": 'sd'");
@@ -142,13 +142,13 @@ Draw read_draw(const Context& cx, const toml::table& t, std::size_t index) {
                            " of the normal distribution, below the limit " + std::to_string(min_truncated_normal_mass) +
                            " (use a uniform draw)");
     } else if (kind == "integer") {
-        only_keys(cx, t, where, {"kind", "target", "min", "max"});
+        only_keys(cx, t, where, {"kind", "target", "figure", "min", "max"});
         d.kind = DrawKind::integer;
         range("min", "max", true);
         if (d.min != std::floor(d.min) || d.max != std::floor(d.max) || d.min < -2147483648.0 || d.max > 2147483647.0)
             cx.fail(t, where + ": 'min' and 'max' must be 32-bit integers");
     } else if (kind == "choice") {
-        only_keys(cx, t, where, {"kind", "target", "values", "weights"});
+        only_keys(cx, t, where, {"kind", "target", "figure", "values", "weights"});
         d.kind = DrawKind::choice;
         d.values = value_list(cx, t, where);
         if (const auto* w = t.get("weights")) {
@@ -163,19 +163,19 @@ Draw read_draw(const Context& cx, const toml::table& t, std::size_t index) {
             if (sum <= 0.0) cx.fail(*w, where + ": the weights must not all be zero");
         }
     } else if (kind == "grid" || kind == "list") {
-        only_keys(cx, t, where, {"kind", "target", "values"});
+        only_keys(cx, t, where, {"kind", "target", "figure", "values"});
         d.kind = DrawKind::grid;
         d.values = value_list(cx, t, where);
     } else if (kind == "quaternion") {
-        only_keys(cx, t, where, {"kind", "target"});
+        only_keys(cx, t, where, {"kind", "target", "figure"});
         d.kind = DrawKind::quaternion;
     } else if (kind == "tumble") {
-        only_keys(cx, t, where, {"kind", "target", "min", "max"});
+        only_keys(cx, t, where, {"kind", "target", "figure", "min", "max"});
         d.kind = DrawKind::tumble;
         range("min", "max", true);
         if (d.min < 0.0) cx.fail(t, where + ": the rate range must not be negative");
     } else if (kind == "epoch") {
-        only_keys(cx, t, where, {"kind", "target", "from", "to"});
+        only_keys(cx, t, where, {"kind", "target", "figure", "from", "to"});
         d.kind = DrawKind::epoch;
         d.epoch_from = epoch_seconds(cx, required(cx, t, "from", where), where + ": 'from'");
         d.epoch_to = epoch_seconds(cx, required(cx, t, "to", where), where + ": 'to'");
@@ -183,6 +183,10 @@ Draw read_draw(const Context& cx, const toml::table& t, std::size_t index) {
     } else {
         cx.fail(t, where + ": unknown kind '" + kind +
                        "' (uniform, normal, integer, choice, grid, list, quaternion, tumble, epoch)");
+    }
+    if (const auto* f = t.get("figure")) {
+        if (!f->is_boolean()) cx.fail(*f, where + ": 'figure' must be true or false");
+        d.figure = *f->value<bool>();
     }
     return d;
 }

@@ -30,6 +30,7 @@ struct Draw {
     std::vector<SpecValue> values;         // choice, grid
     std::vector<double> weights;           // choice (empty: equal)
     double epoch_from = 0.0, epoch_to = 0.0;  // epoch: seconds since 1970-01-01T00:00:00 UTC
+    bool figure = true;                    // draw the metrics against it (false for a noise seed)
 };
 
 enum class MetricKind { quaternion_angle, vector_angle, column };

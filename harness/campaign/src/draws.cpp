@@ -70,13 +70,13 @@ std::vector<DrawColumn> draw_columns(const CampaignSpec& spec) {
                 break;
             case DrawKind::tumble:
                 for (int i = 1; i <= 3; ++i) out.push_back({element(d.target, i), false});
-                out.push_back({d.target + ".rate", true});
+                out.push_back({d.target + ".rate", d.figure});
                 break;
             case DrawKind::epoch:
                 out.push_back({d.target, false});
-                out.push_back({d.target + ".days", true});
+                out.push_back({d.target + ".days", d.figure});
                 break;
-            default: out.push_back({d.target, true});
+            default: out.push_back({d.target, d.figure});
         }
     }
     return out;

@@ -61,6 +61,23 @@ TEST(Draws, ReproducibleAndIndependentOfOtherDraws) {
     EXPECT_NE(draw_run(one, 17).cells, draw_run(other, 17).cells);
 }
 
+// Table columns: quaternion and rate components are not plotted, the rate magnitude and epoch days
+// are, and `figure = false` leaves a drawn quantity out of the figures.
+TEST(Draws, ColumnsAndWhichArePlotted) {
+    const auto spec = spec_of(
+        "[[draw]]\nkind = \"quaternion\"\ntarget = \"e.q0\"\n[[draw]]\nkind = \"tumble\"\ntarget = \"e.w0\"\nmin = 0\nmax = 1\n"
+        "[[draw]]\nkind = \"epoch\"\ntarget = \"e.epoch\"\nfrom = 2026-01-01\nto = 2026-02-01\n"
+        "[[draw]]\nkind = \"integer\"\ntarget = \"m.seed\"\nmin = 1\nmax = 9\nfigure = false\n");
+    std::string names, plotted;
+    for (const auto& c : campaign::draw_columns(spec)) {
+        names += c.name + " ";
+        if (c.plotted) plotted += c.name + " ";
+    }
+    EXPECT_EQ(names, "e.q0[1] e.q0[2] e.q0[3] e.q0[4] e.w0[1] e.w0[2] e.w0[3] e.w0.rate e.epoch e.epoch.days m.seed ");
+    EXPECT_EQ(plotted, "e.w0.rate e.epoch.days ");
+    EXPECT_EQ(draw_run(spec, 0).cells.size(), 11u);
+}
+
 // Uniform on [a, b): mean (a + b)/2 with standard error (b - a)/sqrt(12 n); KS against (x - a)/(b - a).
 TEST(Draws, UniformCoversItsInterval) {
     const auto spec = spec_of("[[draw]]\nkind = \"uniform\"\ntarget = \"a.x\"\nmin = -2\nmax = 3\n");
