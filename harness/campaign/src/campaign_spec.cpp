@@ -179,7 +179,7 @@ Draw read_draw(const Context& cx, const toml::table& t, std::size_t index) {
         d.kind = DrawKind::epoch;
         d.epoch_from = epoch_seconds(cx, required(cx, t, "from", where), where + ": 'from'");
         d.epoch_to = epoch_seconds(cx, required(cx, t, "to", where), where + ": 'to'");
-        if (d.epoch_to <= d.epoch_from) cx.fail(t, where + ": 'to' must be after 'from'");
+        if (d.epoch_to - d.epoch_from < 1e-3) cx.fail(t, where + ": 'to' must be after 'from' (epochs are drawn to the millisecond)");
     } else {
         cx.fail(t, where + ": unknown kind '" + kind +
                        "' (uniform, normal, integer, choice, grid, list, quaternion, tumble, epoch)");
@@ -258,7 +258,7 @@ Metric read_metric(const Context& cx, const toml::table& t, std::size_t index) {
 
 std::filesystem::path relative_to(const std::filesystem::path& base, const std::string& p) {
     const std::filesystem::path path = p;
-    return path.is_absolute() ? path : base / path;
+    return (path.is_absolute() ? path : base / path).lexically_normal();
 }
 
 }  // namespace
