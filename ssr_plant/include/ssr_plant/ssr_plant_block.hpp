@@ -24,6 +24,7 @@ struct SsrPlantData {
     // parameters: selections
     fmu::FixedString<15> fidelity = "switching";
     fmu::FixedString<15> angular_response = "kelly";
+    fmu::FixedString<15> modulation = "latched_natural";
     // panel datasheet
     double rated_irradiance = 1000.0;
     double panel_isc = 0.62;
