@@ -7,6 +7,7 @@
 
 #include "attitude_estimator/spin_spectrum.hpp"
 #include "fmu/errors.hpp"
+#include "fmu/instant_clock.hpp"
 
 namespace attitude_estimator {
 
@@ -416,12 +417,11 @@ void EstimatorBlock::initialize(double t) {
 fmu::EventUpdate EstimatorBlock::event_update(double t, bool time_event_due) {
     auto& d = data();
     if (!time_event_due || !fmu::reached(t, next_time_event())) return {};
+    // A host that stepped over sample instants (it should not) gets the next one after t, not a burst;
+    // a time beyond the count's limit is refused before anything changes.
+    const std::int64_t next = fmu::next_instant_index(t, d.t_start, d.sample_period, d.next_index + 1, "sample clock");
     take_sample(t);
-    ++d.next_index;
-    // A host that stepped over sample instants (it should not) gets the next one after t, not a burst.
-    const double periods = std::floor((t - d.t_start) / d.sample_period);
-    if (periods > static_cast<double>(d.next_index)) d.next_index = static_cast<std::int64_t>(periods);
-    while (fmu::reached(t, next_time_event())) ++d.next_index;
+    d.next_index = next;
     return {};
 }
 

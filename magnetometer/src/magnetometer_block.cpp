@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "fmu/errors.hpp"
+#include "fmu/instant_clock.hpp"
 
 namespace magnetometer {
 
@@ -116,13 +117,17 @@ void MagnetometerBlock::evaluate(double) {
 fmu::EventUpdate MagnetometerBlock::event_update(double t, bool time_event_due) {
     auto& d = data();
     if (!time_event_due) return {};
+    // A host that stepped over instants gets them counted at once (and a time too far for the count
+    // refused), not one per call: next_instant_index is the number of instants reached.
     if (fmu::reached(t, d.next_set_reset)) {
-        d.set_polarity = !d.set_polarity;  // pulses alternate set, reset, set, ...
-        d.next_set_reset += d.set_reset_period;
+        const auto pulses = fmu::next_instant_index(t, d.next_set_reset, d.set_reset_period, 1, "set/reset pulses");
+        if (pulses % 2 == 1) d.set_polarity = !d.set_polarity;  // pulses alternate set, reset, set, ...
+        d.next_set_reset += static_cast<double>(pulses) * d.set_reset_period;
     }
     if (fmu::reached(t, d.next_noise)) {
+        const auto draws = fmu::next_instant_index(t, d.next_noise, d.noise_sample_period, 1, "noise samples");
         draw_noise();
-        d.next_noise += d.noise_sample_period;
+        d.next_noise += static_cast<double>(draws) * d.noise_sample_period;
     }
     return {};
 }
