@@ -2,11 +2,13 @@
 // stderr and a non-zero exit code.
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
 #include <iostream>
 
 #include "cosim_error.hpp"
 #include "fmi_loader/loader_error.hpp"
 #include "info_command.hpp"
+#include "interrupt.hpp"
 #include "plot_command.hpp"
 #include "run_command.hpp"
 #include "simulate_command.hpp"
@@ -52,6 +54,8 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0, 65535));
     run->add_flag("--realtime", run_options.realtime, "Pace simulated time to the wall clock");
     run->add_flag("--event-rows", run_options.event_rows, "Add CSV rows just before and after each event");
+    run->add_flag("--force", run_options.force,
+                  "Run even with more than 1e8 output or communication points, or a CSV larger than the free disk space");
 
     std::string plot_csv, plot_dir = "figures";
     auto* plot = app.add_subcommand("plot", "Draw the standard figures of a results CSV as PNG files (gnuplot)");
@@ -59,6 +63,7 @@ int main(int argc, char** argv) {
     plot->add_option("--out-dir", plot_dir, "Folder for the PNG files")->capture_default_str();
 
     CLI11_PARSE(app, argc, argv);
+    cosim::install_interrupt_handlers();
     try {
         if (*info) cosim::print_info(info_path, std::cout);
         if (*run) {
@@ -75,8 +80,23 @@ int main(int argc, char** argv) {
             if (!csv_path.empty()) sim.csv = csv_path;
             cosim::simulate(sim, std::cout);
         }
+        // Output to a pipe or a full disk fails at the latest here: exit 0 only when it all got out.
+        errno = 0;
+        std::cout.flush();
+        if (!std::cout) {
+            std::cerr << "cosim: writing standard output failed: " << cosim::io_reason() << "\n";
+            return 1;
+        }
         return 0;
+    } catch (const cosim::Interrupted& e) {
+        std::cout.flush();
+        std::cerr << "cosim: " << e.what() << "\n";
+        return 128 + e.signal();
     } catch (const fmi_loader::LoaderError& e) {
+        if (e.code() == fmi_loader::LoaderErrc::cancelled && cosim::interrupt_signal()) {
+            std::cerr << "cosim: " << cosim::Interrupted(cosim::interrupt_signal()).what() << " while loading\n";
+            return 128 + cosim::interrupt_signal();
+        }
         std::cerr << "cosim: " << e.what() << "\n";
         return 3;
     } catch (const std::exception& e) {

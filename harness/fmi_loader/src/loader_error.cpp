@@ -28,6 +28,7 @@ static_assert(std::atomic<bool>::is_always_lock_free, "request_cancel() must be 
 
 void request_cancel() noexcept { cancel_flag.store(true, std::memory_order_relaxed); }
 bool cancel_requested() noexcept { return cancel_flag.load(std::memory_order_relaxed); }
+void clear_cancel() noexcept { cancel_flag.store(false, std::memory_order_relaxed); }
 
 LoaderError::LoaderError(LoaderErrc code, const std::string& message)
     : std::runtime_error(std::string(to_string(code)) + ": " + message), code_(code) {}

@@ -24,8 +24,9 @@ struct Limits {
 };
 
 // Set from a signal handler (async-signal-safe: a lock-free atomic store) to make a running extraction
-// stop at its next block and remove what it wrote; cleared by nobody but the caller.
+// stop at its next block and remove what it wrote.
 void request_cancel() noexcept;
 bool cancel_requested() noexcept;
+void clear_cancel() noexcept;
 
 }  // namespace fmi_loader
