@@ -8,6 +8,7 @@
 #include "attitude_estimator/spin_spectrum.hpp"
 #include "fmu/errors.hpp"
 #include "fmu/instant_clock.hpp"
+#include "fmu/state_check.hpp"
 
 namespace attitude_estimator {
 
@@ -423,6 +424,21 @@ fmu::EventUpdate EstimatorBlock::event_update(double t, bool time_event_due) {
     take_sample(t);
     d.next_index = next;
     return {};
+}
+
+// The fields outside the table, for a state restored from bytes (issue 14 case 8).
+void EstimatorBlock::check_state() const {
+    const auto& d = data();
+    fmu::require_range(d.next_index, 0, fmu::max_instant_index, "next_index");
+    fmu::require_range(d.history_head, 0, kMaxSpinWindow - 1, "history_head");
+    fmu::require_range(d.history_filled, 0, kMaxSpinWindow, "history_filled");
+    fmu::require_finite(d.t_start, "t_start");
+    for (const auto& s : d.sun_history) fmu::require_finite(std::span<const double>(s.data(), s.size()), "sun_history");
+    fmu::require_range(d.sun_state.cube_state, 0, 26, "sun_state.cube_state");
+    fmu::require_range(d.sun_state.refusals, 0, std::numeric_limits<int>::max(), "sun_state.refusals");
+    fmu::require_bool(d.sun_state.has_last, "sun_state.has_last");
+    fmu::require_finite(std::span<const double>(d.sun_state.last_unit.data(), d.sun_state.last_unit.size()), "sun_state.last_unit");
+    if (!d.rate_state.consistent()) throw fmu::Error("restored FMU state: rate_state is inconsistent");
 }
 
 double EstimatorBlock::next_time_event() const {

@@ -4,6 +4,7 @@
 
 #include "fmu/errors.hpp"
 #include "fmu/instant_clock.hpp"
+#include "fmu/state_check.hpp"
 
 namespace magnetometer {
 
@@ -82,6 +83,17 @@ void MagnetometerBlock::validate() const {
     const auto& d = data();
     if (!(d.v_rail_low < d.v_rail_high)) throw fmu::Error("v_rail_low must be below v_rail_high");
     if (d.v_null < d.v_rail_low || d.v_null > d.v_rail_high) throw fmu::Error("v_null must lie between the rails");
+}
+
+// The fields outside the table of a state restored from bytes (issue 14 case 8); an all-zero
+// generator state would make the normal deviate's rejection loop spin forever.
+void MagnetometerBlock::check_state() const {
+    const auto& d = data();
+    fmu::require_bool(d.set_polarity, "set_polarity");
+    for (const double n : d.noise) fmu::require_finite(n, "noise");
+    if (std::isnan(d.next_set_reset) || std::isnan(d.next_noise)) throw fmu::Error("restored FMU state: an event time is NaN");
+    if ((d.random.s[0] | d.random.s[1] | d.random.s[2] | d.random.s[3]) == 0)
+        throw fmu::Error("restored FMU state: the noise generator's state is all zero");
 }
 
 void MagnetometerBlock::draw_noise() {
