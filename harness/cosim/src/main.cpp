@@ -2,12 +2,14 @@
 // stderr and a non-zero exit code.
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
 #include <iostream>
 
 #include "campaign_command.hpp"
 #include "cosim_error.hpp"
 #include "fmi_loader/loader_error.hpp"
 #include "info_command.hpp"
+#include "interrupt.hpp"
 #include "plot_command.hpp"
 #include "run_command.hpp"
 #include "simulate_command.hpp"
@@ -58,6 +60,8 @@ int main(int argc, char** argv) {
     run->add_flag("--reference", run_options.reference,
                   "The reference execution: every component as Model Exchange, every event through every component "
                   "with an integrator restart, every output point a stop (slow; to check the fast path against)");
+    run->add_flag("--force", run_options.force,
+                  "Run even with more than 1e8 output or communication points, or a CSV larger than the free disk space");
 
     std::string plot_csv, plot_dir = "figures";
     auto* plot = app.add_subcommand("plot", "Draw the standard figures of a results CSV as PNG files (gnuplot)");
@@ -80,6 +84,7 @@ int main(int argc, char** argv) {
     campaign->add_flag("!--no-figures", campaign_options.figures, "Skip the PNG figures");
 
     CLI11_PARSE(app, argc, argv);
+    cosim::install_interrupt_handlers();
     try {
         if (*info) cosim::print_info(info_path, std::cout);
         if (*campaign) {
@@ -102,8 +107,23 @@ int main(int argc, char** argv) {
             if (!csv_path.empty()) sim.csv = csv_path;
             cosim::simulate(sim, std::cout);
         }
+        // Output to a pipe or a full disk fails at the latest here: exit 0 only when it all got out.
+        errno = 0;
+        std::cout.flush();
+        if (!std::cout) {
+            std::cerr << "cosim: writing standard output failed: " << cosim::io_reason() << "\n";
+            return 1;
+        }
         return 0;
+    } catch (const cosim::Interrupted& e) {
+        std::cout.flush();
+        std::cerr << "cosim: " << e.what() << "\n";
+        return 128 + e.signal();
     } catch (const fmi_loader::LoaderError& e) {
+        if (e.code() == fmi_loader::LoaderErrc::cancelled && cosim::interrupt_signal()) {
+            std::cerr << "cosim: " << cosim::Interrupted(cosim::interrupt_signal()).what() << " while loading\n";
+            return 128 + cosim::interrupt_signal();
+        }
         std::cerr << "cosim: " << e.what() << "\n";
         return 3;
     } catch (const std::exception& e) {
