@@ -7,6 +7,8 @@
 
 #include "attitude_estimator/spin_spectrum.hpp"
 #include "fmu/errors.hpp"
+#include "fmu/instant_clock.hpp"
+#include "fmu/state_check.hpp"
 
 namespace attitude_estimator {
 
@@ -452,13 +454,27 @@ void EstimatorBlock::initialize(double t) {
 fmu::EventUpdate EstimatorBlock::event_update(double t, bool time_event_due) {
     auto& d = data();
     if (!time_event_due || !fmu::reached(t, next_time_event())) return {};
+    // A host that stepped over sample instants (it should not) gets the next one after t, not a burst;
+    // a time beyond the count's limit is refused before anything changes.
+    const std::int64_t next = fmu::next_instant_index(t, d.t_start, d.sample_period, d.next_index + 1, "sample clock");
     take_sample(t);
-    ++d.next_index;
-    // A host that stepped over sample instants (it should not) gets the next one after t, not a burst.
-    const double periods = std::floor((t - d.t_start) / d.sample_period);
-    if (periods > static_cast<double>(d.next_index)) d.next_index = static_cast<std::int64_t>(periods);
-    while (fmu::reached(t, next_time_event())) ++d.next_index;
+    d.next_index = next;
     return {};
+}
+
+// The fields outside the table, for a state restored from bytes (issue 14 case 8).
+void EstimatorBlock::check_state() const {
+    const auto& d = data();
+    fmu::require_range(d.next_index, 0, fmu::max_instant_index, "next_index");
+    fmu::require_range(d.history_head, 0, kMaxSpinWindow - 1, "history_head");
+    fmu::require_range(d.history_filled, 0, kMaxSpinWindow, "history_filled");
+    fmu::require_finite(d.t_start, "t_start");
+    for (const auto& s : d.sun_history) fmu::require_finite(std::span<const double>(s.data(), s.size()), "sun_history");
+    fmu::require_range(d.sun_state.cube_state, 0, 26, "sun_state.cube_state");
+    fmu::require_range(d.sun_state.refusals, 0, std::numeric_limits<int>::max(), "sun_state.refusals");
+    fmu::require_bool(d.sun_state.has_last, "sun_state.has_last");
+    fmu::require_finite(std::span<const double>(d.sun_state.last_unit.data(), d.sun_state.last_unit.size()), "sun_state.last_unit");
+    if (!d.rate_state.consistent()) throw fmu::Error("restored FMU state: rate_state is inconsistent");
 }
 
 double EstimatorBlock::next_time_event() const {

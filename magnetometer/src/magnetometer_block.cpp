@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "fmu/errors.hpp"
+#include "fmu/instant_clock.hpp"
+#include "fmu/state_check.hpp"
 
 namespace magnetometer {
 
@@ -97,6 +99,16 @@ void MagnetometerBlock::validate() const {
     if (d.v_null < d.v_rail_low || d.v_null > d.v_rail_high) throw fmu::Error("v_null must lie between the rails");
 }
 
+// The fields outside the table of a state restored from bytes (issue 14 case 8).
+void MagnetometerBlock::check_state() const {
+    const auto& d = data();
+    fmu::require_bool(d.set_polarity, "set_polarity");
+    for (const double n : d.noise) fmu::require_finite(n, "noise");
+    if (std::isnan(d.next_set_reset) || !std::isfinite(d.noise_start)) throw fmu::Error("restored FMU state: an event time is NaN");
+    if (d.noise_index < 0 && d.noise_index != no_noise_index)
+        throw fmu::Error("restored FMU state: the noise hold interval is negative");
+}
+
 // The noise enters the outputs only (after the filter), never a derivative: a new sample is a jump of
 // v_out alone, which needs no event, so the hold intervals are counted from the time, not scheduled.
 void MagnetometerBlock::update_noise(double t) {
@@ -141,9 +153,12 @@ void MagnetometerBlock::evaluate(double t) {
 fmu::EventUpdate MagnetometerBlock::event_update(double t, bool time_event_due) {
     auto& d = data();
     if (!time_event_due) return {};
+    // A host that stepped over instants gets them counted at once (and a time too far for the count
+    // refused), not one per call: next_instant_index is the number of instants reached.
     if (fmu::reached(t, d.next_set_reset)) {
-        d.set_polarity = !d.set_polarity;  // pulses alternate set, reset, set, ...
-        d.next_set_reset += d.set_reset_period;
+        const auto pulses = fmu::next_instant_index(t, d.next_set_reset, d.set_reset_period, 1, "set/reset pulses");
+        if (pulses % 2 == 1) d.set_polarity = !d.set_polarity;  // pulses alternate set, reset, set, ...
+        d.next_set_reset += static_cast<double>(pulses) * d.set_reset_period;
     }
     return {};
 }

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "fmu/errors.hpp"
+#include "fmu/state_check.hpp"
 
 namespace ssr_plant {
 
@@ -238,6 +239,20 @@ Inputs SsrPlantBlock::inputs() const {
 }
 
 State SsrPlantBlock::state() const { return {data().v_cap, data().soc_state}; }
+
+// The core's discrete state (outside the table) of a state restored from bytes (issue 14 case 8).
+void SsrPlantBlock::check_state() const {
+    const auto& s = data().discrete;
+    fmu::require_finite(s.period_origin, "discrete.period_origin");
+    fmu::require_range(s.period_index, 0, 100'000'000'000, "discrete.period_index");
+    if (!(s.duty >= 0.0 && s.duty <= 1.0)) throw fmu::Error("restored FMU state: discrete.duty is outside 0 ... 1");
+    fmu::require_bool(s.gate, "discrete.gate");
+    fmu::require_bool(s.off_edge_pending, "discrete.off_edge_pending");
+    fmu::require_bool(s.charge_connected, "discrete.charge_connected");
+    if (std::isnan(s.next_event_time)) throw fmu::Error("restored FMU state: discrete.next_event_time is NaN");
+    fmu::require_finite(std::span<const double>(s.held_face_current.data(), s.held_face_current.size()),
+                        "discrete.held_face_current");
+}
 
 void SsrPlantBlock::validate() const {
     fitted(parameters());  // throws fmu::Error with the core's reason

@@ -142,6 +142,7 @@ public:
     fmu::EventUpdate event_update(double t, bool time_event_due) override;
     double next_time_event() const override;
     void validate() const override;
+    void check_state() const override;
 
 private:
     void take_sample(double t);

@@ -86,6 +86,10 @@ public:
     virtual EventUpdate event_update(double t, bool time_event_due) = 0;
     virtual double next_time_event() const = 0;
     virtual void validate() const = 0;
+    // - check_state(): after a state came in as bytes (fmi2DeSerializeFMUstate), the invariants of
+    //   the fields the table does not cover (finite numbers, bool bytes, indices in range, a live
+    //   generator); throw fmu::Error. The table's own variables are checked by the runtime.
+    virtual void check_state() const {}
 };
 
 // Every block defines this once (FMU_BLOCK in block.hpp); the runtime and the tools call it.

@@ -20,13 +20,21 @@ struct DocDeleter {
 using Doc = std::unique_ptr<xmlDoc, DocDeleter>;
 
 // No network, no DTD loading, no entity substitution: a system file cannot reach outside itself.
+// A DOCTYPE is the only way to declare entities, and SSP never uses one: it is refused outright.
+// The size is bounded before parsing (max_ssd_bytes) so that a huge file is not read into memory.
 Doc parse_file(const std::filesystem::path& path) {
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(path, ec);
+    if (!ec && size > max_ssd_bytes)
+        throw CosimError(path.string() + " is " + std::to_string(size) + " bytes, more than the limit of " +
+                         std::to_string(max_ssd_bytes) + " bytes for a system description");
     Doc doc(xmlReadFile(path.c_str(), nullptr, XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING));
     if (!doc) {
         const xmlError* e = xmlGetLastError();
         throw CosimError(path.string() + ": not well-formed XML" +
                          (e && e->message ? std::string(" (line ") + std::to_string(e->line) + ": " + e->message + ")" : ""));
     }
+    if (doc->intSubset || doc->extSubset) throw CosimError(path.string() + ": DOCTYPE declarations are not allowed in an .ssd");
     return doc;
 }
 

@@ -3,12 +3,18 @@
 // experiment. Parsed with libxml2 with no network access and no DTD or external entities.
 #pragma once
 
+#include <cstdint>
+
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace cosim {
+
+// The largest .ssd read (16 MiB: the bundled systems are a few kB).
+inline constexpr std::uintmax_t max_ssd_bytes = std::uintmax_t{16} << 20;
+
 
 enum class ConnectorKind { input, output, parameter, calculated_parameter, inout, unspecified };
 

@@ -30,6 +30,10 @@ double effective_duty(const Model& m, double duty) {
     return duty;
 }
 
+// The most PWM periods counted from the start: beyond, edges are closer than the edge tolerance in
+// a double and an int64 count would overflow near 9.2e18 (1e11 periods of 200 us: 231 days).
+constexpr double max_period_index = 1e11;
+
 double period_start(const DiscreteState& d, const Model& m, std::int64_t k) {
     return d.period_origin + static_cast<double>(k) * m.pwm_period;
 }
@@ -301,7 +305,20 @@ EventResult event_update(const Model& m, const Inputs& u, const DiscreteState& d
 EventResult event_update(const Model& m, const Illumination& l, const DiscreteState& d0, double t, const State& x) {
     DiscreteState d = d0;
     if (m.parameters.fidelity == Fidelity::switching) {
-        // A bounded loop: normally one edge is due; more only if a host stepped past edges.
+        // A host that stepped over whole periods (it should not) restarts in the period holding t
+        // instead of walking every edge in between; a time too far for the count is refused.
+        if (t >= d.next_event_time + m.pwm_period) {
+            const double k = std::floor((t - d.period_origin) / m.pwm_period);
+            if (!(k < max_period_index))
+                throw std::invalid_argument("ssr_plant: t = " + std::to_string(t) + " s is more than 1e11 PWM periods "
+                                            "after the start (the limit of the period count)");
+            if (k > static_cast<double>(d.period_index)) {
+                const bool gate_before = d.gate;
+                start_period(m, d, static_cast<std::int64_t>(k), x[state_v_bus]);
+                if (gate_before && !d.gate) d.held_face_current = l.i_shunt;
+            }
+        }
+        // A bounded loop: normally one edge is due.
         for (int guard = 0; guard < 1000000 && t >= d.next_event_time - edge_tolerance(m, t); ++guard) {
             if (d.off_edge_pending) {
                 d.gate = false;  // trailing edge of the pulse

@@ -99,6 +99,7 @@ public:
     fmu::EventUpdate event_update(double t, bool time_event_due) override;
     double next_time_event() const override;
     void validate() const override;
+    void check_state() const override;
 
 private:
     // The fitted plant (panel fit ~0.2 ms) kept outside Data and rebuilt whenever the parameters
