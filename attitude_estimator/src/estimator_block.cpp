@@ -19,7 +19,18 @@ constexpr SunMethod kSunMethods[] = {SunMethod::difference, SunMethod::inverse_r
 
 // The rates' state must travel with the FMU state as bytes.
 static_assert(std::is_trivially_copyable_v<MeanAngularRate<double>> &&
-              std::is_trivially_copyable_v<SunMethodState<double>>);
+              std::is_trivially_copyable_v<SunMethodState<double>> &&
+              std::is_trivially_copyable_v<MekfState<double>>);
+
+// The magnetometer's set/reset polarity of this sample's reading (+1 after a set pulse). The block has no
+// polarity input yet: the magnetometer's pulses are not commanded by the estimator (project issue 19), so
+// the filter takes every reading as taken after a set pulse.
+constexpr double kMagPolarity = 1.0;
+
+// A face's current is used for the panel-scale update only well inside the response curve (below about
+// 60 deg of incidence with the Kelly law), where a small attitude error changes it little and albedo is a
+// small part of it.
+constexpr double kScaleFaceMinResponse = 0.45;
 
 panel_response::Response<double> response_from(const EstimatorData& d) {
     if (d.angular_response == "cosine") return panel_response::cosine<double>();
@@ -56,6 +67,22 @@ SunMethod sun_method_from(std::string_view name) {
         if (name == sun_method_name(m)) return m;
     throw fmu::Error("sun_method = '" + std::string(name) +
                      "' is not one of: difference, inverse_response, cones, three_faces");
+}
+
+MekfConfig<double> filter_config_from(const EstimatorData& d) {
+    MekfConfig<double> c;
+    c.sun_sigma = d.filter_sun_sigma;
+    c.mag_sigma = d.filter_mag_sigma;
+    c.rate_noise = d.filter_rate_noise;
+    c.attitude_noise = d.filter_attitude_noise;
+    c.estimate_offset = d.filter_offset;
+    c.estimate_scale = d.filter_scale;
+    c.face_sigma = d.filter_face_sigma;
+    c.inertia = d.inertia;
+    c.reset_after = d.filter_reset_after;
+    // The rate comes from two single-frame attitudes at most a few samples apart.
+    c.max_init_gap = 3.5 * d.sample_period;
+    return c;
 }
 
 EstimatorConfig<double> config_from(const EstimatorData& d) {
@@ -201,6 +228,39 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.parameter("rate_window", &D::rate_window, "", "Mean-rate increments averaged (1 = 004 eq. 4 alone), 1 to 64")
         .range(1.0, static_cast<double>(kMaxRateWindow));
 
+    t.parameter("filter", &D::filter, "",
+                "Recursive attitude filter beside the single-frame estimate: none, or mekf (multiplicative "
+                "extended Kalman filter with rate, magnetometer-offset and panel-scale states; docs/filter.md)")
+        .one_of({"none", "mekf"});
+    t.parameter("filter_sun_sigma", &D::filter_sun_sigma, "rad",
+                "mekf: 1-sigma error of one sun vector per axis (noise and the sun method's model error)")
+        .range(1e-6, 1.0);
+    t.parameter("filter_mag_sigma", &D::filter_mag_sigma, "T",
+                "mekf: 1-sigma error of one field vector per axis (noise, quantization, field-model error)")
+        .range(1e-10, 1e-4);
+    t.parameter("filter_rate_noise", &D::filter_rate_noise, "rad/s",
+                "mekf: 1-sigma unpredictable change of the body rate over 1 s (a random walk: it grows as the "
+                "square root of time; the rate random-walk density in rad/s per root second)")
+        .range(0.0, 10.0);
+    t.parameter("filter_attitude_noise", &D::filter_attitude_noise, "rad",
+                "mekf: 1-sigma attitude drift over 1 s that the rate state does not explain (random walk)")
+        .range(0.0, 1.0);
+    t.parameter("filter_offset", &D::filter_offset, "",
+                "mekf: estimate the magnetometer's offset (3 states; its sign follows the set/reset polarity)");
+    t.parameter("filter_scale", &D::filter_scale, "",
+                "mekf: estimate a common scale error of the panels' current normalization from the face "
+                "currents and correct i_face_norm/i_sc_norm with it (face-based sun methods)");
+    t.parameter("filter_face_sigma", &D::filter_face_sigma, "1",
+                "mekf: 1-sigma error of one face's relative response in the panel-scale update (noise, albedo)")
+        .range(1e-6, 1.0);
+    t.parameter("inertia", &D::inertia, "kg.m2",
+                "mekf: inertia matrix, body axes, row-major; all zero (default) = kinematic rate model, else "
+                "Euler's torque-free equations propagate the rate");
+    t.parameter("filter_reset_after", &D::filter_reset_after, "",
+                "mekf: samples in a row whose every update fails the innovation test before the filter resets "
+                "to the single-frame attitude")
+        .range(1.0, 1e6);
+
     t.output("q_est", &D::q_est, "1", "Estimated attitude quaternion, scalar-last [x, y, z, w], w >= 0")
         .discrete()
         .depends_on({});
@@ -275,6 +335,33 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
         .discrete()
         .depends_on({});
 
+    t.output("q_filt", &D::q_filt, "1", "mekf: filter attitude quaternion, scalar-last [x, y, z, w], w >= 0")
+        .discrete()
+        .depends_on({});
+    t.output("omega_filt", &D::omega_filt, "rad/s", "mekf: filter body rate")
+        .discrete()
+        .depends_on({});
+    t.output("mag_offset_filt", &D::mag_offset_filt, "V",
+             "mekf: estimated magnetometer offset per axis, as it reads after a set pulse")
+        .discrete()
+        .depends_on({});
+    t.output("panel_scale_filt", &D::panel_scale_filt, "1",
+             "mekf: estimated common panel scale error (face currents are (1 + this) x nominal)")
+        .discrete()
+        .depends_on({});
+    t.output("attitude_bound", &D::attitude_bound, "rad",
+             "mekf: 3-sigma bound on the filter's attitude error angle, 3 sqrt(trace of its attitude covariance)")
+        .discrete()
+        .depends_on({});
+    t.output("filter_valid", &D::filter_valid, "",
+             "mekf: the filter runs and its 3-sigma attitude bound is below 10 deg")
+        .discrete()
+        .depends_on({});
+    t.output("filter_resets", &D::filter_resets, "",
+             "mekf: times the innovation test found the filter diverged and reset it to the single-frame attitude")
+        .discrete()
+        .depends_on({});
+
     t.local("t_start", &D::t_start, "s", "Start time: sample k is due at t_start + k*sample_period").discrete();
 }
 
@@ -331,11 +418,30 @@ void EstimatorBlock::validate() const {
         }
     }
     if (d.spin_window != 0 && d.spin_window < 16) throw fmu::Error("spin_window must be 0 (off) or 16 to 2048");
+    if (d.filter != "none" && d.filter != "mekf") throw fmu::Error("filter must be none or mekf");
+    bool has_inertia = false;
+    for (double v : d.inertia) has_inertia = has_inertia || v != 0.0;
+    if (has_inertia) {
+        const auto& j = d.inertia;
+        const double m1 = j[0], m2 = j[0] * j[4] - j[1] * j[3];
+        const double m3 = j[0] * (j[4] * j[8] - j[5] * j[7]) - j[1] * (j[3] * j[8] - j[5] * j[6]) +
+                          j[2] * (j[3] * j[7] - j[4] * j[6]);
+        if (j[1] != j[3] || j[2] != j[6] || j[5] != j[7] || !(m1 > 0.0 && m2 > 0.0 && m3 > 0.0))
+            throw fmu::Error("inertia must be all zero (kinematic) or symmetric positive definite");
+    }
 }
 
 void EstimatorBlock::take_sample(double t) {
     auto& d = data();
-    const SampleResult<double> r = estimate_sample(inputs_from(d), config_from(d), d.sun_state);
+    const EstimatorConfig<double> nominal = config_from(d);
+    EstimatorConfig<double> config = nominal;
+    if (d.filter == "mekf" && d.filter_scale && d.filter_state.stage == 2) {
+        // The filter's panel-scale estimate corrects the normalization the sun method divides by.
+        const double gain = 1.0 + d.filter_state.panel_scale;
+        for (auto& v : config.sun.i_face_norm) v *= gain;
+        for (auto& v : config.i_sc_norm) v *= gain;
+    }
+    const SampleResult<double> r = estimate_sample(inputs_from(d), config, d.sun_state);
     d.q_est = {r.q.x, r.q.y, r.q.z, r.q.w};
     d.A_est = r.a;
     d.sun_meas = r.sun_meas;
@@ -351,6 +457,44 @@ void EstimatorBlock::take_sample(double t) {
     d.cube_state = r.cube_state;
     if (d.samples < std::numeric_limits<std::int32_t>::max()) ++d.samples;
     update_rates(t);
+    if (d.filter == "mekf") update_filter(t, r, nominal);
+}
+
+void EstimatorBlock::update_filter(double t, const SampleResult<double>& r, const EstimatorConfig<double>& nominal) {
+    auto& d = data();
+    const MekfConfig<double> config = filter_config_from(d);
+    MekfSampleInputs<double> in;
+    in.t = t;
+    in.attitude_valid = r.valid;
+    in.q_single = r.q;
+    in.sun_valid = r.sun_valid;
+    in.sun_ref = d.sun_ref;
+    in.sun_body = r.sun_meas;
+    in.mag_valid = r.mag_valid;
+    in.mag_ref = d.mag_ref;
+    in.mag_body = r.mag_field;
+    in.polarity = kMagPolarity;
+    if (d.filter_scale && nominal.sun.method != SunMethod::difference) {
+        // Relative responses against the nominal normalization: the filter's model is (1 + ε) R(cos β).
+        for (std::size_t k = 0; k < 6; ++k) {
+            const double i = convert(nominal.face_adc[k], d.i_face[k]).value;
+            in.face_r[k] = i / nominal.sun.i_face_norm[k];
+            const bool usable = (r.lit_faces >> k & 1) && !(r.rejected_faces >> k & 1) &&
+                                in.face_r[k] >= kScaleFaceMinResponse;
+            if (usable) in.face_use |= static_cast<std::uint8_t>(1u << k);
+        }
+        in.response = &nominal.sun.response;
+    }
+    const MekfSampleResult<double> f = mekf_sample(d.filter_state, in, config);
+    const MekfState<double>& s = d.filter_state;
+    const bool running = s.stage == 2;
+    d.q_filt = running ? std::array<double, 4>{s.q.x, s.q.y, s.q.z, s.q.w} : std::array<double, 4>{0, 0, 0, 1};
+    d.omega_filt = running ? s.omega : Vec3d{};
+    for (std::size_t k = 0; k < 3; ++k) d.mag_offset_filt[k] = s.mag_offset[k] * d.mag_sensitivity;
+    d.panel_scale_filt = s.panel_scale;
+    d.attitude_bound = running ? f.bound : 0.0;
+    d.filter_valid = running && f.valid;
+    d.filter_resets = s.resets;
 }
 
 void EstimatorBlock::update_rates(double t) {
@@ -409,6 +553,7 @@ void EstimatorBlock::initialize(double t) {
     d.rate_state = MeanAngularRate<double>(rate_config_from(d));
     d.history_head = 0;
     d.history_filled = 0;
+    d.filter_state = {};
     take_sample(t);
     d.next_index = 1;
 }
