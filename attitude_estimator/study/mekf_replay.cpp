@@ -6,7 +6,7 @@
 //
 //   attitude_estimator_mekf_replay run.csv [--from T] [--trace out.csv] [key=value ...]
 //   keys: sun_sigma, mag_sigma (T), rate_noise, attitude_noise, offset (0/1), polarity (plus | column:
-//   mag.set_polarity), euler (0/1: the environment's default inertia), reset_after,
+//   mag.set_polarity), euler (0/1: the environment's default inertia), inertia_diag (Jxx,Jyy,Jzz), reset_after,
 //   scale (0/1: face update from plant.i_face_sh with the Kelly law), face_sigma, i_face_norm (A, at 1 AU)
 #include <algorithm>
 #include <cmath>
@@ -72,6 +72,11 @@ Options parse(int argc, char** argv, std::string& file) {
     else if (k == "polarity") o.column_polarity = v == "column";
     else if (k == "i_face_norm") o.i_face_norm = std::stod(v);
     else if (k == "euler" && v == "1") f.inertia = {3.2, 0.05, -0.02, 0.05, 2.9, 0.03, -0.02, 0.03, 3.6};
+    else if (k == "inertia_diag") {  // Jxx,Jyy,Jzz
+      const auto c1 = v.find(','), c2 = v.find(',', c1 + 1);
+      f.inertia = {std::stod(v.substr(0, c1)), 0, 0, 0, std::stod(v.substr(c1 + 1, c2 - c1 - 1)), 0, 0, 0,
+                   std::stod(v.substr(c2 + 1))};
+    }
     else throw std::runtime_error("unknown option " + a);
   }
   return o;
