@@ -28,9 +28,9 @@ static_assert(std::is_trivially_copyable_v<MeanAngularRate<double>> &&
 constexpr double kMagPolarity = 1.0;
 
 // A face's current is used for the panel-scale update only well inside the response curve (below about
-// 60 deg of incidence with the Kelly law), where a small attitude error changes it little and albedo is a
+// 45 deg of incidence with the Kelly law), where a small attitude error changes it little and albedo is a
 // small part of it.
-constexpr double kScaleFaceMinResponse = 0.45;
+constexpr double kScaleFaceMinResponse = 0.7;
 
 panel_response::Response<double> response_from(const EstimatorData& d) {
     if (d.angular_response == "cosine") return panel_response::cosine<double>();

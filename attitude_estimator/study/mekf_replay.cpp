@@ -7,7 +7,8 @@
 //   attitude_estimator_mekf_replay run.csv [--from T] [--trace out.csv] [key=value ...]
 //   keys: sun_sigma, mag_sigma (T), rate_noise, attitude_noise, offset (0/1), polarity (plus | column:
 //   mag.set_polarity), euler (0/1: the environment's default inertia), inertia_diag (Jxx,Jyy,Jzz), reset_after,
-//   scale (0/1: face update from plant.i_face_sh with the Kelly law), face_sigma, i_face_norm (A, at 1 AU)
+//   scale (0/1: face update from plant.i_face_sh with the Kelly law), face_sigma, i_face_norm (A, at 1 AU),
+//   face_min (smallest relative response of a face used for the scale)
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -47,6 +48,7 @@ struct Options {
   ae::MekfConfig<double> filter;
   bool column_polarity = false;
   double i_face_norm = 0.84754;
+  double face_min = 0.45;
   double from = 0;
   std::string trace;
 };
@@ -71,7 +73,8 @@ Options parse(int argc, char** argv, std::string& file) {
     else if (k == "reset_after") f.reset_after = std::stoi(v);
     else if (k == "polarity") o.column_polarity = v == "column";
     else if (k == "i_face_norm") o.i_face_norm = std::stod(v);
-    else if (k == "euler" && v == "1") f.inertia = {3.2, 0.05, -0.02, 0.05, 2.9, 0.03, -0.02, 0.03, 3.6};
+    else if (k == "face_min") o.face_min = std::stod(v);
+    else if (k == "euler") { if (v == "1") f.inertia = {3.2, 0.05, -0.02, 0.05, 2.9, 0.03, -0.02, 0.03, 3.6}; }
     else if (k == "inertia_diag") {  // Jxx,Jyy,Jzz
       const auto c1 = v.find(','), c2 = v.find(',', c1 + 1);
       f.inertia = {std::stod(v.substr(0, c1)), 0, 0, 0, std::stod(v.substr(c1 + 1, c2 - c1 - 1)), 0, 0, 0,
@@ -155,7 +158,7 @@ int main(int argc, char** argv) try {
       const int lit = static_cast<int>((*lit_faces)[r]), rejected = static_cast<int>((*rejected_faces)[r]);
       for (int k = 0; k < 6; ++k) {
         in.face_r[k] = (*faces[k])[r] / (o.i_face_norm * au * au);
-        if ((lit >> k & 1) && !(rejected >> k & 1) && in.face_r[k] >= 0.45) in.face_use |= 1u << k;
+        if ((lit >> k & 1) && !(rejected >> k & 1) && in.face_r[k] >= o.face_min) in.face_use |= 1u << k;
       }
       in.response = &kelly;
     }

@@ -279,10 +279,14 @@ int mekf_update_faces(MekfState<T>& s, const Vec3<T>& sun_ref, const std::array<
     Eigen::Matrix<T, 1, 1> y;
     y(0) = r[static_cast<std::size_t>(k)] - gain * nominal;
     Eigen::Matrix<T, 1, kMekfStates> h = Eigen::Matrix<T, 1, kMekfStates>::Zero();
-    h.template block<1, 3>(0, kMekfAttitude) = gain * slope * normal.cross(sun).transpose();
+    // Only the scale is updated: the attitude enters through the prediction but its column is left out,
+    // so that the albedo on a face and the angular law's model error (which the scale cannot absorb)
+    // do not pull the attitude. The slope still counts in the innovation's variance.
+    const T attitude_variance = (gain * slope * normal.cross(sun)).squaredNorm() *
+                                (s.p[0] + s.p[kMekfStates + 1] + s.p[2 * kMekfStates + 2]) / T(3);
     h(0, kMekfScale) = nominal;
     Eigen::Matrix<T, 1, 1> rr;
-    rr(0, 0) = c.face_sigma * c.face_sigma;
+    rr(0, 0) = c.face_sigma * c.face_sigma + attitude_variance;
     if (linear_update<T, 1>(s, y, h, rr, c.face_gate).accepted) ++accepted;
   }
   return accepted;
