@@ -331,7 +331,10 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.output("rate_window_time", &D::rate_window_time, "s", "Time spanned by the averaged mean-rate increments")
         .discrete()
         .depends_on({});
-    t.output("rate_valid", &D::rate_valid, "", "rate_mean is valid (rate_window increments collected)")
+    t.output("rate_valid", &D::rate_valid, "",
+             "rate_mean is valid: rate_window increments collected, and neither the filter's rate nor a turn "
+             "between successive samples clearly above noise says one rate_interval may turn 90 deg or more "
+             "(the increments could alias; omega_filt holds there)")
         .discrete()
         .depends_on({});
 
@@ -505,7 +508,30 @@ void EstimatorBlock::update_rates(double t) {
     const MeanRate<double> mean = d.rate_state.result();
     d.rate_mean = mean.rate;
     d.rate_window_time = mean.window_seconds;
-    d.rate_valid = mean.valid;
+    // Aliasing: an increment rate_interval long reads the turn modulo 2π (folded beyond π), so rate_mean
+    // is not trusted when one increment may turn more than π/2 (margin for a rate that changes within
+    // the window). Two witnesses: the filter's rate when it runs, and the turn between successive
+    // single-frame estimates (averaged, α = 0.2) when it is clearly above their noise (0.1 rad per sample;
+    // below that a fast rate cannot be told from noise by this test: use omega_filt).
+    constexpr double kHalfPi = 1.5707963267948966;
+    constexpr double kStepNoise = 0.1;  // rad per sample
+    if (d.valid) {
+        if (d.rate_has_last && t - d.rate_last_t <= 1.5 * d.sample_period) {
+            double dot = 0.0;
+            for (std::size_t k = 0; k < 4; ++k) dot += d.rate_last_q[k] * d.q_est[k];
+            const double turn = 2.0 * std::acos(std::min(1.0, std::abs(dot)));
+            d.rate_step_turn += 0.2 * (turn - d.rate_step_turn);
+        }
+        d.rate_last_q = d.q_est;
+        d.rate_last_t = t;
+        d.rate_has_last = true;
+    }
+    const bool step_aliases = d.rate_step_turn >= kStepNoise &&
+                              d.rate_step_turn / d.sample_period * d.rate_interval >= kHalfPi;
+    const auto& f = d.filter_state;
+    const double filter_rate = std::sqrt(f.omega[0] * f.omega[0] + f.omega[1] * f.omega[1] + f.omega[2] * f.omega[2]);
+    const bool filter_aliases = d.filter == "mekf" && f.stage == 2 && filter_rate * d.rate_interval >= kHalfPi;
+    d.rate_valid = mean.valid && !step_aliases && !filter_aliases;
 
     // Spin rates (000 §4): the history of valid sun vectors; an invalid one empties the window (the FFT
     // needs evenly spaced samples).
@@ -554,6 +580,8 @@ void EstimatorBlock::initialize(double t) {
     d.history_head = 0;
     d.history_filled = 0;
     d.filter_state = {};
+    d.rate_has_last = false;
+    d.rate_step_turn = 0.0;
     take_sample(t);
     d.next_index = 1;
 }

@@ -172,3 +172,44 @@ TEST(EstimatorFmuFilter, SavedAndRestoredStateReplaysBitIdentically) {
 
 }  // namespace
 }  // namespace attitude_estimator
+
+namespace attitude_estimator {
+namespace {
+
+TEST(EstimatorFmuFilter, RateValidFalseWhereTheIntervalAliases) {
+    // 2π rad/s turns exactly once per second: every 2 s increment of rate_mean (004 eq. 4) reads a turn of
+    // 4π, i.e. none at all. The turn between samples (18 deg) says so, with and without the filter; the
+    // filter's rate is the right one.
+    for (const char* filter : {"none", "mekf"}) {
+        Truth truth;
+        truth.omega = 2.0 * std::numbers::pi * Eigen::Vector3d(0.2, -0.3, 0.93).normalized();
+        Simulation sim;
+        auto& d = sim.data();
+        d.filter = std::string_view(filter);
+        d.rate_interval = 2.0;
+        d.rate_window = 2;
+        d.filter_rate_noise = 0.01;
+        d.filter_sun_sigma = 0.002;
+        d.filter_mag_sigma = 0.1e-6;
+        feed(d, truth, 0.0);
+        sim.start();
+        bool mean_ready = false;
+        for (int k = 1; k <= 200; ++k) {  // 10 s
+            const double t = k * d.sample_period;
+            feed(d, truth, t);
+            sim.inputs_changed();
+            sim.advance_to(t);
+            mean_ready = mean_ready || d.rate_window_time > 0.0;
+            EXPECT_FALSE(d.rate_valid) << filter << " t = " << t << " rate_mean " << d.rate_mean;
+        }
+        EXPECT_TRUE(mean_ready);
+        EXPECT_LT(d.rate_mean, 0.1) << "the aliased increments read (almost) no turn";
+        if (d.filter == "mekf") {
+            const Eigen::Vector3d w(d.omega_filt[0], d.omega_filt[1], d.omega_filt[2]);
+            EXPECT_LT((w - truth.omega).norm(), 0.01 * truth.omega.norm());
+        }
+    }
+}
+
+}  // namespace
+}  // namespace attitude_estimator

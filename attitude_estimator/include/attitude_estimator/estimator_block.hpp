@@ -128,6 +128,12 @@ struct EstimatorData {
     std::int32_t history_head = 0;             // next write position
     std::int32_t history_filled = 0;           // consecutive valid samples in the ring (≤ spin_window)
     MekfState<double> filter_state{};          // the recursive filter (estimate and covariance)
+    // The turn between successive valid estimates one sample apart, smoothed: rate_mean's increments span
+    // rate_interval and alias when the turn over one of them nears π (rate_valid is then false).
+    std::array<double, 4> rate_last_q{0.0, 0.0, 0.0, 1.0};
+    double rate_last_t = 0.0;
+    bool rate_has_last = false;
+    double rate_step_turn = 0.0;               // rad per sample (exponential average)
 };
 
 // The FFTW workspace of the spin-rate analysis. Not part of the FMU state (the history it analyses is):
