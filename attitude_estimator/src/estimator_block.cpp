@@ -396,7 +396,13 @@ fmu::ModelInfo EstimatorBlock::describe() {
         "current of one panel at normal incidence and 1367 W/m<sup>2</sup>, current range &plusmn;1.2 A; "
         "magnetometer 0-5 V, 2.5 V reference, 1e4 V/T. In Co-Simulation the inputs are held over each "
         "communication step, so a sample on a communication point sees the inputs of the step that ends "
-        "there.</p>";
+        "there.</p>"
+        "<p>With <code>filter = mekf</code> a multiplicative extended Kalman filter runs beside the single-frame "
+        "estimate: attitude, body rate (kinematic, or Euler's equations when <code>inertia</code> is given), "
+        "magnetometer offset and a common panel scale, started from the Q-method and reset to it when its "
+        "innovation test says it diverged. Outputs <code>q_filt</code>, <code>omega_filt</code>, "
+        "<code>mag_offset_filt</code>, <code>panel_scale_filt</code>, the 3-sigma bound "
+        "<code>attitude_bound</code> and <code>filter_valid</code> (attitude_estimator/docs/filter.md).</p>";
     info.default_experiment = {.start_time = 0.0, .stop_time = 2.0, .tolerance = 1e-6, .step_size = 0.01};
     return info;
 }

@@ -30,7 +30,10 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("csv")
     ap.add_argument("--from", dest="t_from", type=float, default=0.0)
+    ap.add_argument("--trace", help="write time, filter error, 3-sigma bound, single-frame error (deg), lit")
+    ap.add_argument("--every", type=int, default=1, help="write every n-th row to the trace")
     args = ap.parse_args()
+    trace = open(args.trace, "w") if args.trace else None
     rows = list(csv.DictReader(open(args.csv)))
     q = lambda r, name: [float(r[f"{name}[{i}]"]) for i in range(1, 5)]
     single = {"lit": [], "dark": []}
@@ -52,7 +55,11 @@ def main():
         if float(r["est.filter_valid"]) > 0.5:
             filter_valid += 1
             filt[key].append(err)
-        covered += err <= math.degrees(float(r["est.attitude_bound"]))
+        bound = math.degrees(float(r["est.attitude_bound"]))
+        covered += err <= bound
+        if trace and total % args.every == 0:
+            single_err = angle_deg(truth, q(r, "est.q_est")) if float(r["est.valid"]) > 0.5 else float("nan")
+            trace.write(f"{t:.2f} {err:.4f} {bound:.4f} {single_err:.4f} {int(lit)}\n")
         if "env.omega_body[1]" in r:
             w = [float(r[f"est.omega_filt[{i}]"]) - float(r[f"env.omega_body[{i}]"]) for i in range(1, 4)]
             rate_err.append(math.degrees(math.sqrt(sum(x * x for x in w))))
