@@ -85,6 +85,11 @@ struct EstimatorData {
     double filter_face_sigma = 0.02;        // 1: relative face response noise and model error, 1σ
     std::array<double, 9> inertia{};        // kg m², row-major; all zero = kinematic rate model
     std::int32_t filter_reset_after = 40;   // samples with every update refused before a reset
+    // HMC2003 set/reset (set_reset.hpp): pulse every this many samples and average the offset over this
+    // many set/reset pairs. 0 (default): no pulses, the offset stays in the field — the safe default for a
+    // magnetometer whose set_reset_command is not wired to mag_set_reset (its readings never flip).
+    std::int32_t mag_set_reset_samples = 0;
+    std::int32_t mag_offset_window = 20;
 
     // outputs (discrete: set at sample instants, held in between). Before the first sample: identity.
     std::array<double, 4> q_est{0.0, 0.0, 0.0, 1.0};  // scalar-last [x, y, z, w], w >= 0
@@ -111,11 +116,13 @@ struct EstimatorData {
     bool rate_valid = false;
     std::array<double, 4> q_filt{0.0, 0.0, 0.0, 1.0};  // filter attitude, scalar-last, w >= 0
     Vec3d omega_filt{};             // rad/s, filter body rate
-    Vec3d mag_offset_filt{};        // V: estimated magnetometer offset (as it appears after a set pulse)
+    Vec3d mag_offset_filt{};        // V: the filter's estimate of the offset left after mag_offset is taken out
     double panel_scale_filt = 0.0;  // 1: estimated common panel scale error ε (currents (1 + ε) × nominal)
     double attitude_bound = 0.0;    // rad: 3σ bound on the filter's attitude error
     bool filter_valid = false;
     std::int32_t filter_resets = 0; // divergence resets so far
+    bool mag_set_reset = true;        // the set/reset pulse commanded last: true set, false reset (to the sensor)
+    Vec3d mag_offset{};               // V, the sensor offset estimated from set/reset pairs
 
     // discrete state
     double t_start = 0.0;  // s, the start time: sample k is due at t_start + k·sample_period
@@ -134,6 +141,7 @@ struct EstimatorData {
     double rate_last_t = 0.0;
     bool rate_has_last = false;
     double rate_step_turn = 0.0;               // rad per sample (exponential average)
+    SetResetState<double> set_reset{};         // the sensor's polarity as commanded, the offset estimate
 };
 
 // The FFTW workspace of the spin-rate analysis. Not part of the FMU state (the history it analyses is):
@@ -160,11 +168,12 @@ public:
     fmu::EventUpdate event_update(double t, bool time_event_due) override;
     double next_time_event() const override;
     void validate() const override;
+    void check_state() const override;
 
 private:
     void take_sample(double t);
     void update_rates(double t);
-    void update_filter(double t, const SampleResult<double>& r, const EstimatorConfig<double>& nominal);
+    void update_filter(double t, const SampleResult<double>& r, const EstimatorConfig<double>& nominal, double polarity);
 
     SpinWorkspace spin_;
 };
