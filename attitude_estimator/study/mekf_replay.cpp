@@ -6,7 +6,7 @@
 //
 //   attitude_estimator_mekf_replay run.csv [--from T] [--trace out.csv] [key=value ...]
 //   keys: sun_sigma, mag_sigma (T), rate_noise, attitude_noise, offset (0/1), polarity (plus | column:
-//   mag.set_polarity), euler (0/1: the environment's default inertia), inertia_diag (Jxx,Jyy,Jzz), reset_after,
+//   est.mag_set_reset of the row before), euler (0/1: the environment's default inertia), inertia_diag (Jxx,Jyy,Jzz), reset_after,
 //   scale (0/1: face update from plant.i_face_sh with the Kelly law), face_sigma, i_face_norm (A, at 1 AU),
 //   face_min (smallest relative response of a face used for the scale)
 #include <algorithm>
@@ -128,7 +128,8 @@ int main(int argc, char** argv) try {
     mag_field[k] = &col("est.mag_field" + i);
     omega[k] = &col("env.omega_body" + i);
   }
-  const std::vector<double>* polarity = o.column_polarity ? &col("mag.set_polarity") : nullptr;
+  // est.mag_set_reset of a row is the pulse commanded after that sample: the polarity of the next reading.
+  const std::vector<double>* polarity = o.column_polarity ? &col("est.mag_set_reset") : nullptr;
   const std::vector<double>* irradiance = have_irradiance ? &col("env.irradiance") : nullptr;
   const std::vector<double>* distance = nullptr;
   const std::vector<double>* lit_faces = nullptr;
@@ -152,7 +153,7 @@ int main(int argc, char** argv) try {
       in.mag_ref[k] = (*mag_ref[k])[r];
       in.mag_body[k] = (*mag_field[k])[r];
     }
-    in.polarity = polarity ? ((*polarity)[r] > 0.5 ? 1.0 : -1.0) : 1.0;
+    in.polarity = (polarity && r > 0) ? ((*polarity)[r - 1] > 0.5 ? 1.0 : -1.0) : 1.0;
     if (o.filter.estimate_scale) {
       const double au = kAu / (*distance)[r];
       const int lit = static_cast<int>((*lit_faces)[r]), rejected = static_cast<int>((*rejected_faces)[r]);
