@@ -133,12 +133,17 @@ TEST(E2eFastVsReference, SeedSpinAgreesWithTheReferenceExecution) {
     expect_agreement(fast, ref, true, 0.05);
 }
 
+// As bundled, with the latched modulator. Its pulse pattern is irregular, so a change in the last bits
+// of the trajectory can leave one run's sample/hold a PWM period older than the other's at a sample:
+// the sun then differs by up to the spin over one period, |w| T = 6.4 rad/s x 200 us = 0.073 deg, plus
+// a 12-bit step of the converter (0.04 deg): 0.12 deg sample by sample, the attitude error compared by
+// its median and 95th percentile (within 0.05 deg), the bus by its mean.
 TEST(E2eFastVsReference, SeedSpinAsBundledAgreesWithTheReferenceExecution) {
     // Rows every 1 ms (every estimator sample among them): the mean over 1000 rows averages the sub-harmonic.
     const Outcome fast = run("seed_spin.ssd", 1.0, 0.001, false);
     const Outcome ref = run("seed_spin.ssd", 1.0, 0.001, true);
     EXPECT_EQ(ref.pwm_period, 5000);
-    expect_agreement(fast, ref, true, 0.05, false);
+    expect_agreement(fast, ref, false, 0.12, false);
 }
 
 // The orbit with its rigid body, IGRF, albedo, averaged plant and magnetometer noise, over the first
