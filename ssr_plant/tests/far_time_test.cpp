@@ -13,11 +13,15 @@ using namespace ssr_plant;
 constexpr double T = 1.0 / 5000.0;  // seed PWM period
 
 TEST(SsrCorePlantFarTime, SteppedOverPeriodsAreSkippedAtOnce) {
-    const Model m = make_model(Parameters{});
+    // The regular modulator: both edges are time events, the off edge at D T into the period.
+    Parameters p;
+    p.modulation = Modulation::regular;
+    p.controller_gain = 3.0;  // 1/V
+    const Model m = make_model(p);
     Inputs u;
     u.sun_body = {1, 0, 0};
     u.irradiance = 1367.0;
-    State x{15.2, 0.9};  // D = 0.6 (hand: 300 %/V · 0.2 V)
+    State x{15.2, 0.9};  // D = 0.6 (hand: 3 /V · 0.2 V)
     DiscreteState d = initialize(m, u, 0.0, x);
     // Jump to 1e7 periods + 0.1 T: by hand, period 1e7 is in progress, its off edge (0.6 T in) is next.
     const double t = (1e7 + 0.1) * T;
