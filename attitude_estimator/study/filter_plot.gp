@@ -7,7 +7,7 @@ set xlabel "time (s)"
 set ylabel "attitude error (deg)"
 set logscale y
 set yrange [0.01:100]
-set key top left
+set key bottom right opaque
 set grid
 plot trace using 1:($5 < 0.5 ? 50 : 1/0) with points pt 7 ps 0.3 lc rgb "#999999" title "eclipse", \
      trace using 1:4 with points pt 7 ps 0.2 lc rgb "#e08000" title "single-frame (cones)", \

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -163,6 +164,17 @@ TEST(EstimatorFmuFilter, SavedAndRestoredStateReplaysBitIdentically) {
         b.advance_to(t);
     }
     EXPECT_TRUE(a.data().filter_valid);
+    // A restored state is checked (fmi2DeSerializeFMUstate): a running filter passes, a broken one not.
+    EXPECT_NO_THROW(a.runner.model().check_state());
+    {
+        const auto broken = a.runner.model().clone();
+        auto& bd = static_cast<EstimatorBlock&>(*broken).data();
+        bd.filter_state.p[5] = std::numeric_limits<double>::quiet_NaN();
+        EXPECT_THROW(broken->check_state(), fmu::Error);
+        bd.filter_state.p[5] = 0.0;
+        bd.filter_state.stage = 3;
+        EXPECT_THROW(broken->check_state(), fmu::Error);
+    }
     const auto ea = a.runner.model().bytes();
     const auto eb = b.runner.model().bytes();
     EXPECT_EQ(std::memcmp(ea.data(), eb.data(), ea.size()), 0);
