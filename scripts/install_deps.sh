@@ -14,6 +14,7 @@ packages=(
   libfftw3-dev        # spin-rate estimation from the acquired sun vector
   gnuplot-nox         # cosim plot
   zip unzip
+  clang libclang-rt-14-dev   # libFuzzer with ASan and UBSan (scripts/fuzz.sh, fuzz/)
 )
 
 missing=()
