@@ -12,7 +12,9 @@ packages=(
   libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libfftw3-dev        # spin-rate estimation from the acquired sun vector
-  gnuplot-nox         # cosim plot
+  gnuplot-nox         # cosim plot, cosim campaign figures
+  libtomlplusplus-dev # cosim campaign specs (TOML)
+  libopenmpi-dev openmpi-bin  # cosim campaign over MPI ranks (build option PVATT_MPI)
   zip unzip
   clang libclang-rt-14-dev   # libFuzzer with ASan and UBSan (scripts/fuzz.sh, fuzz/)
 )

@@ -286,7 +286,28 @@ void Instance::set_real(std::span<const fmi2ValueReference> vr, const fmi2Real* 
             if (!std::isfinite(x)) throw Error(v.name + " cannot be set to " + format_real(x) + " (not finite)");
             check_range(v, x);
         },
-        [&](const Variable& v, double x) { write_real(runner_.model().bytes(), v, x); });
+        [&](const Variable& v, double x) {
+            write_real(runner_.model().bytes(), v, x);
+            if (v.causality == Causality::input) runner_.input_value_set(static_cast<std::size_t>(&v - runner_.table().variables().data()));
+        });
+}
+void Instance::set_real_input_derivatives(std::span<const fmi2ValueReference> vr, const fmi2Integer* order,
+                                          const fmi2Real* values) {
+    require_arrays(vr, values);
+    require_arrays(vr, order);
+    for (std::size_t i = 0; i < vr.size(); ++i) {
+        const Variable& v = variable(vr[i], ValueType::Real);
+        if (v.causality != Causality::input || v.variability != Variability::continuous)
+            throw Error("fmi2SetRealInputDerivatives: " + v.name + " is not a continuous Real input");
+        // Inputs are interpolated linearly over a step; a higher derivative would be silently ignored.
+        if (order[i] != 1)
+            throw Error("fmi2SetRealInputDerivatives: order " + std::to_string(order[i]) + " for " + v.name +
+                        " (this FMU interpolates inputs linearly: only order 1)");
+        if (!std::isfinite(values[i])) throw Error("fmi2SetRealInputDerivatives: the derivative of " + v.name + " is not finite");
+    }
+    for (std::size_t i = 0; i < vr.size(); ++i) runner_.set_input_slope(vr[i], values[i]);
+    runner_.mark_changed();
+    if (cs_solver_) cs_solver_->invalidate();
 }
 
 void Instance::set_integer(std::span<const fmi2ValueReference> vr, const fmi2Integer* values) {
@@ -498,6 +519,7 @@ fmi2Status Instance::do_step(double current_time, double step_size) {
         runner_.set_time(current_time);
         cs_solver_->invalidate();  // inputs may have jumped at the communication point
         const auto outcome = cs_solver_->advance(current_time + step_size);
+        runner_.clear_input_slopes();  // given for this step; the inputs stay at their values at its end
         last_successful_time_ = runner_.time();
         if (outcome == CsSolver::Outcome::terminated) {
             terminate_requested_ = true;

@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <iostream>
 
+#include "campaign_command.hpp"
 #include "cosim_error.hpp"
 #include "fmi_loader/loader_error.hpp"
 #include "info_command.hpp"
@@ -40,8 +41,10 @@ int main(int argc, char** argv) {
     run->add_option("--stop-time", run_options.stop_time, "Stop time in s (default: the .ssd's DefaultExperiment)");
     run->add_option("--output", run_csv, "CSV results file");
     run->add_option("--output-interval", run_options.output_interval,
-                    "Output interval in s (default: the smallest DefaultExperiment stepSize of the FMUs)");
-    run->add_option("--step", run_options.communication_step, "Communication step of Co-Simulation components");
+                    "Output interval in s (default: the .ssd's, else the FMUs' smallest DefaultExperiment stepSize "
+                    "but no finer than a thousandth of the run)");
+    run->add_option("--step", run_options.communication_step,
+                    "Communication step of every Co-Simulation component (default: the .ssd's, else the output interval)");
     run->add_option("--tolerance", run_options.tolerance, "Relative tolerance (default: the FMUs' smallest)");
     run->add_option("--set", run_options.system.settings, "component.variable=value before initialization (repeatable)");
     run->add_option("--cs", run_options.system.co_simulation, "Run this component through its Co-Simulation interface");
@@ -54,6 +57,9 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0, 65535));
     run->add_flag("--realtime", run_options.realtime, "Pace simulated time to the wall clock");
     run->add_flag("--event-rows", run_options.event_rows, "Add CSV rows just before and after each event");
+    run->add_flag("--reference", run_options.reference,
+                  "The reference execution: every component as Model Exchange, every event through every component "
+                  "with an integrator restart, every output point a stop (slow; to check the fast path against)");
     run->add_flag("--force", run_options.force,
                   "Run even with more than 1e8 output or communication points, or a CSV larger than the free disk space");
 
@@ -62,10 +68,31 @@ int main(int argc, char** argv) {
     plot->add_option("csv", plot_csv, "Results CSV written by cosim run")->required();
     plot->add_option("--out-dir", plot_dir, "Folder for the PNG files")->capture_default_str();
 
+    campaign::CampaignOptions campaign_options;
+    std::string spec_path, campaign_output;
+    std::vector<std::string> campaign_fmu_dirs;
+    auto* campaign = app.add_subcommand("campaign", "Run a Monte-Carlo campaign of a system (harness/campaign/README.md)");
+    campaign->add_option("spec", spec_path, "The campaign spec (TOML)")->required();
+    campaign->add_option("--runs", campaign_options.runs, "Number of runs (replaces the spec's)");
+    campaign->add_option("--stop-time", campaign_options.stop_time, "Stop time in s (replaces the spec's)");
+    campaign->add_option("--output", campaign_output, "Folder of the results table, summary and figures");
+    campaign->add_option("--fmu-dir", campaign_fmu_dirs, "Where to look for FMUs not found beside the .ssd")
+        ->default_val(std::vector<std::string>{PVATT_DEFAULT_FMU_DIR});
+    campaign->add_option("--set", campaign_options.settings, "component.variable=value for every run (repeatable)");
+    campaign->add_option("--run", campaign_options.replay, "Replay this run alone, writing its full CSV");
+    campaign->add_flag("--resume", campaign_options.resume, "Continue the campaign of the results table in the output folder");
+    campaign->add_flag("!--no-figures", campaign_options.figures, "Skip the PNG figures");
+
     CLI11_PARSE(app, argc, argv);
     cosim::install_interrupt_handlers();
     try {
         if (*info) cosim::print_info(info_path, std::cout);
+        if (*campaign) {
+            campaign_options.spec = spec_path;
+            if (!campaign_output.empty()) campaign_options.output = campaign_output;
+            for (const auto& d : campaign_fmu_dirs) campaign_options.fmu_dirs.emplace_back(d);
+            return campaign::run_campaign(campaign_options, std::cout);
+        }
         if (*run) {
             run_options.ssd = ssd_path;
             if (!run_csv.empty()) run_options.csv = run_csv;

@@ -112,6 +112,11 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
     check_co_simulation_names(description, options.system.co_simulation);
     SystemOptions system_options = options.system;
     if (options.tolerance) system_options.tolerance = options.tolerance;
+    if (options.communication_step) system_options.communication_step = options.communication_step;
+    if (options.reference) {
+        if (!system_options.co_simulation.empty()) throw CosimError("--reference runs every component as Model Exchange: drop --cs");
+        system_options.model_exchange_only = true;
+    }
     const auto stop = options.stop_time ? options.stop_time : description.stop_time;
     if (!stop) throw CosimError(options.ssd.string() + " has no DefaultExperiment stopTime: give --stop-time");
     check_time("--stop-time", *stop);
@@ -122,12 +127,16 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
     ex.stop_time = *stop;
     double interval = std::numeric_limits<double>::infinity(), tolerance = 1e-6;
     defaults_from_components(system, interval, tolerance);
-    if (!std::isfinite(interval)) interval = (ex.stop_time - ex.start_time) / 500.0;
+    // The .ssd's own output interval, else no finer than a thousandth of the run: an orbit at the FMUs'
+    // 1 ms default would write millions of rows.
+    const double span = ex.stop_time - ex.start_time;
+    if (description.output_interval) interval = *description.output_interval;
+    else if (!std::isfinite(interval) || interval < span / 1000.0) interval = span / 1000.0;
     ex.output_interval = options.output_interval.value_or(interval);
     ex.relative_tolerance = options.tolerance.value_or(tolerance);
-    ex.communication_step = options.communication_step;
     ex.realtime = options.realtime;
     ex.event_rows = options.event_rows;
+    ex.reference = options.reference;
     check_intervals(ex, options.force);
 
     const bool tty = options.progress && isatty(fileno(stderr));
@@ -178,7 +187,7 @@ void print_statistics(const RunStatistics& s, std::ostream& out) {
         << (s.terminated_early ? ", stopped early at a component's request" : "") << "\n";
     out << "integrator steps " << s.integrator_steps << ", right-hand sides " << s.rhs_evaluations << ", time events "
         << s.time_events << ", state events " << s.state_events << ", step events " << s.step_events
-        << ", communication points " << s.communication_points << "\n";
+        << ", communication points " << s.communication_points << ", integrator restarts " << s.restarts << "\n";
     if (s.late_realtime_points) out << "real-time: " << s.late_realtime_points << " output points were late\n";
     for (const auto& c : s.components) {
         out << "  " << std::left << std::setw(20) << c.name << std::right;

@@ -20,6 +20,7 @@ struct RunOptions {
     std::vector<std::string> columns;
     bool realtime = false;
     bool event_rows = false;
+    bool reference = false;  // the reference execution (every component Model Exchange, every event everywhere)
     bool progress = true;  // a progress bar when stderr is a terminal and the run is long
     bool force = false;    // run even past max_run_points or a CSV larger than the free disk space
 };

@@ -75,14 +75,25 @@ double shunt_fraction(const Model& m, const DiscreteState& d, double v_bus) {
     return d.gate ? 1.0 : 0.0;
 }
 
-// Starts PWM period k at its start time: sample the controller, turn the gate on for the pulse.
+// Starts PWM period k at its start time: sample the controller, turn the gate on for the pulse. Regular
+// modulation schedules the trailing edge at D·T; latched_natural leaves it to the comparator (a state event).
 void start_period(const Model& m, DiscreteState& d, std::int64_t k, double v_bus) {
     d.period_index = k;
     d.duty = effective_duty(m, controller_duty(m.parameters, v_bus));
     d.gate = d.duty > 0.0;
-    d.off_edge_pending = d.duty > 0.0 && d.duty < 1.0;
+    d.off_edge_pending = m.parameters.modulation == Modulation::regular && d.duty > 0.0 && d.duty < 1.0;
     d.next_event_time = d.off_edge_pending ? period_start(d, m, k) + d.duty * m.pwm_period
                                            : period_start(d, m, k + 1);
+}
+
+// The latched_natural comparator: live controller output minus the carrier of the period in progress.
+double comparator(const Model& m, const DiscreteState& d, double t, double v_bus) {
+    return controller_duty(m.parameters, v_bus) - (t - period_start(d, m, d.period_index)) / m.pwm_period;
+}
+
+bool comparator_armed(const Model& m, const DiscreteState& d) {
+    return m.parameters.fidelity == Fidelity::switching && m.parameters.modulation == Modulation::latched_natural &&
+           d.gate;
 }
 
 void update_charge_switch(const Model& m, DiscreteState& d, double soc) {
@@ -255,9 +266,10 @@ Outputs outputs(const Model& m, const Inputs& u, const DiscreteState& d, double 
     return evaluate(m, illuminate(m, u), d, t, x).outputs;
 }
 
-Indicators event_indicators(const Model& m, const Inputs&, const DiscreteState& d, double, const State& x) {
+Indicators event_indicators(const Model& m, const Inputs&, const DiscreteState& d, double t, const State& x) {
     const auto& b = m.parameters.battery;
-    return {d.charge_connected ? b.soc_disconnect - x[state_soc] : x[state_soc] - b.soc_connect};
+    return {d.charge_connected ? b.soc_disconnect - x[state_soc] : x[state_soc] - b.soc_connect,
+            comparator_armed(m, d) ? comparator(m, d, t, x[state_v_bus]) : 1.0};
 }
 
 double next_time_event(const Model& m, const DiscreteState& d) {
@@ -298,6 +310,12 @@ EventResult event_update(const Model& m, const Illumination& l, const DiscreteSt
                 start_period(m, d, d.period_index + 1, x[state_v_bus]);  // controller sample (digital P)
                 if (gate_before && !d.gate) d.held_face_current = l.i_shunt;
             }
+        }
+        // latched_natural: the comparator's trailing edge (the indicator reached 0; the tolerance is the
+        // carrier's rise over the time tolerance of a PWM edge). Latched: off until the next period start.
+        if (comparator_armed(m, d) && comparator(m, d, t, x[state_v_bus]) <= edge_tolerance(m, t) / m.pwm_period) {
+            d.gate = false;
+            d.held_face_current = l.i_shunt;  // the S/H holds what it tracked up to this instant
         }
     }
     update_charge_switch(m, d, x[state_soc]);

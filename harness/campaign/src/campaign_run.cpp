@@ -1,0 +1,111 @@
+#include "campaign_run.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+
+#include "campaign_error.hpp"
+#include "draws.hpp"
+#include "execution.hpp"
+#include "metric_observer.hpp"
+#include "observer.hpp"
+
+namespace campaign {
+
+namespace {
+
+// The variable a "component.variable=value" setting names.
+std::string setting_variable(const std::string& setting) { return setting.substr(0, setting.find('=')); }
+
+void check_variable(const cosim::System& system, const std::string& name, const std::string& what) {
+    const auto dot = name.find('.');
+    const std::size_t c = system.component_index(name.substr(0, dot));
+    const auto* v = system.components()[c].description().find_variable(name.substr(dot + 1));
+    if (!v) throw CampaignError(what + ": no variable '" + name + "' in " + system.description().file.string());
+    using fmi_loader::Causality;
+    if (v->causality == Causality::output || v->causality == Causality::calculated_parameter ||
+        v->causality == Causality::independent)
+        throw CampaignError(what + ": '" + name + "' is computed by its FMU and cannot be set");
+}
+
+}  // namespace
+
+CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path>& fmu_dirs,
+                      const std::vector<std::string>& extra_settings) {
+    CampaignSetup s;
+    s.description = cosim::read_system_description(spec.system);
+    s.options.fmu_dirs = spec.fmu_dirs;
+    s.options.fmu_dirs.insert(s.options.fmu_dirs.end(), fmu_dirs.begin(), fmu_dirs.end());
+    s.options.settings = spec.settings;
+    for (const auto& setting : extra_settings) {
+        for (const auto& d : spec.draws)
+            for (const auto& v : drawn_variables(d))
+                if (setting_variable(setting) == v)
+                    throw CampaignError("--set " + setting + ": '" + v + "' is drawn by the spec; remove the draw or the --set");
+        s.options.settings.push_back(setting);
+    }
+    s.options.tolerance = spec.tolerance;
+
+    const cosim::System system(s.description, s.options);
+    for (const auto& setting : s.options.settings) check_variable(system, setting_variable(setting), "[set]");
+    for (const auto& d : spec.draws)
+        for (const auto& v : drawn_variables(d)) check_variable(system, v, "draw of " + d.target);
+    const MetricObserver check_metrics(spec.metrics, system);
+
+    s.start_time = s.description.start_time.value_or(0.0);
+    const auto stop = spec.stop_time ? spec.stop_time : s.description.stop_time;
+    if (!stop) throw CampaignError(spec.system.string() + " has no DefaultExperiment stopTime: give stop_time in the spec");
+    s.stop_time = *stop;
+    if (!(s.stop_time > s.start_time)) throw CampaignError("the stop time must be after the start time");
+    double interval = std::numeric_limits<double>::infinity(), tolerance = 1e-6;
+    for (const auto& c : system.components()) {
+        const auto& ex = c.description().default_experiment;
+        if (!ex) continue;
+        if (ex->step_size && *ex->step_size > 0) interval = std::min(interval, *ex->step_size);
+        if (ex->tolerance && *ex->tolerance > 0) tolerance = std::min(tolerance, *ex->tolerance);
+    }
+    if (!std::isfinite(interval)) interval = (s.stop_time - s.start_time) / 500.0;
+    s.output_interval = spec.output_interval.value_or(interval);
+    s.tolerance = spec.tolerance.value_or(tolerance);
+    s.spec = std::move(spec);
+    return s;
+}
+
+RunResult run_one(const CampaignSetup& setup, long index, const std::optional<std::filesystem::path>& full_csv) {
+    const auto started = std::chrono::steady_clock::now();
+    RunResult r;
+    r.index = index;
+    const RunDraws draws = draw_run(setup.spec, index);
+    r.draw_cells = draws.cells;
+    try {
+        cosim::SystemOptions options = setup.options;
+        options.settings.insert(options.settings.end(), draws.settings.begin(), draws.settings.end());
+        cosim::System system(setup.description, options);
+        MetricObserver metrics(setup.spec.metrics, system);
+        std::vector<cosim::Observer*> observers = {&metrics};
+        std::unique_ptr<cosim::CsvWriter> csv;
+        if (full_csv) {
+            csv = std::make_unique<cosim::CsvWriter>(*full_csv, system, std::vector<std::string>{});
+            observers.push_back(csv.get());
+        }
+        cosim::ExecutionOptions ex;
+        ex.start_time = setup.start_time;
+        ex.stop_time = setup.stop_time;
+        ex.output_interval = setup.output_interval;
+        ex.relative_tolerance = setup.tolerance;
+        const auto stats = cosim::Execution(system, ex).run(observers);
+        r.metric_cells = metrics.cells();
+        r.status = stats.terminated_early ? "stopped" : "ok";
+        if (stats.terminated_early)
+            r.message = "a component ended the run at t = " + std::to_string(stats.simulated_time) + " s";
+    } catch (const std::exception& e) {
+        r.status = "failed";
+        r.message = e.what();
+        r.metric_cells.assign(metric_columns(setup.spec).size(), "");
+    }
+    r.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return r;
+}
+
+}  // namespace campaign

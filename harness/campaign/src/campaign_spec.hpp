@@ -1,0 +1,72 @@
+// A campaign as plain data: the system, the run count and seed, fixed settings, the quantities drawn
+// per run and the metrics measured in each run. Read from a TOML file (README.md of this folder
+// describes every key); every unknown key, wrong type or impossible range is an error naming the file,
+// the entry and the cause, so a typo never silently leaves a quantity undrawn.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace campaign {
+
+enum class DrawKind { uniform, normal, integer, choice, grid, quaternion, tumble, epoch };
+
+// A scalar value as the spec gives it: a number keeps its text for --set, a string is a string.
+struct SpecValue {
+    std::string text;      // what is passed to the FMU ("0.5", "cones", "true")
+    bool numeric = false;  // a TOML integer or float (plotted as a number)
+    double number = 0.0;
+};
+
+struct Draw {
+    DrawKind kind = DrawKind::uniform;
+    std::string target;  // "component.variable" or, for quaternion/tumble/epoch, the variable prefix
+    double min = 0.0, max = 0.0;           // uniform, integer (inclusive), tumble rate; normal truncation
+    double mean = 0.0, sd = 0.0;           // normal
+    bool truncated_below = false, truncated_above = false;  // normal
+    std::vector<SpecValue> values;         // choice, grid
+    std::vector<double> weights;           // choice (empty: equal)
+    double epoch_from = 0.0, epoch_to = 0.0;  // epoch: seconds since 1970-01-01T00:00:00 UTC
+    bool figure = true;                    // draw the metrics against it (false for a noise seed)
+};
+
+enum class MetricKind { quaternion_angle, vector_angle, column };
+
+struct Metric {
+    std::string name;
+    MetricKind kind = MetricKind::column;
+    std::string a, b;         // angle metrics: the two column groups' prefixes; column: a is the column
+    std::string valid;        // sample only while this column is true / nonzero ("" = always)
+    std::string when;         // sample only where this column changed since the last output point
+    double after = 0.0;       // ignore output points before this time (s)
+    std::vector<std::string> stats;  // mean, rms, min, max, final, count, pNN
+    std::string figure_stat;  // the per-run value plotted against the drawn quantities
+};
+
+struct CampaignSpec {
+    std::filesystem::path file;
+    std::filesystem::path system;       // .ssd, resolved against the spec's folder
+    std::optional<double> stop_time;    // default: the .ssd's DefaultExperiment stopTime
+    std::optional<double> output_interval, tolerance;
+    long runs = 0;
+    std::uint64_t seed = 0;
+    bool paired = false;                // random draws per scene: every grid combination sees the same scenes
+    std::vector<std::filesystem::path> fmu_dirs;
+    std::filesystem::path output;       // default: "<spec name>_results" in the working directory
+    std::vector<std::string> settings;  // "component.variable=value", before the draws
+    std::vector<Draw> draws;
+    std::vector<Metric> metrics;
+};
+
+// Limits, named in the errors that enforce them.
+inline constexpr long max_runs = 100'000'000;
+inline constexpr double min_truncated_normal_mass = 1e-3;  // rejection sampling stays cheap
+
+CampaignSpec read_spec(const std::filesystem::path& file);
+// The same from text (tests); `file` only names the source in errors and anchors relative paths.
+CampaignSpec parse_spec(const std::string& text, const std::filesystem::path& file);
+
+}  // namespace campaign

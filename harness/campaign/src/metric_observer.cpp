@@ -1,0 +1,115 @@
+#include "metric_observer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "campaign_error.hpp"
+#include "plot_command.hpp"
+#include "statistics.hpp"
+#include "value_text.hpp"
+
+namespace campaign {
+
+namespace {
+
+std::vector<std::string> group(const std::string& prefix, int n) {
+    std::vector<std::string> out;
+    for (int i = 1; i <= n; ++i) out.push_back(prefix + "[" + std::to_string(i) + "]");
+    return out;
+}
+
+double vector_angle_degrees(const double a[3], const double b[3]) {
+    const double dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    const double na = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    const double nb = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+    return std::acos(std::clamp(dot / (na * nb), -1.0, 1.0)) * 180.0 / std::numbers::pi;
+}
+
+}  // namespace
+
+std::vector<std::string> metric_columns(const CampaignSpec& spec) {
+    std::vector<std::string> out;
+    for (const auto& m : spec.metrics)
+        for (const auto& s : m.stats) out.push_back(m.name + "." + s);
+    return out;
+}
+
+MetricObserver::Column MetricObserver::resolve(const cosim::System& system, const std::string& name, const std::string& metric) {
+    const auto dot = name.find('.');
+    const auto& components = system.components();
+    std::size_t index = components.size();
+    for (std::size_t i = 0; i < components.size(); ++i)
+        if (components[i].name == name.substr(0, dot)) index = i;
+    if (index == components.size()) throw CampaignError("metric " + metric + ": no component named '" + name.substr(0, dot) + "'");
+    const auto* v = components[index].description().find_variable(name.substr(dot + 1));
+    if (!v) throw CampaignError("metric " + metric + ": no variable '" + name + "'");
+    if (v->type == fmi_loader::VariableType::string) throw CampaignError("metric " + metric + ": '" + name + "' is a String");
+    return {index, v};
+}
+
+double MetricObserver::read(cosim::System& system, const Column& c) {
+    auto& instance = *system.components()[c.component].instance;
+    switch (c.variable->type) {
+        case fmi_loader::VariableType::real: return instance.get_real(c.variable->value_reference);
+        case fmi_loader::VariableType::boolean: return instance.get_boolean(c.variable->value_reference) ? 1.0 : 0.0;
+        default: return static_cast<double>(instance.get_integer(c.variable->value_reference));
+    }
+}
+
+MetricObserver::MetricObserver(const std::vector<Metric>& metrics, const cosim::System& system) {
+    for (const auto& m : metrics) {
+        Tracked t{&m, {}, {}, {}, {}, {}, {}};
+        const int n = m.kind == MetricKind::quaternion_angle ? 4 : 3;
+        if (m.kind == MetricKind::column) {
+            t.a.push_back(resolve(system, m.a, m.name));
+        } else {
+            for (const auto& c : group(m.a, n)) t.a.push_back(resolve(system, c, m.name));
+            for (const auto& c : group(m.b, n)) t.b.push_back(resolve(system, c, m.name));
+        }
+        if (!m.valid.empty()) t.valid = resolve(system, m.valid, m.name);
+        if (!m.when.empty()) t.when = resolve(system, m.when, m.name);
+        tracked_.push_back(std::move(t));
+    }
+}
+
+void MetricObserver::sample(double t, cosim::System& system) {
+    for (auto& k : tracked_) {
+        const Metric& m = *k.metric;
+        // The change detector follows every output point, also those before `after` or while invalid,
+        // so that a new estimate is recognised by comparison with the previous point.
+        bool changed = true;
+        if (k.when) {
+            const double w = read(system, *k.when);
+            changed = !k.last_when || w != *k.last_when;
+            k.last_when = w;
+        }
+        if (!changed || t < m.after) continue;
+        if (k.valid && read(system, *k.valid) == 0.0) continue;
+        double value = 0.0;
+        if (m.kind == MetricKind::column) {
+            value = read(system, k.a[0]);
+        } else {
+            double a[4], b[4];
+            for (std::size_t i = 0; i < k.a.size(); ++i) {
+                a[i] = read(system, k.a[i]);
+                b[i] = read(system, k.b[i]);
+            }
+            value = m.kind == MetricKind::quaternion_angle ? cosim::attitude_error_degrees(a, b) : vector_angle_degrees(a, b);
+        }
+        if (!std::isfinite(value)) continue;  // a zero vector or quaternion has no angle
+        if (k.values.size() == max_metric_samples)
+            throw CampaignError("metric " + m.name + ": more than " + std::to_string(max_metric_samples) +
+                                " samples in one run (max_metric_samples): sample less often (output_interval, when)");
+        k.values.push_back(value);
+    }
+}
+
+std::vector<std::string> MetricObserver::cells() const {
+    std::vector<std::string> out;
+    for (const auto& k : tracked_)
+        for (const auto& s : k.metric->stats) out.push_back(cosim::format_real(statistic(s, k.values)));
+    return out;
+}
+
+}  // namespace campaign

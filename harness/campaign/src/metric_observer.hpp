@@ -1,0 +1,49 @@
+// The metrics of one run, measured while it runs (no per-run CSV): an observer that reads the named
+// columns at every output point and keeps the values each metric samples, then reduces them to the
+// statistics the spec asks for. Angle metrics compare two column groups: a[1..4] with b[1..4] as
+// attitudes (sign-insensitive quaternion angle), or a[1..3] with b[1..3] as directions.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "campaign_spec.hpp"
+#include "observer.hpp"
+
+namespace campaign {
+
+// A metric keeps at most this many samples per run (8 bytes each); a whole orbit at 20 Hz is 115,280.
+inline constexpr std::size_t max_metric_samples = 20'000'000;
+
+// The table columns of the metrics: "name.stat" for every metric and statistic, in spec order.
+std::vector<std::string> metric_columns(const CampaignSpec& spec);
+
+class MetricObserver : public cosim::Observer {
+public:
+    // Throws CampaignError naming a column the system does not have or that is not numeric.
+    MetricObserver(const std::vector<Metric>& metrics, const cosim::System& system);
+    void sample(double t, cosim::System& system) override;
+    // One cell per metric_columns() entry (round-trip text; "nan" where a metric sampled nothing).
+    std::vector<std::string> cells() const;
+
+private:
+    struct Column {
+        std::size_t component;
+        const fmi_loader::ScalarVariable* variable;
+    };
+    struct Tracked {
+        const Metric* metric;
+        std::vector<Column> a, b;
+        std::optional<Column> valid, when;
+        std::optional<double> last_when;
+        std::vector<double> values;
+    };
+    static Column resolve(const cosim::System& system, const std::string& name, const std::string& metric);
+    static double read(cosim::System& system, const Column& c);
+
+    std::vector<Tracked> tracked_;
+};
+
+}  // namespace campaign

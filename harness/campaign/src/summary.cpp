@@ -1,0 +1,227 @@
+#include "summary.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <set>
+#include <sstream>
+
+#include "campaign_error.hpp"
+#include "draws.hpp"
+#include "metric_observer.hpp"
+#include "results_table.hpp"
+#include "statistics.hpp"
+#include "value_text.hpp"
+
+namespace campaign {
+
+std::size_t ResultRows::column(const std::string& name) const {
+    const auto it = std::find(header.begin(), header.end(), name);
+    if (it == header.end()) throw CampaignError("results table: no column '" + name + "'");
+    return static_cast<std::size_t>(it - header.begin());
+}
+
+std::optional<double> number_in(const std::string& cell) {
+    double x = 0.0;
+    const auto [end, ec] = std::from_chars(cell.data(), cell.data() + cell.size(), x);
+    if (ec != std::errc() || end != cell.data() + cell.size() || cell.empty() || !std::isfinite(x)) return std::nullopt;
+    return x;
+}
+
+std::vector<double> ResultRows::finished_values(const std::string& name) const {
+    const std::size_t c = column(name), status = header.size() - 2;
+    std::vector<double> out;
+    for (const auto& row : rows)
+        if (row[status] != "failed")
+            if (const auto x = number_in(row[c])) out.push_back(*x);
+    return out;
+}
+
+ResultRows split_rows(const std::vector<std::string>& header, const std::map<long, std::string>& rows) {
+    ResultRows t;
+    t.header = header;
+    for (const auto& [index, line] : rows) t.rows.push_back(split_csv_line(line));
+    return t;
+}
+
+namespace {
+
+// gnuplot single-quoted strings end at a quote; file names keep letters, digits, '-' and '_'.
+std::string gp_string(const std::string& text) {
+    std::string out = "'";
+    for (char c : text) out += c == '\'' ? std::string("''") : std::string(1, c);
+    return out + "'";
+}
+
+std::string file_name(const std::string& text) {
+    std::string out;
+    for (char c : text) out += std::isalnum(static_cast<unsigned char>(c)) || c == '-' ? c : '_';
+    return out;
+}
+
+void run_gnuplot(const std::string& script, const std::filesystem::path& png) {
+    FILE* gp = popen("gnuplot 2>&1", "w");
+    if (!gp) throw CampaignError("cannot start gnuplot (install the Debian package gnuplot-nox)");
+    std::fputs(script.c_str(), gp);
+    const int rc = pclose(gp);
+    if (rc != 0 || !std::filesystem::exists(png)) throw CampaignError("gnuplot failed drawing " + png.string());
+}
+
+std::string preamble(const std::filesystem::path& png, const std::string& title, const std::string& xlabel,
+                     const std::string& ylabel) {
+    return "set terminal pngcairo noenhanced size 1000,650 font 'sans,11'\nset output " + gp_string(png.string()) +
+           "\nset title " + gp_string(title) + "\nset xlabel " + gp_string(xlabel) + "\nset ylabel " + gp_string(ylabel) +
+           "\nset grid\nset key bottom right\n";
+}
+
+void write_data(const std::filesystem::path& file, const std::string& text) {
+    std::ofstream out(file);
+    out << text;
+    out.close();
+    if (!out) throw CampaignError("cannot write " + file.string());
+}
+
+}  // namespace
+
+std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir, const CampaignSpec& spec,
+                                                const ResultRows& table) {
+    std::vector<std::filesystem::path> written;
+    const auto columns = draw_columns(spec);
+    for (const auto& m : spec.metrics) {
+        if (m.kind == MetricKind::column) continue;
+        // CDF over runs of each of the metric's per-run statistics.
+        const auto png = dir / ("cdf_" + file_name(m.name) + ".png");
+        std::string plots;
+        std::vector<std::filesystem::path> data_files;
+        for (const auto& s : m.stats) {
+            if (s == "count") continue;
+            auto values = table.finished_values(m.name + "." + s);
+            if (values.empty()) continue;
+            std::sort(values.begin(), values.end());
+            std::ostringstream text;
+            for (std::size_t i = 0; i < values.size(); ++i)
+                text << cosim::format_real(values[i]) << ' ' << static_cast<double>(i + 1) / static_cast<double>(values.size()) << '\n';
+            data_files.push_back(dir / ("cdf_" + file_name(m.name) + "_" + file_name(s) + ".dat"));
+            write_data(data_files.back(), text.str());
+            plots += std::string(plots.empty() ? "plot " : ", ") + gp_string(data_files.back().string()) +
+                     " using 1:2 with steps lw 2 title " + gp_string("per-run " + s);
+        }
+        if (!plots.empty()) {
+            run_gnuplot(preamble(png, m.name + ": distribution over runs", "degrees", "fraction of runs") +
+                            "set yrange [0:1]\n" + plots + "\n",
+                        png);
+            written.push_back(png);
+        }
+        for (const auto& f : data_files) std::filesystem::remove(f);
+
+        // The metric's figure statistic against each drawn quantity; text values as categories.
+        const std::string y_name = m.name + "." + m.figure_stat;
+        const std::size_t y = table.column(y_name), status = table.header.size() - 2;
+        for (const auto& c : columns) {
+            if (!c.plotted) continue;
+            const std::size_t x = table.column(c.name);
+            std::vector<std::string> categories;
+            bool numeric = true;
+            for (const auto& row : table.rows) numeric = numeric && number_in(row[x]).has_value();
+            if (!numeric) {
+                std::set<std::string> distinct;
+                for (const auto& row : table.rows) distinct.insert(row[x]);
+                categories.assign(distinct.begin(), distinct.end());
+            }
+            std::ostringstream text;
+            std::size_t points = 0;
+            for (const auto& row : table.rows) {
+                const auto value = number_in(row[y]);
+                if (row[status] == "failed" || !value) continue;
+                const double xv = numeric ? *number_in(row[x])
+                                          : static_cast<double>(std::find(categories.begin(), categories.end(), row[x]) -
+                                                                categories.begin());
+                text << cosim::format_real(xv) << ' ' << cosim::format_real(*value) << '\n';
+                ++points;
+            }
+            if (points == 0) continue;
+            const auto data = dir / (file_name(m.name) + "_vs_" + file_name(c.name) + ".dat");
+            const auto scatter = dir / (file_name(m.name) + "_vs_" + file_name(c.name) + ".png");
+            write_data(data, text.str());
+            std::string script = preamble(scatter, y_name + " against " + c.name, c.name, y_name + " (degrees)") + "set key off\n";
+            if (!numeric) {
+                script += "set xrange [-0.5:" + std::to_string(categories.size() - 0.5) + "]\nset xtics (";
+                for (std::size_t i = 0; i < categories.size(); ++i)
+                    script += (i ? ", " : "") + gp_string(categories[i]) + " " + std::to_string(i);
+                script += ")\n";
+            }
+            script += "plot " + gp_string(data.string()) + " using 1:2 with points pt 7 ps 0.8\n";
+            run_gnuplot(script, scatter);
+            std::filesystem::remove(data);
+            written.push_back(scatter);
+        }
+    }
+    return written;
+}
+
+void write_summary(const std::filesystem::path& file, const CampaignSetup& setup, const ResultRows& table,
+                   const CampaignStatistics& stats, const std::vector<std::filesystem::path>& figures,
+                   const std::string& figure_note) {
+    const auto& spec = setup.spec;
+    const std::size_t status = table.header.size() - 2, message = table.header.size() - 1;
+    long ok = 0, stopped = 0, failed = 0;
+    for (const auto& row : table.rows) {
+        if (row[status] == "ok") ++ok;
+        else if (row[status] == "stopped") ++stopped;
+        else ++failed;
+    }
+    std::ostringstream md;
+    md << std::setprecision(4);
+    md << "# Campaign " << spec.file.filename().string() << "\n\n";
+    md << "- system: `" << spec.system.string() << "`, from " << setup.start_time << " s to " << setup.stop_time
+       << " s, output interval " << setup.output_interval << " s, tolerance " << setup.tolerance << "\n";
+    md << "- runs in the table: " << table.rows.size() << " of " << spec.runs << " (" << ok << " ok, " << stopped
+       << " stopped early, " << failed << " failed); base seed " << spec.seed << (spec.paired ? ", paired scenes" : "")
+       << "\n";
+    md << "- this invocation: " << stats.runs << " runs in " << stats.wall_time << " s wall, "
+       << (stats.wall_time > 0 ? static_cast<double>(stats.runs) / stats.wall_time : 0.0) << " runs/s on "
+       << stats.ranks.size() << " rank(s)\n";
+    for (std::size_t i = 0; i < stats.ranks.size(); ++i)
+        md << "  - rank " << i << ": " << stats.ranks[i].runs << " runs, utilisation "
+           << (stats.wall_time > 0 ? 100.0 * stats.ranks[i].busy / stats.wall_time : 0.0) << " %\n";
+
+    md << "\n## Metrics across runs\n\nPercentiles over the runs that finished (ok or stopped early) with a value; "
+          "angles in degrees.\n\n| column | runs | mean | min | p5 | p50 | p95 | max |\n|---|---|---|---|---|---|---|---|\n";
+    for (const auto& name : metric_columns(spec)) {
+        auto v = table.finished_values(name);
+        std::sort(v.begin(), v.end());
+        md << "| " << name << " | " << v.size();
+        for (const char* s : {"mean", "min", "p5", "p50", "p95", "max"}) md << " | " << (v.empty() ? std::string("–") : [&] {
+            std::ostringstream cell;
+            cell << std::setprecision(4) << statistic(s, v);
+            return cell.str();
+        }());
+        md << " |\n";
+    }
+    if (failed > 0) {
+        md << "\n## Failed runs\n\n| run | message |\n|---|---|\n";
+        long listed = 0;
+        for (const auto& row : table.rows) {
+            if (row[status] != "failed") continue;
+            if (++listed > 50) {
+                md << "| … | " << failed - 50 << " more in results.csv |\n";
+                break;
+            }
+            std::string text = row[message];
+            std::replace(text.begin(), text.end(), '|', '/');
+            md << "| " << row[run_column] << " | " << text << " |\n";
+        }
+    }
+    md << "\n## Figures\n\n";
+    for (const auto& f : figures) md << "- [" << f.filename().string() << "](" << f.filename().string() << ")\n";
+    if (!figure_note.empty()) md << "- " << figure_note << "\n";
+    std::ofstream out(file);
+    out << md.str();
+    out.close();
+    if (!out) throw CampaignError("cannot write " + file.string());
+}
+
+}  // namespace campaign

@@ -1,0 +1,38 @@
+// The campaign's report, from the results table in run order: summary.md (runs, failures, the
+// campaign's own statistics, percentiles across runs of every metric column, the failed runs) and the
+// PNG figures drawn with gnuplot (the CDF over runs of each angle metric, and each angle metric
+// against each drawn quantity).
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "campaign_run.hpp"
+#include "collector.hpp"
+
+namespace campaign {
+
+// The table's rows split into cells, in run order, with the header to find columns by name.
+struct ResultRows {
+    std::vector<std::string> header;
+    std::vector<std::vector<std::string>> rows;
+    std::size_t column(const std::string& name) const;  // throws when absent
+    // The numeric values of a column over the runs whose status is ok or stopped (NaN and text skipped).
+    std::vector<double> finished_values(const std::string& name) const;
+};
+ResultRows split_rows(const std::vector<std::string>& header, const std::map<long, std::string>& rows);
+
+// A cell as a finite number, or nothing.
+std::optional<double> number_in(const std::string& cell);
+
+// Returns the files written; throws when gnuplot is missing or fails.
+std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir, const CampaignSpec& spec, const ResultRows& table);
+
+void write_summary(const std::filesystem::path& file, const CampaignSetup& setup, const ResultRows& table,
+                   const CampaignStatistics& stats, const std::vector<std::filesystem::path>& figures,
+                   const std::string& figure_note);
+
+}  // namespace campaign

@@ -1,0 +1,152 @@
+// Whole campaigns of the bundled LEO and seed systems, kept to seconds: the replay of one run is
+// bit-identical to its row in the campaign and its full CSV gives the same metrics when they are
+// recomputed here from the CSV; a failing run is recorded and the campaign goes on.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "campaign_command.hpp"
+#include "csv_table.hpp"
+#include "results_table.hpp"
+
+using namespace campaign;
+
+namespace {
+
+std::filesystem::path fresh_dir(const std::string& name) {
+    const auto dir = std::filesystem::temp_directory_path() / ("campaign_test_" + name + "_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    return dir;
+}
+
+std::vector<std::string> lines_of(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    std::vector<std::string> out;
+    for (std::string line; std::getline(in, line);) out.push_back(line);
+    return out;
+}
+
+CampaignOptions options_for(const std::string& spec, const std::filesystem::path& output) {
+    CampaignOptions o;
+    o.spec = std::string(CAMPAIGN_TEST_SPECS) + "/" + spec;
+    o.output = output;
+    o.fmu_dirs = {PVATT_FMU_DIR};
+    o.progress = false;
+    return o;
+}
+
+// Every cell but the wall time (header order: ..., wall_time, status, message).
+std::vector<std::string> without_wall_time(const std::string& row) {
+    auto cells = split_csv_line(row);
+    cells.erase(cells.end() - 3);
+    return cells;
+}
+
+}  // namespace
+
+TEST(Campaign, ReplayIsBitIdenticalAndItsCsvGivesTheSameMetrics) {
+    const auto dir = fresh_dir("replay");
+    auto o = options_for("leo_short.toml", dir);
+    o.runs = 4;
+    o.stop_time = 60.0;
+    o.figures = false;
+    std::ostringstream out;
+    ASSERT_EQ(run_campaign(o, out), 0);
+    const auto table = lines_of(dir / "results.csv");
+    ASSERT_EQ(table.size(), 5u);
+
+    o.replay = 3;
+    ASSERT_EQ(run_campaign(o, out), 0);
+    const auto replay = lines_of(dir / "run_3.row.csv");
+    ASSERT_EQ(replay.size(), 2u);
+    EXPECT_EQ(replay[0], table[0]);
+    EXPECT_EQ(without_wall_time(replay[1]), without_wall_time(table[4]));
+
+    // The attitude error recomputed from the full CSV: rows where est.samples changed and est.valid,
+    // angle 2 atan2(|vector part of conj(q_true) q_est|, |scalar part|) in degrees (another formula
+    // than the observer's 2 acos|q_true . q_est|).
+    const auto csv = cosim::read_csv(dir / "run_3.csv");
+    auto col = [&](const std::string& n) { return csv.columns.at(*csv.find(n)); };
+    const auto samples = col("est.samples"), valid = col("est.valid");
+    std::vector<double> errors;
+    double last = NAN;
+    for (std::size_t r = 0; r < csv.rows(); ++r) {
+        const bool changed = !(samples[r] == last);
+        last = samples[r];
+        if (!changed || valid[r] == 0.0) continue;
+        const double a[4] = {col("env.q_true[1]")[r], col("env.q_true[2]")[r], col("env.q_true[3]")[r], col("env.q_true[4]")[r]};
+        const double b[4] = {col("est.q_est[1]")[r], col("est.q_est[2]")[r], col("est.q_est[3]")[r], col("est.q_est[4]")[r]};
+        // conj(a) * b, scalar-last: vector part aw bv - bw av - av x bv, scalar part aw bw + av . bv.
+        const double v[3] = {a[3] * b[0] - b[3] * a[0] - (a[1] * b[2] - a[2] * b[1]),
+                             a[3] * b[1] - b[3] * a[1] - (a[2] * b[0] - a[0] * b[2]),
+                             a[3] * b[2] - b[3] * a[2] - (a[0] * b[1] - a[1] * b[0])};
+        const double w = a[3] * b[3] + a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        errors.push_back(2.0 * std::atan2(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), std::abs(w)) * 180.0 / M_PI);
+    }
+    ASSERT_GT(errors.size(), 20u);
+    double mean = 0.0, max = 0.0;
+    for (double e : errors) {
+        mean += e / static_cast<double>(errors.size());
+        max = std::max(max, e);
+    }
+    const auto header = split_csv_line(table[0]);
+    const auto row = split_csv_line(table[4]);
+    auto cell = [&](const std::string& n) { return std::stod(row.at(std::find(header.begin(), header.end(), n) - header.begin())); };
+    EXPECT_EQ(cell("attitude_error.count"), static_cast<double>(errors.size()));
+    EXPECT_NEAR(cell("attitude_error.mean"), mean, 1e-9);
+    EXPECT_NEAR(cell("attitude_error.max"), max, 1e-9);
+    // The replay's draws reached the FMUs: the environment started from the drawn attitude.
+    EXPECT_NEAR(std::abs(col("env.q_true[4]")[0]), std::abs(cell("env.q0[4]")), 1e-9);
+    std::filesystem::remove_all(dir);
+}
+
+TEST(Campaign, AFailingRunIsRecordedAndTheCampaignGoesOn) {
+    const auto dir = fresh_dir("failing");
+    std::ostringstream out;
+    ASSERT_EQ(run_campaign(options_for("seed_spin_failing.toml", dir), out), 0);
+    const auto table = lines_of(dir / "results.csv");
+    ASSERT_EQ(table.size(), 9u);
+    const auto header = split_csv_line(table[0]);
+    int failed = 0, ok = 0;
+    for (std::size_t i = 1; i < table.size(); ++i) {
+        const auto row = split_csv_line(table[i]);
+        EXPECT_EQ(row[0], std::to_string(i - 1));  // run order
+        const double offset = std::stod(row[1]);
+        // The FMU accepts [-1, 1] V: outside, the run fails with a message naming the variable.
+        if (std::abs(offset) > 1.0) {
+            ++failed;
+            EXPECT_EQ(row[row.size() - 2], "failed") << table[i];
+            EXPECT_NE(row.back().find("bridge_offset"), std::string::npos) << row.back();
+        } else {
+            ++ok;
+            EXPECT_EQ(row[row.size() - 2], "ok") << table[i];
+            EXPECT_GT(std::stod(row[2]), -1.0);  // attitude_error.mean is a number
+        }
+    }
+    EXPECT_GT(failed, 0);
+    EXPECT_GT(ok, 0);
+    std::ifstream summary(dir / "summary.md");
+    std::stringstream text;
+    text << summary.rdbuf();
+    EXPECT_NE(text.str().find(std::to_string(failed) + " failed"), std::string::npos) << text.str();
+    EXPECT_NE(text.str().find("## Failed runs"), std::string::npos);
+    EXPECT_TRUE(std::filesystem::exists(dir / "cdf_attitude_error.png"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "attitude_error_vs_mag_bridge_offset.png"));
+    std::filesystem::remove_all(dir);
+}
+
+TEST(Campaign, UnknownVariablesFailTheCampaignAtOnce) {
+    const auto dir = fresh_dir("unknown");
+    auto o = options_for("seed_spin_failing.toml", dir);
+    o.settings = {"mag.no_such_parameter=1"};
+    std::ostringstream out;
+    EXPECT_THROW(run_campaign(o, out), std::exception);
+    o.settings = {"mag.bridge_offset=0.1"};  // drawn by the spec
+    EXPECT_THROW(run_campaign(o, out), std::exception);
+    EXPECT_FALSE(std::filesystem::exists(dir / "results.csv"));
+}

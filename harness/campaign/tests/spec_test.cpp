@@ -1,0 +1,118 @@
+// The spec reader: what it accepts, and that every mistake is an error naming its place.
+#include <gtest/gtest.h>
+
+#include "campaign_error.hpp"
+#include "campaign_spec.hpp"
+
+using campaign::CampaignError;
+using campaign::parse_spec;
+
+namespace {
+
+const std::string head = "system = \"sys.ssd\"\nruns = 4\nseed = 1\n";
+
+std::string error_of(const std::string& text) {
+    try {
+        parse_spec(text, "/specs/test.toml");
+    } catch (const CampaignError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(Spec, ReadsEveryKind) {
+    const auto spec = parse_spec(head + R"(
+stop_time = 60
+paired = true
+fmu_dirs = ["fmus"]
+[set]
+"est.sample_period" = 1
+"plant.fidelity" = "averaged"
+"env.albedo_enabled" = false
+[[draw]]
+kind = "uniform"
+target = "a.x"
+min = -1.5
+max = 2
+[[draw]]
+kind = "normal"
+target = "a.y"
+mean = 0
+sd = 0.1
+max = 0.2
+[[draw]]
+kind = "choice"
+target = "est.sun_method"
+values = ["difference", "cones"]
+weights = [1, 3]
+[[draw]]
+kind = "list"
+target = "a.z"
+values = [1, 2.5]
+[[draw]]
+kind = "quaternion"
+target = "env.q0"
+[[draw]]
+kind = "tumble"
+target = "env.omega0"
+min = 0.01
+max = 0.1
+[[draw]]
+kind = "epoch"
+target = "env.epoch"
+from = 2026-01-01
+to = 2026-01-02T12:00:00+02:00
+[[metric]]
+name = "err"
+kind = "quaternion_angle"
+a = "env.q_true"
+b = "est.q_est"
+valid = "est.valid"
+stats = ["p99.9", "mean"]
+)",
+                                 "/specs/test.toml");
+    EXPECT_EQ(spec.system, "/specs/sys.ssd");
+    EXPECT_EQ(spec.fmu_dirs.at(0), "/specs/fmus");
+    EXPECT_EQ(spec.output, "test_results");
+    EXPECT_EQ(*spec.stop_time, 60.0);
+    EXPECT_TRUE(spec.paired);
+    // A TOML table has no order: [set] comes out sorted by name (no variable can appear twice in it).
+    EXPECT_EQ(spec.settings, (std::vector<std::string>{"env.albedo_enabled=false", "est.sample_period=1", "plant.fidelity=averaged"}));
+    ASSERT_EQ(spec.draws.size(), 7u);
+    EXPECT_EQ(spec.draws[0].min, -1.5);
+    EXPECT_FALSE(spec.draws[1].truncated_below);
+    EXPECT_TRUE(spec.draws[1].truncated_above);
+    EXPECT_EQ(spec.draws[2].weights, (std::vector<double>{1, 3}));
+    EXPECT_EQ(spec.draws[3].kind, campaign::DrawKind::grid);
+    EXPECT_EQ(spec.draws[3].values[1].text, "2.5");
+    // 2026-01-01 is day 20454 since 1970-01-01 (56 years, 14 of them leap: 56 * 365 + 14);
+    // 12:00 at +02:00 is 10:00 UTC.
+    EXPECT_EQ(spec.draws[6].epoch_from, 20454.0 * 86400.0);
+    EXPECT_EQ(spec.draws[6].epoch_to, 20455.0 * 86400.0 + 10.0 * 3600.0);
+    EXPECT_EQ(spec.metrics[0].stats, (std::vector<std::string>{"p99.9", "mean"}));
+    EXPECT_EQ(spec.metrics[0].figure_stat, "p99.9");
+}
+
+TEST(Spec, MistakesAreErrorsWithTheirPlace) {
+    EXPECT_NE(error_of(head + "sed = 3\n").find("unknown key 'sed'"), std::string::npos);
+    // The line of the [[draw]] at fault.
+    EXPECT_NE(error_of(head + "[[draw]]\nkind = \"uniform\"\ntarget = \"a.x\"\nmin = 1\nmax = 0\n").find("test.toml:4: draw 1: 'max' must be above 'min'"),
+              std::string::npos);
+    EXPECT_NE(error_of(head + "[[draw]]\nkind = \"gauss\"\ntarget = \"a.x\"\n").find("unknown kind 'gauss'"), std::string::npos);
+    EXPECT_NE(error_of(head + "[[draw]]\nkind = \"uniform\"\ntarget = \"x\"\nmin = 0\nmax = 1\n").find("not component.variable"),
+              std::string::npos);
+    // [4, 5] sd 1 around 0: Phi(5) - Phi(4) = 3.2e-5, below the 1e-3 limit.
+    EXPECT_NE(error_of(head + "[[draw]]\nkind = \"normal\"\ntarget = \"a.x\"\nmean = 0\nsd = 1\nmin = 4\nmax = 5\n").find("truncation interval"),
+              std::string::npos);
+    EXPECT_NE(error_of(head + "[[draw]]\nkind = \"quaternion\"\ntarget = \"a.q\"\n[[draw]]\nkind = \"quaternion\"\ntarget = \"a.q\"\n").find("drawn twice"),
+              std::string::npos);
+    EXPECT_NE(error_of(head + "[[metric]]\nname = \"e\"\nkind = \"column\"\ncolumn = \"a.x\"\nstats = [\"p200\"]\n").find("unknown statistic 'p200'"),
+              std::string::npos);
+    EXPECT_NE(error_of("system = \"s.ssd\"\nruns = 0\nseed = 1\n").find("'runs' must be an integer"), std::string::npos);
+    EXPECT_NE(error_of("runs = 3\nseed = 1\n").find("'system' is missing"), std::string::npos);
+    EXPECT_NE(error_of(head + "[[draw]]\nkind = \"epoch\"\ntarget = \"env.epoch\"\nfrom = 2026-01-02\nto = 2026-01-01\n").find("'to' must be after"),
+              std::string::npos);
+    EXPECT_NE(error_of(head + "x = [").find("test.toml:4"), std::string::npos);  // a TOML syntax error, with its line
+}
