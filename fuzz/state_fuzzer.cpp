@@ -10,12 +10,14 @@
 #include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "fmi2/fmi2Functions.h"
 #include "fmu/description.hpp"
 #include "fmu/model.hpp"
+#include "fmu/state_check.hpp"
 #include "fmu/table.hpp"
 
 namespace {
@@ -24,15 +26,6 @@ void quiet(fmi2ComponentEnvironment, fmi2String, fmi2Status, fmi2String, fmi2Str
 fmi2CallbackFunctions callbacks{quiet, nullptr, nullptr, nullptr, nullptr};
 
 constexpr std::size_t header = 8 + 8 + 8 + 8 + 1 + 40;  // fmus/src/instance.cpp, layout version 2
-
-std::uint64_t fnv1a(const std::vector<fmi2Byte>& b, std::size_t n) {
-    std::uint64_t h = 0xcbf29ce484222325ull;
-    for (std::size_t i = 0; i < n; ++i) {
-        h ^= static_cast<unsigned char>(b[i]);
-        h *= 0x100000001b3ull;
-    }
-    return h;
-}
 
 struct Block {
     std::unique_ptr<fmu::Model> model = fmu::make_model();
@@ -90,7 +83,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             for (std::size_t k = 0; k < length && i < size && offset + k < payload; ++k, ++i)
                 bytes[header + offset + k] = static_cast<fmi2Byte>(data[i]);
         }
-        const std::uint64_t sum = fnv1a(bytes, bytes.size() - 8);
+        const std::uint64_t sum = fmu::serialized_state_checksum(std::span<const char>(bytes.data(), bytes.size() - 8));
         std::memcpy(bytes.data() + bytes.size() - 8, &sum, 8);
     }
 
