@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds everything with AddressSanitizer and UndefinedBehaviorSanitizer,
-# and runs every test (unit, physics, FMI conformance over every .fmu the build makes).
+# and runs every test (unit, physics, FMI conformance over every .fmu the build makes), then each
+# libFuzzer target briefly (scripts/fuzz.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh
@@ -10,3 +11,5 @@ cmake --build "$build" -j"$(nproc)"
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0:strict_string_checks=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
 ctest --test-dir "$build" --output-on-failure -j"$(nproc)"
+# Every fuzz target of fuzz/ for a short fixed time (9 targets x 15 s), in its own clang build.
+bash scripts/fuzz.sh "${PVATT_FUZZ_SECONDS:-15}"

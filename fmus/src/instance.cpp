@@ -20,14 +20,6 @@ constexpr std::size_t serial_guid_bytes = 40;
 constexpr std::size_t serial_header = sizeof serial_magic + 8 + 8 + 8 + 1 + serial_guid_bytes;
 constexpr std::size_t serial_checksum = 8;
 
-std::uint64_t fnv1a64(std::span<const char> bytes) {
-    std::uint64_t hash = 0xcbf29ce484222325ull;
-    for (const char c : bytes) {
-        hash ^= static_cast<unsigned char>(c);
-        hash *= 0x100000001b3ull;
-    }
-    return hash;
-}
 
 constexpr std::size_t category_index(std::string_view name) {
     for (std::size_t i = 0; i < std::size(log_categories); ++i)
@@ -399,7 +391,7 @@ std::vector<fmi2Byte> Instance::serialize(const Snapshot* state) const {
     put(&terminate, 1);
     put(guid, serial_guid_bytes);
     put(data.data(), data.size());
-    const std::uint64_t checksum = fnv1a64(std::span<const char>(out.data(), out.size() - serial_checksum));
+    const std::uint64_t checksum = serialized_state_checksum(std::span<const char>(out.data(), out.size() - serial_checksum));
     put(&checksum, serial_checksum);
     return out;
 }
@@ -431,7 +423,7 @@ Snapshot* Instance::deserialize(std::span<const fmi2Byte> bytes) {
         throw Error("the serialized state belongs to another FMU (GUID differs)");
     std::uint64_t stored_checksum = 0;
     std::memcpy(&stored_checksum, p + data_size, serial_checksum);
-    if (stored_checksum != fnv1a64(bytes.first(serial_header + data_size)))
+    if (stored_checksum != serialized_state_checksum(bytes.first(serial_header + data_size)))
         throw Error("the serialized state's checksum does not match its content (corrupted or edited)");
     if (!std::isfinite(s->time) || !std::isfinite(s->last_successful_time))
         throw Error("the serialized state has a non-finite time");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "fmu/errors.hpp"
@@ -9,14 +10,22 @@
 
 namespace fmu {
 
+namespace {
+std::string text(double x) {
+    std::ostringstream out;
+    out << x;  // 6 significant digits: "1e+18", "0.05"
+    return out.str();
+}
+}  // namespace
+
 std::int64_t next_instant_index(double t, double origin, double period, std::int64_t at_least, std::string_view what) {
-    if (!std::isfinite(t)) throw Error(std::string(what) + ": time " + std::to_string(t) + " is not finite");
+    if (!std::isfinite(t)) throw Error(std::string(what) + ": time " + text(t) + " is not finite");
     if (!(period > 0.0) || !std::isfinite(period) || !std::isfinite(origin))
         throw Error(std::string(what) + ": the period must be positive and finite");
     const auto beyond = [&] {
-        return Error(std::string(what) + ": t = " + std::to_string(t) + " s is more than " +
-                     std::to_string(max_instant_index) + " periods of " + std::to_string(period) +
-                     " s after the origin " + std::to_string(origin) + " s (the limit of an instant count)");
+        return Error(std::string(what) + ": t = " + text(t) + " s is more than " + std::to_string(max_instant_index) +
+                     " periods of " + text(period) + " s after the origin " + text(origin) +
+                     " s (the limit of an instant count)");
     };
     // Computed in double first: the quotient can be far beyond any integer type.
     const double periods = std::floor((t - origin) / period);

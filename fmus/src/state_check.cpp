@@ -55,6 +55,15 @@ void check_variable(const Variable& v, std::span<const std::byte> bytes) {
 
 }  // namespace
 
+std::uint64_t serialized_state_checksum(std::span<const char> bytes) {
+    std::uint64_t hash = 0xcbf29ce484222325ull;  // FNV-1a 64: offset basis and prime
+    for (const char c : bytes) {
+        hash ^= static_cast<unsigned char>(c);
+        hash *= 0x100000001b3ull;
+    }
+    return hash;
+}
+
 void check_restored_state(const Model& model) {
     const auto bytes = model.bytes();
     for (const auto& v : model.table().variables()) check_variable(v, bytes);

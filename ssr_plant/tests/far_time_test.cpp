@@ -13,22 +13,29 @@ using namespace ssr_plant;
 constexpr double T = 1.0 / 5000.0;  // seed PWM period
 
 TEST(SsrCorePlantFarTime, SteppedOverPeriodsAreSkippedAtOnce) {
-    // The regular modulator: both edges are time events, the off edge at D T into the period.
     Parameters p;
-    p.modulation = Modulation::regular;
-    p.controller_gain = 3.0;  // 1/V
+    p.modulation = Modulation::regular;  // the off edge is a time event at duty · T
     const Model m = make_model(p);
     Inputs u;
     u.sun_body = {1, 0, 0};
     u.irradiance = 1367.0;
-    State x{15.2, 0.9};  // D = 0.6 (hand: 3 /V · 0.2 V)
+    State x{15.001, 0.9};  // just above the set point: a duty inside (0, 1)
+    const double duty = initialize(m, u, 0.0, x).duty;  // the controller's law is tested elsewhere
+    ASSERT_GT(duty, 0.0);
+    ASSERT_LT(duty, 1.0);
     DiscreteState d = initialize(m, u, 0.0, x);
-    // Jump to 1e7 periods + 0.1 T: by hand, period 1e7 is in progress, its off edge (0.6 T in) is next.
-    const double t = (1e7 + 0.1) * T;
+    // Jump to 1e7 periods + a hair: period 1e7 is in progress, its off edge (duty · T in) is next.
+    const double t = (1e7 + 1e-3) * T;
     d = event_update(m, u, d, t, x).discrete;
     EXPECT_EQ(d.period_index, 10000000);
     EXPECT_GT(next_time_event(m, d), t);
-    EXPECT_NEAR(next_time_event(m, d), (1e7 + 0.6) * T, 1e-9);
+    EXPECT_NEAR(next_time_event(m, d), (1e7 + duty) * T, 1e-9);
+    // Latched modulation: no off-edge time event, the next period start is next.
+    const Model latched = make_model(Parameters{});
+    DiscreteState dl = initialize(latched, u, 0.0, x);
+    dl = event_update(latched, u, dl, t, x).discrete;
+    EXPECT_EQ(dl.period_index, 10000000);
+    EXPECT_NEAR(next_time_event(latched, dl), (1e7 + 1) * T, 1e-9);
 }
 
 TEST(SsrCorePlantFarTime, TimeBeyondTheCountIsRefused) {

@@ -22,6 +22,9 @@ class Model;
 // within their capacity and one of their allowed values. Then the block's validate() and check_state().
 void check_restored_state(const Model& model);
 
+// FNV-1a 64 of a serialized state's header and payload: the checksum its last 8 bytes hold.
+std::uint64_t serialized_state_checksum(std::span<const char> bytes);
+
 // Helpers for a block's check_state() over fields that are not in its table.
 inline void require_finite(double x, std::string_view name) {
     if (!std::isfinite(x)) throw Error("restored FMU state: " + std::string(name) + " is not finite");

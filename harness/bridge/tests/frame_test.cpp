@@ -99,6 +99,22 @@ TEST(Codec, UnknownTypeRejected) {
     EXPECT_NE(rejection(b).find("type 9"), std::string::npos);
 }
 
+// From the frame fuzzer (fuzz/frame_fuzzer.cpp, its first run): bytes 18..23 set and a valid CRC. The
+// format says receivers ignore them, so the frame decodes to the same values and re-encodes with zeros.
+TEST(Codec, ReservedBytesAreIgnored) {
+    const Frame f = sample_frame();
+    auto b = encode(f);
+    for (std::size_t i = 18; i < header_size; ++i) b[i] = static_cast<std::uint8_t>(0xC8 + i);
+    const std::size_t body = b.size() - crc_size;
+    const std::uint16_t crc = crc16_ccitt(std::span<const std::uint8_t>(b).first(body));
+    b[body] = static_cast<std::uint8_t>(crc);
+    b[body + 1] = static_cast<std::uint8_t>(crc >> 8);
+    const Frame d = decode(b);
+    EXPECT_EQ(d.sequence, f.sequence);
+    EXPECT_EQ(d.values, f.values);
+    EXPECT_EQ(encode(d), encode(f));
+}
+
 TEST(Codec, EveryFlippedBitFailsTheCrc) {
     const auto good = encode(sample_frame());
     for (std::size_t i = 18; i < good.size(); ++i)  // past magic, version, type and count

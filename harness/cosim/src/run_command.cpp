@@ -46,7 +46,7 @@ void check_time(const char* what, double value) {
 
 // A run must have something to do and an end: a finite span, intervals that are positive, not longer
 // than the run and not so short that the number of points is absurd (max_run_points without --force).
-void check_intervals(const ExecutionOptions& ex, bool force) {
+void check_intervals(const ExecutionOptions& ex, std::optional<double> communication_step, bool force) {
     check_time("the start time", ex.start_time);
     check_time("--stop-time", ex.stop_time);
     const double span = ex.stop_time - ex.start_time;
@@ -65,7 +65,7 @@ void check_intervals(const ExecutionOptions& ex, bool force) {
                              " (give --force to run it anyway)");
     };
     check_interval("--output-interval", ex.output_interval);
-    if (ex.communication_step) check_interval("--step", *ex.communication_step);
+    if (communication_step) check_interval("--step", *communication_step);
 }
 
 // Before the run: say how large the CSV will be when it is large, and refuse what the disk cannot
@@ -138,7 +138,7 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
     ex.event_rows = options.event_rows;
     ex.reference = options.reference;
     ex.max_step = options.max_step;
-    check_intervals(ex, options.force);
+    check_intervals(ex, options.communication_step, options.force);
 
     const bool tty = options.progress && isatty(fileno(stderr));
     const auto started = std::chrono::steady_clock::now();

@@ -191,3 +191,19 @@ TEST_F(LoaderArchive, HighlyCompressibleEntryIsRefusedAtTheDefaultRatio) {
     const fs::path fmu = make_zip({{"resources/zeros", std::string(std::size_t{512} << 10, '\0')}});
     EXPECT_NO_THROW(FmuArchive archive(fmu));
 }
+
+// Issue 14 case 4: a signal during extraction (request_cancel from the handler) stops it and removes
+// what was written.
+TEST_F(LoaderArchive, CancelledExtractionLeavesNothingBehind) {
+    const fs::path fmu = make_zip({{"modelDescription.xml", "<x/>"}, {"resources/a", "1"}});
+    fmi_loader::request_cancel();
+    try {
+        FmuArchive archive(fmu);
+        ADD_FAILURE() << "extracted although cancelled";
+    } catch (const LoaderError& e) {
+        EXPECT_EQ(e.code(), LoaderErrc::cancelled) << e.what();
+    }
+    fmi_loader::clear_cancel();
+    EXPECT_TRUE(tmp_is_empty());
+    EXPECT_NO_THROW(FmuArchive archive(fmu));
+}

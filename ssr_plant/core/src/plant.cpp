@@ -313,9 +313,12 @@ EventResult event_update(const Model& m, const Illumination& l, const DiscreteSt
                 throw std::invalid_argument("ssr_plant: t = " + std::to_string(t) + " s is more than 1e11 PWM periods "
                                             "after the start (the limit of the period count)");
             if (k > static_cast<double>(d.period_index)) {
-                const bool gate_before = d.gate;
+                const bool gate_before = d.gate, off_edge_before = d.off_edge_pending;
                 start_period(m, d, static_cast<std::int64_t>(k), x[state_v_bus]);
-                if (gate_before && !d.gate) d.held_face_current = l.i_shunt;
+                // As walking the edges would have left it: the S/H holds at every trailing edge passed
+                // (the pending one, and one per skipped period when the pulse has an off edge, the duty
+                // being the same from the same bus voltage) and when the gate turns off.
+                if (off_edge_before || d.off_edge_pending || (gate_before && !d.gate)) d.held_face_current = l.i_shunt;
             }
         }
         // A bounded loop: normally one edge is due.

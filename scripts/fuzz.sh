@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets of fuzz/ with clang (ASan + UBSan) in their own build directory and runs
+# each for SECONDS seconds (default 60), starting from its seed corpus in fuzz/corpus/<target>/.
+# New inputs go to <build>/corpus/<target>/ (the tree's seeds are never written); a crash, leak,
+# sanitizer report or timeout is saved as <build>/artifacts/<target>/... and makes the script fail:
+# turn it into a regression test. Usage: scripts/fuzz.sh [SECONDS] [TARGET...]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-60}
+shift || true
+build=${PVATT_FUZZ_BUILD_DIR:-build-fuzz}
+jobs=${PVATT_FUZZ_JOBS:-2}
+
+CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPVATT_FUZZ=ON -DPVATT_BENCHMARKS=OFF \
+  ${CMAKE_CXX_COMPILER_LAUNCHER:+-DCMAKE_CXX_COMPILER_LAUNCHER=$CMAKE_CXX_COMPILER_LAUNCHER} \
+  ${CMAKE_C_COMPILER_LAUNCHER:+-DCMAKE_C_COMPILER_LAUNCHER=$CMAKE_C_COMPILER_LAUNCHER} >/dev/null
+cmake --build "$build" --target fuzzers -j"$jobs"
+
+targets=("$@")
+if [ ${#targets[@]} -eq 0 ]; then
+  for f in "$build"/fuzzers/fuzz_*; do targets+=("$(basename "$f")"); done
+fi
+
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
+failed=()
+for t in "${targets[@]}"; do
+  seeds=fuzz/corpus/${t#fuzz_}
+  work=$build/corpus/$t
+  artifacts=$build/artifacts/$t
+  mkdir -p "$work" "$artifacts"
+  [ -d "$seeds" ] || seeds=
+  [ "$t" = fuzz_ssd ] && seeds="$seeds harness/systems"  # the bundled systems are seeds too
+  echo "fuzz.sh: $t for ${seconds} s"
+  # -timeout: one input taking longer than 10 s is a hang; -rss_limit_mb: one using more than 2 GB is exhaustion.
+  if ! "$build/fuzzers/$t" "$work" $seeds -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+       -max_len=65536 -artifact_prefix="$artifacts/" -print_final_stats=1 2>"$build/$t.log"; then
+    failed+=("$t")
+    tail -40 "$build/$t.log" >&2
+  fi
+  grep -E "^stat::number_of_executed_units|^stat::peak_rss_mb" "$build/$t.log" | sed "s/^/  $t /" || true
+done
+if [ ${#failed[@]} -ne 0 ]; then
+  echo "fuzz.sh: findings in ${failed[*]} (inputs in $build/artifacts/)" >&2
+  exit 1
+fi
+echo "fuzz.sh: no findings in ${#targets[@]} targets"
