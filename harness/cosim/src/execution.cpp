@@ -295,6 +295,7 @@ struct Execution::Impl {
             if (!(stepping[i].step > 0.0)) throw CosimError(comp(i).name + ": the communication step must be positive");
         }
         const auto wall_start = std::chrono::steady_clock::now();
+        stats.realtime_tolerance = options.realtime_tolerance;
         if (options.realtime) {
             // Components that talk to hardware act at their instants' wall time, not only at output points.
             for (auto& c : system.components())
@@ -394,13 +395,14 @@ struct Execution::Impl {
     }
 
     // Wait until the wall clock has caught up with simulated time; count the points already late.
+    // A point reached after its wall time by more than the tolerance is late (an exchange with
+    // hardware at an instant starts at that instant's wall time: its answer is always a little after).
     void pace(std::chrono::steady_clock::time_point wall_start, double start) {
         const auto due = wall_due(wall_start, t - start);
-        if (std::chrono::steady_clock::now() > due) {
-            ++stats.late_realtime_points;
-            return;
-        }
-        std::this_thread::sleep_until(due);
+        const double behind = std::chrono::duration<double>(std::chrono::steady_clock::now() - due).count();
+        stats.realtime_max_behind = std::max(stats.realtime_max_behind, behind);
+        if (behind > options.realtime_tolerance) ++stats.late_realtime_points;
+        if (behind < 0.0) std::this_thread::sleep_until(due);
     }
 };
 

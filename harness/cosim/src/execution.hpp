@@ -36,6 +36,7 @@ struct ExecutionOptions {
     double relative_tolerance = 1e-6;
     std::optional<double> max_step;  // the longest step of the Model Exchange integrator (default: the .ssd's)
     bool realtime = false;   // pace simulated time to the wall clock
+    double realtime_tolerance = 1e-3;  // s: how far behind its wall time an output point may be before it counts as late
     bool event_rows = false; // also sample just before and just after each event
     // Today's reference execution (before the speed work): every Model Exchange component goes
     // through every event, CVODE restarts after each, and every output point is a stop time.
@@ -58,7 +59,9 @@ struct RunStatistics {
     long rhs_evaluations = 0;
     long restarts = 0;  // CVODE restarts (after initialization and after events that changed something continuous)
     long time_events = 0, state_events = 0, step_events = 0, communication_points = 0;
-    long late_realtime_points = 0;  // output points the wall clock had already passed (--realtime)
+    long late_realtime_points = 0;  // output points reached more than the tolerance after their wall time (--realtime)
+    double realtime_max_behind = 0.0;  // s: the most any output point was behind its wall time (--realtime)
+    double realtime_tolerance = 0.0;   // s: the lateness allowed (ExecutionOptions)
     bool terminated_early = false;
     std::vector<ComponentStatistics> components;
 };

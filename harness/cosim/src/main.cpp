@@ -58,6 +58,10 @@ int main(int argc, char** argv) {
                     "UDP port of every hardware-bridged component (replaces the .ssd's)")
         ->check(CLI::Range(0, 65535));
     run->add_flag("--realtime", run_options.realtime, "Pace simulated time to the wall clock");
+    run->add_option("--realtime-tolerance", run_options.realtime_tolerance,
+                    "With --realtime: how far behind its wall time (s) an output point may be before it counts as late")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
     run->add_flag("--event-rows", run_options.event_rows, "Add CSV rows just before and after each event");
     run->add_flag("--reference", run_options.reference,
                   "The reference execution: every component as Model Exchange, every event through every component "

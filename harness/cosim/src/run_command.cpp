@@ -135,6 +135,7 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
     ex.output_interval = options.output_interval.value_or(interval);
     ex.relative_tolerance = options.tolerance.value_or(tolerance);
     ex.realtime = options.realtime;
+    ex.realtime_tolerance = options.realtime_tolerance;
     ex.event_rows = options.event_rows;
     ex.reference = options.reference;
     ex.max_step = options.max_step;
@@ -189,7 +190,10 @@ void print_statistics(const RunStatistics& s, std::ostream& out) {
     out << "integrator steps " << s.integrator_steps << ", right-hand sides " << s.rhs_evaluations << ", time events "
         << s.time_events << ", state events " << s.state_events << ", step events " << s.step_events
         << ", communication points " << s.communication_points << ", integrator restarts " << s.restarts << "\n";
-    if (s.late_realtime_points) out << "real-time: " << s.late_realtime_points << " output points were late\n";
+    if (s.realtime_max_behind != 0.0 || s.late_realtime_points)
+        out << "real-time: " << s.late_realtime_points << " output points late by more than " << s.realtime_tolerance * 1e3
+            << " ms; at most "
+            << s.realtime_max_behind * 1e3 << " ms behind the wall clock\n";
     for (const auto& c : s.components) {
         out << "  " << std::left << std::setw(20) << c.name << std::right;
         if (c.steps) out << " co-simulation steps " << c.steps << "\n";

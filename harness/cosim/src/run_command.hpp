@@ -19,6 +19,7 @@ struct RunOptions {
     SystemOptions system;
     std::vector<std::string> columns;
     bool realtime = false;
+    double realtime_tolerance = 1e-3;  // s
     bool event_rows = false;
     bool reference = false;  // the reference execution (every component Model Exchange, every event everywhere)
     bool progress = true;  // a progress bar when stderr is a terminal and the run is long
