@@ -9,6 +9,11 @@ mkdir -p "$work"
 "$cosim" campaign "$spec" --fmu-dir "$fmu_dir" --runs 6 --stop-time 40 --output "$work/single" --no-figures
 root=()
 [ "$(id -u)" -eq 0 ] && root=(--allow-run-as-root)
+# Open MPI 4.1 leaves its own allocations (and those of the components it unloads) to the end of the
+# process, which LeakSanitizer reports in a sanitizer build: leak checking is off for the MPI ranks
+# only. The same campaign code runs with leak checking in the single-process run above and in
+# campaign_tests.
+ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" \
 OMPI_MCA_btl=self,vader OMPI_MCA_btl_vader_single_copy_mechanism=none \
     "$mpirun" "${root[@]}" --oversubscribe --bind-to none -n 2 \
     "$cosim" campaign "$spec" --fmu-dir "$fmu_dir" --runs 6 --stop-time 40 --output "$work/mpi" --no-figures \
