@@ -117,6 +117,40 @@ std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir
         }
         for (const auto& f : data_files) std::filesystem::remove(f);
 
+        // The same distribution split by the values of the first grid draw (the compared designs).
+        if (const auto grid = std::find_if(spec.draws.begin(), spec.draws.end(),
+                                           [](const Draw& d) { return d.kind == DrawKind::grid; });
+            grid != spec.draws.end()) {
+            const std::string stat_column = m.name + "." + m.figure_stat;
+            const std::size_t g = table.column(grid->target), y = table.column(stat_column), status = table.header.size() - 2;
+            const auto by = dir / ("cdf_" + file_name(m.name) + "_by_" + file_name(grid->target) + ".png");
+            std::string lines;
+            std::vector<std::filesystem::path> files;
+            for (const auto& value : grid->values) {
+                std::vector<double> values;
+                for (const auto& row : table.rows)
+                    if (row[status] != "failed" && row[g] == value.text)
+                        if (const auto v = number_in(row[y])) values.push_back(*v);
+                if (values.empty()) continue;
+                std::sort(values.begin(), values.end());
+                std::ostringstream text;
+                for (std::size_t i = 0; i < values.size(); ++i)
+                    text << cosim::format_real(values[i]) << ' ' << static_cast<double>(i + 1) / static_cast<double>(values.size()) << '\n';
+                files.push_back(dir / ("cdf_by_" + file_name(m.name) + "_" + file_name(value.text) + ".dat"));
+                write_data(files.back(), text.str());
+                lines += std::string(lines.empty() ? "plot " : ", ") + gp_string(files.back().string()) +
+                         " using 1:2 with steps lw 2 title " + gp_string(value.text);
+            }
+            if (!lines.empty()) {
+                run_gnuplot(preamble(by, stat_column + " by " + grid->target + ": distribution over runs", "degrees",
+                                     "fraction of runs") +
+                                "set yrange [0:1]\n" + lines + "\n",
+                            by);
+                written.push_back(by);
+            }
+            for (const auto& f : files) std::filesystem::remove(f);
+        }
+
         // The metric's figure statistic against each drawn quantity; text values as categories.
         const std::string y_name = m.name + "." + m.figure_stat;
         const std::size_t y = table.column(y_name), status = table.header.size() - 2;
