@@ -6,7 +6,7 @@ cosim=$1 spec=$2 fmu_dir=$3 work=$4
 source "$(dirname "$0")/drop_wall_time.sh"
 rm -rf "$work"
 mkdir -p "$work"
-args=(campaign "$spec" --fmu-dir "$fmu_dir" --runs 10 --stop-time 40 --no-figures)
+args=(campaign "$spec" --fmu-dir "$fmu_dir" --runs 10 --stop-time 20 --no-figures)
 "$cosim" "${args[@]}" --output "$work/whole" > /dev/null
 
 "$cosim" "${args[@]}" --output "$work/killed" > /dev/null &
