@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "campaign_error.hpp"
+#include "campaign_identity.hpp"
 #include "campaign_run.hpp"
 #include "collector.hpp"
 #include "drivers.hpp"
@@ -53,6 +54,9 @@ int campaign_on_rank0(const CampaignSetup& setup, const CampaignOptions& options
     const auto header = table_header(spec);
     std::map<long, std::string> rows;
     const bool append = options.resume && std::filesystem::exists(table_file);
+    if (!append && std::filesystem::exists(table_file))
+        throw CampaignError(table_file.string() + " exists: give --resume to continue that campaign, or another --output");
+    record_identity(spec.output, campaign_identity(setup), append);
     if (append) rows = read_results(table_file, header, spec.runs);
     ResultsWriter writer(table_file, header, append);
     std::vector<long> to_do;

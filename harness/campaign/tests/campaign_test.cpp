@@ -150,3 +150,27 @@ TEST(Campaign, UnknownVariablesFailTheCampaignAtOnce) {
     EXPECT_THROW(run_campaign(o, out), std::exception);
     EXPECT_FALSE(std::filesystem::exists(dir / "results.csv"));
 }
+
+// --resume continues only the same campaign: another stop time (or seed, setting, draw) is refused
+// before any run, more runs extend it.
+TEST(Campaign, ResumeRefusesAnotherCampaignAndExtendsThisOne) {
+    const auto dir = fresh_dir("identity");
+    auto o = options_for("leo_short.toml", dir);
+    o.runs = 2;
+    o.stop_time = 5.0;
+    o.figures = false;
+    std::ostringstream out;
+    ASSERT_EQ(run_campaign(o, out), 0);
+    o.resume = true;
+    o.runs = 3;
+    o.stop_time = 6.0;
+    EXPECT_THROW(run_campaign(o, out), std::exception);
+    o.stop_time = 5.0;
+    o.settings = {"est.weight_mag=2"};
+    EXPECT_THROW(run_campaign(o, out), std::exception);
+    o.settings.clear();
+    ASSERT_EQ(run_campaign(o, out), 0);
+    EXPECT_NE(out.str().find("resuming: 2 runs"), std::string::npos) << out.str();
+    EXPECT_EQ(lines_of(dir / "results.csv").size(), 4u);
+    std::filesystem::remove_all(dir);
+}
