@@ -64,7 +64,10 @@ int campaign_on_rank0(const CampaignSetup& setup, const CampaignOptions& options
         if (!rows.contains(i)) to_do.push_back(i);
     if (append) out << "resuming: " << rows.size() << " runs in " << table_file.string() << ", " << to_do.size() << " to do\n";
 
-    Collector collector(writer, rows, static_cast<long>(to_do.size()), ranks, options.progress && isatty(fileno(stderr)));
+    Progress progress = Progress::none;
+    if (options.progress && isatty(fileno(stderr))) progress = Progress::terminal;
+    else if (options.progress && options.progress_lines) progress = Progress::log;
+    Collector collector(writer, rows, static_cast<long>(to_do.size()), ranks, progress);
 #ifdef PVATT_MPI
     if (ranks > 1) run_distributed(setup, to_do, collector, ranks);
     else run_sequential(setup, to_do, collector);
