@@ -7,6 +7,8 @@
 
 #include "attitude_estimator/spin_spectrum.hpp"
 #include "fmu/errors.hpp"
+#include "fmu/instant_clock.hpp"
+#include "fmu/state_check.hpp"
 
 namespace attitude_estimator {
 
@@ -19,7 +21,8 @@ constexpr SunMethod kSunMethods[] = {SunMethod::difference, SunMethod::inverse_r
 
 // The rates' state must travel with the FMU state as bytes.
 static_assert(std::is_trivially_copyable_v<MeanAngularRate<double>> &&
-              std::is_trivially_copyable_v<SunMethodState<double>>);
+              std::is_trivially_copyable_v<SunMethodState<double>> &&
+              std::is_trivially_copyable_v<SetResetState<double>>);
 
 panel_response::Response<double> response_from(const EstimatorData& d) {
     if (d.angular_response == "cosine") return panel_response::cosine<double>();
@@ -37,6 +40,10 @@ MeanAngularRateConfig<double> rate_config_from(const EstimatorData& d) {
     // a gap longer than two increments (an eclipse) does: the rotation across it could alias past π.
     c.max_interval = std::max(2.0 * d.rate_interval, 5.0 * d.sample_period);
     return c;
+}
+
+SetResetConfig set_reset_config_from(const EstimatorData& d) {
+    return SetResetConfig{.period_samples = d.mag_set_reset_samples, .offset_window = d.mag_offset_window};
 }
 
 AdcConfig<double> adc(std::int32_t bits, double min, double max) {
@@ -94,7 +101,9 @@ EstimatorConfig<double> config_from(const EstimatorData& d) {
 
 SampleInputs<double> inputs_from(const EstimatorData& d) {
     return SampleInputs<double>{
-        .i_sh = d.i_sh, .i_face = d.i_face, .v_mag = d.v_mag, .v_mag_ref = d.v_mag_ref, .sun_ref = d.sun_ref, .mag_ref = d.mag_ref};
+        .i_sh = d.i_sh, .i_face = d.i_face, .v_mag = d.v_mag, .v_mag_ref = d.v_mag_ref, .sun_ref = d.sun_ref, .mag_ref = d.mag_ref,
+        // The reading now at the inputs was taken in the polarity commanded at the previous sample.
+        .mag_polarity = d.set_reset.polarity, .mag_offset = applied_offset(d.set_reset, set_reset_config_from(d))};
 }
 
 void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
@@ -275,6 +284,24 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
         .discrete()
         .depends_on({});
 
+    t.parameter("mag_set_reset_samples", &D::mag_set_reset_samples, "",
+                "Pulse the magnetometer's set/reset strap (output mag_set_reset) every this many samples, "
+                "alternating set and reset, and take the offset out of the field; 0 (default): no pulses, the "
+                "offset stays in the field. Only with mag_set_reset wired to the magnetometer's "
+                "set_reset_command (its set_reset_source = input): else every other reading is taken inverted")
+        .range(0.0, 1e6);
+    t.parameter("mag_offset_window", &D::mag_offset_window, "",
+                "Set/reset pairs in the running mean of the magnetometer offset estimate")
+        .range(1.0, 1e6);
+    t.output("mag_set_reset", &D::mag_set_reset, "",
+             "Set/reset pulse commanded last, to the magnetometer's set_reset_command: true set, false reset")
+        .discrete()
+        .depends_on({});
+    t.output("mag_offset", &D::mag_offset, "V",
+             "Magnetometer offset taken out of the field: the mean of mag_offset_window estimates from set/reset "
+             "readings (half the sum of a set and a reset reading); 0 until that many were taken")
+        .discrete()
+        .depends_on({});
     t.local("t_start", &D::t_start, "s", "Start time: sample k is due at t_start + k*sample_period").discrete();
 }
 
@@ -291,7 +318,10 @@ fmu::ModelInfo EstimatorBlock::describe() {
         "converters (currents over [<code>i_adc_min</code>, <code>i_adc_max</code>], voltages over "
         "[<code>v_adc_min</code>, <code>v_adc_max</code>]), forms the sun vector "
         "s<sub>k</sub> = i<sub>sh,k</sub>/i<sub>sc_norm,k</sub> (000 eq. 5) and the field "
-        "B = (v<sub>mag</sub> &minus; v<sub>mag_ref</sub>)/S, and solves Wahba's problem (000 eq. 7-9) against "
+        "B = p(v<sub>mag</sub> &minus; v<sub>mag_ref</sub> &minus; v<sub>os</sub>)/S (p = &plusmn;1 the "
+        "magnetometer's set/reset polarity the block commanded through <code>mag_set_reset</code>, v<sub>os</sub> "
+        "the offset it estimated from set/reset readings; with <code>mag_set_reset_samples</code> = 0, the "
+        "default, p = 1 and v<sub>os</sub> = 0), and solves Wahba's problem (000 eq. 7-9) against "
         "the inertial references <code>sun_ref</code> and <code>mag_ref</code> with the Q-method "
         "(<code>solver = qmethod</code>, 000 eq. 15) or its closed form for two observations "
         "(<code>solver = fast</code>). Every output is discrete: held between samples.</p>"
@@ -350,6 +380,10 @@ void EstimatorBlock::take_sample(double t) {
     d.rejected_faces = r.rejected_faces;
     d.cube_state = r.cube_state;
     if (d.samples < std::numeric_limits<std::int32_t>::max()) ++d.samples;
+    // The next reading is taken in the polarity commanded here.
+    set_reset_after_sample(d.set_reset, r.mag_reading, r.mag_reading_usable, set_reset_config_from(d));
+    d.mag_set_reset = d.set_reset.polarity > 0.0;
+    d.mag_offset = applied_offset(d.set_reset, set_reset_config_from(d));
     update_rates(t);
 }
 
@@ -409,6 +443,10 @@ void EstimatorBlock::initialize(double t) {
     d.rate_state = MeanAngularRate<double>(rate_config_from(d));
     d.history_head = 0;
     d.history_filled = 0;
+    d.set_reset = {};  // set at power-up, no offset known
+    // No pulse at the start sample: during initialization a host re-reads the magnetometer after every
+    // output change, so a pulse here would be in the reading this very sample takes as a set one.
+    d.set_reset.since_pulse = -1;
     take_sample(t);
     d.next_index = 1;
 }
@@ -416,13 +454,27 @@ void EstimatorBlock::initialize(double t) {
 fmu::EventUpdate EstimatorBlock::event_update(double t, bool time_event_due) {
     auto& d = data();
     if (!time_event_due || !fmu::reached(t, next_time_event())) return {};
+    // A host that stepped over sample instants (it should not) gets the next one after t, not a burst;
+    // a time beyond the count's limit is refused before anything changes.
+    const std::int64_t next = fmu::next_instant_index(t, d.t_start, d.sample_period, d.next_index + 1, "sample clock");
     take_sample(t);
-    ++d.next_index;
-    // A host that stepped over sample instants (it should not) gets the next one after t, not a burst.
-    const double periods = std::floor((t - d.t_start) / d.sample_period);
-    if (periods > static_cast<double>(d.next_index)) d.next_index = static_cast<std::int64_t>(periods);
-    while (fmu::reached(t, next_time_event())) ++d.next_index;
+    d.next_index = next;
     return {};
+}
+
+// The fields outside the table, for a state restored from bytes (issue 14 case 8).
+void EstimatorBlock::check_state() const {
+    const auto& d = data();
+    fmu::require_range(d.next_index, 0, fmu::max_instant_index, "next_index");
+    fmu::require_range(d.history_head, 0, kMaxSpinWindow - 1, "history_head");
+    fmu::require_range(d.history_filled, 0, kMaxSpinWindow, "history_filled");
+    fmu::require_finite(d.t_start, "t_start");
+    for (const auto& s : d.sun_history) fmu::require_finite(std::span<const double>(s.data(), s.size()), "sun_history");
+    fmu::require_range(d.sun_state.cube_state, 0, 26, "sun_state.cube_state");
+    fmu::require_range(d.sun_state.refusals, 0, std::numeric_limits<int>::max(), "sun_state.refusals");
+    fmu::require_bool(d.sun_state.has_last, "sun_state.has_last");
+    fmu::require_finite(std::span<const double>(d.sun_state.last_unit.data(), d.sun_state.last_unit.size()), "sun_state.last_unit");
+    if (!d.rate_state.consistent()) throw fmu::Error("restored FMU state: rate_state is inconsistent");
 }
 
 double EstimatorBlock::next_time_event() const {

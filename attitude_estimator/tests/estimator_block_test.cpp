@@ -429,8 +429,9 @@ TEST(EstimatorFmuTable, OutputsAreDiscreteWithNoDirectDependencies) {
         ASSERT_TRUE(v.dependencies.has_value()) << v.name;
         EXPECT_TRUE(v.dependencies->empty()) << v.name;
     }
-    // q, A, sun, mag, field, sun_norm, loss, 3 flags + samples; faces (lit, rejected, cube); spin (5); rate (3).
-    EXPECT_EQ(outputs, 4 + 9 + 3 + 3 + 3 + 1 + 1 + 4 + 3 + 5 + 3);
+    // q, A, sun, mag, field, sun_norm, loss, 3 flags + samples; faces (lit, rejected, cube); spin (5); rate (3);
+    // set/reset command and offset (1 + 3).
+    EXPECT_EQ(outputs, 4 + 9 + 3 + 3 + 3 + 1 + 1 + 4 + 3 + 5 + 3 + 4);
     const auto& solver = table.by_name("solver");
     ASSERT_EQ(solver.allowed_values.size(), 2u);
     EXPECT_EQ(solver.allowed_values[0], "qmethod");

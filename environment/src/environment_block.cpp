@@ -319,23 +319,33 @@ void EnvironmentBlock::initialize(double) {
   d.orbit_period = kTwoPi * std::sqrt(a * a * a / kEarthGravitationalParameter);
 }
 
+void EnvironmentBlock::evaluate_derivatives(double) {
+  const Environment& env = core();
+  auto& d = data();
+  if (env.params().attitude_mode != AttitudeMode::rigid_body) {
+    d.der_q = {};
+    d.der_omega = {};
+    return;
+  }
+  const RigidBodyState x{d.q[0], d.q[1], d.q[2], d.q[3], d.omega[0], d.omega[1], d.omega[2]};
+  RigidBodyState dx{};
+  env.derivative(x.data(), dx.data());
+  // Norm stabilization (header): k (1 - |q|^2) q, zero on the unit sphere.
+  const double n2 = d.q[0] * d.q[0] + d.q[1] * d.q[1] + d.q[2] * d.q[2] + d.q[3] * d.q[3];
+  const double pull = d.quaternion_norm_gain * (1.0 - n2);
+  for (int i = 0; i < 4; ++i) d.der_q[i] = dx[i] + pull * d.q[i];
+  for (int i = 0; i < 3; ++i) d.der_omega[i] = dx[4 + i];
+}
+
 void EnvironmentBlock::evaluate(double t) {
   const Environment& env = core();
   auto& d = data();
+  evaluate_derivatives(t);
   EnvironmentOutputs o;
   if (env.params().attitude_mode == AttitudeMode::rigid_body) {
     const RigidBodyState x{d.q[0], d.q[1], d.q[2], d.q[3], d.omega[0], d.omega[1], d.omega[2]};
-    RigidBodyState dx{};
-    env.derivative(x.data(), dx.data());
-    // Norm stabilization (header): k (1 - |q|^2) q, zero on the unit sphere.
-    const double n2 = d.q[0] * d.q[0] + d.q[1] * d.q[1] + d.q[2] * d.q[2] + d.q[3] * d.q[3];
-    const double pull = d.quaternion_norm_gain * (1.0 - n2);
-    for (int i = 0; i < 4; ++i) d.der_q[i] = dx[i] + pull * d.q[i];
-    for (int i = 0; i < 3; ++i) d.der_omega[i] = dx[4 + i];
     o = env.evaluate(t, &x);  // normalises q before use
   } else {
-    d.der_q = {};
-    d.der_omega = {};
     o = env.evaluate(t);
   }
   d.sun_body = o.sun_body;

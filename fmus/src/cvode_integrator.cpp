@@ -41,6 +41,7 @@ struct CvodeIntegrator::Handles {
 
     Rhs rhs;
     Roots roots;
+    Jacobian jacobian;
     std::size_t n = 0, m = 0;
     std::exception_ptr failure;
     std::string message;
@@ -69,6 +70,19 @@ int roots_callback(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
     auto& h = *static_cast<CvodeIntegrator::Handles*>(user);
     try {
         h.roots(t, {N_VGetArrayPointer(y), h.n}, {g, h.m});
+        return 0;
+    } catch (...) {
+        h.failure = std::current_exception();
+        return -1;
+    }
+}
+
+int jacobian_callback(sunrealtype t, N_Vector y, N_Vector fy, SUNMatrix J, void* user, N_Vector, N_Vector, N_Vector) {
+    auto& h = *static_cast<CvodeIntegrator::Handles*>(user);
+    try {
+        SUNMatZero(J);
+        h.jacobian(t, {N_VGetArrayPointer(y), h.n}, {N_VGetArrayPointer(fy), h.n},
+                   [J](std::size_t j) { return SUNDenseMatrix_Column(J, static_cast<sunindextype>(j)); });
         return 0;
     } catch (...) {
         h.failure = std::current_exception();
@@ -118,6 +132,11 @@ CvodeIntegrator::CvodeIntegrator(std::size_t n, std::size_t m, Rhs rhs, Roots ro
 
 CvodeIntegrator::~CvodeIntegrator() = default;
 
+void CvodeIntegrator::set_jacobian(Jacobian jacobian) {
+    h_->jacobian = std::move(jacobian);
+    check(CVodeSetJacFn(h_->mem.get(), h_->jacobian ? jacobian_callback : nullptr), "CVodeSetJacFn");
+}
+
 void CvodeIntegrator::restart(double t, std::span<const double> x) {
     steps_before_restart_ = steps();
     rhs_before_restart_ = rhs_evaluations();
@@ -125,12 +144,13 @@ void CvodeIntegrator::restart(double t, std::span<const double> x) {
     check(CVodeReInit(h_->mem.get(), t, h_->y.get()), "CVodeReInit");
 }
 
-CvodeIntegrator::Stop CvodeIntegrator::advance(double t_stop, double& t, std::span<double> x) {
+CvodeIntegrator::Stop CvodeIntegrator::advance(double t_out, double t_stop, double& t, std::span<double> x) {
     auto& h = *h_;
     void* mem = h.mem.get();
+    t_out = std::min(t_out, t_stop);
     check(CVodeSetStopTime(mem, t_stop), "CVodeSetStopTime");
     sunrealtype t_reached = t;
-    const int flag = CVode(mem, t_stop, h.y.get(), &t_reached, CV_NORMAL);
+    const int flag = CVode(mem, t_out, h.y.get(), &t_reached, CV_NORMAL);
     if (h.failure) std::rethrow_exception(std::exchange(h.failure, nullptr));
     check(flag, "integration", h.message);
     t = flag == CV_TSTOP_RETURN ? t_stop : t_reached;

@@ -286,11 +286,11 @@ fmi2Status fmi2GetNominalsOfContinuousStates(fmi2Component c, fmi2Real x_nominal
 }
 
 // Co-Simulation
-fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference[], size_t, const fmi2Integer[],
-                                       const fmi2Real[]) {
-    return guarded(c, Call::set_input_derivatives, [](Instance& i) {
+fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                                       const fmi2Integer order[], const fmi2Real value[]) {
+    return guarded(c, Call::set_input_derivatives, [&](Instance& i) {
         i.require_kind(Kind::co_simulation, Call::set_input_derivatives);
-        throw fmu::Error("fmi2SetRealInputDerivatives: inputs are not interpolated (canInterpolateInputs=\"false\")");
+        i.set_real_input_derivatives({vr, nvr}, order, value);
     });
 }
 fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReference[], size_t, const fmi2Integer[],

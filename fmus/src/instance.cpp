@@ -6,15 +6,28 @@
 
 #include "fmu/description.hpp"
 #include "fmu/errors.hpp"
+#include "fmu/state_check.hpp"
 #include "fmu/value_access.hpp"
 
 namespace fmu {
 
 namespace {
 
-constexpr char serial_magic[8] = {'P', 'V', 'A', 'T', 'F', 'M', 'U', '1'};
+// Version 2 of the layout: header, block bytes, then an FNV-1a 64 checksum over everything before it
+// (catches a truncated, corrupted or edited payload; the invariant checks catch the rest).
+constexpr char serial_magic[8] = {'P', 'V', 'A', 'T', 'F', 'M', 'U', '2'};
 constexpr std::size_t serial_guid_bytes = 40;
 constexpr std::size_t serial_header = sizeof serial_magic + 8 + 8 + 8 + 1 + serial_guid_bytes;
+constexpr std::size_t serial_checksum = 8;
+
+std::uint64_t fnv1a64(std::span<const char> bytes) {
+    std::uint64_t hash = 0xcbf29ce484222325ull;
+    for (const char c : bytes) {
+        hash ^= static_cast<unsigned char>(c);
+        hash *= 0x100000001b3ull;
+    }
+    return hash;
+}
 
 constexpr std::size_t category_index(std::string_view name) {
     for (std::size_t i = 0; i < std::size(log_categories); ++i)
@@ -273,7 +286,28 @@ void Instance::set_real(std::span<const fmi2ValueReference> vr, const fmi2Real* 
             if (!std::isfinite(x)) throw Error(v.name + " cannot be set to " + format_real(x) + " (not finite)");
             check_range(v, x);
         },
-        [&](const Variable& v, double x) { write_real(runner_.model().bytes(), v, x); });
+        [&](const Variable& v, double x) {
+            write_real(runner_.model().bytes(), v, x);
+            if (v.causality == Causality::input) runner_.input_value_set(static_cast<std::size_t>(&v - runner_.table().variables().data()));
+        });
+}
+void Instance::set_real_input_derivatives(std::span<const fmi2ValueReference> vr, const fmi2Integer* order,
+                                          const fmi2Real* values) {
+    require_arrays(vr, values);
+    require_arrays(vr, order);
+    for (std::size_t i = 0; i < vr.size(); ++i) {
+        const Variable& v = variable(vr[i], ValueType::Real);
+        if (v.causality != Causality::input || v.variability != Variability::continuous)
+            throw Error("fmi2SetRealInputDerivatives: " + v.name + " is not a continuous Real input");
+        // Inputs are interpolated linearly over a step; a higher derivative would be silently ignored.
+        if (order[i] != 1)
+            throw Error("fmi2SetRealInputDerivatives: order " + std::to_string(order[i]) + " for " + v.name +
+                        " (this FMU interpolates inputs linearly: only order 1)");
+        if (!std::isfinite(values[i])) throw Error("fmi2SetRealInputDerivatives: the derivative of " + v.name + " is not finite");
+    }
+    for (std::size_t i = 0; i < vr.size(); ++i) runner_.set_input_slope(vr[i], values[i]);
+    runner_.mark_changed();
+    if (cs_solver_) cs_solver_->invalidate();
 }
 
 void Instance::set_integer(std::span<const fmi2ValueReference> vr, const fmi2Integer* values) {
@@ -342,7 +376,7 @@ void Instance::free_state(Snapshot* state) {
 
 std::size_t Instance::serialized_size(const Snapshot* state) const {
     require_owned(state);
-    return serial_header + state->model->bytes().size();
+    return serial_header + state->model->bytes().size() + serial_checksum;
 }
 
 std::vector<fmi2Byte> Instance::serialize(const Snapshot* state) const {
@@ -365,14 +399,16 @@ std::vector<fmi2Byte> Instance::serialize(const Snapshot* state) const {
     put(&terminate, 1);
     put(guid, serial_guid_bytes);
     put(data.data(), data.size());
+    const std::uint64_t checksum = fnv1a64(std::span<const char>(out.data(), out.size() - serial_checksum));
+    put(&checksum, serial_checksum);
     return out;
 }
 
 Snapshot* Instance::deserialize(std::span<const fmi2Byte> bytes) {
     const std::size_t data_size = runner_.model().bytes().size();
-    if (bytes.size() != serial_header + data_size)
+    if (bytes.size() != serial_header + data_size + serial_checksum)
         throw Error("serialized FMU state has " + std::to_string(bytes.size()) + " bytes; this FMU's have " +
-                    std::to_string(serial_header + data_size));
+                    std::to_string(serial_header + data_size + serial_checksum));
     const char* p = bytes.data();
     auto take = [&](void* dst, std::size_t n) {
         std::memcpy(dst, p, n);
@@ -393,10 +429,17 @@ Snapshot* Instance::deserialize(std::span<const fmi2Byte> bytes) {
         throw Error("the bytes are not a serialized state of this FMU");
     if (std::string_view(guid, strnlen(guid, serial_guid_bytes)) != guid_)
         throw Error("the serialized state belongs to another FMU (GUID differs)");
-    if (!std::isfinite(s->time)) throw Error("the serialized state has a non-finite time");
+    std::uint64_t stored_checksum = 0;
+    std::memcpy(&stored_checksum, p + data_size, serial_checksum);
+    if (stored_checksum != fnv1a64(bytes.first(serial_header + data_size)))
+        throw Error("the serialized state's checksum does not match its content (corrupted or edited)");
+    if (!std::isfinite(s->time) || !std::isfinite(s->last_successful_time))
+        throw Error("the serialized state has a non-finite time");
+    if (terminate > 1) throw Error("the serialized state's terminate flag is not a boolean");
     s->terminate_requested = terminate != 0;
     s->model = runner_.model().clone();
     std::memcpy(s->model->bytes().data(), p, data_size);
+    check_restored_state(*s->model);
     Snapshot* raw = s.release();
     snapshots_.insert(raw);
     return raw;
@@ -476,6 +519,7 @@ fmi2Status Instance::do_step(double current_time, double step_size) {
         runner_.set_time(current_time);
         cs_solver_->invalidate();  // inputs may have jumped at the communication point
         const auto outcome = cs_solver_->advance(current_time + step_size);
+        runner_.clear_input_slopes();  // given for this step; the inputs stay at their values at its end
         last_successful_time_ = runner_.time();
         if (outcome == CsSolver::Outcome::terminated) {
             terminate_requested_ = true;

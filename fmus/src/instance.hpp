@@ -91,6 +91,9 @@ public:
 
     // Co-Simulation; returns fmi2Discard when the block asked to terminate during the step.
     fmi2Status do_step(double current_time, double step_size);
+    // canInterpolateInputs: first derivatives of continuous Real inputs, applied over the next steps.
+    void set_real_input_derivatives(std::span<const fmi2ValueReference> vr, const fmi2Integer* order,
+                                    const fmi2Real* values);
     fmi2Status get_status(fmi2StatusKind kind, fmi2Status* value) const;
     fmi2Status get_real_status(fmi2StatusKind kind, fmi2Real* value) const;
     fmi2Status get_boolean_status(fmi2StatusKind kind, fmi2Boolean* value) const;

@@ -19,14 +19,50 @@ ModelRunner::ModelRunner(std::unique_ptr<Model> model)
 void ModelRunner::set_time(double t) {
     if (!std::isfinite(t)) throw Error("time must be finite");
     time_ = t;
-    stale_ = true;
+    mark_changed();
+    if (!input_slopes_.empty()) apply_input_slopes();
+}
+
+void ModelRunner::set_input_slope(std::size_t variable, double slope) {
+    const auto& v = table().variables()[variable];
+    if (!std::isfinite(slope)) throw Error("the derivative of input " + v.name + " is not finite");
+    std::erase_if(input_slopes_, [variable](const InputSlope& s) { return s.variable == variable; });
+    input_slopes_.push_back({variable, time_, read_real(model_->bytes(), v), slope});
+}
+
+void ModelRunner::input_value_set(std::size_t variable) {
+    for (auto& s : input_slopes_) {
+        if (s.variable != variable) continue;
+        s.base_time = time_;
+        s.base_value = read_real(model_->bytes(), table().variables()[variable]);
+    }
+}
+
+void ModelRunner::apply_input_slopes() {
+    const auto& vars = table().variables();
+    for (const auto& s : input_slopes_) {
+        const Variable& v = vars[s.variable];
+        double u = s.base_value + s.slope * (time_ - s.base_time);
+        // A host's line between two admissible values stays admissible but for rounding (an
+        // irradiance falling to 0 at the end of a step must not come out as -1e-17).
+        if (v.min) u = std::max(u, *v.min);
+        if (v.max) u = std::min(u, *v.max);
+        write_real(model_->bytes(), v, u);
+    }
 }
 
 void ModelRunner::ensure_evaluated() {
     if (!stale_) return;
     if (initializing_) model_->initialize(time_);
     model_->evaluate(time_);
-    stale_ = false;
+    stale_ = derivatives_stale_ = false;
+}
+
+void ModelRunner::ensure_derivatives() {
+    if (!derivatives_stale_) return;
+    if (initializing_) return ensure_evaluated();
+    model_->evaluate_derivatives(time_);
+    derivatives_stale_ = false;
 }
 
 void ModelRunner::get_states(std::span<double> x) const {
@@ -42,11 +78,11 @@ void ModelRunner::set_states(std::span<const double> x) {
         if (!std::isfinite(x[i])) throw Error("state " + vars[states[i]].name + " set to a non-finite value");
     }
     for (std::size_t i = 0; i < states.size(); ++i) write_real(model_->bytes(), vars[states[i]], x[i]);
-    stale_ = true;
+    mark_changed();
 }
 
 void ModelRunner::get_derivatives(std::span<double> dx) {
-    ensure_evaluated();
+    ensure_derivatives();
     const auto& vars = table().variables();
     const auto& ders = table().derivatives();
     for (std::size_t i = 0; i < ders.size(); ++i) dx[i] = read_real(model_->bytes(), vars[ders[i]]);
@@ -59,7 +95,7 @@ void ModelRunner::get_nominals(std::span<double> nominal) const {
 }
 
 void ModelRunner::get_indicators(std::span<double> z) {
-    ensure_evaluated();
+    ensure_derivatives();
     model_->event_indicators(time_, z);
 }
 
@@ -71,7 +107,7 @@ bool ModelRunner::time_event_due() const {
 EventUpdate ModelRunner::update_discrete() {
     ensure_evaluated();  // the update sees outputs consistent with the instant before it
     const EventUpdate result = model_->event_update(time_, time_event_due());
-    stale_ = true;
+    mark_changed();
     ensure_evaluated();
     return result;
 }
@@ -91,7 +127,8 @@ void ModelRunner::restore(const Model& saved, double time) {
     auto src = saved.bytes();
     std::copy(src.begin(), src.end(), model_->bytes().begin());
     time_ = time;
-    stale_ = true;
+    mark_changed();
+    input_slopes_.clear();
 }
 
 }  // namespace fmu

@@ -7,7 +7,7 @@ namespace fmu {
 
 namespace {
 
-constexpr std::array<UnitDefinition, 24> units{{
+constexpr std::array<UnitDefinition, 25> units{{
     {.name = "1"},
     {.name = "s", .s = 1},
     {.name = "Hz", .s = -1},
@@ -32,6 +32,7 @@ constexpr std::array<UnitDefinition, 24> units{{
     {.name = "kg.m2", .kg = 1, .m = 2},
     {.name = "V/A", .kg = 1, .m = 2, .s = -3, .A = -2},
     {.name = "%/V", .kg = -1, .m = -2, .s = 3, .A = 1, .factor = 0.01},
+    {.name = "1/V", .kg = -1, .m = -2, .s = 3, .A = 1},
 }};
 
 }  // namespace

@@ -124,7 +124,7 @@ std::string model_description_xml(const Model& model) {
     w.start("CoSimulation");
     w.attribute("modelIdentifier", info.model_identifier);
     w.attribute("canHandleVariableCommunicationStepSize", "true");
-    w.attribute("canInterpolateInputs", "false");
+    w.attribute("canInterpolateInputs", "true");  // linearly: fmi2SetRealInputDerivatives of order 1
     w.attribute("maxOutputDerivativeOrder", "0");
     w.attribute("canRunAsynchronuously", "false");  // the standard's spelling
     w.attribute("canNotUseMemoryManagementFunctions", "true");

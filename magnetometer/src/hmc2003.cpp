@@ -34,7 +34,7 @@ double sensitivity_at(double sensitivity, double tempco_per_kelvin, double t_cel
 }
 
 double output_voltage(const OutputStage& stage, double b_filt, double noise, double set_polarity) {
-    const double v = stage.v_null + stage.sensitivity * (b_filt + noise) + set_polarity * stage.offset;
+    const double v = stage.v_null + set_polarity * stage.sensitivity * (b_filt + noise) + stage.offset;
     return std::clamp(v, stage.v_low, stage.v_high);
 }
 

@@ -3,23 +3,33 @@
 #include <algorithm>
 
 #include "fmu/errors.hpp"
+#include "fmu/instant_clock.hpp"
+#include "fmu/state_check.hpp"
 
 namespace magnetometer {
 
 void MagnetometerBlock::declare(fmu::Table<MagnetometerData>& t) {
     using D = MagnetometerData;
     t.input("mag_body", &D::mag_body, "T", "Magnetic flux density at the sensor, body axes");
+    t.input("set_reset_command", &D::set_reset_command, "",
+            "Last set/reset strap pulse commanded by the on-board computer: true = set, false = reset "
+            "(set_reset_source = input; a change is a pulse)");
 
     t.parameter("sensitivity", &D::sensitivity, "V/T", "Sensitivity at 25 degC (datasheet: 1 V/gauss = 1e4 V/T)")
         .min(1e-3);
     t.parameter("v_null", &D::v_null, "V", "Zero-field output voltage, also the reference pin (datasheet: 2.5 V)")
         .range(0.0, 5.0);
     t.parameter("bridge_offset", &D::bridge_offset, "V",
-                "Bridge offset referred to the output; its sign flips with each set/reset pulse")
+                "Bridge and amplifier offset referred to the output; unchanged by set/reset pulses (the pulses "
+                "flip the field term)")
         .range(-1.0, 1.0);
-    t.parameter("set_reset_enabled", &D::set_reset_enabled, "",
-                "Apply periodic set/reset pulses (alternating set and reset) every set_reset_period");
-    t.parameter("set_reset_period", &D::set_reset_period, "s", "Time between set/reset pulses").min(1e-4);
+    t.parameter("set_reset_source", &D::set_reset_source, "",
+                "Who pulses the set/reset strap: input (set_reset_command, the on-board computer), timer (the "
+                "sensor alternates set and reset every set_reset_period by itself) or none (set at power-up only)")
+        .one_of({"input", "timer", "none"});
+    t.parameter("set_reset_period", &D::set_reset_period, "s",
+                "Time between set/reset pulses when set_reset_source = timer")
+        .min(1e-4);
     t.parameter("cross_axis", &D::cross_axis, "1",
                 "Cross-axis sensitivity: fraction of each transverse field seen by an axis")
         .range(-0.1, 0.1);
@@ -32,7 +42,8 @@ void MagnetometerBlock::declare(fmu::Table<MagnetometerData>& t) {
                 "RMS output noise, field-equivalent (datasheet resolution 40 ugauss = 4 nT); 0 disables it")
         .range(0.0, 1e-3);
     t.parameter("noise_sample_period", &D::noise_sample_period, "s",
-                "Noise is a new Gaussian sample every period, held in between (band-limits it)")
+                "Noise is a new Gaussian sample every period, held in between (band-limits it); the samples are "
+                "counted from the start time, not scheduled as time events")
         .min(1e-5);
     t.parameter("noise_seed", &D::noise_seed, "", "Seed of the noise generator: the same seed gives the same run");
     t.parameter("temperature", &D::temperature, "degC", "Sensor temperature").range(-55.0, 125.0).tunable();
@@ -49,10 +60,11 @@ void MagnetometerBlock::declare(fmu::Table<MagnetometerData>& t) {
         .derivative_depends_on({"mag_body"});
 
     t.output("v_out", &D::v_out, "V", "Output voltages X, Y, Z (0-5 V, v_ref at zero field)")
-        .depends_elementwise({"b_filt"});
+        .depends_elementwise({"b_filt"})
+        .depends_on({"set_reset_command"});
     t.output("v_ref", &D::v_ref, "V", "Zero-field reference voltage (+2.5 V pin)").depends_on({});
     t.output("set_polarity", &D::set_polarity, "", "True after a set pulse, false after a reset pulse")
-        .depends_on({});
+        .depends_on({"set_reset_command"});
 }
 
 fmu::ModelInfo MagnetometerBlock::describe() {
@@ -66,10 +78,14 @@ fmu::ModelInfo MagnetometerBlock::describe() {
         "ADC. Signal chain per axis: the body-frame field is mixed by the cross-axis and misalignment matrix "
         "M = C&middot;(I &minus; [&theta;&times;]), filtered by the sensor bandwidth (first order, continuous "
         "states <code>b_filt</code>), scaled by the temperature-dependent sensitivity "
-        "S(T) = S<sub>0</sub>(1 + k<sub>T</sub>(T &minus; 25 &deg;C)), shifted by the bridge offset whose sign "
-        "flips with each set/reset pulse (time events every <code>set_reset_period</code>; the mean of a set and "
-        "a reset reading cancels the offset), plus seeded Gaussian noise held for "
-        "<code>noise_sample_period</code> (its generator is part of the FMU state), and clamped to the rails.</p>"
+        "S(T) = S<sub>0</sub>(1 + k<sub>T</sub>(T &minus; 25 &deg;C)) with the sign of the last set/reset pulse "
+        "(a pulse re-magnetises the permalloy and reverses the field term; the bridge offset stays, so half the "
+        "difference of a set and a reset reading is the field without it), shifted by the offset. The pulses "
+        "come from the on-board computer through <code>set_reset_command</code> "
+        "(<code>set_reset_source</code> = input, the default), from the sensor's own timer (time events every "
+        "<code>set_reset_period</code>), or not at all (none), plus seeded Gaussian noise held for "
+        "<code>noise_sample_period</code> (a counter-based generator keyed by the seed, the hold interval "
+        "and the axis, so the noise needs no time events and an FMU state reproduces it), and clamped to the rails.</p>"
         "<p>Defaults are the datasheet's typical values; <code>bridge_offset</code>, <code>cross_axis</code> and "
         "<code>set_reset_period</code> are assumptions to be replaced by a calibration of the flight unit. "
         "Linearity error, hysteresis and the set/reset pulse's own transient are not modelled.</p>";
@@ -83,9 +99,29 @@ void MagnetometerBlock::validate() const {
     if (d.v_null < d.v_rail_low || d.v_null > d.v_rail_high) throw fmu::Error("v_null must lie between the rails");
 }
 
-void MagnetometerBlock::draw_noise() {
+// The fields outside the table of a state restored from bytes (issue 14 case 8).
+void MagnetometerBlock::check_state() const {
+    const auto& d = data();
+    fmu::require_bool(d.set_polarity, "set_polarity");
+    for (const double n : d.noise) fmu::require_finite(n, "noise");
+    if (std::isnan(d.next_set_reset) || !std::isfinite(d.noise_start)) throw fmu::Error("restored FMU state: an event time is NaN");
+    if (d.noise_index < 0 && d.noise_index != no_noise_index)
+        throw fmu::Error("restored FMU state: the noise hold interval is negative");
+}
+
+// The noise enters the outputs only (after the filter), never a derivative: a new sample is a jump of
+// v_out alone, which needs no event, so the hold intervals are counted from the time, not scheduled.
+void MagnetometerBlock::update_noise(double t) {
     auto& d = data();
-    for (auto& n : d.noise) n = d.noise_rms > 0.0 ? d.noise_rms * d.random.normal() : 0.0;
+    if (!(d.noise_rms > 0.0)) {
+        d.noise = {};
+        return;
+    }
+    const std::int64_t k = noise_index(t, d.noise_start, d.noise_sample_period);
+    if (k == d.noise_index) return;
+    const auto seed = static_cast<std::uint64_t>(static_cast<std::uint32_t>(d.noise_seed));
+    for (int axis = 0; axis < 3; ++axis) d.noise[axis] = d.noise_rms * held_normal(seed, k, axis);
+    d.noise_index = k;
 }
 
 void MagnetometerBlock::initialize(double t) {
@@ -93,14 +129,14 @@ void MagnetometerBlock::initialize(double t) {
     // The sensor has been powered long before the simulation starts: its filter is in steady state.
     d.b_filt = multiply(sensor_matrix(d.cross_axis, d.misalignment), d.mag_body);
     d.set_polarity = true;  // the first pulse at power-up is a set pulse
-    d.next_set_reset = d.set_reset_enabled ? t + d.set_reset_period : fmu::no_time_event;
-    d.random.seed(static_cast<std::uint64_t>(static_cast<std::uint32_t>(d.noise_seed)));
-    draw_noise();
-    d.next_noise = d.noise_rms > 0.0 ? t + d.noise_sample_period : fmu::no_time_event;
+    d.next_set_reset = d.set_reset_source == "timer" ? t + d.set_reset_period : fmu::no_time_event;
+    d.noise_start = t;
+    d.noise_index = no_noise_index;  // interval 0 is drawn by the first evaluate
 }
 
-void MagnetometerBlock::evaluate(double) {
+void MagnetometerBlock::evaluate(double t) {
     auto& d = data();
+    update_noise(t);
     const Vec3 sensed = multiply(sensor_matrix(d.cross_axis, d.misalignment), d.mag_body);
     d.der_b_filt = filter_derivative(sensed, d.b_filt, d.bandwidth);
     const OutputStage stage{.sensitivity = sensitivity_at(d.sensitivity, d.sensitivity_tempco, d.temperature),
@@ -108,6 +144,7 @@ void MagnetometerBlock::evaluate(double) {
                             .offset = d.bridge_offset,
                             .v_low = d.v_rail_low,
                             .v_high = d.v_rail_high};
+    if (d.set_reset_source == "input") d.set_polarity = d.set_reset_command;
     const double polarity = d.set_polarity ? 1.0 : -1.0;
     for (int i = 0; i < 3; ++i) d.v_out[i] = output_voltage(stage, d.b_filt[i], d.noise[i], polarity);
     d.v_ref = std::clamp(d.v_null, d.v_rail_low, d.v_rail_high);
@@ -116,20 +153,17 @@ void MagnetometerBlock::evaluate(double) {
 fmu::EventUpdate MagnetometerBlock::event_update(double t, bool time_event_due) {
     auto& d = data();
     if (!time_event_due) return {};
+    // A host that stepped over instants gets them counted at once (and a time too far for the count
+    // refused), not one per call: next_instant_index is the number of instants reached.
     if (fmu::reached(t, d.next_set_reset)) {
-        d.set_polarity = !d.set_polarity;  // pulses alternate set, reset, set, ...
-        d.next_set_reset += d.set_reset_period;
-    }
-    if (fmu::reached(t, d.next_noise)) {
-        draw_noise();
-        d.next_noise += d.noise_sample_period;
+        const auto pulses = fmu::next_instant_index(t, d.next_set_reset, d.set_reset_period, 1, "set/reset pulses");
+        if (pulses % 2 == 1) d.set_polarity = !d.set_polarity;  // pulses alternate set, reset, set, ...
+        d.next_set_reset += static_cast<double>(pulses) * d.set_reset_period;
     }
     return {};
 }
 
-double MagnetometerBlock::next_time_event() const {
-    return std::min(data().next_set_reset, data().next_noise);
-}
+double MagnetometerBlock::next_time_event() const { return data().next_set_reset; }
 
 }  // namespace magnetometer
 

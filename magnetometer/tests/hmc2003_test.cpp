@@ -25,15 +25,19 @@ TEST(Hmc2003, OutputsSaturateAtTheRails) {
     EXPECT_DOUBLE_EQ(output_voltage(ideal, -3.0 * gauss, 0.0, 1.0), 0.0);
 }
 
-TEST(Hmc2003, OffsetFlipsWithSetResetAndCancelsInTheMean) {
+TEST(Hmc2003, SetResetFlipsTheFieldTermAndTheOffsetStays) {
+    // AN-213: after a set V = 2.5 + S·B + V_os, after a reset V = 2.5 − S·B + V_os. With 0.3 gauss at
+    // 1 V/gauss and a 20 mV offset: 2.5 + 0.3 + 0.02 = 2.82 V and 2.5 − 0.3 + 0.02 = 2.22 V; half the
+    // difference is the field alone (0.3 V), half the sum the null plus the offset (2.52 V).
     OutputStage stage = ideal;
     stage.offset = 0.02;
     const double b = 0.3 * gauss;
     const double after_set = output_voltage(stage, b, 0.0, +1.0);
     const double after_reset = output_voltage(stage, b, 0.0, -1.0);
     EXPECT_NEAR(after_set, 2.82, 1e-12);
-    EXPECT_NEAR(after_reset, 2.78, 1e-12);
-    EXPECT_NEAR(0.5 * (after_set + after_reset), 2.8, 1e-12);
+    EXPECT_NEAR(after_reset, 2.22, 1e-12);
+    EXPECT_NEAR(0.5 * (after_set - after_reset), 0.3, 1e-12);
+    EXPECT_NEAR(0.5 * (after_set + after_reset), 2.52, 1e-12);
 }
 
 TEST(Hmc2003, SensitivityFollowsItsTemperatureCoefficient) {

@@ -2,17 +2,19 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 
 #include "fmu/errors.hpp"
+#include "fmu/state_check.hpp"
 
 namespace ssr_plant {
 
 void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
     using D = SsrPlantData;
     t.input("sun_body", &D::sun_body, "1", "Sun direction in body axes (normalized inside; zero: no direct sun)");
-    t.input("irradiance", &D::irradiance, "W/m2", "Direct solar irradiance, 0 in eclipse");
-    t.input("albedo_face", &D::albedo_face, "W/m2", "Earth albedo irradiance on each face (+x, -x, +y, -y, +z, -z)");
+    t.input("irradiance", &D::irradiance, "W/m2", "Direct solar irradiance, 0 in eclipse").min(0.0);
+    t.input("albedo_face", &D::albedo_face, "W/m2", "Earth albedo irradiance on each face (+x, -x, +y, -y, +z, -z)").min(0.0);
 
     t.parameter("fidelity", &D::fidelity, "",
                 "switching: every PWM edge a time event, S/H tracks while the gate is on; averaged: state-space "
@@ -21,6 +23,12 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
     t.parameter("angular_response", &D::angular_response, "",
                 "Panel response to the incidence angle: cosine law (seed 000 eq. 1) or Kelly cosine (fig. 4)")
         .one_of({"cosine", "kelly"});
+    t.parameter("modulation", &D::modulation, "",
+                "PWM modulator (switching fidelity): latched_natural (default: gate on at each period start, off "
+                "when the live controller output falls to the carrier, a state event; seed scenario 15.04 V) or "
+                "regular (controller sampled once per period, pulse of D*T; a 0/1 limit cycle at 300 per volt, "
+                "15.28 V at 3 per volt)")
+        .one_of({"latched_natural", "regular"});
     t.parameter("rated_irradiance", &D::rated_irradiance, "W/m2", "Irradiance of the datasheet ratings (seed: 10 Wp at 1000 W/m2)").min(1.0);
     t.parameter("panel_isc", &D::panel_isc, "A", "Panel short-circuit current at the rated irradiance (assumed 36-cell 10 Wp panel)").min(1e-3);
     t.parameter("panel_voc", &D::panel_voc, "V", "Panel open-circuit voltage (assumed)").min(0.1);
@@ -38,11 +46,10 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
         .min(1e-3)
         .tunable();
     t.parameter("bus_voltage_reference", &D::bus_voltage_reference, "V", "Bus voltage reference of the controller (seed: 15 V)").range(0.0, 100.0);
-    t.parameter("controller_gain", &D::controller_gain, "%/V",
-                "Proportional gain, percent of duty per volt of bus error (seed: 300). Read as 300 per volt, the "
-                "once-per-period sampled loop is unstable (loop gain ~48 per sample); as %/V it is well damped but "
-                "leaves the offset D/K of a P controller (~0.28 V)")
-        .range(0.0, 1e7);
+    t.parameter("controller_gain", &D::controller_gain, "1/V",
+                "Proportional gain, duty per volt of bus error: D = clamp(K (v_bus - v_ref), 0, 1) (seed: 300 per "
+                "volt, offset D/K = 2.8 mV). The regular modulator is unstable above about 12 per volt")
+        .range(0.0, 1e5);
     t.parameter("battery_capacity", &D::battery_capacity, "C", "Battery capacity (assumed 2 Ah = 7200 C)").min(1.0);
     t.parameter("battery_ocv", &D::battery_ocv, "V", "Battery open-circuit voltage at soc = 0, 0.1, ..., 1 (assumed 12 V lead-acid)").range(0.0, 100.0);
     t.parameter("battery_internal_resistance", &D::battery_internal_resistance, "Ohm", "Battery internal resistance (assumed)").range(1e-4, 100.0);
@@ -72,6 +79,10 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
     t.output("i_batt", &D::i_batt, "A", "Battery current, positive charging").depends_on({"v_cap", "soc_state"});
     t.output("soc", &D::soc, "1", "Battery state of charge").depends_on({"soc_state"});
     t.output("duty", &D::duty, "1", "Shunt duty cycle (fraction of the PWM period the panels are shorted)").depends_on({"v_cap"});
+    t.output("pwm_period", &D::pwm_period, "",
+             "Index of the PWM period in progress (the controller's samples so far; switching fidelity; 0 in averaged "
+             "fidelity; saturates at 2^31 - 1, 5 days at 5 kHz)")
+        .depends_on({});
     t.output("gate", &D::gate, "", "Shunt MOSFETs on (switching fidelity); always false in averaged fidelity, which has no gate")
         .depends_on({});
     t.output("i_load", &D::i_load, "A", "Load current").depends_on({"v_cap"});
@@ -87,8 +98,11 @@ fmu::ModelInfo SsrPlantBlock::describe() {
         "box face (+x, -x, +y, -y, +z, -z), each a single-diode model (eq. 2) with series and shunt resistance "
         "fitted to its datasheet points, lit by irradiance f(beta) (cosine law, eq. 1, or the Kelly cosine of "
         "fig. 4) plus the face's albedo input. The Sequential Shunt Regulator (fig. 5/7) shorts all six panels "
-        "during the PWM on-time (5 kHz; every edge a time event in <code>switching</code> fidelity); a "
-        "proportional controller sampled once per period sets the duty; the 1500 uF bus feeds the 90 Ohm load; a "
+        "during the PWM on-time (5 kHz, <code>switching</code> fidelity); a proportional controller of 300 per "
+        "volt (the seed's) sets the duty D = K(v - v_ref), turned into pulses by a latched naturally sampled "
+        "modulator (gate on at each period start, a time event; off when D(v(t)) meets the carrier, a state "
+        "event; <code>modulation</code> = latched_natural) or a regularly sampled one (<code>regular</code>: "
+        "pulse of D T, unstable above about 12 per volt); the 1500 uF bus feeds the 90 Ohm load; a "
         "12 V battery charges through a charge switch with hysteresis (state events) and carries the load "
         "through a series diode in eclipse. The Hall transducer of each axis measures I(+axis) - I(-axis) of the "
         "shorted panels; its sample/hold tracks while the gate is on and holds while it is off (seed 001 "
@@ -98,7 +112,7 @@ fmu::ModelInfo SsrPlantBlock::describe() {
         "<p>In <code>averaged</code> fidelity the PWM is replaced by its state-space average over one period (no "
         "PWM events) and the sample/hold by the continuous current (per axis and per face: the live current of "
         "the panel short-circuited through its shunt switch): use it for whole orbits.</p>"
-        "<p>The controller gain's unit is a modelling choice (see <code>controller_gain</code>). Assumed values "
+        "<p>Assumed values "
         "(not in the seeds): the panel datasheet, the battery curve and resistances, diode drops, thresholds.</p>";
     info.default_experiment = {.start_time = 0.0, .stop_time = 10.0, .tolerance = 1e-6, .step_size = 1e-3};
     return info;
@@ -113,6 +127,9 @@ Parameters SsrPlantBlock::parameters() const {
     if (d.angular_response == "cosine") p.angular_response = AngularResponse::cosine;
     else if (d.angular_response == "kelly") p.angular_response = AngularResponse::kelly;
     else throw fmu::Error("angular_response must be cosine or kelly");
+    if (d.modulation == "latched_natural") p.modulation = Modulation::latched_natural;
+    else if (d.modulation == "regular") p.modulation = Modulation::regular;
+    else throw fmu::Error("modulation must be latched_natural or regular");
     p.panel.rated_irradiance = d.rated_irradiance;
     p.panel.short_circuit_current = d.panel_isc;
     p.panel.open_circuit_voltage = d.panel_voc;
@@ -177,6 +194,11 @@ bool SsrPlantBlock::gate_output() const {
     return plant().parameters.fidelity == Fidelity::switching && data().discrete.gate;
 }
 
+std::int32_t SsrPlantBlock::pwm_period_output() const {
+    const auto index = data().discrete.period_index;
+    return static_cast<std::int32_t>(std::clamp<std::int64_t>(index, 0, std::numeric_limits<std::int32_t>::max()));
+}
+
 Inputs SsrPlantBlock::inputs() const {
     const auto& d = data();
     Inputs u;
@@ -193,6 +215,20 @@ Inputs SsrPlantBlock::inputs() const {
 
 State SsrPlantBlock::state() const { return {data().v_cap, data().soc_state}; }
 
+// The core's discrete state (outside the table) of a state restored from bytes (issue 14 case 8).
+void SsrPlantBlock::check_state() const {
+    const auto& s = data().discrete;
+    fmu::require_finite(s.period_origin, "discrete.period_origin");
+    fmu::require_range(s.period_index, 0, 100'000'000'000, "discrete.period_index");
+    if (!(s.duty >= 0.0 && s.duty <= 1.0)) throw fmu::Error("restored FMU state: discrete.duty is outside 0 ... 1");
+    fmu::require_bool(s.gate, "discrete.gate");
+    fmu::require_bool(s.off_edge_pending, "discrete.off_edge_pending");
+    fmu::require_bool(s.charge_connected, "discrete.charge_connected");
+    if (std::isnan(s.next_event_time)) throw fmu::Error("restored FMU state: discrete.next_event_time is NaN");
+    fmu::require_finite(std::span<const double>(s.held_face_current.data(), s.held_face_current.size()),
+                        "discrete.held_face_current");
+}
+
 void SsrPlantBlock::validate() const {
     fitted(parameters());  // throws fmu::Error with the core's reason
     if (!(data().soc_connect < data().soc_disconnect)) throw fmu::Error("soc_connect must be below soc_disconnect");
@@ -203,6 +239,7 @@ void SsrPlantBlock::initialize(double t) {
     const ssr_plant::Model& m = plant();
     d.discrete = ssr_plant::initialize(m, inputs(), t, state());
     d.gate = gate_output();
+    d.pwm_period = pwm_period_output();
 }
 
 void SsrPlantBlock::evaluate(double t) {
@@ -226,6 +263,13 @@ void SsrPlantBlock::evaluate(double t) {
     // gate is discrete: it changes only in initialize/event_update (see its description).
 }
 
+void SsrPlantBlock::evaluate_derivatives(double t) {
+    auto& d = data();
+    const State dx = ssr_plant::derivatives(plant(), inputs(), d.discrete, t, state());
+    d.der_v_cap = dx[state_v_bus];
+    d.der_soc_state = dx[state_soc];
+}
+
 void SsrPlantBlock::event_indicators(double t, std::span<double> z) {
     const ssr_plant::Model& m = plant();
     const Indicators g = ssr_plant::event_indicators(m, inputs(), data().discrete, t, state());
@@ -238,6 +282,7 @@ fmu::EventUpdate SsrPlantBlock::event_update(double t, bool) {
     const EventResult r = ssr_plant::event_update(m, illumination(m), d.discrete, t, state());
     d.discrete = r.discrete;
     d.gate = gate_output();
+    d.pwm_period = pwm_period_output();
     return {};  // the core settles an instant in one call; states never jump
 }
 

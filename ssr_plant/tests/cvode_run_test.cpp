@@ -13,6 +13,7 @@
 #include <memory>
 
 #include "ssr_plant/plant.hpp"
+#include "earlier_reading.hpp"
 #include "test_integrator.hpp"
 
 namespace {
@@ -141,7 +142,7 @@ std::array<double, 3> spin_sun(double t) {
 
 TEST(SsrCoreCvode, SeedScenarioAgreesWithFixedStepRun) {
     for (Fidelity f : {Fidelity::switching, Fidelity::averaged}) {
-        Parameters p;
+        Parameters p = earlier_reading();
         p.fidelity = f;
         const Model m = make_model(p);
         ssr_plant_test::InputsAt u = [](double t) {
@@ -173,7 +174,7 @@ TEST(SsrCoreCvode, SeedScenarioAgreesWithFixedStepRun) {
 
 TEST(SsrCoreCvode, HysteresisUnderRootFinding) {
     // Same eclipse-then-sun cycle as SsrCorePlant.HysteresisRun…: exactly two switchings, soc ends full.
-    Parameters p;
+    Parameters p = earlier_reading();
     p.fidelity = Fidelity::averaged;
     p.battery.capacity = 1.0;
     const Model m = make_model(p);

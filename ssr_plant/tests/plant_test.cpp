@@ -9,6 +9,7 @@
 
 #include "reference_formulas.hpp"
 #include "ssr_plant/battery.hpp"
+#include "earlier_reading.hpp"
 #include "test_integrator.hpp"
 
 namespace {
@@ -33,16 +34,16 @@ double shorted_reference(const Model& m, double effective_irradiance) {
 }
 
 TEST(SsrCorePlant, RejectsBadParametersAndInputs) {
-    Parameters p;
+    Parameters p = earlier_reading();
     p.bus_capacitance = 0.0;
     EXPECT_THROW(make_model(p), ParameterError);
-    p = Parameters{};
+    p = earlier_reading();
     p.battery.soc_connect = 1.0;  // no hysteresis band
     EXPECT_THROW(make_model(p), ParameterError);
-    p = Parameters{};
+    p = earlier_reading();
     p.pwm_frequency = std::numeric_limits<double>::quiet_NaN();
     EXPECT_THROW(make_model(p), ParameterError);
-    EXPECT_NO_THROW(make_model(Parameters{}));
+    EXPECT_NO_THROW(make_model(earlier_reading()));
 
     Inputs u;
     EXPECT_NO_THROW(check_inputs(u));
@@ -57,7 +58,7 @@ TEST(SsrCorePlant, RejectsBadParametersAndInputs) {
 }
 
 TEST(SsrCorePlant, FaceIrradianceIsDirectTimesCosinePlusAlbedo) {
-    const Model m = make_model(Parameters{});
+    const Model m = make_model(earlier_reading());
     Inputs u = sun_along(0.6, 0.0, -0.8, 1000.0);
     u.albedo_face = {0, 0, 0, 50, 0, 0};
     const auto g = face_irradiance(m, u);
@@ -77,7 +78,7 @@ TEST(SsrCorePlant, FaceIrradianceIsDirectTimesCosinePlusAlbedo) {
 }
 
 TEST(SsrCorePlant, PwmEdgesAreTimeEventsOnAnExactGrid) {
-    const Model m = make_model(Parameters{});
+    const Model m = make_model(earlier_reading());
     const Inputs u = sun_along(1, 0, 0);
     // v = 15.2 V → D = 300 %/V · 0.2 V = 0.6 (hand).
     State x{15.2, 0.9};
@@ -112,8 +113,40 @@ TEST(SsrCorePlant, PwmEdgesAreTimeEventsOnAnExactGrid) {
     EXPECT_NEAR(next_time_event(m, far), (1000000 + 0.3) * T, 1e-12);
 }
 
+TEST(SsrCorePlant, LatchedNaturalComparatorEndsThePulseWhereTheControllerMeetsTheCarrier) {
+    const Model m = make_model(Parameters{});  // 300 /V, latched_natural (the defaults)
+    const Inputs u = sun_along(1, 0, 0);
+    // v = 15.002 V → D = 300 /V · 2 mV = 0.6 (hand); the bus held there, the carrier (t − t_k)/T rises.
+    const State x{15.002, 0.9};
+    DiscreteState d = initialize(m, u, 0.0, x);
+    EXPECT_TRUE(d.gate);
+    EXPECT_FALSE(d.off_edge_pending);  // no scheduled trailing edge: the comparator decides
+    EXPECT_NEAR(next_time_event(m, d), T, 1e-18);
+    EXPECT_NEAR(event_indicators(m, u, d, 0.3 * T, x)[indicator_modulator], 0.6 - 0.3, 1e-9);
+    EXPECT_FALSE(event_update(m, u, d, 0.3 * T, x).changed);  // still above the carrier
+    // The sun moves to −y during the pulse: the S/H tracks it, and holds it when the comparator trips.
+    const Inputs u2 = sun_along(0, -1, 0);
+    d = event_update(m, u2, d, 0.6 * T, x).discrete;
+    EXPECT_FALSE(d.gate);
+    EXPECT_EQ(event_indicators(m, u2, d, 0.7 * T, x)[indicator_modulator], 1.0);  // disarmed while off
+    EXPECT_NEAR(outputs(m, sun_along(0, 0, 1), d, 0.8 * T, x).i_sh[1], -shorted_reference(m, 1367.0), 1e-9);
+    // Latched: the bus rising again within the period does not turn the gate back on.
+    EXPECT_FALSE(event_update(m, u2, d, 0.9 * T, State{15.003, 0.9}).discrete.gate);
+    // Next period start at 15.001 V: D = 0.3, on again.
+    d = event_update(m, u2, d, T, State{15.001, 0.9}).discrete;
+    EXPECT_TRUE(d.gate);
+    EXPECT_NEAR(event_indicators(m, u2, d, 1.1 * T, State{15.001, 0.9})[indicator_modulator], 0.3 - 0.1, 1e-9);
+    // The regular modulator at the same gain schedules the edge at D·T instead (a time event).
+    Parameters regular;
+    regular.modulation = Modulation::regular;
+    const Model mr = make_model(regular);
+    const DiscreteState dr = initialize(mr, u, 0.0, x);
+    EXPECT_NEAR(next_time_event(mr, dr), 0.6 * T, 1e-15);  // 300 · (15.002 − 15) is 0.6 to 1e-12
+    EXPECT_EQ(event_indicators(mr, u, dr, 0.3 * T, x)[indicator_modulator], 1.0);
+}
+
 TEST(SsrCorePlant, SampleHoldTracksWhileGateOnAndHoldsWhileOff) {
-    const Model m = make_model(Parameters{});
+    const Model m = make_model(earlier_reading());
     const State x{15.2, 0.9};  // D = 0.6
     // Sun along +x: the x-axis Hall sees the shorted +x panel, the others nothing.
     const Inputs u1 = sun_along(1, 0, 0);
@@ -149,7 +182,7 @@ TEST(SsrCorePlant, SampleHoldTracksWhileGateOnAndHoldsWhileOff) {
     EXPECT_NEAR(y.i_sh[1], 0.0, 1e-12);
 
     // Averaged fidelity: no PWM events, the S/H is the continuous differential current.
-    Parameters pa;
+    Parameters pa = earlier_reading();
     pa.fidelity = Fidelity::averaged;
     const Model ma = make_model(pa);
     DiscreteState da = initialize(ma, u2, 0.0, x);
@@ -160,7 +193,7 @@ TEST(SsrCorePlant, SampleHoldTracksWhileGateOnAndHoldsWhileOff) {
 }
 
 TEST(SsrCorePlant, HysteresisSwitchesOnlyAtTheThresholds) {
-    const Model m = make_model(Parameters{});  // connect at soc 0.80, disconnect at 1.00
+    const Model m = make_model(earlier_reading());  // connect at soc 0.80, disconnect at 1.00
     const Inputs u = sun_along(0, 0, 1);
     State x{15.0, 0.81};
     DiscreteState d = initialize(m, u, 0.0, x);
@@ -192,7 +225,7 @@ TEST(SsrCorePlant, DerivativesBalanceChargeAndPower) {
     // form at v + V_f (OR diode, its resistance in series), 0 where the diode blocks; load v/R;
     // battery current from the network solved by hand in battery_test.
     for (Fidelity f : {Fidelity::switching, Fidelity::averaged}) {
-        Parameters p;
+        Parameters p = earlier_reading();
         p.fidelity = f;
         const Model m = make_model(p);
         Inputs u = sun_along(0.48, -0.6, 0.64);
@@ -242,7 +275,7 @@ bool same_bits(const Evaluation& a, const Evaluation& b) { return std::memcmp(&a
 
 TEST(SsrCorePlant, BusSideMemoGivesBitIdenticalEvaluations) {
     for (Fidelity f : {Fidelity::switching, Fidelity::averaged}) {
-        Parameters p;
+        Parameters p = earlier_reading();
         p.fidelity = f;
         const Model m = make_model(p);
         Inputs u = sun_along(0.48, -0.6, 0.64);
@@ -271,7 +304,7 @@ TEST(SsrCorePlant, HysteresisRunHasFiniteSwitchingsAndRespectsFullCharge) {
     // load through its diode, falls to soc 0.80 → connected (1 switching, no chatter while it keeps
     // discharging), then charges in the sun up to 1.00 → disconnected (2nd switching), then stays.
     for (Fidelity f : {Fidelity::averaged, Fidelity::switching}) {
-        Parameters p;
+        Parameters p = earlier_reading();
         p.fidelity = f;
         p.battery.capacity = 1.0;
         const Model m = make_model(p);

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "ssr_plant/plant.hpp"
+#include "earlier_reading.hpp"
 #include "test_integrator.hpp"
 
 namespace {
@@ -26,7 +27,7 @@ std::array<double, 3> sun(double t) {
 }
 
 ScenarioResult run(Fidelity f, AngularResponse law, double soc0, double t_end = 0.5) {
-    Parameters p;
+    Parameters p = earlier_reading();
     p.fidelity = f;
     p.angular_response = law;
     const Model m = make_model(p);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "attitude_estimator/vec3_math.hpp"
 
@@ -67,6 +68,20 @@ MeanAngularRate<T>::MeanAngularRate(const MeanAngularRateConfig<T>& config) noex
   config_.window = std::clamp<std::size_t>(config_.window, 1, kMaxRateWindow);
   if (!(config_.min_interval >= T(0)) || !std::isfinite(config_.min_interval)) config_.min_interval = T(0);
   if (!(config_.max_interval > T(0))) config_.max_interval = std::numeric_limits<T>::infinity();
+}
+
+template <class T>
+bool MeanAngularRate<T>::consistent() const noexcept {
+  unsigned char flag = 0;
+  std::memcpy(&flag, &have_last_, 1);  // read as a byte: a bool holding 2 is undefined behaviour
+  const auto measure = static_cast<int>(config_.measure);
+  bool ok = flag <= 1 && measure >= 0 && measure <= static_cast<int>(RateMeasure::angle_triple) &&
+            config_.window >= 1 && config_.window <= kMaxRateWindow && head_ < config_.window &&
+            count_ <= config_.window && config_.min_interval >= T(0) && config_.max_interval > T(0) &&
+            std::isfinite(last_t_);
+  for (std::size_t i = 0; i < kMaxRateWindow; ++i) ok = ok && std::isfinite(rate_[i]) && std::isfinite(dt_[i]);
+  for (const T x : last_) ok = ok && std::isfinite(x);
+  return ok;
 }
 
 template <class T>

@@ -1,5 +1,7 @@
 #include "attitude_estimator/estimator.hpp"
 
+#include <cmath>
+
 namespace attitude_estimator {
 
 namespace {
@@ -49,8 +51,13 @@ SampleResult<T> estimate_sample(const SampleInputs<T>& in, const EstimatorConfig
     rail_high[k] = config.mag_adc[k].max;
   }
   const FieldMeasurement<T> mag =
-      field_vector_from_voltages(v_digital, v_ref_digital, config.mag_sensitivity, rail_low, rail_high,
-                                 config.mag_rail_margin, config.min_field);
+      field_vector_from_set_reset(v_digital, v_ref_digital, config.mag_sensitivity, in.mag_polarity,
+                                  in.mag_offset, rail_low, rail_high, config.mag_rail_margin, config.min_field);
+  r.mag_reading_usable = !mag.at_rail && std::isfinite(v_ref_digital);
+  for (int k = 0; k < 3; ++k) {
+    r.mag_reading[k] = v_digital[k] - v_ref_digital;
+    r.mag_reading_usable = r.mag_reading_usable && std::isfinite(r.mag_reading[k]);
+  }
   r.mag_meas = mag.unit;
   r.mag_field = mag.field;
   r.mag_valid = mag.valid;

@@ -73,6 +73,11 @@ struct EstimatorData {
     std::int32_t spin_window = 512;      // samples per FFT window (0: off)
     double rate_interval = 2.0;          // s: shortest time between two attitudes in one eq. 4 increment
     std::int32_t rate_window = 8;        // increments averaged (1 = eq. 4 alone)
+    // HMC2003 set/reset (set_reset.hpp): pulse every this many samples and average the offset over this
+    // many set/reset pairs. 0 (default): no pulses, the offset stays in the field — the safe default for a
+    // magnetometer whose set_reset_command is not wired to mag_set_reset (its readings never flip).
+    std::int32_t mag_set_reset_samples = 0;
+    std::int32_t mag_offset_window = 20;
 
     // outputs (discrete: set at sample instants, held in between). Before the first sample: identity.
     std::array<double, 4> q_est{0.0, 0.0, 0.0, 1.0};  // scalar-last [x, y, z, w], w >= 0
@@ -97,6 +102,8 @@ struct EstimatorData {
     double rate_mean = 0.0;           // rad/s, mean |ω| from successive estimates (004 eq. 4)
     double rate_window_time = 0.0;    // s, time the averaged increments span
     bool rate_valid = false;
+    bool mag_set_reset = true;        // the set/reset pulse commanded last: true set, false reset (to the sensor)
+    Vec3d mag_offset{};               // V, the sensor offset estimated from set/reset pairs
 
     // discrete state
     double t_start = 0.0;  // s, the start time: sample k is due at t_start + k·sample_period
@@ -108,6 +115,7 @@ struct EstimatorData {
     std::array<Vec3d, kMaxSpinWindow> sun_history{};  // ring of sun_meas for the FFT
     std::int32_t history_head = 0;             // next write position
     std::int32_t history_filled = 0;           // consecutive valid samples in the ring (≤ spin_window)
+    SetResetState<double> set_reset{};         // the sensor's polarity as commanded, the offset estimate
 };
 
 // The FFTW workspace of the spin-rate analysis. Not part of the FMU state (the history it analyses is):
@@ -134,6 +142,7 @@ public:
     fmu::EventUpdate event_update(double t, bool time_event_due) override;
     double next_time_event() const override;
     void validate() const override;
+    void check_state() const override;
 
 private:
     void take_sample(double t);

@@ -36,6 +36,29 @@ void gauss_legendre(int n, std::vector<double>& x, std::vector<double>& w) {
     w[i] = 2.0 / ((1.0 - z * z) * dp * dp);
   }
 }
+// The quadrature depends on (rings, sectors) only: computed once per thread for the last pair asked
+// (the environment asks with the same pair at every evaluation).
+struct Quadrature {
+  int rings = 0, sectors = 0;
+  std::vector<double> node, weight, cos_psi, sin_psi;
+};
+
+const Quadrature& quadrature(int rings, int sectors) {
+  thread_local Quadrature q;
+  if (q.rings == rings && q.sectors == sectors) return q;
+  gauss_legendre(rings, q.node, q.weight);
+  const double dpsi = 2.0 * kPi / sectors;
+  q.cos_psi.resize(sectors);
+  q.sin_psi.resize(sectors);
+  for (int j = 0; j < sectors; ++j) {
+    q.cos_psi[j] = std::cos((j + 0.5) * dpsi);
+    q.sin_psi[j] = std::sin((j + 0.5) * dpsi);
+  }
+  q.rings = rings;
+  q.sectors = sectors;
+  return q;
+}
+
 }  // namespace
 
 std::array<double, 6> earth_albedo(const AlbedoParams& params, const Eigen::Vector3d& r_sat,
@@ -52,8 +75,7 @@ std::array<double, 6> earth_albedo(const AlbedoParams& params, const Eigen::Vect
   Eigen::Vector3d e1 = e3.unitOrthogonal();
   const Eigen::Vector3d e2 = e3.cross(e1);
   const double gamma_max = std::acos(kEarthRadius / r);
-  std::vector<double> node, weight;
-  gauss_legendre(params.rings, node, weight);
+  const Quadrature& q = quadrature(params.rings, params.sectors);
   const double dpsi = 2.0 * kPi / params.sectors;
   const double s_dot_e3 = sun_direction.dot(e3);
   const double s_dot_e1 = sun_direction.dot(e1);
@@ -61,17 +83,21 @@ std::array<double, 6> earth_albedo(const AlbedoParams& params, const Eigen::Vect
   // Radiance per unit cos(zenith): L = rho E cos z / pi.
   const double radiance_scale = params.reflectivity * solar_irradiance / kPi;
 
-  std::vector<double> cos_psi(params.sectors), sin_psi(params.sectors);
-  for (int j = 0; j < params.sectors; ++j) {
-    cos_psi[j] = std::cos((j + 0.5) * dpsi);
-    sin_psi[j] = std::sin((j + 0.5) * dpsi);
-  }
-  // Work in body axes: the six face normals are then just +/- the coordinate axes.
+  // Work in body axes: the six face normals are then just +/- the coordinate axes. Per sector, the
+  // horizontal direction psi in body axes and the sun's component along it (the same on every ring).
   const Eigen::Vector3d b1 = body_from_eci * e1, b2 = body_from_eci * e2, b3 = body_from_eci * e3;
+  thread_local std::vector<Eigen::Vector3d> horizontal;
+  thread_local std::vector<double> sun_horizontal;
+  horizontal.resize(params.sectors);
+  sun_horizontal.resize(params.sectors);
+  for (int j = 0; j < params.sectors; ++j) {
+    horizontal[j] = q.cos_psi[j] * b1 + q.sin_psi[j] * b2;
+    sun_horizontal[j] = q.cos_psi[j] * s_dot_e1 + q.sin_psi[j] * s_dot_e2;
+  }
   for (int i = 0; i < params.rings; ++i) {
-    const double gamma = 0.5 * gamma_max * (node[i] + 1.0);
+    const double gamma = 0.5 * gamma_max * (q.node[i] + 1.0);
     const double cg = std::cos(gamma), sg = std::sin(gamma);
-    const double area = kEarthRadius * kEarthRadius * sg * (0.5 * gamma_max * weight[i]) * dpsi;
+    const double area = kEarthRadius * kEarthRadius * sg * (0.5 * gamma_max * q.weight[i]) * dpsi;
     // Satellite -> element: d = R p^ - r e3; its length depends on gamma only.
     const double l2 = kEarthRadius * kEarthRadius + r * r - 2.0 * kEarthRadius * r * cg;
     const double l = std::sqrt(l2);
@@ -79,15 +105,16 @@ std::array<double, 6> earth_albedo(const AlbedoParams& params, const Eigen::Vect
     const double cos_emit = (r * cg - kEarthRadius) / l;
     if (cos_emit <= 0.0) continue;
     const double ring_weight = radiance_scale * cos_emit * area / l2;
+    // d in body axes (unnormalised): (R cos gamma - r) b3 + R sin gamma h(psi)
+    const Eigen::Vector3d vertical = (kEarthRadius * cg - r) * b3;
+    const double radial = kEarthRadius * sg;
     for (int j = 0; j < params.sectors; ++j) {
       // cos of the solar zenith angle at the element
-      const double cos_z = cg * s_dot_e3 + sg * (cos_psi[j] * s_dot_e1 + sin_psi[j] * s_dot_e2);
+      const double cos_z = cg * s_dot_e3 + sg * sun_horizontal[j];
       if (cos_z <= 0.0) continue;
       const double w = ring_weight * cos_z / l;  // 1/l normalises d below
-      // d in body axes (unnormalised)
-      const Eigen::Vector3d d = kEarthRadius * (cg * b3 + sg * (cos_psi[j] * b1 + sin_psi[j] * b2)) - r * b3;
       for (int k = 0; k < 3; ++k) {
-        const double c = w * d(k);
+        const double c = w * (vertical(k) + radial * horizontal[j](k));
         if (c > 0.0) {
           e[2 * k] += c;
         } else {

@@ -97,6 +97,8 @@ class EnvironmentBlock : public fmu::Block<EnvironmentBlock, EnvironmentData> {
 
   void initialize(double t) override;
   void evaluate(double t) override;
+  // The rigid-body derivatives alone (no sun, field or albedo): what a solver's Jacobian needs.
+  void evaluate_derivatives(double t) override;
   void validate() const override;
 
  private:

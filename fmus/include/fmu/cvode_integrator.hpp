@@ -23,13 +23,24 @@ public:
     CvodeIntegrator(const CvodeIntegrator&) = delete;
     CvodeIntegrator& operator=(const CvodeIntegrator&) = delete;
 
+    // Optional: the Newton matrix's Jacobian df/dx at (t, x) with f(t, x) = fx, written column by column
+    // (column(j) points at n doubles, zeroed before the call). Without it CVODE builds one by
+    // difference quotients of the whole right-hand side, n evaluations of it.
+    using ColumnOf = std::function<double*(std::size_t j)>;
+    using Jacobian = std::function<void(double t, std::span<const double> x, std::span<const double> fx, const ColumnOf& column)>;
+    void set_jacobian(Jacobian jacobian);
+
     // Start afresh from (t, x): after every discontinuity.
     void restart(double t, std::span<const double> x);
 
     enum class Stop { reached, root };
     // Integrate towards t_stop (never past it). On return t and x hold the point reached: t_stop, or
     // the first root of any root function, with root_info() telling which.
-    Stop advance(double t_stop, double& t, std::span<double> x);
+    Stop advance(double t_stop, double& t, std::span<double> x) { return advance(t_stop, t_stop, t, x); }
+    // The same, returning at t_out <= t_stop with x(t_out) from CVODE's interpolating polynomial:
+    // the integrator may have stepped beyond t_out (never beyond t_stop) and goes on from there at the
+    // next call, so output points and events that change nothing continuous do not cut its steps.
+    Stop advance(double t_out, double t_stop, double& t, std::span<double> x);
     // For each root function: +1 / −1 when it crossed upwards / downwards at the last root, else 0.
     const std::vector<int>& root_info() const { return root_info_; }
 

@@ -69,18 +69,27 @@ public:
     //   so it must depend only on parameters, inputs and start values (calling it twice = once).
     // - evaluate(t): outputs, derivative fields and other locals from time, states, inputs,
     //   parameters and the discrete state. Must not change the discrete state.
-    // - event_indicators(t, z): the block's zero-crossing functions (after evaluate).
+    // - event_indicators(t, z): the block's zero-crossing functions (after evaluate or
+    //   evaluate_derivatives: they may use only what the latter computes).
     // - event_update(t, time_event_due): the discrete changes at an event instant.
     // - next_time_event(): absolute time of the next time event, or no_time_event.
     // - validate(): cross-parameter checks at exit of initialization; throw fmu::Error with a
     //   message a user understands.
     virtual void initialize(double t) = 0;
     virtual void evaluate(double t) = 0;
+    // Only what derivatives and event indicators need, when a solver asks for nothing else (no
+    // output is read between two of its calls). A block whose outputs cost more than its
+    // derivatives overrides it; it must set the derivative fields exactly as evaluate() does.
+    virtual void evaluate_derivatives(double t) { evaluate(t); }
     virtual std::size_t event_indicator_count() const = 0;
     virtual void event_indicators(double t, std::span<double> z) = 0;
     virtual EventUpdate event_update(double t, bool time_event_due) = 0;
     virtual double next_time_event() const = 0;
     virtual void validate() const = 0;
+    // - check_state(): after a state came in as bytes (fmi2DeSerializeFMUstate), the invariants of
+    //   the fields the table does not cover (finite numbers, bool bytes, indices in range, a live
+    //   generator); throw fmu::Error. The table's own variables are checked by the runtime.
+    virtual void check_state() const {}
 };
 
 // Every block defines this once (FMU_BLOCK in block.hpp); the runtime and the tools call it.

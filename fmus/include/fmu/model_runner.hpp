@@ -24,12 +24,14 @@ public:
 
     // Any change of time, states, inputs or parameters makes the outputs stale; they are
     // recomputed on the next read. In initialization mode a read first re-runs initialize().
-    void mark_changed() { stale_ = true; }
+    void mark_changed() { stale_ = derivatives_stale_ = true; }
     void set_initializing(bool on) {
         initializing_ = on;
-        stale_ = true;
+        mark_changed();
     }
     void ensure_evaluated();
+    // Derivatives and indicators current (evaluate_derivatives; outputs may still be stale).
+    void ensure_derivatives();
 
     std::size_t state_count() const { return table().states().size(); }
     std::size_t indicator_count() const { return indicator_count_; }
@@ -48,15 +50,33 @@ public:
     // `terminate` are or-ed over the rounds.
     EventUpdate event_iteration();
 
-    // Replace the whole block state with a copy (FMU state restore); time travels with it.
+    // Replace the whole block state with a copy (FMU state restore); time travels with it. Input
+    // slopes are host-side knowledge, not block state: a restore drops them.
     void restore(const Model& saved, double time);
+
+    // Co-Simulation inputs interpolated over a step (canInterpolateInputs): the Real input `variable` (an
+    // index into the table) follows u(t) = u(t0) + slope * (t - t0) whenever the time is set, t0 being
+    // the time the slope or the input's value was last set (setting the value keeps the slope, so a
+    // host may set values and derivatives in either order). The host gives slopes for one step:
+    // clear_input_slopes() after it. A restore drops them too (host knowledge, not block state).
+    void set_input_slope(std::size_t variable, double slope);
+    void input_value_set(std::size_t variable);
+    void clear_input_slopes() { input_slopes_.clear(); }
 
 private:
     std::unique_ptr<Model> model_;
     double time_ = 0.0;
-    bool stale_ = true;
+    bool stale_ = true;              // outputs
+    bool derivatives_stale_ = true;  // derivatives and what the indicators use
     bool initializing_ = false;
     std::size_t indicator_count_ = 0;
+
+    struct InputSlope {
+        std::size_t variable;
+        double base_time, base_value, slope;
+    };
+    std::vector<InputSlope> input_slopes_;  // few (a block's Real inputs), searched linearly
+    void apply_input_slopes();
 };
 
 }  // namespace fmu

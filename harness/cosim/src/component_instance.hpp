@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -48,8 +49,18 @@ public:
     virtual std::string get_string(fmi2ValueReference vr) = 0;
     virtual void set_string(fmi2ValueReference vr, const std::string& x) = 0;
 
+    // Several Reals in one call (the master's hot path); one value per reference.
+    virtual void get_reals(std::span<const fmi2ValueReference> vr, std::span<double> x) {
+        for (std::size_t i = 0; i < vr.size(); ++i) x[i] = get_real(vr[i]);
+    }
+    virtual void set_reals(std::span<const fmi2ValueReference> vr, std::span<const double> x) {
+        for (std::size_t i = 0; i < vr.size(); ++i) set_real(vr[i], x[i]);
+    }
+
     // Co-Simulation.
     virtual void do_step(double t, double h) = 0;
+    // First time derivatives of continuous Real inputs for the next step (canInterpolateInputs).
+    virtual void set_real_input_derivatives(std::span<const fmi2ValueReference> vr, std::span<const double> dx) = 0;
 
     // Model Exchange.
     virtual void set_time(double t) = 0;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <stdexcept>
+#include <string>
 
 namespace cosim {
 
@@ -10,5 +11,8 @@ class CosimError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
+
+// Why the last failed read or write failed (strerror of errno), for messages that name the file.
+std::string io_reason();
 
 }  // namespace cosim

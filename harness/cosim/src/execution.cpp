@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <thread>
@@ -33,7 +34,7 @@ struct Execution::Impl {
     System& system;
     const ExecutionOptions& options;
     std::vector<Observer*> observers;
-    std::vector<Component*> me, cs;
+    std::vector<std::size_t> me, cs, consumers;  // component indices
     std::size_t n = 0, m = 0;
     std::vector<double> x;
     std::unique_ptr<fmu::CvodeIntegrator> cvode;
@@ -43,67 +44,210 @@ struct Execution::Impl {
     double last_sample = -infinity;
     RunStatistics stats;
 
+    struct Stepping {  // a Co-Simulation component's communication grid
+        double step = 0.0, last = 0.0;
+        long k = 0;
+    };
+    std::vector<Stepping> stepping;  // per component (used for Co-Simulation ones)
+    std::vector<char> in_event;      // per component: in event mode at this instant
+
     Impl(System& s, const ExecutionOptions& o, std::vector<Observer*> obs) : system(s), options(o), observers(std::move(obs)) {
-        for (auto& c : system.components()) (c.interface == Interface::model_exchange ? me : cs).push_back(&c);
-        for (auto* c : me) {
-            n += c->state_count;
-            m += c->indicator_count;
+        auto& comps = system.components();
+        for (std::size_t i = 0; i < comps.size(); ++i) {
+            auto& c = comps[i];
+            if (c.interface == Interface::model_exchange) {
+                me.push_back(i);
+                n += c.state_count;
+                m += c.indicator_count;
+                if (c.continuous_consumer || options.reference) consumers.push_back(i);
+            } else {
+                cs.push_back(i);
+            }
         }
         x.resize(n);
+        stepping.resize(comps.size());
+        in_event.assign(comps.size(), 0);
     }
 
-    // Time and states into every Model Exchange component, then the values that flow between them.
-    void set_continuous(double time, std::span<const double> states) {
-        for (auto* c : me) {
-            c->instance->set_time(time);
-            if (c->state_count) c->instance->set_states(states.data() + c->state_offset, c->state_count);
+    Component& comp(std::size_t i) { return system.components()[i]; }
+
+    // Between events: time and states into the components whose derivatives or indicators are
+    // asked for, and the values they see.
+    void set_integrating(double time, std::span<const double> states) {
+        for (auto i : consumers) {
+            auto& c = comp(i);
+            c.instance->set_time(time);
+            if (c.state_count) c.instance->set_states(states.data() + c.state_offset, c.state_count);
         }
-        system.propagate(true);
+        system.propagate(Pass::integrating);
+    }
+
+    // At an instant the master stops at: every Model Exchange component at (time, states), every
+    // continuous input current, so that any output can be read.
+    void set_everywhere(double time, std::span<const double> states) {
+        for (auto i : me) {
+            auto& c = comp(i);
+            c.instance->set_time(time);
+            if (c.state_count) c.instance->set_states(states.data() + c.state_offset, c.state_count);
+        }
+        system.propagate(Pass::continuous);
     }
 
     void rhs(double time, std::span<const double> states, std::span<double> dx) {
-        set_continuous(time, states);
-        for (auto* c : me) {
-            if (!c->state_count) continue;
-            c->instance->get_derivatives(dx.data() + c->state_offset, c->state_count);
-            ++c->rhs_evaluations;
+        set_integrating(time, states);
+        for (auto i : me) {
+            auto& c = comp(i);
+            if (!c.state_count) continue;
+            c.instance->get_derivatives(dx.data() + c.state_offset, c.state_count);
+            ++c.rhs_evaluations;
         }
     }
 
     void indicators(double time, std::span<const double> states, std::span<double> z) {
-        set_continuous(time, states);
-        for (auto* c : me)
-            if (c->indicator_count) c->instance->get_event_indicators(z.data() + c->indicator_offset, c->indicator_count);
+        set_integrating(time, states);
+        for (auto i : me) {
+            auto& c = comp(i);
+            if (c.indicator_count) c.instance->get_event_indicators(z.data() + c.indicator_offset, c.indicator_count);
+        }
     }
 
-    // fmi2NewDiscreteStates for every component, with values re-propagated, until no component
-    // asks for another round and no propagated value changes.
-    void event_iteration(bool with_cs_sources) {
-        system.propagate(false, with_cs_sources);
-        for (int round = 0; round < max_event_rounds; ++round) {
-            bool needed = false;
-            for (auto* c : me) {
-                const fmi2EventInfo info = c->instance->new_discrete_states();
-                needed = needed || info.newDiscreteStatesNeeded;
-                terminate = terminate || info.terminateSimulation;
-                c->next_time_event = info.nextEventTimeDefined ? info.nextEventTime : infinity;
+    // The Newton matrix's Jacobian, block by block: component c's columns from its own derivatives with
+    // its states perturbed one at a time and its inputs held (the coupling between components through
+    // their connections is left out: CVODE's Newton iteration converges with an approximate matrix,
+    // and each column costs one derivative evaluation of one component instead of the whole system's).
+    std::vector<double> jac_states, jac_derivatives;
+    void jacobian(double time, std::span<const double> states, std::span<const double> f,
+                  const fmu::CvodeIntegrator::ColumnOf& column) {
+        set_integrating(time, states);
+        const double srur = std::sqrt(std::numeric_limits<double>::epsilon());
+        for (auto i : me) {
+            auto& c = comp(i);
+            if (!c.state_count) continue;
+            jac_states.assign(states.begin() + c.state_offset, states.begin() + c.state_offset + c.state_count);
+            jac_derivatives.resize(c.state_count);
+            for (std::size_t j = 0; j < c.state_count; ++j) {
+                const double xj = jac_states[j];
+                const double inc = srur * std::max(std::abs(xj), nominal[c.state_offset + j]);
+                jac_states[j] = xj + inc;
+                c.instance->set_states(jac_states.data(), c.state_count);
+                c.instance->get_derivatives(jac_derivatives.data(), c.state_count);
+                ++c.rhs_evaluations;
+                double* col = column(c.state_offset + j);
+                for (std::size_t r = 0; r < c.state_count; ++r)
+                    col[c.state_offset + r] = (jac_derivatives[r] - f[c.state_offset + r]) / inc;
+                jac_states[j] = xj;
             }
-            const bool changed = system.propagate(false, with_cs_sources);
-            if (!needed && !changed) return;
+            c.instance->set_states(jac_states.data(), c.state_count);
+        }
+    }
+
+    // A component joins the instant's event mode when it has an event of its own or one of its
+    // inputs changed in a way it must see: a discrete input, or any input of a component whose
+    // derivatives or indicators use it.
+    bool must_join(std::size_t i) {
+        const auto& c = comp(i);
+        if (c.interface != Interface::model_exchange || in_event[i]) return false;
+        if (options.reference) return true;
+        return system.discrete_input_changed(i) || (system.input_changed(i) && c.has_dynamics());
+    }
+
+    void join(std::size_t i) {
+        comp(i).instance->enter_event_mode();
+        ++comp(i).events;
+        in_event[i] = 1;
+    }
+
+    // fmi2NewDiscreteStates for the components in event mode, with values re-propagated and the
+    // components whose inputs changed drawn in, until nobody asks for another round. Returns true
+    // when a component said its continuous states changed (CVODE must restart).
+    bool event_iteration() {
+        bool continuous_change = options.reference;
+        const auto join_for_discrete_input = [this](std::size_t i) {
+            if (!in_event[i]) join(i);
+        };
+        system.clear_changes();
+        system.propagate(Pass::event, join_for_discrete_input);
+        for (auto i : me)
+            if (must_join(i)) join(i);
+        for (int round = 0; round < max_event_rounds; ++round) {
+            bool again = false;
+            for (auto i : me) {
+                if (!in_event[i]) continue;
+                auto& c = comp(i);
+                const fmi2EventInfo info = c.instance->new_discrete_states();
+                again = again || info.newDiscreteStatesNeeded;
+                terminate = terminate || info.terminateSimulation;
+                continuous_change = continuous_change || info.valuesOfContinuousStatesChanged;
+                c.next_time_event = info.nextEventTimeDefined ? info.nextEventTime : infinity;
+            }
+            system.clear_changes();
+            system.propagate(Pass::event, join_for_discrete_input);
+            for (auto i : me) {
+                if (in_event[i] && system.input_changed(i)) again = true;  // it must see its new inputs
+                if (must_join(i)) {
+                    join(i);
+                    again = true;
+                }
+            }
+            if (!again) {
+                for (auto i : me) {
+                    if (!in_event[i]) continue;
+                    comp(i).instance->enter_continuous_time_mode();
+                    in_event[i] = 0;
+                }
+                return continuous_change;
+            }
         }
         throw CosimError("the event iteration at t = " + std::to_string(t) + " did not settle after " +
                          std::to_string(max_event_rounds) + " rounds");
     }
 
-    double next_time_event() const {
-        double next = infinity;
-        for (auto* c : me) next = std::min(next, c->next_time_event);
+    // What CVODE integrates, at the current instant: the derivatives and indicators of every Model
+    // Exchange component. An event that leaves both unchanged, bit for bit, changed nothing the
+    // integrator sees here (a sampler's output that only feeds discrete inputs, a set/reset pulse
+    // that flips a sensor's output but not its filter): CVODE goes on with its step size and order.
+    // One that changes them restarts it: a switch of the PWM, a new input to a state's derivative.
+    std::vector<double> seen_before, seen_after;
+    void what_the_integrator_sees(std::vector<double>& out) {
+        out.resize(n + m);
+        for (auto i : me) {
+            auto& c = comp(i);
+            if (c.state_count) c.instance->get_derivatives(out.data() + c.state_offset, c.state_count);
+            if (c.indicator_count) c.instance->get_event_indicators(out.data() + n + c.indicator_offset, c.indicator_count);
+        }
+    }
+    bool integrator_sees_a_change() {
+        what_the_integrator_sees(seen_after);
+        return std::memcmp(seen_before.data(), seen_after.data(), seen_before.size() * sizeof(double)) != 0;
+    }
+
+    // Hard instants stop CVODE exactly: time events of components whose right-hand side or
+    // indicators jump there. Soft ones are read off its interpolation.
+    double next_hard_time() {
+        double next = options.stop_time;
+        for (auto i : me)
+            if (options.reference || comp(i).has_dynamics()) next = std::min(next, comp(i).next_time_event);
         return next;
     }
 
+    double next_soft_time(double t_out) {
+        double next = t_out;
+        for (auto i : me)
+            if (!comp(i).has_dynamics()) next = std::min(next, comp(i).next_time_event);
+        for (auto i : cs) next = std::min(next, next_communication(i));
+        return next;
+    }
+
+    double next_communication(std::size_t i) const {
+        const auto& s = stepping[i];
+        return std::min(options.start_time + static_cast<double>(s.k + 1) * s.step, options.stop_time);
+    }
+
     void gather_states() {
-        for (auto* c : me)
-            if (c->state_count) c->instance->get_states(x.data() + c->state_offset, c->state_count);
+        for (auto i : me) {
+            auto& c = comp(i);
+            if (c.state_count) c.instance->get_states(x.data() + c.state_offset, c.state_count);
+        }
     }
 
     void sample() {
@@ -119,35 +263,66 @@ struct Execution::Impl {
         return crossing.has_value();
     }
 
-    // Integrate the Model Exchange part to t_target or the first state event; true on a state event.
-    bool integrate(double t_target) {
+    // Integrate the Model Exchange part to t_out (interpolated) without passing t_hard, or to the
+    // first state event; true on a state event.
+    bool integrate(double t_out, double t_hard) {
         if (n > 0) {
             if (restart) {
                 cvode->restart(t, x);
                 restart = false;
+                ++stats.restarts;
             }
-            return cvode->advance(t_target, t, x) == fmu::CvodeIntegrator::Stop::root;
+            return cvode->advance(t_out, t_hard, t, x) == fmu::CvodeIntegrator::Stop::root;
         }
-        if (m > 0) return bisect(t_target);
-        t = t_target;
+        if (m > 0) return bisect(std::min(t_out, t_hard));
+        t = std::min(t_out, t_hard);
         return false;
     }
 
-    void communicate(double step) {
-        system.propagate_into(Interface::co_simulation);
-        for (auto* c : cs) {
-            c->instance->do_step(t, step);
-            ++c->events;  // counts steps for CS components
+    // The components whose indicators crossed at the last state event.
+    void mark_state_event_components() {
+        if (n == 0) {  // bisection does not say which: every component with indicators looks
+            for (auto i : me)
+                if (comp(i).indicator_count && !in_event[i]) join(i);
+            return;
         }
-        ++stats.communication_points;
+        const auto& info = cvode->root_info();
+        for (auto i : me) {
+            const auto& c = comp(i);
+            for (std::size_t k = 0; k < c.indicator_count; ++k)
+                if (info[c.indicator_offset + k] != 0 && !in_event[i]) join(i);
+        }
+    }
+
+    std::vector<double> nominal;
+    void start_integrator() {
+        if (n == 0) return;
+        nominal.assign(n, 1.0);
+        for (auto i : me) {
+            auto& c = comp(i);
+            if (c.state_count) c.instance->get_nominals(nominal.data() + c.state_offset, c.state_count);
+        }
+        std::vector<double> abstol = nominal;
+        for (auto& a : abstol) a *= options.relative_tolerance;
+        cvode = std::make_unique<fmu::CvodeIntegrator>(
+            n, m, [this](double tt, std::span<const double> xx, std::span<double> dx) { rhs(tt, xx, dx); },
+            [this](double tt, std::span<const double> xx, std::span<double> z) { indicators(tt, xx, z); },
+            options.relative_tolerance, abstol);
+        if (!options.reference)
+            cvode->set_jacobian([this](double tt, std::span<const double> xx, std::span<const double> fx,
+                                       const fmu::CvodeIntegrator::ColumnOf& column) { jacobian(tt, xx, fx, column); });
     }
 
     RunStatistics run() {
         const double start = options.start_time, stop = options.stop_time;
         const double h_out = options.output_interval;
-        const double h_comm = options.communication_step.value_or(h_out);
-        if (!(stop > start) || !(h_out > 0.0) || !(h_comm > 0.0))
-            throw CosimError("the stop time must exceed the start time, and the intervals be positive");
+        if (!(stop > start) || !(h_out > 0.0))
+            throw CosimError("the stop time must exceed the start time, and the output interval be positive");
+        for (auto i : cs) {
+            stepping[i].step = comp(i).communication_step.value_or(options.communication_step.value_or(h_out));
+            stepping[i].last = start;
+            if (!(stepping[i].step > 0.0)) throw CosimError(comp(i).name + ": the communication step must be positive");
+        }
         const auto wall_start = std::chrono::steady_clock::now();
         if (options.realtime) {
             // Components that talk to hardware act at their instants' wall time, not only at output points.
@@ -157,56 +332,71 @@ struct Execution::Impl {
 
         system.initialize(start, stop);
         t = start;
-        event_iteration(true);  // Model Exchange components leave initialization in event mode
-        for (auto* c : me) c->instance->enter_continuous_time_mode();
+        // Model Exchange components leave initialization in event mode: all of them settle here.
+        for (auto i : me) in_event[i] = 1;
+        event_iteration();
         gather_states();
-        if (n > 0) {
-            std::vector<double> abstol(n);
-            for (auto* c : me)
-                if (c->state_count) c->instance->get_nominals(abstol.data() + c->state_offset, c->state_count);
-            for (auto& a : abstol) a *= options.relative_tolerance;
-            cvode = std::make_unique<fmu::CvodeIntegrator>(
-                n, m, [this](double tt, std::span<const double> xx, std::span<double> dx) { rhs(tt, xx, dx); },
-                [this](double tt, std::span<const double> xx, std::span<double> z) { indicators(tt, xx, z); },
-                options.relative_tolerance, abstol);
-        }
+        start_integrator();
         sample();
-        if (!cs.empty()) communicate(std::min(h_comm, stop - t));  // outputs at start + h_comm, applied then
 
-        long k_out = 0, k_comm = 0;
+        long k_out = 0;
         const double tiny = 1e-12 * std::max(1.0, std::abs(stop));
         while (!terminate && t < stop - tiny) {
-            const double t_out = start + static_cast<double>(k_out + 1) * h_out;
-            const double t_comm = cs.empty() ? infinity : start + static_cast<double>(k_comm + 1) * h_comm;
-            const double t_target = std::min({t_out, t_comm, next_time_event(), stop});
-            const bool state_event = integrate(t_target);
-            set_continuous(t, x);
+            const double t_out = std::min(start + static_cast<double>(k_out + 1) * h_out, stop);
+            const double t_hard = options.reference ? std::min(next_hard_time(), next_soft_time(t_out)) : next_hard_time();
+            const double t_soft = next_soft_time(t_out);
+            const bool state_event = integrate(std::min(t_soft, t_hard), t_hard);
+            set_everywhere(t, x);
+
             bool step_event = false;
-            for (auto* c : me) {
+            for (auto i : me) {
+                auto& c = comp(i);
+                if (!c.completed_step_needed) continue;
                 bool stop_requested = false;
-                step_event = c->instance->completed_integrator_step(&stop_requested) || step_event;
+                if (c.instance->completed_integrator_step(&stop_requested) && !in_event[i]) {
+                    step_event = true;
+                    join(i);
+                }
                 terminate = terminate || stop_requested;
             }
-            const bool time_event = reached(t, next_time_event());
-            const bool comm = !cs.empty() && reached(t, t_comm);
-            if (state_event || time_event || step_event || comm) {
-                if (options.event_rows && (state_event || time_event || step_event)) sample();
-                for (auto* c : me) {
-                    c->instance->enter_event_mode();
-                    ++c->events;
-                }
+            bool time_event = false;
+            for (auto i : me) {
+                if (!reached(t, comp(i).next_time_event)) continue;
+                time_event = true;
+                if (!in_event[i]) join(i);
+            }
+            if (state_event) mark_state_event_components();
+            const bool any_event = state_event || time_event || step_event;
+
+            bool communicated = false;
+            for (auto i : cs) {
+                const double t_comm = next_communication(i);
+                if (!reached(t, t_comm)) continue;
+                if (options.event_rows && !communicated && any_event && t != last_sample) sample();
+                auto& s = stepping[i];
+                system.step_co_simulation(i, t_comm, t_comm - s.last);
+                s.last = t_comm;
+                ++s.k;
+                ++comp(i).events;
+                ++stats.communication_points;
+                communicated = true;
+            }
+
+            if (any_event || communicated) {
+                if (options.event_rows && any_event && !communicated) sample();
                 stats.state_events += state_event;
                 stats.time_events += time_event;
                 stats.step_events += step_event;
-                event_iteration(comm);
-                if (comm) {
-                    ++k_comm;
-                    communicate(std::min(h_comm, stop - t));
+                if (!options.reference) what_the_integrator_sees(seen_before);
+                const bool states_changed = event_iteration();
+                if (options.reference || states_changed || integrator_sees_a_change()) {
+                    gather_states();
+                    restart = true;
                 }
-                for (auto* c : me) c->instance->enter_continuous_time_mode();
-                gather_states();
-                restart = true;
-                if (options.event_rows && (state_event || time_event || step_event)) sample();
+                if (options.event_rows && any_event) {
+                    set_everywhere(t, x);
+                    sample();
+                }
             }
             if (reached(t, t_out) || t >= stop - tiny) {
                 while (reached(t, start + static_cast<double>(k_out + 1) * h_out)) ++k_out;

@@ -151,6 +151,20 @@ void Fmi2Instance::do_step(double t, double h) {
     check(lib_->fmi2DoStep(component_, t, h, fmi2True), "fmi2DoStep");
 }
 
+void Fmi2Instance::set_real_input_derivatives(std::span<const fmi2ValueReference> vr, std::span<const double> dx) {
+    if (first_order_.size() < vr.size()) first_order_.resize(vr.size(), 1);
+    check(lib_->fmi2SetRealInputDerivatives(component_, vr.data(), vr.size(), first_order_.data(), dx.data()),
+          "fmi2SetRealInputDerivatives");
+}
+
+void Fmi2Instance::get_reals(std::span<const fmi2ValueReference> vr, std::span<double> x) {
+    check(lib_->fmi2GetReal(component_, vr.data(), vr.size(), x.data()), "fmi2GetReal");
+}
+
+void Fmi2Instance::set_reals(std::span<const fmi2ValueReference> vr, std::span<const double> x) {
+    check(lib_->fmi2SetReal(component_, vr.data(), vr.size(), x.data()), "fmi2SetReal");
+}
+
 void Fmi2Instance::set_real(fmi2ValueReference vr, double x) {
     check(lib_->fmi2SetReal(component_, &vr, 1, &x), "fmi2SetReal");
 }

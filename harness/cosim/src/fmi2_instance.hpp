@@ -35,6 +35,9 @@ public:
     std::string get_as_text(const fmi_loader::ScalarVariable& v) override;
 
     void do_step(double t, double h) override;
+    void set_real_input_derivatives(std::span<const fmi2ValueReference> vr, std::span<const double> dx) override;
+    void get_reals(std::span<const fmi2ValueReference> vr, std::span<double> x) override;
+    void set_reals(std::span<const fmi2ValueReference> vr, std::span<const double> x) override;
 
     // Typed access by value reference (the master's hot path: no name look-ups).
     void set_real(fmi2ValueReference vr, double x) override;
@@ -70,6 +73,7 @@ private:
     std::string name_;
     fmi2CallbackFunctions callbacks_;
     fmi2Component component_ = nullptr;
+    std::vector<fmi2Integer> first_order_;  // the orders argument of fmi2SetRealInputDerivatives: all 1
     std::vector<std::pair<fmi2Status, std::string>> messages_;
 };
 

@@ -141,6 +141,10 @@ void HardwareBridge::do_step(double, double) {
     throw CosimError(name_ + ": a hardware bridge runs as a Model Exchange component only");
 }
 
+void HardwareBridge::set_real_input_derivatives(std::span<const fmi2ValueReference>, std::span<const double>) {
+    throw CosimError(name_ + ": a hardware bridge runs as a Model Exchange component only");
+}
+
 bool HardwareBridge::completed_integrator_step(bool* terminate) {
     if (terminate) *terminate = false;
     return false;

@@ -43,6 +43,7 @@ public:
     void set_string(fmi2ValueReference vr, const std::string& x) override;
 
     void do_step(double t, double h) override;
+    void set_real_input_derivatives(std::span<const fmi2ValueReference> vr, std::span<const double> dx) override;
 
     void set_time(double t) override { time_ = t; }
     void set_states(const double*, std::size_t) override {}

@@ -2,12 +2,14 @@
 // stderr and a non-zero exit code.
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
 #include <iostream>
 
 #include "campaign_command.hpp"
 #include "cosim_error.hpp"
 #include "fmi_loader/loader_error.hpp"
 #include "info_command.hpp"
+#include "interrupt.hpp"
 #include "plot_command.hpp"
 #include "run_command.hpp"
 #include "simulate_command.hpp"
@@ -39,8 +41,10 @@ int main(int argc, char** argv) {
     run->add_option("--stop-time", run_options.stop_time, "Stop time in s (default: the .ssd's DefaultExperiment)");
     run->add_option("--output", run_csv, "CSV results file");
     run->add_option("--output-interval", run_options.output_interval,
-                    "Output interval in s (default: the smallest DefaultExperiment stepSize of the FMUs)");
-    run->add_option("--step", run_options.communication_step, "Communication step of Co-Simulation components");
+                    "Output interval in s (default: the .ssd's, else the FMUs' smallest DefaultExperiment stepSize "
+                    "but no finer than a thousandth of the run)");
+    run->add_option("--step", run_options.communication_step,
+                    "Communication step of every Co-Simulation component (default: the .ssd's, else the output interval)");
     run->add_option("--tolerance", run_options.tolerance, "Relative tolerance (default: the FMUs' smallest)");
     run->add_option("--set", run_options.system.settings, "component.variable=value before initialization (repeatable)");
     run->add_option("--cs", run_options.system.co_simulation, "Run this component through its Co-Simulation interface");
@@ -53,6 +57,11 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0, 65535));
     run->add_flag("--realtime", run_options.realtime, "Pace simulated time to the wall clock");
     run->add_flag("--event-rows", run_options.event_rows, "Add CSV rows just before and after each event");
+    run->add_flag("--reference", run_options.reference,
+                  "The reference execution: every component as Model Exchange, every event through every component "
+                  "with an integrator restart, every output point a stop (slow; to check the fast path against)");
+    run->add_flag("--force", run_options.force,
+                  "Run even with more than 1e8 output or communication points, or a CSV larger than the free disk space");
 
     std::string plot_csv, plot_dir = "figures";
     auto* plot = app.add_subcommand("plot", "Draw the standard figures of a results CSV as PNG files (gnuplot)");
@@ -77,6 +86,7 @@ int main(int argc, char** argv) {
                        "Progress as log lines every 10 s when stderr is not a terminal (mpirun, batch jobs)");
 
     CLI11_PARSE(app, argc, argv);
+    cosim::install_interrupt_handlers();
     try {
         if (*info) cosim::print_info(info_path, std::cout);
         if (*campaign) {
@@ -99,8 +109,23 @@ int main(int argc, char** argv) {
             if (!csv_path.empty()) sim.csv = csv_path;
             cosim::simulate(sim, std::cout);
         }
+        // Output to a pipe or a full disk fails at the latest here: exit 0 only when it all got out.
+        errno = 0;
+        std::cout.flush();
+        if (!std::cout) {
+            std::cerr << "cosim: writing standard output failed: " << cosim::io_reason() << "\n";
+            return 1;
+        }
         return 0;
+    } catch (const cosim::Interrupted& e) {
+        std::cout.flush();
+        std::cerr << "cosim: " << e.what() << "\n";
+        return 128 + e.signal();
     } catch (const fmi_loader::LoaderError& e) {
+        if (e.code() == fmi_loader::LoaderErrc::cancelled && cosim::interrupt_signal()) {
+            std::cerr << "cosim: " << cosim::Interrupted(cosim::interrupt_signal()).what() << " while loading\n";
+            return 128 + cosim::interrupt_signal();
+        }
         std::cerr << "cosim: " << e.what() << "\n";
         return 3;
     } catch (const std::exception& e) {

@@ -1,13 +1,19 @@
 #include "observer.hpp"
 
+#include <cerrno>
+#include <cstring>
+
 #include "cosim_error.hpp"
+#include "csv_table.hpp"
 #include "value_text.hpp"
 
 namespace cosim {
 
+std::string io_reason() { return errno != 0 ? std::strerror(errno) : "input/output error"; }
+
 CsvWriter::CsvWriter(const std::filesystem::path& file, const System& system, const std::vector<std::string>& columns)
-    : out_(file) {
-    if (!out_) throw CosimError("cannot write " + file.string());
+    : path_(file), out_(file) {
+    if (!out_) throw CosimError("cannot write " + file.string() + ": " + std::strerror(errno));
     const auto& comps = system.components();
     if (columns.empty()) {
         for (std::size_t i = 0; i < comps.size(); ++i)
@@ -24,14 +30,34 @@ CsvWriter::CsvWriter(const std::filesystem::path& file, const System& system, co
         }
     }
     out_ << "time";
-    for (const auto& c : columns_) out_ << "," << comps[c.component].name << "." << c.variable->name;
+    for (const auto& c : columns_) out_ << "," << csv_field(comps[c.component].name + "." + c.variable->name);
     out_ << "\n";
+    check();
 }
 
 void CsvWriter::sample(double t, System& system) {
     out_ << format_real(t);
-    for (const auto& c : columns_) out_ << "," << system.components()[c.component].instance->get_as_text(*c.variable);
+    for (const auto& c : columns_) {
+        const std::string text = system.components()[c.component].instance->get_as_text(*c.variable);
+        out_ << "," << (c.variable->type == fmi_loader::VariableType::string ? csv_field(text) : text);
+    }
     out_ << "\n";
+    ++rows_;
+    check();
+}
+
+void CsvWriter::check() {
+    // errno is what the failed write(2) under the stream left; the stream itself keeps no reason.
+    if (!out_) throw CosimError("writing " + path_.string() + " failed: " + io_reason());
+}
+
+void CsvWriter::close() {
+    if (!out_.is_open()) return;
+    errno = 0;
+    out_.flush();
+    check();
+    out_.close();
+    if (out_.fail()) throw CosimError("closing " + path_.string() + " failed: " + io_reason());
 }
 
 }  // namespace cosim

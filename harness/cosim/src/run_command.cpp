@@ -1,5 +1,6 @@
 #include "run_command.hpp"
 
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -9,8 +10,11 @@
 #include <memory>
 #include <cstdio>
 #include <iomanip>
+#include <iostream>
 
 #include "cosim_error.hpp"
+#include "interrupt.hpp"
+#include "value_text.hpp"
 
 namespace cosim {
 
@@ -26,27 +30,114 @@ void defaults_from_components(const System& system, double& interval, double& to
     }
 }
 
+// Every --cs names a component of the system: a misspelt name would otherwise run the whole system
+// through Model Exchange and report success.
+void check_co_simulation_names(const SystemDescription& description, const std::vector<std::string>& names) {
+    for (const auto& name : names) {
+        const bool known = std::any_of(description.components.begin(), description.components.end(),
+                                       [&](const auto& c) { return c.name == name; });
+        if (!known) throw CosimError("--cs " + name + ": the system has no component of that name");
+    }
+}
+
+void check_time(const char* what, double value) {
+    if (!std::isfinite(value)) throw CosimError(std::string(what) + " must be finite, got " + std::to_string(value));
+}
+
+// A run must have something to do and an end: a finite span, intervals that are positive, not longer
+// than the run and not so short that the number of points is absurd (max_run_points without --force).
+void check_intervals(const ExecutionOptions& ex, bool force) {
+    check_time("the start time", ex.start_time);
+    check_time("--stop-time", ex.stop_time);
+    const double span = ex.stop_time - ex.start_time;
+    if (!(span > 0.0))
+        throw CosimError("--stop-time " + format_real(ex.stop_time) + " s is not after the start time " +
+                         format_real(ex.start_time) + " s: nothing to simulate");
+    auto check_interval = [&](const char* what, double h) {
+        if (!std::isfinite(h) || !(h > 0.0)) throw CosimError(std::string(what) + " must be positive and finite, got " + format_real(h));
+        if (h > span)
+            throw CosimError(std::string(what) + " " + format_real(h) + " s is longer than the run (" + format_real(span) +
+                             " s): no point after the start");
+        const double points = span / h;
+        if (points > max_run_points && !force)
+            throw CosimError(std::string(what) + " " + format_real(h) + " s over " + format_real(span) + " s makes " +
+                             format_real(points) + " points, more than the limit of " + format_real(max_run_points) +
+                             " (give --force to run it anyway)");
+    };
+    check_interval("--output-interval", ex.output_interval);
+    if (ex.communication_step) check_interval("--step", *ex.communication_step);
+}
+
+// Before the run: say how large the CSV will be when it is large, and refuse what the disk cannot
+// hold unless forced. The estimate is a floor: 25 bytes per cell (a round-trip double and a comma).
+void check_output_size(const ExecutionOptions& ex, const CsvWriter& csv, bool force, std::ostream& note) {
+    const double rows = std::floor((ex.stop_time - ex.start_time) / ex.output_interval) + 2;  // + start and stop
+    const double bytes = rows * static_cast<double>(csv.columns()) * 25.0;
+    if (rows >= large_output_rows)
+        note << "cosim: " << csv.path().string() << " will have about " << format_real(std::round(rows)) << " rows of "
+             << csv.columns() << " columns (" << format_real(std::round(bytes / 1e6)) << " MB or more)"
+             << (ex.event_rows ? ", plus two per event" : "") << "\n";
+    struct statvfs fs {};
+    const auto folder = std::filesystem::absolute(csv.path()).parent_path();
+    if (::statvfs(folder.c_str(), &fs) != 0) return;
+    const double free_bytes = static_cast<double>(fs.f_bavail) * static_cast<double>(fs.f_frsize);
+    if (bytes > free_bytes && !force)
+        throw CosimError(csv.path().string() + " would need about " + format_real(std::round(bytes / 1e6)) + " MB; " +
+                         folder.string() + " has " + format_real(std::round(free_bytes / 1e6)) +
+                         " MB free (give --force to run it anyway, or a larger --output-interval)");
+}
+
+// The statistics of a run cut short: what was computed and written before the signal.
+void report_interrupted(const Interrupted& e, double last_time, const CsvWriter* csv, double wall, std::ostream& report) {
+    report << "interrupted (" << e.what() << ") after " << format_real(wall) << " s wall";
+    if (csv) report << "; " << csv->rows() << " rows up to t = " << format_real(last_time) << " s written to " << csv->path().string();
+    else report << " at t = " << format_real(last_time) << " s";
+    report << "\n";
+}
+
+// The first observer: notices a signal at an output point (the only place a run may stop cleanly).
+struct InterruptCheck : Observer {
+    double last_time = 0.0;
+    void sample(double t, System&) override {
+        throw_if_interrupted();
+        last_time = t;
+    }
+};
+
 }  // namespace
 
 RunStatistics run_system(const RunOptions& options, std::ostream& report) {
+    throw_if_interrupted();
     const SystemDescription description = read_system_description(options.ssd);
+    check_co_simulation_names(description, options.system.co_simulation);
     SystemOptions system_options = options.system;
     if (options.tolerance) system_options.tolerance = options.tolerance;
+    if (options.communication_step) system_options.communication_step = options.communication_step;
+    if (options.reference) {
+        if (!system_options.co_simulation.empty()) throw CosimError("--reference runs every component as Model Exchange: drop --cs");
+        system_options.model_exchange_only = true;
+    }
+    const auto stop = options.stop_time ? options.stop_time : description.stop_time;
+    if (!stop) throw CosimError(options.ssd.string() + " has no DefaultExperiment stopTime: give --stop-time");
+    check_time("--stop-time", *stop);
     System system(description, system_options);
 
     ExecutionOptions ex;
     ex.start_time = description.start_time.value_or(0.0);
-    const auto stop = options.stop_time ? options.stop_time : description.stop_time;
-    if (!stop) throw CosimError(options.ssd.string() + " has no DefaultExperiment stopTime: give --stop-time");
     ex.stop_time = *stop;
     double interval = std::numeric_limits<double>::infinity(), tolerance = 1e-6;
     defaults_from_components(system, interval, tolerance);
-    if (!std::isfinite(interval)) interval = (ex.stop_time - ex.start_time) / 500.0;
+    // The .ssd's own output interval, else no finer than a thousandth of the run: an orbit at the FMUs'
+    // 1 ms default would write millions of rows.
+    const double span = ex.stop_time - ex.start_time;
+    if (description.output_interval) interval = *description.output_interval;
+    else if (!std::isfinite(interval) || interval < span / 1000.0) interval = span / 1000.0;
     ex.output_interval = options.output_interval.value_or(interval);
     ex.relative_tolerance = options.tolerance.value_or(tolerance);
-    ex.communication_step = options.communication_step;
     ex.realtime = options.realtime;
     ex.event_rows = options.event_rows;
+    ex.reference = options.reference;
+    check_intervals(ex, options.force);
 
     const bool tty = options.progress && isatty(fileno(stderr));
     const auto started = std::chrono::steady_clock::now();
@@ -63,14 +154,27 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
         };
     }
 
-    std::vector<Observer*> observers;
+    InterruptCheck interrupt;
+    std::vector<Observer*> observers{&interrupt};
     std::unique_ptr<CsvWriter> csv;
     if (options.csv) {
         csv = std::make_unique<CsvWriter>(*options.csv, system, options.columns);
+        check_output_size(ex, *csv, options.force, std::cerr);
         observers.push_back(csv.get());
     }
     Execution execution(system, ex);
-    const RunStatistics stats = execution.run(observers);
+    RunStatistics stats;
+    try {
+        stats = execution.run(observers);
+    } catch (const Interrupted& e) {
+        if (tty && last_percent >= 0) std::fprintf(stderr, "\r%60s\r", "");
+        if (csv) csv->close();  // the rows computed so far, flushed and checked
+        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        report_interrupted(e, interrupt.last_time, csv.get(), wall, report);
+        report.flush();
+        throw;
+    }
+    if (csv) csv->close();
     if (tty && last_percent >= 0) std::fprintf(stderr, "\r%60s\r", "");
     print_statistics(stats, report);
     return stats;
@@ -83,7 +187,7 @@ void print_statistics(const RunStatistics& s, std::ostream& out) {
         << (s.terminated_early ? ", stopped early at a component's request" : "") << "\n";
     out << "integrator steps " << s.integrator_steps << ", right-hand sides " << s.rhs_evaluations << ", time events "
         << s.time_events << ", state events " << s.state_events << ", step events " << s.step_events
-        << ", communication points " << s.communication_points << "\n";
+        << ", communication points " << s.communication_points << ", integrator restarts " << s.restarts << "\n";
     if (s.late_realtime_points) out << "real-time: " << s.late_realtime_points << " output points were late\n";
     for (const auto& c : s.components) {
         out << "  " << std::left << std::setw(20) << c.name << std::right;

@@ -20,9 +20,21 @@ struct RunOptions {
     std::vector<std::string> columns;
     bool realtime = false;
     bool event_rows = false;
+    bool reference = false;  // the reference execution (every component Model Exchange, every event everywhere)
     bool progress = true;  // a progress bar when stderr is a terminal and the run is long
+    bool force = false;    // run even past max_run_points or a CSV larger than the free disk space
 };
 
+// Output or communication points a run may have without --force: 1e8 points is hours of run and
+// gigabytes of CSV; more is a typo (--output-interval 1e-300) far more often than a wish.
+inline constexpr double max_run_points = 1e8;
+// From this many rows on, the CSV's size is announced on stderr before the run.
+inline constexpr double large_output_rows = 1e6;
+
+// Refuses, before the run: --cs of an unknown component, a non-finite stop time, intervals that are
+// not positive and finite, longer than the run or more than max_run_points points, and a CSV that
+// would not fit on its disk (the last two unless `force`). Throws Interrupted after a signal
+// (install_interrupt_handlers), with the CSV closed and a line of statistics on `report`.
 RunStatistics run_system(const RunOptions& options, std::ostream& report);
 void print_statistics(const RunStatistics& stats, std::ostream& out);
 

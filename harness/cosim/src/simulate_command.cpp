@@ -6,6 +6,8 @@
 #include <sstream>
 
 #include "cosim_error.hpp"
+#include "csv_table.hpp"
+#include "interrupt.hpp"
 #include "fmi2_instance.hpp"
 #include "value_text.hpp"
 
@@ -19,7 +21,12 @@ void simulate(const SimulateOptions& options, std::ostream& out) {
     const double start = ex.start_time.value_or(0.0);
     const double stop = options.stop_time.value_or(ex.stop_time.value_or(start + 1.0));
     const double h = options.output_interval.value_or(ex.step_size.value_or((stop - start) / 500.0));
-    if (!(stop > start) || !(h > 0.0)) throw CosimError("stop time must exceed the start time and the interval be positive");
+    if (!std::isfinite(start) || !std::isfinite(stop) || !(stop > start) || !std::isfinite(h) || !(h > 0.0))
+        throw CosimError("the stop time must be finite and exceed the start time, and the interval be positive and finite");
+    if (h > stop - start)
+        throw CosimError("--output-interval " + format_real(h) + " s is longer than the run (" + format_real(stop - start) + " s)");
+    if ((stop - start) / h > 1e8)
+        throw CosimError("--output-interval " + format_real(h) + " s makes more than the limit of 1e8 rows");
 
     std::vector<const fmi_loader::ScalarVariable*> columns;
     if (options.columns.empty()) {
@@ -46,7 +53,7 @@ void simulate(const SimulateOptions& options, std::ostream& out) {
     std::ofstream csv_file;
     if (options.csv) {
         csv_file.open(*options.csv);
-        if (!csv_file) throw CosimError("cannot write " + options.csv->string());
+        if (!csv_file) throw CosimError("cannot write " + options.csv->string() + ": " + io_reason());
     }
     const bool as_csv = options.csv.has_value();
     std::ostream& sink = as_csv ? csv_file : out;
@@ -54,12 +61,14 @@ void simulate(const SimulateOptions& options, std::ostream& out) {
     auto row = [&](const std::string& first, auto&& cell) {
         if (as_csv) {
             sink << first;
-            for (std::size_t i = 0; i < columns.size(); ++i) sink << "," << cell(i);
+            for (std::size_t i = 0; i < columns.size(); ++i) sink << "," << csv_field(cell(i));
         } else {
             sink << std::left << std::setw(10) << first;
             for (std::size_t i = 0; i < columns.size(); ++i) sink << std::setw(width) << cell(i);
         }
         sink << "\n";
+        if (!sink) throw CosimError("writing " + (as_csv ? options.csv->string() : std::string("standard output")) + " failed: " + io_reason());
+        throw_if_interrupted();
     };
     row("time", [&](std::size_t i) { return columns[i]->name; });
     const auto steps = static_cast<long>(std::llround((stop - start) / h));
@@ -76,6 +85,10 @@ void simulate(const SimulateOptions& options, std::ostream& out) {
         instance.do_step(t, std::min(h, stop - t));
     }
     instance.terminate();
+    if (as_csv) {
+        csv_file.close();
+        if (csv_file.fail()) throw CosimError("closing " + options.csv->string() + " failed: " + io_reason());
+    }
 }
 
 }  // namespace cosim

@@ -1,6 +1,7 @@
 #include "system.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <map>
 
 #include "cosim_error.hpp"
@@ -54,6 +55,10 @@ System::System(const SystemDescription& description, const SystemOptions& option
     check_connectors();
     connect();
     order_connections();
+    group_transfers();
+    mark_continuous_consumers();
+    changed_.assign(components_.size(), 0);
+    discrete_changed_.assign(components_.size(), 0);
     for (const auto& setting : options.settings) {
         const auto dot = setting.find('.');
         const auto eq = setting.find('=');
@@ -101,8 +106,10 @@ void System::load_components(const SystemOptions& options) {
         c.name = cd.name;
         c.fmu = std::make_unique<fmi_loader::Fmu>(resolve_source(cd.source, options));
         const auto& md = c.fmu->description();
-        const bool want_cs = std::find(options.co_simulation.begin(), options.co_simulation.end(), cd.name) !=
-                             options.co_simulation.end();
+        const bool asked_cs = std::find(options.co_simulation.begin(), options.co_simulation.end(), cd.name) !=
+                              options.co_simulation.end();
+        const bool annotated_cs = !options.model_exchange_only && cd.execution && cd.execution->co_simulation;
+        const bool want_cs = asked_cs || annotated_cs;
         if (cd.bridge) {
             // The block runs elsewhere: its description stays, its binary is never loaded.
             if (want_cs) throw CosimError(cd.name + ": a hardware-bridged component runs as Model Exchange only");
@@ -122,6 +129,13 @@ void System::load_components(const SystemOptions& options) {
             *c.fmu, c.interface == Interface::model_exchange ? fmi_loader::FmuKind::model_exchange
                                                              : fmi_loader::FmuKind::co_simulation,
             cd.name);
+        if (c.interface == Interface::co_simulation) {
+            c.communication_step = options.communication_step;
+            if (!c.communication_step && annotated_cs) c.communication_step = cd.execution->communication_step;
+            c.interpolates_inputs = md.co_simulation->can_interpolate_inputs;
+        } else {
+            c.completed_step_needed = !md.model_exchange->completed_integrator_step_not_needed;
+        }
         if (c.interface == Interface::model_exchange) {
             c.state_offset = states;
             c.state_count = md.number_of_continuous_states();
@@ -249,63 +263,144 @@ void System::check_open_inputs() const {
     }
 }
 
-bool System::transfer(std::size_t index) {
-    const Connection& c = connections_[index];
-    auto& from = *components_[c.from].instance;
-    auto& to = *components_[c.to].instance;
-    const auto sv = c.source->value_reference, tv = c.target->value_reference;
-    std::string value;
-    switch (c.source->type) {
-        case VariableType::real: {
-            const double x = from.get_real(sv);
-            to.set_real(tv, x);
-            value.assign(reinterpret_cast<const char*>(&x), sizeof x);  // bit pattern: exact comparison
-            break;
-        }
-        case VariableType::integer:
-        case VariableType::enumeration: {
-            const auto x = from.get_integer(sv);
-            to.set_integer(tv, x);
-            value = std::to_string(x);
-            break;
-        }
-        case VariableType::boolean: {
-            const bool x = from.get_boolean(sv);
-            to.set_boolean(tv, x);
-            value = x ? "1" : "0";
-            break;
-        }
-        case VariableType::string: {
-            value = from.get_string(sv);
-            to.set_string(tv, value);
-            break;
-        }
-    }
-    if (last_values_.size() != connections_.size()) last_values_.resize(connections_.size());
-    const bool changed = last_values_[index] != value;
-    last_values_[index] = std::move(value);
-    return changed;
-}
-
-bool System::propagate(bool integrating, bool with_cs_sources) {
-    bool changed = false;
-    for (std::size_t i = 0; i < connections_.size(); ++i) {
-        const auto& c = connections_[i];
-        if (!with_cs_sources && components_[c.from].interface == Interface::co_simulation) continue;
-        if (integrating) {
-            if (components_[c.from].interface != Interface::model_exchange) continue;
-            if (components_[c.to].interface != Interface::model_exchange) continue;
-            if (c.target->type != VariableType::real || c.target->variability != fmi_loader::Variability::continuous)
+// Kahn's order refined: among the connections ready to go, take one between the same two components
+// as the last, so that runs of them can be copied in one call.
+void System::group_transfers() {
+    groups_.clear();
+    for (const auto& c : connections_) {
+        const bool real = c.source->type == VariableType::real;
+        const bool continuous = real && c.target->variability == fmi_loader::Variability::continuous;
+        if (!groups_.empty()) {
+            auto& g = groups_.back();
+            if (real && g.type == VariableType::real && g.from == c.from && g.to == c.to && g.continuous_target == continuous) {
+                g.source_vrs.push_back(c.source->value_reference);
+                g.target_vrs.push_back(c.target->value_reference);
                 continue;
+            }
         }
-        changed = transfer(i) || changed;
+        TransferGroup g;
+        g.from = c.from;
+        g.to = c.to;
+        g.type = c.source->type;
+        g.continuous_target = continuous;
+        g.source_vrs = {c.source->value_reference};
+        g.target_vrs = {c.target->value_reference};
+        groups_.push_back(std::move(g));
+    }
+    for (auto& g : groups_) {
+        g.values.assign(g.source_vrs.size(), 0.0);
+        g.last.assign(g.source_vrs.size(), 0.0);
+    }
+}
+
+void System::mark_continuous_consumers() {
+    for (auto& c : components_) c.continuous_consumer = c.interface == Interface::model_exchange && c.has_dynamics();
+    // A Model Exchange component feeding a consumer's continuous input must itself see its inputs
+    // between events (its outputs may depend on them): up the connections until nothing changes.
+    for (bool grew = true; grew;) {
+        grew = false;
+        for (const auto& g : groups_) {
+            auto& source = components_[g.from];
+            if (!components_[g.to].continuous_consumer || !g.continuous_target) continue;
+            if (source.interface != Interface::model_exchange || source.continuous_consumer) continue;
+            source.continuous_consumer = true;
+            grew = true;
+        }
+    }
+}
+
+namespace {
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+}  // namespace
+
+bool System::transfer(TransferGroup& g, const std::function<void(std::size_t)>& before_discrete_change) {
+    auto& from = *components_[g.from].instance;
+    auto& to = *components_[g.to].instance;
+    bool changed = !g.given;
+    std::string text;
+    switch (g.type) {
+        case VariableType::real: from.get_reals(g.source_vrs, g.values); break;
+        case VariableType::integer:
+        case VariableType::enumeration: g.values[0] = from.get_integer(g.source_vrs[0]); break;
+        case VariableType::boolean: g.values[0] = from.get_boolean(g.source_vrs[0]) ? 1.0 : 0.0; break;
+        case VariableType::string:
+            text = from.get_string(g.source_vrs[0]);
+            changed = changed || text != g.last_string;
+            break;
+    }
+    for (std::size_t i = 0; i < g.values.size(); ++i) changed = changed || !same_bits(g.values[i], g.last[i]);
+    // An unchanged value is not set again: the target keeps its evaluated outputs.
+    if (!changed) return false;
+    if (!g.continuous_target && before_discrete_change) before_discrete_change(g.to);
+    switch (g.type) {
+        case VariableType::real: to.set_reals(g.target_vrs, g.values); break;
+        case VariableType::integer:
+        case VariableType::enumeration: to.set_integer(g.target_vrs[0], static_cast<fmi2Integer>(g.values[0])); break;
+        case VariableType::boolean: to.set_boolean(g.target_vrs[0], g.values[0] != 0.0); break;
+        case VariableType::string:
+            to.set_string(g.target_vrs[0], text);
+            g.last_string = std::move(text);
+            break;
+    }
+    g.last.swap(g.values);
+    g.given = true;
+    changed_[g.to] = 1;
+    if (!g.continuous_target) discrete_changed_[g.to] = 1;
+    return true;
+}
+
+bool System::propagate(Pass pass, const std::function<void(std::size_t)>& before_discrete_change) {
+    bool changed = false;
+    for (auto& g : groups_) {
+        const auto& target = components_[g.to];
+        if (pass != Pass::all && target.interface != Interface::model_exchange) continue;
+        if (pass == Pass::integrating || pass == Pass::continuous) {
+            if (!g.continuous_target || components_[g.from].interface != Interface::model_exchange) continue;
+            if (pass == Pass::integrating && !target.continuous_consumer) continue;
+        }
+        changed = transfer(g, before_discrete_change) || changed;
     }
     return changed;
 }
 
-void System::propagate_into(Interface target_kind) {
-    for (std::size_t i = 0; i < connections_.size(); ++i)
-        if (components_[connections_[i].to].interface == target_kind) transfer(i);
+void System::clear_changes() {
+    std::fill(changed_.begin(), changed_.end(), 0);
+    std::fill(discrete_changed_.begin(), discrete_changed_.end(), 0);
+}
+
+void System::record_co_simulation_inputs(std::size_t c) {
+    for (auto& g : groups_) {
+        if (g.to != c) continue;
+        g.step_start = g.last;
+        g.step_start_string = g.last_string;
+    }
+}
+
+void System::step_co_simulation(std::size_t c, double t, double h) {
+    auto& target = *components_[c].instance;
+    std::vector<double> slopes;
+    for (auto& g : groups_) {
+        if (g.to != c) continue;
+        transfer(g, {});  // the sources' values now, at the end of the step: g.last
+        // The step starts from the values recorded at its start.
+        switch (g.type) {
+            case VariableType::real: target.set_reals(g.target_vrs, g.step_start); break;
+            case VariableType::integer:
+            case VariableType::enumeration: target.set_integer(g.target_vrs[0], static_cast<fmi2Integer>(g.step_start[0])); break;
+            case VariableType::boolean: target.set_boolean(g.target_vrs[0], g.step_start[0] != 0.0); break;
+            case VariableType::string: target.set_string(g.target_vrs[0], g.step_start_string); break;
+        }
+        const bool interpolate = components_[c].interpolates_inputs && g.continuous_target && h > 0.0 &&
+                                 components_[g.from].interface == Interface::model_exchange;
+        if (!interpolate) continue;
+        slopes.resize(g.last.size());
+        for (std::size_t i = 0; i < slopes.size(); ++i) slopes[i] = (g.last[i] - g.step_start[i]) / h;
+        target.set_real_input_derivatives(g.target_vrs, slopes);
+    }
+    target.do_step(t - h, h);
+    record_co_simulation_inputs(c);
 }
 
 void System::initialize(double start_time, std::optional<double> stop_time) {
@@ -320,8 +415,11 @@ void System::initialize(double start_time, std::optional<double> stop_time) {
         }
     }
     for (auto& c : components_) c.instance->enter_initialization_mode();
-    propagate(false);  // in connection order: each input sees its source's initial value
+    propagate(Pass::all);  // in connection order: each input sees its source's initial value
     for (auto& c : components_) c.instance->exit_initialization_mode();
+    for (std::size_t i = 0; i < components_.size(); ++i)
+        if (components_[i].interface == Interface::co_simulation) record_co_simulation_inputs(i);
+    clear_changes();
 }
 
 }  // namespace cosim

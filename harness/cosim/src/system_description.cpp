@@ -3,6 +3,7 @@
 #include <libxml/parser.h>
 #include <libxml/tree.h>
 
+#include <cmath>
 #include <cstring>
 #include <memory>
 
@@ -19,13 +20,21 @@ struct DocDeleter {
 using Doc = std::unique_ptr<xmlDoc, DocDeleter>;
 
 // No network, no DTD loading, no entity substitution: a system file cannot reach outside itself.
+// A DOCTYPE is the only way to declare entities, and SSP never uses one: it is refused outright.
+// The size is bounded before parsing (max_ssd_bytes) so that a huge file is not read into memory.
 Doc parse_file(const std::filesystem::path& path) {
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(path, ec);
+    if (!ec && size > max_ssd_bytes)
+        throw CosimError(path.string() + " is " + std::to_string(size) + " bytes, more than the limit of " +
+                         std::to_string(max_ssd_bytes) + " bytes for a system description");
     Doc doc(xmlReadFile(path.c_str(), nullptr, XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING));
     if (!doc) {
         const xmlError* e = xmlGetLastError();
         throw CosimError(path.string() + ": not well-formed XML" +
                          (e && e->message ? std::string(" (line ") + std::to_string(e->line) + ": " + e->message + ")" : ""));
     }
+    if (doc->intSubset || doc->extSubset) throw CosimError(path.string() + ": DOCTYPE declarations are not allowed in an .ssd");
     return doc;
 }
 
@@ -136,6 +145,39 @@ std::optional<BridgeDescription> read_bridge(const xmlNode* component, const std
     return out;
 }
 
+// The first element of an annotation of `type` under n's <Annotations>, or null.
+const xmlNode* annotation(const xmlNode* n, const char* type, const char* element, const std::filesystem::path& file) {
+    const xmlNode* found = nullptr;
+    for_children(first_child(n, "Annotations"), "Annotation", [&](const xmlNode* a) {
+        if (found || attribute(a, "type").value_or("") != type) return;
+        found = first_child(a, element);
+        if (!found)
+            throw CosimError(file.string() + ":" + std::to_string(a->line) + ": a " + type + " annotation needs a <" + element +
+                             "> element");
+    });
+    return found;
+}
+
+double positive_attribute(const xmlNode* n, const char* name, const std::filesystem::path& file) {
+    const std::string where = file.string() + ":" + std::to_string(n->line) + ": " + name;
+    const double x = parse_real(required(n, name, file), where);
+    if (!(x > 0.0) || !std::isfinite(x)) throw CosimError(where + " must be positive and finite");
+    return x;
+}
+
+std::optional<ExecutionHint> read_execution(const xmlNode* component, const std::filesystem::path& file) {
+    const xmlNode* e = annotation(component, execution_annotation, "Execution", file);
+    if (!e) return std::nullopt;
+    ExecutionHint hint;
+    const std::string kind = required(e, "interface", file);
+    if (kind != "CoSimulation" && kind != "ModelExchange")
+        throw CosimError(file.string() + ":" + std::to_string(e->line) + ": interface '" + kind +
+                         "' is neither ModelExchange nor CoSimulation");
+    hint.co_simulation = kind == "CoSimulation";
+    if (attribute(e, "communicationStep")) hint.communication_step = positive_attribute(e, "communicationStep", file);
+    return hint;
+}
+
 }  // namespace
 
 SystemDescription read_system_description(const std::filesystem::path& ssd) {
@@ -170,6 +212,7 @@ SystemDescription read_system_description(const std::filesystem::path& ssd) {
         });
         read_bindings(e, ssd, c.parameters);
         c.bridge = read_bridge(e, ssd);
+        c.execution = read_execution(e, ssd);
         out.components.push_back(std::move(c));
     }
     for_children(first_child(system, "Connections"), "Connection", [&](const xmlNode* k) {
@@ -186,6 +229,8 @@ SystemDescription read_system_description(const std::filesystem::path& ssd) {
     if (const xmlNode* ex = first_child(root, "DefaultExperiment")) {
         if (auto s = attribute(ex, "startTime")) out.start_time = parse_real(*s, ssd.string() + ": startTime");
         if (auto s = attribute(ex, "stopTime")) out.stop_time = parse_real(*s, ssd.string() + ": stopTime");
+        if (const xmlNode* o = annotation(ex, execution_annotation, "Output", ssd))
+            out.output_interval = positive_attribute(o, "interval", ssd);
     }
     return out;
 }

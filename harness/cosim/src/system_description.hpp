@@ -3,12 +3,18 @@
 // experiment. Parsed with libxml2 with no network access and no DTD or external entities.
 #pragma once
 
+#include <cstdint>
+
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace cosim {
+
+// The largest .ssd read (16 MiB: the bundled systems are a few kB).
+inline constexpr std::uintmax_t max_ssd_bytes = std::uintmax_t{16} << 20;
+
 
 enum class ConnectorKind { input, output, parameter, calculated_parameter, inout, unspecified };
 
@@ -40,12 +46,22 @@ struct BridgeDescription {
     std::string policy = "hold";    // "hold" (keep the last outputs) or "stop" (error)
 };
 
+// How the master runs a component and what it writes by default, when the .ssd says
+// (<ssc:Annotation type="org.pvatt.execution">, see harness/systems/README.md).
+inline constexpr const char* execution_annotation = "org.pvatt.execution";
+
+struct ExecutionHint {
+    bool co_simulation = false;               // interface="CoSimulation": its own solver, its own step
+    std::optional<double> communication_step; // communicationStep="0.001"
+};
+
 struct ComponentDescription {
     std::string name;
     std::string source;  // as written in the .ssd
     std::vector<ConnectorDescription> connectors;
     std::vector<ParameterValue> parameters;
     std::optional<BridgeDescription> bridge;
+    std::optional<ExecutionHint> execution;
 };
 
 struct ConnectionDescription {
@@ -58,6 +74,7 @@ struct SystemDescription {
     std::vector<ComponentDescription> components;
     std::vector<ConnectionDescription> connections;
     std::optional<double> start_time, stop_time;
+    std::optional<double> output_interval;  // DefaultExperiment's execution annotation <Output interval=".."/>
 };
 
 // Throws CosimError naming the file, line and cause for anything malformed or unsupported.

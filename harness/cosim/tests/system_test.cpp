@@ -101,7 +101,37 @@ TEST(CosimSystem, CoSimulationComponentFeedsModelExchangeWithAZeroOrderHold) {
     Probe probe(system, "int", "y");
     const auto stats = run(system, probe, 1.0, 0.25);
     EXPECT_NEAR(probe.samples.back().second, 1.0 + 2.0 / 4.0, 1e-9);
-    EXPECT_EQ(stats.communication_points, 5);  // at 0, 0.25, 0.5, 0.75 and the last at 1 (a zero-length step is not taken)
+    EXPECT_EQ(stats.communication_points, 4);  // steps over [0, 0.25], ..., [0.75, 1], each taken at its end
+}
+
+TEST(CosimSystem, CoSimulationComponentInterpolatesItsInputsOverAStep) {
+    // ramp (ME): x = 1 + t, since its input u = 1. acc (CS, declared in the .ssd with its own 0.25 s
+    // step) integrates the ramp: x = 1 + t + t^2 / 2, 2.5 at t = 1. Linear input interpolation makes
+    // that exact; a zero-order hold of each step's start value would give 1 + 0.25 (1 + 1.25 + 1.5 +
+    // 1.75) = 2.375.
+    const std::string acc = "<ssd:Component name=\"acc\" source=\"test_integrator.fmu\"><ssd:Annotations>"
+                            "<ssc:Annotation type=\"org.pvatt.execution\"><ex:Execution xmlns:ex=\"urn:pvatt:execution\" "
+                            "interface=\"CoSimulation\" communicationStep=\"0.25\"/></ssc:Annotation></ssd:Annotations>"
+                            "</ssd:Component>\n";
+    SsdFile ssd(system_body(component("ramp", "test_integrator") + acc, connect("ramp", "y", "acc", "u")));
+    auto o = options();
+    o.settings = {"ramp.u=1"};
+    o.tolerance = 1e-10;  // the CS component's own integrator
+    System system(read_system_description(ssd.path), o);
+    ASSERT_EQ(system.components()[1].interface, Interface::co_simulation);
+    Probe probe(system, "acc", "y");
+    const auto stats = run(system, probe, 1.0, 0.5);
+    EXPECT_EQ(stats.communication_points, 4);
+    EXPECT_NEAR(probe.samples.back().second, 2.5, 1e-7);
+    EXPECT_NEAR(probe.samples[1].second, 1.0 + 0.5 + 0.125, 1e-7);  // t = 0.5
+
+    // The reference execution ignores the annotation: all Model Exchange, the same answer.
+    o.model_exchange_only = true;
+    System all_me(read_system_description(ssd.path), o);
+    EXPECT_EQ(all_me.components()[1].interface, Interface::model_exchange);
+    Probe probe_me(all_me, "acc", "y");
+    run(all_me, probe_me, 1.0, 0.5);
+    EXPECT_NEAR(probe_me.samples.back().second, 2.5, 1e-7);
 }
 
 TEST(CosimSystem, StateEventsOfAComponentAreLocated) {

@@ -13,6 +13,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <string>
 #include <system_error>
@@ -60,6 +61,39 @@ std::string unsafe_reason(const std::string& name) {
     throw LoaderError(code, "'" + fmu.string() + "': " + cause);
 }
 
+[[noreturn]] void fail_limit(const fs::path& fmu, const std::string& what, std::uint64_t value, std::uint64_t limit,
+                             const char* unit, const char* limit_name) {
+    fail(LoaderErrc::limit, fmu, what + " " + std::to_string(value) + unit + ", more than the limit of " +
+                                     std::to_string(limit) + unit + " (" + limit_name + ")");
+}
+
+void check_cancel(const fs::path& fmu) {
+    if (cancel_requested()) fail(LoaderErrc::cancelled, fmu, "extraction interrupted");
+}
+
+// The sizes the central directory declares, checked before a byte is written: the stream is then
+// held to the declared size, so a lying header cannot write more either.
+void check_declared(const zip_stat_t& st, const std::string& name, std::uint64_t& total, const Limits& limits,
+                    const fs::path& fmu) {
+    const std::uint64_t size = (st.valid & ZIP_STAT_SIZE) ? st.size : 0;
+    if (size > limits.max_entry_bytes)
+        fail_limit(fmu, "entry '" + name + "' is", size, limits.max_entry_bytes, " bytes uncompressed", "max_entry_bytes");
+    total += size;
+    if (total > limits.max_total_bytes)
+        fail_limit(fmu, "the entries up to '" + name + "' are", total, limits.max_total_bytes, " bytes uncompressed",
+                   "max_total_bytes");
+    if (size >= limits.ratio_min_bytes) {
+        const std::uint64_t packed = (st.valid & ZIP_STAT_COMP_SIZE) ? st.comp_size : 0;
+        const double ratio = packed > 0 ? static_cast<double>(size) / static_cast<double>(packed)
+                                        : std::numeric_limits<double>::infinity();
+        if (ratio > limits.max_compression_ratio)
+            fail(LoaderErrc::limit, fmu, "entry '" + name + "' expands " + std::to_string(packed) + " bytes to " +
+                                             std::to_string(size) + " (ratio " + std::to_string(ratio) +
+                                             "), more than the limit of " + std::to_string(limits.max_compression_ratio) +
+                                             " (max_compression_ratio): a zip bomb?");
+    }
+}
+
 void extract_entry(zip_t* archive, zip_uint64_t index, const std::string& name, zip_uint64_t size,
                    const fs::path& target, const fs::path& fmu) {
     std::unique_ptr<zip_file_t, ZipFileCloser> in(zip_fopen_index(archive, index, 0));
@@ -77,6 +111,8 @@ void extract_entry(zip_t* archive, zip_uint64_t index, const std::string& name, 
         if (n < 0) { ok = false; cause = std::string("read error: ") + zip_file_strerror(in.get()); break; }
         if (n == 0) break;
         total += static_cast<zip_uint64_t>(n);
+        if (total > size) { ok = false; cause = "holds more than its declared " + std::to_string(size) + " bytes"; break; }
+        if (cancel_requested()) { ok = false; cause = "extraction interrupted"; break; }
         const char* p = buffer.data();
         zip_int64_t left = n;
         while (left > 0) {
@@ -87,14 +123,15 @@ void extract_entry(zip_t* archive, zip_uint64_t index, const std::string& name, 
         }
         if (!ok) break;
     }
-    ::close(fd);
+    if (::close(fd) != 0 && ok) { ok = false; cause = std::string("write error: ") + std::strerror(errno); }
+    if (cancel_requested()) fail(LoaderErrc::cancelled, fmu, "extraction interrupted");
     if (ok && total != size) { ok = false; cause = "size mismatch (" + std::to_string(total) + " of " + std::to_string(size) + " bytes)"; }
     if (!ok) fail(LoaderErrc::extract_io, fmu, "entry '" + name + "': " + cause);
 }
 
 }  // namespace
 
-FmuArchive::FmuArchive(const fs::path& fmu_path) : fmu_path_(fmu_path) {
+FmuArchive::FmuArchive(const fs::path& fmu_path, const Limits& limits) : fmu_path_(fmu_path) {
     int code = 0;
     std::unique_ptr<zip_t, ZipCloser> archive(zip_open(fmu_path.c_str(), ZIP_RDONLY, &code));
     if (!archive) fail(LoaderErrc::archive_open, fmu_path, zip_error_text(code));
@@ -106,7 +143,12 @@ FmuArchive::FmuArchive(const fs::path& fmu_path) : fmu_path_(fmu_path) {
 
     try {
         const zip_int64_t count = zip_get_num_entries(archive.get(), 0);
+        if (count > 0 && static_cast<std::uint64_t>(count) > limits.max_entries)
+            fail_limit(fmu_path, "the archive has", static_cast<std::uint64_t>(count), limits.max_entries, " entries",
+                       "max_entries");
+        std::uint64_t total = 0;
         for (zip_int64_t i = 0; i < count; ++i) {
+            check_cancel(fmu_path);
             const auto index = static_cast<zip_uint64_t>(i);
             zip_stat_t st;
             zip_stat_init(&st);
@@ -126,6 +168,8 @@ FmuArchive::FmuArchive(const fs::path& fmu_path) : fmu_path_(fmu_path) {
                 if ((mode & S_IFMT) != 0 && !S_ISREG(mode) && !S_ISDIR(mode))
                     fail(LoaderErrc::unsafe_entry, fmu_path, "entry '" + name + "' refused: not a regular file or directory");
             }
+
+            check_declared(st, name, total, limits, fmu_path);
 
             const fs::path target = directory_ / fs::path(name).relative_path();
             std::error_code ec;

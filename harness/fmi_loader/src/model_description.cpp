@@ -6,6 +6,7 @@
 #include <libxml/tree.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <memory>
@@ -146,9 +147,22 @@ struct CtxtFree {
     void operator()(xmlParserCtxt* c) const noexcept { xmlFreeParserCtxt(c); }
 };
 
+struct FirstError {
+    std::string message;
+    int line = 0;
+    // libxml2 passes the parser context as user data; _private points back at this record.
+    static void record(void* user, xmlErrorPtr error) {
+        auto* ctxt = static_cast<xmlParserCtxt*>(user);
+        auto* self = ctxt ? static_cast<FirstError*>(ctxt->_private) : nullptr;
+        if (!self || !error || !self->message.empty() || error->level < XML_ERR_ERROR) return;
+        self->message = error->message ? error->message : "error";
+        self->line = error->line;
+    }
+};
+
 class Reader {
 public:
-    explicit Reader(std::string source) : source_(std::move(source)) {}
+    Reader(std::string source, const Limits& limits) : source_(std::move(source)), limits_(limits) {}
 
     [[noreturn]] void invalid(const xmlNode* node, const std::string& cause) const {
         const long line = node ? static_cast<long>(xmlGetLineNo(node)) : 0;
@@ -178,10 +192,18 @@ public:
     std::optional<double> real(const xmlNode* n, const char* name) const {
         auto v = attr(n, name);
         if (!v) return std::nullopt;
+        return parse_real(n, name, *v);
+    }
+
+    // "1e999" is a number, only too large for a double: say so rather than "not a number".
+    double parse_real(const xmlNode* n, const char* name, const std::string& v) const {
         char* end = nullptr;
-        const double value = std::strtod(v->c_str(), &end);
-        if (v->empty() || *end != '\0') invalid(n, std::string("attribute '") + name + "' is not a number: '" + *v + "'");
-        return value;
+        errno = 0;
+        const double value = std::strtod(v.c_str(), &end);
+        if (v.empty() || *end != '\0') invalid(n, std::string("attribute '") + name + "' is not a number: '" + shorten(v) + "'");
+        if (errno == ERANGE && std::abs(value) > 1.0)
+            invalid(n, std::string("attribute '") + name + "': " + shorten(v) + " is out of range of a double");
+        return value;  // an underflow to 0 or a subnormal is that value, as the standard's xs:double has it
     }
 
     std::optional<long long> integer(const xmlNode* n, const char* name) const {
@@ -190,9 +212,16 @@ public:
         char* end = nullptr;
         errno = 0;
         const long long value = std::strtoll(v->c_str(), &end, 10);
-        if (v->empty() || *end != '\0' || errno == ERANGE)
-            invalid(n, std::string("attribute '") + name + "' is not an integer: '" + *v + "'");
+        if (v->empty() || *end != '\0')
+            invalid(n, std::string("attribute '") + name + "' is not an integer: '" + shorten(*v) + "'");
+        if (errno == ERANGE) invalid(n, std::string("attribute '") + name + "': " + shorten(*v) + " is out of range");
         return value;
+    }
+
+    // Values quoted in messages are cut: a 50 MB attribute must not become a 50 MB message.
+    static std::string shorten(const std::string& v) {
+        constexpr std::size_t keep = 64;
+        return v.size() <= keep ? v : v.substr(0, keep) + "... (" + std::to_string(v.size()) + " characters)";
     }
 
     std::size_t index(const xmlNode* n, const char* name) const {
@@ -255,8 +284,9 @@ public:
         std::string token;
         while (in >> token) {
             char* end = nullptr;
+            errno = 0;
             const long long v = std::strtoll(token.c_str(), &end, 10);
-            if (*end != '\0' || v < 1) invalid(n, "bad index '" + token + "' in dependencies");
+            if (*end != '\0' || v < 1 || errno == ERANGE) invalid(n, "bad index '" + shorten(token) + "' in dependencies");
             out.push_back(static_cast<std::size_t>(v));
         }
         return out;
@@ -407,6 +437,10 @@ public:
             invalid(root, "unknown variableNamingConvention '" + md.variable_naming_convention + "'");
         const auto nz = integer(root, "numberOfEventIndicators").value_or(0);
         if (nz < 0) invalid(root, "numberOfEventIndicators is negative");
+        if (static_cast<unsigned long long>(nz) > limits_.max_event_indicators)
+            throw LoaderError(LoaderErrc::limit, "'" + source_ + "': numberOfEventIndicators " + std::to_string(nz) +
+                                                     " is more than the limit of " + std::to_string(limits_.max_event_indicators) +
+                                                     " (max_event_indicators)");
         md.number_of_event_indicators = static_cast<std::size_t>(nz);
 
         // Types first: variables inherit from them whatever the element order in the file.
@@ -418,6 +452,7 @@ public:
             if (is(n, "ModelExchange")) {
                 ModelExchangeInfo me;
                 me.model_identifier = required(n, "modelIdentifier");
+                check_model_identifier(n, me.model_identifier);
                 me.needs_execution_tool = boolean(n, "needsExecutionTool", false);
                 me.completed_integrator_step_not_needed = boolean(n, "completedIntegratorStepNotNeeded", false);
                 me.can_be_instantiated_only_once_per_process = boolean(n, "canBeInstantiatedOnlyOncePerProcess", false);
@@ -429,6 +464,7 @@ public:
             } else if (is(n, "CoSimulation")) {
                 CoSimulationInfo cs;
                 cs.model_identifier = required(n, "modelIdentifier");
+                check_model_identifier(n, cs.model_identifier);
                 cs.needs_execution_tool = boolean(n, "needsExecutionTool", false);
                 cs.can_handle_variable_communication_step_size = boolean(n, "canHandleVariableCommunicationStepSize", false);
                 cs.can_interpolate_inputs = boolean(n, "canInterpolateInputs", false);
@@ -447,8 +483,14 @@ public:
                 md.default_experiment = DefaultExperiment{real(n, "startTime"), real(n, "stopTime"),
                                                           real(n, "tolerance"), real(n, "stepSize")};
             } else if (is(n, "ModelVariables")) {
-                for (const xmlNode* c = n->children; c; c = c->next)
-                    if (is(c, "ScalarVariable")) md.model_variables.push_back(scalar_variable(c, md));
+                for (const xmlNode* c = n->children; c; c = c->next) {
+                    if (!is(c, "ScalarVariable")) continue;
+                    if (md.model_variables.size() == limits_.max_variables)
+                        throw LoaderError(LoaderErrc::limit, "'" + source_ + "': more than the limit of " +
+                                                                 std::to_string(limits_.max_variables) +
+                                                                 " variables (max_variables)");
+                    md.model_variables.push_back(scalar_variable(c, md));
+                }
             } else if (is(n, "ModelStructure")) {
                 for (const xmlNode* c = n->children; c; c = c->next) {
                     if (is(c, "Outputs")) md.model_structure.outputs = unknowns(c);
@@ -459,42 +501,113 @@ public:
         }
         if (!md.model_exchange && !md.co_simulation)
             invalid(root, "neither <ModelExchange> nor <CoSimulation> is declared");
+        check_unique(root, md);
+        check_indices(root, md);
         return md;
+    }
+
+    // FMI 2.0.4 section 2.2.1: modelIdentifier is the prefix of the C function names and the name of
+    // the shared library, so it must be a plain C identifier; anything else ("../x", "/abs/evil")
+    // would make the loader open a library outside the unpacked FMU.
+    void check_model_identifier(const xmlNode* n, const std::string& id) const {
+        const auto letter = [](unsigned char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
+        bool ok = !id.empty() && letter(static_cast<unsigned char>(id[0])) && id.size() <= 200;
+        for (const unsigned char c : id) ok = ok && (letter(c) || (c >= '0' && c <= '9'));
+        if (!ok) invalid(n, "modelIdentifier '" + shorten(id) + "' is not a C identifier ([A-Za-z_][A-Za-z0-9_]*, at most 200 characters)");
+    }
+
+    // Names are unique (section 2.2.7). Variables of one base type sharing a valueReference are
+    // aliases of one value; at most one of an alias set may carry a start value, or setting one
+    // name would silently change another's.
+    void check_unique(const xmlNode* root, const ModelDescription& md) const {
+        std::map<std::string_view, std::size_t> names;
+        std::map<std::pair<int, std::uint32_t>, std::size_t> started;
+        for (std::size_t i = 0; i < md.model_variables.size(); ++i) {
+            const auto& v = md.model_variables[i];
+            if (const auto [it, fresh] = names.emplace(v.name, i); !fresh)
+                invalid(root, "variable name '" + shorten(v.name) + "' is declared twice (variables " +
+                                  std::to_string(it->second + 1) + " and " + std::to_string(i + 1) + ")");
+            if (!v.start) continue;
+            const int base = v.type == VariableType::enumeration ? static_cast<int>(VariableType::integer) : static_cast<int>(v.type);
+            if (const auto [it, fresh] = started.emplace(std::pair{base, v.value_reference}, i); !fresh)
+                invalid(root, "variables '" + shorten(md.model_variables[it->second].name) + "' and '" + shorten(v.name) +
+                                  "' share valueReference " + std::to_string(v.value_reference) +
+                                  " and both have a start value (an alias set allows one)");
+        }
+    }
+
+    // Indices into ModelVariables must name a variable (section 2.2.8).
+    void check_indices(const xmlNode* root, const ModelDescription& md) const {
+        const std::size_t count = md.model_variables.size();
+        auto in_range = [&](std::size_t index, const char* where) {
+            if (index > count)
+                invalid(root, std::string(where) + " index " + std::to_string(index) + " is beyond the " +
+                                  std::to_string(count) + " variables");
+        };
+        for (const auto* list : {&md.model_structure.outputs, &md.model_structure.derivatives,
+                                 &md.model_structure.initial_unknowns})
+            for (const auto& u : *list) {
+                in_range(u.index, "ModelStructure");
+                if (u.dependencies)
+                    for (const auto d : *u.dependencies) in_range(d, "dependencies");
+            }
+        for (const auto& v : md.model_variables)
+            if (v.derivative) in_range(*v.derivative, "derivative");
     }
 
 private:
     std::string source_;
+    const Limits& limits_;
 };
 
 }  // namespace
 
-ModelDescription parse_model_description(std::string_view xml, const std::string& source_name) {
+ModelDescription parse_model_description(std::string_view xml, const std::string& source_name, const Limits& limits) {
+    if (xml.size() > limits.max_description_bytes)
+        throw LoaderError(LoaderErrc::limit, "'" + source_name + "' is " + std::to_string(xml.size()) +
+                                                 " bytes, more than the limit of " +
+                                                 std::to_string(limits.max_description_bytes) + " bytes (max_description_bytes)");
     std::unique_ptr<xmlParserCtxt, CtxtFree> ctxt(xmlNewParserCtxt());
     if (!ctxt) throw LoaderError(LoaderErrc::xml_parse, "'" + source_name + "': cannot create parser");
     // NONET: no network; neither DTDLOAD nor NOENT: no external subset and no entity expansion.
     // NOERROR/NOWARNING: the message goes into the exception, not to stderr.
     const int options = XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING;
+    // The first error says what is wrong ("AttValue length too long"); the last is often a consequence
+    // ("Extra content at the end of the document").
+    FirstError first;
+    ctxt->sax->serror = &FirstError::record;
+    ctxt->_private = &first;
     std::unique_ptr<xmlDoc, DocFree> doc(xmlCtxtReadMemory(ctxt.get(), xml.data(), static_cast<int>(xml.size()),
                                                            nullptr, nullptr, options));
     if (!doc || !ctxt->wellFormed) {
-        const xmlError* err = xmlCtxtGetLastError(ctxt.get());
-        std::string cause = err && err->message ? err->message : "not well-formed";
+        const xmlError* last = xmlCtxtGetLastError(ctxt.get());
+        std::string cause = !first.message.empty() ? first.message : last && last->message ? last->message : "not well-formed";
         while (!cause.empty() && cause.back() == '\n') cause.pop_back();
-        const int line = err ? err->line : 0;
+        const int line = !first.message.empty() ? first.line : last ? last->line : 0;
         throw LoaderError(LoaderErrc::xml_parse, "'" + source_name + "' line " + std::to_string(line) + ": " + cause);
     }
     // A DOCTYPE is the only way to declare entities; FMI never uses one, so refuse it outright.
     if (doc->intSubset || doc->extSubset)
         throw LoaderError(LoaderErrc::xml_invalid, "'" + source_name + "': DOCTYPE declarations are not allowed in modelDescription.xml");
-    return Reader(source_name).read(xmlDocGetRootElement(doc.get()));
+    return Reader(source_name, limits).read(xmlDocGetRootElement(doc.get()));
 }
 
-ModelDescription read_model_description(const std::filesystem::path& file) {
+ModelDescription read_model_description(const std::filesystem::path& file, const Limits& limits) {
     std::ifstream in(file, std::ios::binary);
     if (!in) throw LoaderError(LoaderErrc::xml_parse, "'" + file.string() + "': cannot open file");
-    std::ostringstream content;
-    content << in.rdbuf();
-    return parse_model_description(content.str(), file.string());
+    // The size is checked before a byte is read: a 2 GB file must not be read into memory first.
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(file, ec);
+    if (!ec && size > limits.max_description_bytes)
+        throw LoaderError(LoaderErrc::limit, "'" + file.string() + "' is " + std::to_string(size) +
+                                                 " bytes, more than the limit of " +
+                                                 std::to_string(limits.max_description_bytes) + " bytes (max_description_bytes)");
+    std::string content;
+    content.resize(ec ? 0 : static_cast<std::size_t>(size));
+    in.read(content.data(), static_cast<std::streamsize>(content.size()));
+    if (in.gcount() != static_cast<std::streamsize>(content.size()) || ec)
+        throw LoaderError(LoaderErrc::xml_parse, "'" + file.string() + "': cannot read the file" + (ec ? ": " + ec.message() : ""));
+    return parse_model_description(content, file.string(), limits);
 }
 
 }  // namespace fmi_loader

@@ -68,13 +68,14 @@ protected:
 
     bool tmp_is_empty() const { return fs::is_empty(root_ / "tmp"); }
 
-    void expect_refused(const std::vector<Entry>& entries, const std::string& offending) {
+    void expect_refused(const std::vector<Entry>& entries, const std::string& offending,
+                        LoaderErrc code = LoaderErrc::unsafe_entry, const fmi_loader::Limits& limits = {}) {
         const fs::path fmu = make_zip(entries);
         try {
-            FmuArchive archive(fmu);
+            FmuArchive archive(fmu, limits);
             ADD_FAILURE() << "entry '" << offending << "' was accepted";
         } catch (const LoaderError& e) {
-            EXPECT_EQ(e.code(), LoaderErrc::unsafe_entry);
+            EXPECT_EQ(e.code(), code) << e.what();
             const std::string what = e.what();
             EXPECT_NE(what.find(fmu.string()), std::string::npos) << what;
             EXPECT_NE(what.find(offending), std::string::npos) << what;
@@ -157,4 +158,36 @@ TEST_F(LoaderArchive, NotAZipIsRefused) {
         EXPECT_EQ(e.code(), LoaderErrc::archive_open);
     }
     EXPECT_TRUE(tmp_is_empty());
+}
+
+// Issue 14 case 3: bounded extraction. Limits are set low here so that no test writes more than a few
+// megabytes; the message must name the limit that was hit.
+TEST_F(LoaderArchive, TooManyEntriesAreRefusedBeforeExtracting) {
+    fmi_loader::Limits limits;
+    limits.max_entries = 3;
+    expect_refused({{"a", "1"}, {"b", "2"}, {"c", "3"}, {"d", "4"}}, "max_entries", LoaderErrc::limit, limits);
+}
+
+TEST_F(LoaderArchive, OversizedEntryIsRefused) {
+    fmi_loader::Limits limits;
+    limits.max_entry_bytes = 100;
+    expect_refused({{"modelDescription.xml", "<x/>"}, {"resources/big", std::string(200, 'x')}}, "max_entry_bytes",
+                   LoaderErrc::limit, limits);
+}
+
+TEST_F(LoaderArchive, TotalSizeIsBounded) {
+    fmi_loader::Limits limits;
+    limits.max_total_bytes = 150;
+    expect_refused({{"resources/a", std::string(100, 'x')}, {"resources/b", std::string(100, 'y')}}, "max_total_bytes",
+                   LoaderErrc::limit, limits);
+}
+
+TEST_F(LoaderArchive, HighlyCompressibleEntryIsRefusedAtTheDefaultRatio) {
+    // 2 MiB of zeros deflate to about 2 KiB (ratio ~1000, deflate's ceiling): the shape of a zip bomb,
+    // at a size that costs nothing. The default limits apply (ratio 200 for entries of 1 MiB or more).
+    expect_refused({{"modelDescription.xml", "<x/>"}, {"resources/zeros", std::string(std::size_t{2} << 20, '\0')}},
+                   "max_compression_ratio", LoaderErrc::limit);
+    // The same content below ratio_min_bytes is an ordinary small file.
+    const fs::path fmu = make_zip({{"resources/zeros", std::string(std::size_t{512} << 10, '\0')}});
+    EXPECT_NO_THROW(FmuArchive archive(fmu));
 }

@@ -5,10 +5,13 @@
 //   b_sensed = M · b_body                 cross-axis sensitivity and misalignment (matrix M)
 //   d b_filt / dt = 2π f_c (b_sensed − b_filt)   the sensor's bandwidth as a first-order low-pass
 //   S(T) = S0 (1 + k_T (T − 25 °C))      sensitivity with its temperature coefficient
-//   v_out = clamp(v_null + S(T) (b_filt + n) + σ v_off, v_low, v_high)
-// where n is the output noise (field-equivalent, held between noise samples), σ = +1 after a set
-// pulse and −1 after a reset pulse (the bridge offset flips sign, so the mean of a set and a reset
-// reading cancels it), and the clamp is the saturation at the supply rails.
+//   v_out = clamp(v_null + σ S(T) (b_filt + n) + v_off, v_low, v_high)
+// where n is the bridge's noise (field-equivalent, held between noise samples), σ = +1 after a set
+// pulse and −1 after a reset pulse, and the clamp is the saturation at the supply rails. A set or reset
+// pulse re-magnetises the permalloy film and so reverses the sign of the bridge's response to the
+// field; the bridge and amplifier offset v_off does not change. Half the difference of a set and a reset
+// reading is S·B without the offset, half their sum is v_null + v_off (Honeywell application note AN-213,
+// "Set/Reset Function for Magnetic Sensors").
 #pragma once
 
 #include <array>
@@ -42,7 +45,8 @@ struct OutputStage {
     double v_high;       // V, upper rail
 };
 
-// Output voltage of one axis. `set_polarity` is +1 after a set pulse, −1 after a reset pulse.
+// Output voltage of one axis. `set_polarity` is +1 after a set pulse, −1 after a reset pulse: it
+// multiplies the field term (and the bridge noise), not the offset.
 double output_voltage(const OutputStage& stage, double b_filt, double noise, double set_polarity);
 
 }  // namespace magnetometer

@@ -4,24 +4,33 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 
 #include "fmu/block.hpp"
-#include "fmu/random.hpp"
+#include "fmu/fixed_string.hpp"
+#include "magnetometer/held_noise.hpp"
 #include "magnetometer/hmc2003.hpp"
 
 namespace magnetometer {
+
+// Marks `noise` as not yet drawn; noise_index() never returns it (its range is ±max_noise_index).
+inline constexpr std::int64_t no_noise_index = std::numeric_limits<std::int64_t>::min();
 
 // Every variable of the block. Defaults are the HMC2003 datasheet's typical values where it gives
 // one (Honeywell, "HMC2003 Three-axis magnetic sensor hybrid"); the others are marked as assumptions.
 struct MagnetometerData {
     // inputs
     Vec3 mag_body{};  // T
+    bool set_reset_command = true;  // the strap driver's last pulse (true: set, false: reset), source "input"
     // parameters
     double sensitivity = 1.0 / tesla_per_gauss;  // V/T: datasheet 1 V/gauss
     double v_null = 2.5;                         // V: zero-field output and the reference pin
     double bridge_offset = 0.02;                 // V: assumed; the datasheet's null spread is 2.3–2.7 V
-    bool set_reset_enabled = true;
-    double set_reset_period = 1.0;    // s: assumed; the seed says "occasionally"
+    // Who pulses the set/reset strap: "input" (the on-board computer, through set_reset_command, as in
+    // flight: seed 000 fig. 10 drives the strap from MOSFETs), "timer" (the sensor alternates set and
+    // reset by itself every set_reset_period: a stand-alone run) or "none" (set once at power-up).
+    fmu::FixedString<8> set_reset_source = "input";
+    double set_reset_period = 1.0;    // s: source "timer" only; assumed, the seed says "occasionally"
     double cross_axis = 0.003;        // 1: assumed 0.3 % cross-field pick-up
     Vec3 misalignment{};              // rad
     double bandwidth = 1000.0;        // Hz: datasheet 1 kHz
@@ -40,10 +49,10 @@ struct MagnetometerData {
     double v_ref = 2.5;
     bool set_polarity = true;  // true after a set pulse, false after a reset pulse
     // discrete state (locals)
-    Vec3 noise{};
     double next_set_reset = 0.0;
-    double next_noise = 0.0;
-    fmu::Random random{};
+    double noise_start = 0.0;         // s: start of hold interval 0 (the initialization time)
+    std::int64_t noise_index = no_noise_index;  // hold interval whose samples `noise` holds (a cache)
+    Vec3 noise{};                     // T
 };
 
 class MagnetometerBlock : public fmu::Block<MagnetometerBlock, MagnetometerData> {
@@ -56,9 +65,10 @@ public:
     fmu::EventUpdate event_update(double t, bool time_event_due) override;
     double next_time_event() const override;
     void validate() const override;
+    void check_state() const override;
 
 private:
-    void draw_noise();
+    void update_noise(double t);
 };
 
 }  // namespace magnetometer

@@ -30,6 +30,10 @@ double effective_duty(const Model& m, double duty) {
     return duty;
 }
 
+// The most PWM periods counted from the start: beyond, edges are closer than the edge tolerance in
+// a double and an int64 count would overflow near 9.2e18 (1e11 periods of 200 us: 231 days).
+constexpr double max_period_index = 1e11;
+
 double period_start(const DiscreteState& d, const Model& m, std::int64_t k) {
     return d.period_origin + static_cast<double>(k) * m.pwm_period;
 }
@@ -71,14 +75,25 @@ double shunt_fraction(const Model& m, const DiscreteState& d, double v_bus) {
     return d.gate ? 1.0 : 0.0;
 }
 
-// Starts PWM period k at its start time: sample the controller, turn the gate on for the pulse.
+// Starts PWM period k at its start time: sample the controller, turn the gate on for the pulse. Regular
+// modulation schedules the trailing edge at D·T; latched_natural leaves it to the comparator (a state event).
 void start_period(const Model& m, DiscreteState& d, std::int64_t k, double v_bus) {
     d.period_index = k;
     d.duty = effective_duty(m, controller_duty(m.parameters, v_bus));
     d.gate = d.duty > 0.0;
-    d.off_edge_pending = d.duty > 0.0 && d.duty < 1.0;
+    d.off_edge_pending = m.parameters.modulation == Modulation::regular && d.duty > 0.0 && d.duty < 1.0;
     d.next_event_time = d.off_edge_pending ? period_start(d, m, k) + d.duty * m.pwm_period
                                            : period_start(d, m, k + 1);
+}
+
+// The latched_natural comparator: live controller output minus the carrier of the period in progress.
+double comparator(const Model& m, const DiscreteState& d, double t, double v_bus) {
+    return controller_duty(m.parameters, v_bus) - (t - period_start(d, m, d.period_index)) / m.pwm_period;
+}
+
+bool comparator_armed(const Model& m, const DiscreteState& d) {
+    return m.parameters.fidelity == Fidelity::switching && m.parameters.modulation == Modulation::latched_natural &&
+           d.gate;
 }
 
 void update_charge_switch(const Model& m, DiscreteState& d, double soc) {
@@ -251,9 +266,10 @@ Outputs outputs(const Model& m, const Inputs& u, const DiscreteState& d, double 
     return evaluate(m, illuminate(m, u), d, t, x).outputs;
 }
 
-Indicators event_indicators(const Model& m, const Inputs&, const DiscreteState& d, double, const State& x) {
+Indicators event_indicators(const Model& m, const Inputs&, const DiscreteState& d, double t, const State& x) {
     const auto& b = m.parameters.battery;
-    return {d.charge_connected ? b.soc_disconnect - x[state_soc] : x[state_soc] - b.soc_connect};
+    return {d.charge_connected ? b.soc_disconnect - x[state_soc] : x[state_soc] - b.soc_connect,
+            comparator_armed(m, d) ? comparator(m, d, t, x[state_v_bus]) : 1.0};
 }
 
 double next_time_event(const Model& m, const DiscreteState& d) {
@@ -268,7 +284,20 @@ EventResult event_update(const Model& m, const Inputs& u, const DiscreteState& d
 EventResult event_update(const Model& m, const Illumination& l, const DiscreteState& d0, double t, const State& x) {
     DiscreteState d = d0;
     if (m.parameters.fidelity == Fidelity::switching) {
-        // A bounded loop: normally one edge is due; more only if a host stepped past edges.
+        // A host that stepped over whole periods (it should not) restarts in the period holding t
+        // instead of walking every edge in between; a time too far for the count is refused.
+        if (t >= d.next_event_time + m.pwm_period) {
+            const double k = std::floor((t - d.period_origin) / m.pwm_period);
+            if (!(k < max_period_index))
+                throw std::invalid_argument("ssr_plant: t = " + std::to_string(t) + " s is more than 1e11 PWM periods "
+                                            "after the start (the limit of the period count)");
+            if (k > static_cast<double>(d.period_index)) {
+                const bool gate_before = d.gate;
+                start_period(m, d, static_cast<std::int64_t>(k), x[state_v_bus]);
+                if (gate_before && !d.gate) d.held_face_current = l.i_shunt;
+            }
+        }
+        // A bounded loop: normally one edge is due.
         for (int guard = 0; guard < 1000000 && t >= d.next_event_time - edge_tolerance(m, t); ++guard) {
             if (d.off_edge_pending) {
                 d.gate = false;  // trailing edge of the pulse
@@ -281,6 +310,12 @@ EventResult event_update(const Model& m, const Illumination& l, const DiscreteSt
                 start_period(m, d, d.period_index + 1, x[state_v_bus]);  // controller sample (digital P)
                 if (gate_before && !d.gate) d.held_face_current = l.i_shunt;
             }
+        }
+        // latched_natural: the comparator's trailing edge (the indicator reached 0; the tolerance is the
+        // carrier's rise over the time tolerance of a PWM edge). Latched: off until the next period start.
+        if (comparator_armed(m, d) && comparator(m, d, t, x[state_v_bus]) <= edge_tolerance(m, t) / m.pwm_period) {
+            d.gate = false;
+            d.held_face_current = l.i_shunt;  // the S/H holds what it tracked up to this instant
         }
     }
     update_charge_switch(m, d, x[state_soc]);

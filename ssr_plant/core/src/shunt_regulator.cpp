@@ -6,7 +6,7 @@ namespace ssr_plant {
 
 double controller_duty(const Parameters& p, double v_bus) {
     // Higher bus voltage → shunt more of the period (eq. 4: I_bus = (1 − D) I).
-    return std::clamp(p.controller_gain * (v_bus - p.bus_voltage_reference) / 100.0, 0.0, 1.0);
+    return std::clamp(p.controller_gain * (v_bus - p.bus_voltage_reference), 0.0, 1.0);
 }
 
 std::array<double, 3> differential_currents(const std::array<double, 6>& i) {

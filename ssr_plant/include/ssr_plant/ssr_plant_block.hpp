@@ -24,6 +24,7 @@ struct SsrPlantData {
     // parameters: selections
     fmu::FixedString<15> fidelity = "switching";
     fmu::FixedString<15> angular_response = "kelly";
+    fmu::FixedString<15> modulation = "latched_natural";
     // panel datasheet
     double rated_irradiance = 1000.0;
     double panel_isc = 0.62;
@@ -67,6 +68,7 @@ struct SsrPlantData {
     double soc = 0.9;
     double duty = 0.0;
     bool gate = false;
+    std::int32_t pwm_period = 0;
     double i_load = 0.0;
     // discrete state of the core (PWM period, S/H, charge switch)
     DiscreteState discrete{};
@@ -85,11 +87,14 @@ public:
 
     void initialize(double t) override;
     void evaluate(double t) override;
+    // The bus balance alone (no Hall or short-circuit solves): what a solver needs between outputs.
+    void evaluate_derivatives(double t) override;
     std::size_t event_indicator_count() const override { return indicator_count; }
     void event_indicators(double t, std::span<double> z) override;
     fmu::EventUpdate event_update(double t, bool time_event_due) override;
     double next_time_event() const override;
     void validate() const override;
+    void check_state() const override;
 
 private:
     // The fitted plant (panel fit ~0.2 ms) kept outside Data and rebuilt whenever the parameters
@@ -102,6 +107,7 @@ private:
     Inputs inputs() const;
     State state() const;
     bool gate_output() const;
+    std::int32_t pwm_period_output() const;
     Parameters parameters() const;
 
     mutable std::optional<ssr_plant::Model> model_;

@@ -88,6 +88,9 @@ class MeanAngularRate {
 
   MeanRate<T> result() const noexcept;
   void reset() noexcept;
+  // What the constructor and push() guarantee, for a copy that came in as bytes (an FMU state):
+  // window and ring indices in range, a known measure, a 0/1 flag, no NaN in the rings.
+  bool consistent() const noexcept;
   const MeanAngularRateConfig<T>& config() const noexcept { return config_; }
 
  private:

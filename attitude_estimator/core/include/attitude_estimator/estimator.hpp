@@ -7,6 +7,7 @@
 
 #include "attitude_estimator/adc.hpp"
 #include "attitude_estimator/field_vector.hpp"
+#include "attitude_estimator/set_reset.hpp"
 #include "attitude_estimator/sun_methods.hpp"
 #include "attitude_estimator/sun_vector.hpp"
 #include "attitude_estimator/types.hpp"
@@ -51,6 +52,11 @@ struct SampleInputs {
   T v_mag_ref = T(2.5);    // V, magnetometer zero-field reference output
   Vec3<T> sun_ref{};       // sun direction in the reference (inertial) frame, any nonzero length
   Vec3<T> mag_ref{};       // geomagnetic field in the reference frame, any nonzero length
+  // The HMC2003's set/reset state when v_mag was read (set_reset.hpp): +1 after a set pulse, −1 after a
+  // reset pulse — the polarity the computer itself last commanded (SetResetState::polarity before the
+  // sample), not anything the sensor reports. It multiplies the field term of the reading.
+  T mag_polarity = T(1);
+  Vec3<T> mag_offset{};    // V, the sensor offset to take out (SetResetState::offset; 0: none known)
 };
 
 template <class T>
@@ -60,6 +66,8 @@ struct SampleResult {
   Vec3<T> sun_meas{};   // unit sun vector in body axes (zero when sun_valid is false)
   Vec3<T> mag_meas{};   // unit field vector in body axes (zero when mag_valid is false)
   Vec3<T> mag_field{};  // field in body axes, T
+  Vec3<T> mag_reading{};  // V, digitized v_mag − v_mag_ref, offset and polarity still in (for set_reset.hpp)
+  bool mag_reading_usable = false;  // every channel finite and off its rails
   T sun_norm = T(0);    // |s| of 000 eq. 5 before normalization
   T loss = T(0);        // L(A), 000 eq. 8
   bool sun_valid = false;

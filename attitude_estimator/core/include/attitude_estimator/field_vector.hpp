@@ -35,6 +35,21 @@ FieldMeasurement<T> field_vector_from_voltages(const Vec3<T>& v_mag, T v_mag_ref
                                                T rail_margin = kDefaultRailMargin<T>,
                                                T min_field = kDefaultMinField<T>) noexcept;
 
+// The same for a reading taken after a set (polarity = +1) or reset (−1) pulse of the HMC2003: the pulse
+// flips the field term, the offset stays (set_reset.hpp), so B = polarity·(v_mag − v_mag_ref − offset)/S.
+// The rail test is on the raw v_mag. The function above is this one with polarity +1 and no offset.
+template <class T>
+FieldMeasurement<T> field_vector_from_set_reset(const Vec3<T>& v_mag, T v_mag_ref, T sensitivity, T polarity,
+                                                const Vec3<T>& offset, const Vec3<T>& rail_low,
+                                                const Vec3<T>& rail_high, T rail_margin = kDefaultRailMargin<T>,
+                                                T min_field = kDefaultMinField<T>) noexcept;
+
+extern template FieldMeasurement<float> field_vector_from_set_reset(const Vec3<float>&, float, float, float,
+                                                                    const Vec3<float>&, const Vec3<float>&,
+                                                                    const Vec3<float>&, float, float) noexcept;
+extern template FieldMeasurement<double> field_vector_from_set_reset(const Vec3<double>&, double, double, double,
+                                                                     const Vec3<double>&, const Vec3<double>&,
+                                                                     const Vec3<double>&, double, double) noexcept;
 extern template FieldMeasurement<float> field_vector_from_voltages(const Vec3<float>&, float, float,
                                                                    const Vec3<float>&, const Vec3<float>&,
                                                                    float, float) noexcept;

@@ -16,7 +16,7 @@ class Fmu {
 public:
     // Unpacks and parses; the binaries are loaded lazily by library() so a description-only user
     // (a validator on another platform) needs no .so. Throws LoaderError.
-    explicit Fmu(const std::filesystem::path& fmu_path);
+    explicit Fmu(const std::filesystem::path& fmu_path, const Limits& limits = {});
 
     const FmuArchive& archive() const noexcept { return archive_; }
     const ModelDescription& description() const noexcept { return description_; }

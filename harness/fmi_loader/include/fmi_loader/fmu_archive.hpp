@@ -3,13 +3,16 @@
 
 #include <filesystem>
 
+#include "fmi_loader/limits.hpp"
+
 namespace fmi_loader {
 
 class FmuArchive {
 public:
-    // Extracts every entry of `fmu_path` below a fresh mkdtemp directory. Throws LoaderError
-    // (archive_open, unsafe_entry, extract_io); on error nothing is left on disk.
-    explicit FmuArchive(const std::filesystem::path& fmu_path);
+    // Extracts every entry of `fmu_path` below a fresh mkdtemp directory, within `limits` (entry
+    // count, entry and total size, compression ratio). Throws LoaderError (archive_open,
+    // unsafe_entry, extract_io, limit, cancelled); on error nothing is left on disk.
+    explicit FmuArchive(const std::filesystem::path& fmu_path, const Limits& limits = {});
     ~FmuArchive();
     FmuArchive(const FmuArchive&) = delete;
     FmuArchive& operator=(const FmuArchive&) = delete;

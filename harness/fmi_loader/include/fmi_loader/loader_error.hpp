@@ -16,6 +16,8 @@ enum class LoaderErrc {
     xml_invalid,     // well-formed but breaks the FMI 2.0 schema rules the loader relies on
     dl_open,         // dlopen of the binary failed
     missing_symbol,  // the binary lacks FMI 2.0 functions it must export
+    limit,           // a size or count beyond fmi_loader::Limits (the message names the limit)
+    cancelled,       // request_cancel() was called (a signal) while extracting
 };
 
 std::string_view to_string(LoaderErrc code) noexcept;

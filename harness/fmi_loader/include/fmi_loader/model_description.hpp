@@ -11,6 +11,8 @@
 #include <string_view>
 #include <vector>
 
+#include "fmi_loader/limits.hpp"
+
 namespace fmi_loader {
 
 enum class Causality { parameter, calculated_parameter, input, output, local, independent };
@@ -149,7 +151,11 @@ struct ModelDescription {
 // Parses with libxml2 without network access, without loading a DTD and without expanding
 // entities; a document carrying a DOCTYPE is refused (an FMU never needs one). Throws LoaderError
 // (xml_parse, xml_invalid) naming `source_name`.
-ModelDescription parse_model_description(std::string_view xml, const std::string& source_name = "<memory>");
-ModelDescription read_model_description(const std::filesystem::path& file);
+// Within `limits` (file size, variables, event indicators: LoaderErrc::limit). Also refused: a
+// modelIdentifier that is not a C identifier, duplicate variable names, two start values in one
+// alias set (same valueReference and base type), and indices beyond ModelVariables.
+ModelDescription parse_model_description(std::string_view xml, const std::string& source_name = "<memory>",
+                                         const Limits& limits = {});
+ModelDescription read_model_description(const std::filesystem::path& file, const Limits& limits = {});
 
 }  // namespace fmi_loader

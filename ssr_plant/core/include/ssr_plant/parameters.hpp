@@ -60,8 +60,23 @@ struct BatteryParameters {
     double soc_disconnect = 1.00;  // "maximum charge" (seed)
 };
 
+// How the switching plant's PWM turns the controller output into gate pulses (switching fidelity only).
+enum class Modulation : std::int32_t {
+    // Regularly sampled: the controller is sampled at each period start and the gate stays on for D·T
+    // (a time event). Stable only while the loop gain per period, I_pv·T·K/C, stays below 2: about
+    // K < 12 /V here. At the seed's 300 /V it is ≈ 48 and the bus falls into a 0/1 limit cycle.
+    regular = 0,
+    // Naturally sampled trailing-edge modulator with a latch: the clock turns the gate on at each period
+    // start (when D > 0) and the comparator turns it off the first time the live controller output
+    // D(v_bus(t)) falls to the rising carrier (t − t_k)/T (a state event); it stays off until the next
+    // period start (one turn-off per period: no chatter). What an analogue PWM IC (clocked latch and
+    // comparator) does; stable at the seed's 300 /V.
+    latched_natural = 1,
+};
+
 struct Parameters {
     Fidelity fidelity = Fidelity::switching;
+    Modulation modulation = Modulation::latched_natural;
     AngularResponse angular_response = AngularResponse::cosine;
     PanelDatasheet panel;
     double or_diode_forward_voltage = 0.6;  // V, the fast OR diode between each panel and the bus (assumed)
@@ -73,14 +88,13 @@ struct Parameters {
     double bus_capacitance = 1500e-6;    // F (seed)
     double load_resistance = 90.0;       // Ω (seed)
     double bus_voltage_reference = 15.0; // V (seed)
-    // Proportional controller, seed gain 300. Unit: percent of duty per volt of bus error,
-    //   D = clamp(controller_gain · (v_bus − v_ref) / 100, 0, 1)   (D = fraction of the period shunted).
-    // Why percent: the controller is sampled once per PWM period, so the loop gain per sample is
-    // I_pv · T · K / C. With K = 300 /V and the seed's I_pv ≈ 1.2 A, T = 200 µs, C = 1500 µF that is
-    // ≈ 48 (> 2: the sampled loop is unstable and degenerates into a 0/1 limit cycle); with
-    // K = 3 /V it is ≈ 0.5, a well-damped loop. The price is a steady-state offset D/K (≈ 0.28 V at
-    // D ≈ 0.85): a pure P controller always has one.
-    double controller_gain = 300.0;      // %/V (seed value, unit: see above)
+    // Proportional controller, seed gain 300 (000 §4: "a proportional controller, which gain is adjusted to
+    // 300", with "null error"), per volt of bus error:
+    //   D = clamp(controller_gain · (v_bus − v_ref), 0, 1)   (D = fraction of the period shunted).
+    // At 300 /V the steady-state offset of the P controller is D/K ≈ 0.85/300 = 2.8 mV: the seed's "null
+    // error". The averaged plant and the latched_natural modulator are stable there; the regular one is
+    // not (see Modulation). 3 /V with the regular modulator is this model's earlier reading (300 %/V).
+    double controller_gain = 300.0;      // 1/V (seed)
 
     BatteryParameters battery;
 };

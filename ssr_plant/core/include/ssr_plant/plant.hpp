@@ -38,7 +38,11 @@ using State = std::array<double, state_count>;
 // Positive between events; after a switch it restarts at the band width (no indicator stays at 0, so a
 // battery resting at full charge does not leave a root function identically zero).
 inline constexpr std::size_t indicator_charge_switch = 0;
-inline constexpr std::size_t indicator_count = 1;
+// Second: the latched_natural modulator's comparator while the gate is on, D(v_bus) − (t − t_k)/T (the live
+// controller output against the rising carrier); it falls to 0 at the pulse's trailing edge. A constant 1
+// otherwise (gate off, regular modulation, averaged fidelity): no crossing.
+inline constexpr std::size_t indicator_modulator = 1;
+inline constexpr std::size_t indicator_count = 2;
 using Indicators = std::array<double, indicator_count>;
 
 inline constexpr double no_time_event = std::numeric_limits<double>::infinity();

@@ -7,8 +7,8 @@
 
 namespace ssr_plant {
 
-// Proportional bus-voltage controller (seed: gain 300, reference 15 V). The gain is in percent of
-// duty per volt (see Parameters::controller_gain for why): D = clamp(K (v_bus − v_ref) / 100, 0, 1).
+// Proportional bus-voltage controller (seed: gain 300 per volt, reference 15 V):
+// D = clamp(K (v_bus − v_ref), 0, 1) (see Parameters::controller_gain).
 // D is the fraction of the PWM period during which all six shunt MOSFETs are on.
 double controller_duty(const Parameters& p, double v_bus);
 
