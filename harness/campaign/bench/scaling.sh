@@ -7,7 +7,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 build=${1:-$here/../../../build}
-stop=${2:-600}
+stop=${2:-1200}
 cosim=$build/bin/cosim
 spec=$here/../tests/specs/leo_short.toml
 work=$(mktemp -d)
