@@ -1,15 +1,15 @@
 #!/usr/bin/env bash
-# Scaling benchmark (not a test): the same campaign of 16 short LEO runs in one process and over two
+# Scaling benchmark (not a test): the same campaign of 16 LEO runs (scaling.toml) in one process and over two
 # MPI ranks; prints the wall times and speed-ups of the whole commands (MPI start-up included) and of
 # the campaigns alone (from their own statistics).
-#   harness/campaign/bench/scaling.sh [build dir] [stop time s]
+#   harness/campaign/bench/scaling.sh [build dir] [stop time s, default the spec's 2400]
 # Run it on a quiet machine: every other process on the cores is counted against the ranks.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 build=${1:-$here/../../../build}
-stop=${2:-1200}
+stop=${2:-2400}
 cosim=$build/bin/cosim
-spec=$here/../tests/specs/leo_short.toml
+spec=$here/scaling.toml
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 root=()
