@@ -83,6 +83,7 @@ int campaign_on_rank0(const CampaignSetup& setup, const CampaignOptions& options
     if (options.figures) {
         try {
             figures = draw_figures(spec.output, spec, table);
+            if (figures.empty()) note = "no figures: no angle metric has a value in a finished run";
         } catch (const CampaignError& e) {
             note = std::string("figures not drawn: ") + e.what();
             std::cerr << "cosim campaign: " << note << "\n";
