@@ -22,7 +22,13 @@ constexpr SunMethod kSunMethods[] = {SunMethod::difference, SunMethod::inverse_r
 // The rates' state must travel with the FMU state as bytes.
 static_assert(std::is_trivially_copyable_v<MeanAngularRate<double>> &&
               std::is_trivially_copyable_v<SunMethodState<double>> &&
+              std::is_trivially_copyable_v<MekfState<double>> &&
               std::is_trivially_copyable_v<SetResetState<double>>);
+
+// A face's current is used for the panel-scale update only well inside the response curve (below about
+// 45 deg of incidence with the Kelly law), where a small attitude error changes it little and albedo is a
+// small part of it.
+constexpr double kScaleFaceMinResponse = 0.7;
 
 panel_response::Response<double> response_from(const EstimatorData& d) {
     if (d.angular_response == "cosine") return panel_response::cosine<double>();
@@ -63,6 +69,22 @@ SunMethod sun_method_from(std::string_view name) {
         if (name == sun_method_name(m)) return m;
     throw fmu::Error("sun_method = '" + std::string(name) +
                      "' is not one of: difference, inverse_response, cones, three_faces");
+}
+
+MekfConfig<double> filter_config_from(const EstimatorData& d) {
+    MekfConfig<double> c;
+    c.sun_sigma = d.filter_sun_sigma;
+    c.mag_sigma = d.filter_mag_sigma;
+    c.rate_noise = d.filter_rate_noise;
+    c.attitude_noise = d.filter_attitude_noise;
+    c.estimate_offset = d.filter_offset;
+    c.estimate_scale = d.filter_scale;
+    c.face_sigma = d.filter_face_sigma;
+    c.inertia = d.inertia;
+    c.reset_after = d.filter_reset_after;
+    // The rate comes from two single-frame attitudes at most a few samples apart.
+    c.max_init_gap = 3.5 * d.sample_period;
+    return c;
 }
 
 EstimatorConfig<double> config_from(const EstimatorData& d) {
@@ -210,6 +232,39 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.parameter("rate_window", &D::rate_window, "", "Mean-rate increments averaged (1 = 004 eq. 4 alone), 1 to 64")
         .range(1.0, static_cast<double>(kMaxRateWindow));
 
+    t.parameter("filter", &D::filter, "",
+                "Recursive attitude filter beside the single-frame estimate: none, or mekf (multiplicative "
+                "extended Kalman filter with rate, magnetometer-offset and panel-scale states; docs/filter.md)")
+        .one_of({"none", "mekf"});
+    t.parameter("filter_sun_sigma", &D::filter_sun_sigma, "rad",
+                "mekf: 1-sigma error of one sun vector per axis (noise and the sun method's model error)")
+        .range(1e-6, 1.0);
+    t.parameter("filter_mag_sigma", &D::filter_mag_sigma, "T",
+                "mekf: 1-sigma error of one field vector per axis (noise, quantization, field-model error)")
+        .range(1e-10, 1e-4);
+    t.parameter("filter_rate_noise", &D::filter_rate_noise, "rad/s",
+                "mekf: 1-sigma unpredictable change of the body rate over 1 s (a random walk: it grows as the "
+                "square root of time; the rate random-walk density in rad/s per root second)")
+        .range(0.0, 10.0);
+    t.parameter("filter_attitude_noise", &D::filter_attitude_noise, "rad",
+                "mekf: 1-sigma attitude drift over 1 s that the rate state does not explain (random walk)")
+        .range(0.0, 1.0);
+    t.parameter("filter_offset", &D::filter_offset, "",
+                "mekf: estimate the magnetometer's offset (3 states; its sign follows the set/reset polarity)");
+    t.parameter("filter_scale", &D::filter_scale, "",
+                "mekf: estimate a common scale error of the panels' current normalization from the face "
+                "currents and correct i_face_norm/i_sc_norm with it (face-based sun methods)");
+    t.parameter("filter_face_sigma", &D::filter_face_sigma, "1",
+                "mekf: 1-sigma error of one face's relative response in the panel-scale update (noise, albedo)")
+        .range(1e-6, 1.0);
+    t.parameter("inertia", &D::inertia, "kg.m2",
+                "mekf: inertia matrix, body axes, row-major; all zero (default) = kinematic rate model, else "
+                "Euler's torque-free equations propagate the rate");
+    t.parameter("filter_reset_after", &D::filter_reset_after, "",
+                "mekf: samples in a row whose every update fails the innovation test before the filter resets "
+                "to the single-frame attitude")
+        .range(1.0, 1e6);
+
     t.output("q_est", &D::q_est, "1", "Estimated attitude quaternion, scalar-last [x, y, z, w], w >= 0")
         .discrete()
         .depends_on({});
@@ -280,7 +335,37 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.output("rate_window_time", &D::rate_window_time, "s", "Time spanned by the averaged mean-rate increments")
         .discrete()
         .depends_on({});
-    t.output("rate_valid", &D::rate_valid, "", "rate_mean is valid (rate_window increments collected)")
+    t.output("rate_valid", &D::rate_valid, "",
+             "rate_mean is valid: rate_window increments collected, and neither the filter's rate nor a turn "
+             "between successive samples clearly above noise says one rate_interval may turn 90 deg or more "
+             "(the increments could alias; omega_filt holds there)")
+        .discrete()
+        .depends_on({});
+
+    t.output("q_filt", &D::q_filt, "1", "mekf: filter attitude quaternion, scalar-last [x, y, z, w], w >= 0")
+        .discrete()
+        .depends_on({});
+    t.output("omega_filt", &D::omega_filt, "rad/s", "mekf: filter body rate")
+        .discrete()
+        .depends_on({});
+    t.output("mag_offset_filt", &D::mag_offset_filt, "V",
+             "mekf: estimated magnetometer offset per axis, as it reads after a set pulse")
+        .discrete()
+        .depends_on({});
+    t.output("panel_scale_filt", &D::panel_scale_filt, "1",
+             "mekf: estimated common panel scale error (face currents are (1 + this) x nominal)")
+        .discrete()
+        .depends_on({});
+    t.output("attitude_bound", &D::attitude_bound, "rad",
+             "mekf: 3-sigma bound on the filter's attitude error angle, 3 sqrt(trace of its attitude covariance)")
+        .discrete()
+        .depends_on({});
+    t.output("filter_valid", &D::filter_valid, "",
+             "mekf: the filter runs and its 3-sigma attitude bound is below 10 deg")
+        .discrete()
+        .depends_on({});
+    t.output("filter_resets", &D::filter_resets, "",
+             "mekf: times the innovation test found the filter diverged and reset it to the single-frame attitude")
         .discrete()
         .depends_on({});
 
@@ -336,7 +421,13 @@ fmu::ModelInfo EstimatorBlock::describe() {
         "current of one panel at normal incidence and 1367 W/m<sup>2</sup>, current range &plusmn;1.2 A; "
         "magnetometer 0-5 V, 2.5 V reference, 1e4 V/T. In Co-Simulation the inputs are held over each "
         "communication step, so a sample on a communication point sees the inputs of the step that ends "
-        "there.</p>";
+        "there.</p>"
+        "<p>With <code>filter = mekf</code> a multiplicative extended Kalman filter runs beside the single-frame "
+        "estimate: attitude, body rate (kinematic, or Euler's equations when <code>inertia</code> is given), "
+        "magnetometer offset and a common panel scale, started from the Q-method and reset to it when its "
+        "innovation test says it diverged. Outputs <code>q_filt</code>, <code>omega_filt</code>, "
+        "<code>mag_offset_filt</code>, <code>panel_scale_filt</code>, the 3-sigma bound "
+        "<code>attitude_bound</code> and <code>filter_valid</code> (attitude_estimator/docs/filter.md).</p>";
     info.default_experiment = {.start_time = 0.0, .stop_time = 2.0, .tolerance = 1e-6, .step_size = 0.01};
     return info;
 }
@@ -361,11 +452,30 @@ void EstimatorBlock::validate() const {
         }
     }
     if (d.spin_window != 0 && d.spin_window < 16) throw fmu::Error("spin_window must be 0 (off) or 16 to 2048");
+    if (d.filter != "none" && d.filter != "mekf") throw fmu::Error("filter must be none or mekf");
+    bool has_inertia = false;
+    for (double v : d.inertia) has_inertia = has_inertia || v != 0.0;
+    if (has_inertia) {
+        const auto& j = d.inertia;
+        const double m1 = j[0], m2 = j[0] * j[4] - j[1] * j[3];
+        const double m3 = j[0] * (j[4] * j[8] - j[5] * j[7]) - j[1] * (j[3] * j[8] - j[5] * j[6]) +
+                          j[2] * (j[3] * j[7] - j[4] * j[6]);
+        if (j[1] != j[3] || j[2] != j[6] || j[5] != j[7] || !(m1 > 0.0 && m2 > 0.0 && m3 > 0.0))
+            throw fmu::Error("inertia must be all zero (kinematic) or symmetric positive definite");
+    }
 }
 
 void EstimatorBlock::take_sample(double t) {
     auto& d = data();
-    const SampleResult<double> r = estimate_sample(inputs_from(d), config_from(d), d.sun_state);
+    const EstimatorConfig<double> nominal = config_from(d);
+    EstimatorConfig<double> config = nominal;
+    if (d.filter == "mekf" && d.filter_scale && d.filter_state.stage == 2) {
+        // The filter's panel-scale estimate corrects the normalization the sun method divides by.
+        const double gain = 1.0 + d.filter_state.panel_scale;
+        for (auto& v : config.sun.i_face_norm) v *= gain;
+        for (auto& v : config.i_sc_norm) v *= gain;
+    }
+    const SampleResult<double> r = estimate_sample(inputs_from(d), config, d.sun_state);
     d.q_est = {r.q.x, r.q.y, r.q.z, r.q.w};
     d.A_est = r.a;
     d.sun_meas = r.sun_meas;
@@ -380,11 +490,53 @@ void EstimatorBlock::take_sample(double t) {
     d.rejected_faces = r.rejected_faces;
     d.cube_state = r.cube_state;
     if (d.samples < std::numeric_limits<std::int32_t>::max()) ++d.samples;
+    const double reading_polarity = d.set_reset.polarity;  // this sample's reading was taken in it
     // The next reading is taken in the polarity commanded here.
     set_reset_after_sample(d.set_reset, r.mag_reading, r.mag_reading_usable, set_reset_config_from(d));
     d.mag_set_reset = d.set_reset.polarity > 0.0;
     d.mag_offset = applied_offset(d.set_reset, set_reset_config_from(d));
     update_rates(t);
+    if (d.filter == "mekf") update_filter(t, r, nominal, reading_polarity);
+}
+
+void EstimatorBlock::update_filter(double t, const SampleResult<double>& r, const EstimatorConfig<double>& nominal,
+                                   double polarity) {
+    auto& d = data();
+    const MekfConfig<double> config = filter_config_from(d);
+    MekfSampleInputs<double> in;
+    in.t = t;
+    in.attitude_valid = r.valid;
+    in.q_single = r.q;
+    in.sun_valid = r.sun_valid;
+    in.sun_ref = d.sun_ref;
+    in.sun_body = r.sun_meas;
+    in.mag_valid = r.mag_valid;
+    in.mag_ref = d.mag_ref;
+    // The field comes with the set/reset offset estimate taken out, B + p (v_os − applied)/S: the filter's
+    // offset state is what is left of the offset, with the sign of this reading's polarity.
+    in.mag_body = r.mag_field;
+    in.polarity = polarity;
+    if (d.filter_scale && nominal.sun.method != SunMethod::difference) {
+        // Relative responses against the nominal normalization: the filter's model is (1 + ε) R(cos β).
+        for (std::size_t k = 0; k < 6; ++k) {
+            const double i = convert(nominal.face_adc[k], d.i_face[k]).value;
+            in.face_r[k] = i / nominal.sun.i_face_norm[k];
+            const bool usable = (r.lit_faces >> k & 1) && !(r.rejected_faces >> k & 1) &&
+                                in.face_r[k] >= kScaleFaceMinResponse;
+            if (usable) in.face_use |= static_cast<std::uint8_t>(1u << k);
+        }
+        in.response = &nominal.sun.response;
+    }
+    const MekfSampleResult<double> f = mekf_sample(d.filter_state, in, config);
+    const MekfState<double>& s = d.filter_state;
+    const bool running = s.stage == 2;
+    d.q_filt = running ? std::array<double, 4>{s.q.x, s.q.y, s.q.z, s.q.w} : std::array<double, 4>{0, 0, 0, 1};
+    d.omega_filt = running ? s.omega : Vec3d{};
+    for (std::size_t k = 0; k < 3; ++k) d.mag_offset_filt[k] = s.mag_offset[k] * d.mag_sensitivity;
+    d.panel_scale_filt = s.panel_scale;
+    d.attitude_bound = running ? f.bound : 0.0;
+    d.filter_valid = running && f.valid;
+    d.filter_resets = s.resets;
 }
 
 void EstimatorBlock::update_rates(double t) {
@@ -395,7 +547,30 @@ void EstimatorBlock::update_rates(double t) {
     const MeanRate<double> mean = d.rate_state.result();
     d.rate_mean = mean.rate;
     d.rate_window_time = mean.window_seconds;
-    d.rate_valid = mean.valid;
+    // Aliasing: an increment rate_interval long reads the turn modulo 2π (folded beyond π), so rate_mean
+    // is not trusted when one increment may turn more than π/2 (margin for a rate that changes within
+    // the window). Two witnesses: the filter's rate when it runs, and the turn between successive
+    // single-frame estimates (averaged, α = 0.2) when it is clearly above their noise (0.1 rad per sample;
+    // below that a fast rate cannot be told from noise by this test: use omega_filt).
+    constexpr double kHalfPi = 1.5707963267948966;
+    constexpr double kStepNoise = 0.1;  // rad per sample
+    if (d.valid) {
+        if (d.rate_has_last && t - d.rate_last_t <= 1.5 * d.sample_period) {
+            double dot = 0.0;
+            for (std::size_t k = 0; k < 4; ++k) dot += d.rate_last_q[k] * d.q_est[k];
+            const double turn = 2.0 * std::acos(std::min(1.0, std::abs(dot)));
+            d.rate_step_turn += 0.2 * (turn - d.rate_step_turn);
+        }
+        d.rate_last_q = d.q_est;
+        d.rate_last_t = t;
+        d.rate_has_last = true;
+    }
+    const bool step_aliases = d.rate_step_turn >= kStepNoise &&
+                              d.rate_step_turn / d.sample_period * d.rate_interval >= kHalfPi;
+    const auto& f = d.filter_state;
+    const double filter_rate = std::sqrt(f.omega[0] * f.omega[0] + f.omega[1] * f.omega[1] + f.omega[2] * f.omega[2]);
+    const bool filter_aliases = d.filter == "mekf" && f.stage == 2 && filter_rate * d.rate_interval >= kHalfPi;
+    d.rate_valid = mean.valid && !step_aliases && !filter_aliases;
 
     // Spin rates (000 §4): the history of valid sun vectors; an invalid one empties the window (the FFT
     // needs evenly spaced samples).
@@ -443,6 +618,9 @@ void EstimatorBlock::initialize(double t) {
     d.rate_state = MeanAngularRate<double>(rate_config_from(d));
     d.history_head = 0;
     d.history_filled = 0;
+    d.filter_state = {};
+    d.rate_has_last = false;
+    d.rate_step_turn = 0.0;
     d.set_reset = {};  // set at power-up, no offset known
     // No pulse at the start sample: during initialization a host re-reads the magnetometer after every
     // output change, so a pulse here would be in the reading this very sample takes as a set one.
@@ -475,6 +653,19 @@ void EstimatorBlock::check_state() const {
     fmu::require_bool(d.sun_state.has_last, "sun_state.has_last");
     fmu::require_finite(std::span<const double>(d.sun_state.last_unit.data(), d.sun_state.last_unit.size()), "sun_state.last_unit");
     if (!d.rate_state.consistent()) throw fmu::Error("restored FMU state: rate_state is inconsistent");
+    const MekfState<double>& f = d.filter_state;
+    fmu::require_range(f.stage, 0, 2, "filter_state.stage");
+    fmu::require_range(f.refused_in_row, 0, std::numeric_limits<std::int32_t>::max(), "filter_state.refused_in_row");
+    fmu::require_range(f.resets, 0, std::numeric_limits<std::int32_t>::max(), "filter_state.resets");
+    const double filter_scalars[] = {f.q.x, f.q.y, f.q.z, f.q.w, f.q_first.x, f.q_first.y, f.q_first.z,
+                                     f.q_first.w, f.omega[0], f.omega[1], f.omega[2], f.mag_offset[0],
+                                     f.mag_offset[1], f.mag_offset[2], f.panel_scale, f.t_first, f.t_last};
+    fmu::require_finite(filter_scalars, "filter_state");
+    fmu::require_finite(std::span<const double>(f.p.data(), f.p.size()), "filter_state.p");
+    fmu::require_finite(std::span<const double>(d.rate_last_q.data(), d.rate_last_q.size()), "rate_last_q");
+    fmu::require_finite(d.rate_last_t, "rate_last_t");
+    fmu::require_bool(d.rate_has_last, "rate_has_last");
+    fmu::require_finite(d.rate_step_turn, "rate_step_turn");
 }
 
 double EstimatorBlock::next_time_event() const {

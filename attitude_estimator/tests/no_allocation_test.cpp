@@ -7,6 +7,7 @@
 
 #include "attitude_estimator/estimator.hpp"
 #include "attitude_estimator/fast_solver.hpp"
+#include "attitude_estimator/mekf.hpp"
 #include "attitude_estimator/q_method.hpp"
 #include "test_support.hpp"
 
@@ -19,7 +20,7 @@ template <class T>
 class EstimatorCoreNoAllocation : public ::testing::Test {};
 TYPED_TEST_SUITE(EstimatorCoreNoAllocation, Scalars, ScalarName);
 
-TYPED_TEST(EstimatorCoreNoAllocation, SolversSunMethodsAndWholeSampleNeverCallMalloc) {
+TYPED_TEST(EstimatorCoreNoAllocation, SolversSunMethodsWholeSampleAndFilterNeverCallMalloc) {
 #if !PVATT_COUNT_MALLOC
   GTEST_SKIP() << "malloc belongs to the sanitizer in this build";
 #else
@@ -51,6 +52,21 @@ TYPED_TEST(EstimatorCoreNoAllocation, SolversSunMethodsAndWholeSampleNeverCallMa
     face_configs[m].sun.response = panel_response::kelly<T>();
   }
   SunMethodState<T> sun_state;
+  // The filter with every state and Euler propagation: initialisation, propagation, all three updates.
+  MekfConfig<T> filter_config;
+  filter_config.estimate_scale = true;
+  filter_config.inertia = {T(3.2), T(0.05), T(-0.02), T(0.05), T(2.9), T(0.03), T(-0.02), T(0.03), T(3.6)};
+  const panel_response::Response<T> kelly = panel_response::kelly<T>();
+  MekfSampleInputs<T> filter_in;
+  filter_in.attitude_valid = filter_in.sun_valid = filter_in.mag_valid = true;
+  filter_in.sun_ref = {T(1), T(0), T(0)};
+  filter_in.sun_body = {T(0.6), T(0.0), T(0.8)};
+  filter_in.mag_ref = {T(0), T(30e-6), T(0)};
+  filter_in.mag_body = {T(0), T(30e-6), T(0)};
+  filter_in.face_r = {T(0.6), T(0), T(0), T(0), T(0.8), T(0)};
+  filter_in.face_use = 0x11;
+  filter_in.response = &kelly;
+  MekfState<T> filter_state;
   // Sanity: the counter does count (a malloc made here must register).
   const long before_probe = allocation_count();
   void* probe = std::malloc(16);
@@ -63,6 +79,8 @@ TYPED_TEST(EstimatorCoreNoAllocation, SolversSunMethodsAndWholeSampleNeverCallMa
     sink += solve_q_method(two).loss + solve_q_method(six).loss + solve_fast(two).loss + solve_fast(six).loss;
     sink += estimate_sample(in, fast_config).loss + estimate_sample(in, q_config).loss;
     for (const auto& c : face_configs) sink += estimate_sample(in, c, sun_state).sun_norm;
+    filter_in.t = T(0.05) * static_cast<T>(k);
+    sink += mekf_sample(filter_state, filter_in, filter_config).bound;
   }
   const long after = allocation_count();
   EXPECT_EQ(after - before, 0) << "heap allocations in the core";

@@ -41,7 +41,6 @@ struct CvodeIntegrator::Handles {
 
     Rhs rhs;
     Roots roots;
-    Jacobian jacobian;
     std::size_t n = 0, m = 0;
     std::exception_ptr failure;
     std::string message;
@@ -70,19 +69,6 @@ int roots_callback(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
     auto& h = *static_cast<CvodeIntegrator::Handles*>(user);
     try {
         h.roots(t, {N_VGetArrayPointer(y), h.n}, {g, h.m});
-        return 0;
-    } catch (...) {
-        h.failure = std::current_exception();
-        return -1;
-    }
-}
-
-int jacobian_callback(sunrealtype t, N_Vector y, N_Vector fy, SUNMatrix J, void* user, N_Vector, N_Vector, N_Vector) {
-    auto& h = *static_cast<CvodeIntegrator::Handles*>(user);
-    try {
-        SUNMatZero(J);
-        h.jacobian(t, {N_VGetArrayPointer(y), h.n}, {N_VGetArrayPointer(fy), h.n},
-                   [J](std::size_t j) { return SUNDenseMatrix_Column(J, static_cast<sunindextype>(j)); });
         return 0;
     } catch (...) {
         h.failure = std::current_exception();
@@ -132,10 +118,8 @@ CvodeIntegrator::CvodeIntegrator(std::size_t n, std::size_t m, Rhs rhs, Roots ro
 
 CvodeIntegrator::~CvodeIntegrator() = default;
 
-void CvodeIntegrator::set_jacobian(Jacobian jacobian) {
-    h_->jacobian = std::move(jacobian);
-    check(CVodeSetJacFn(h_->mem.get(), h_->jacobian ? jacobian_callback : nullptr), "CVodeSetJacFn");
-}
+void CvodeIntegrator::set_max_step(double h) { check(CVodeSetMaxStep(h_->mem.get(), h), "CVodeSetMaxStep"); }
+
 
 void CvodeIntegrator::restart(double t, std::span<const double> x) {
     steps_before_restart_ = steps();

@@ -10,6 +10,7 @@
 
 #include "attitude_estimator/angular_rate.hpp"
 #include "attitude_estimator/estimator.hpp"
+#include "attitude_estimator/mekf.hpp"
 #include "attitude_estimator/spin_spectrum.hpp"
 #include "fmu/block.hpp"
 
@@ -73,6 +74,17 @@ struct EstimatorData {
     std::int32_t spin_window = 512;      // samples per FFT window (0: off)
     double rate_interval = 2.0;          // s: shortest time between two attitudes in one eq. 4 increment
     std::int32_t rate_window = 8;        // increments averaged (1 = eq. 4 alone)
+    // Recursive filter (mekf.hpp, docs/filter.md): none (the seeds' single-frame estimate only) or mekf.
+    fmu::FixedString<8> filter = "none";
+    double filter_sun_sigma = 0.02;         // rad: sun vector noise and model error, 1σ per axis
+    double filter_mag_sigma = 0.3e-6;       // T: field vector noise and model error, 1σ per axis
+    double filter_rate_noise = 2e-5;        // rad/s: 1σ rate change over 1 s (random walk density, rad/s/√s)
+    double filter_attitude_noise = 1e-6;    // rad: 1σ attitude drift over 1 s (random walk density, rad/√s)
+    bool filter_offset = true;              // estimate the magnetometer offset (3 states)
+    bool filter_scale = false;              // estimate a common panel scale (face-based sun methods)
+    double filter_face_sigma = 0.02;        // 1: relative face response noise and model error, 1σ
+    std::array<double, 9> inertia{};        // kg m², row-major; all zero = kinematic rate model
+    std::int32_t filter_reset_after = 40;   // samples with every update refused before a reset
     // HMC2003 set/reset (set_reset.hpp): pulse every this many samples and average the offset over this
     // many set/reset pairs. 0 (default): no pulses, the offset stays in the field — the safe default for a
     // magnetometer whose set_reset_command is not wired to mag_set_reset (its readings never flip).
@@ -102,6 +114,13 @@ struct EstimatorData {
     double rate_mean = 0.0;           // rad/s, mean |ω| from successive estimates (004 eq. 4)
     double rate_window_time = 0.0;    // s, time the averaged increments span
     bool rate_valid = false;
+    std::array<double, 4> q_filt{0.0, 0.0, 0.0, 1.0};  // filter attitude, scalar-last, w >= 0
+    Vec3d omega_filt{};             // rad/s, filter body rate
+    Vec3d mag_offset_filt{};        // V: the filter's estimate of the offset left after mag_offset is taken out
+    double panel_scale_filt = 0.0;  // 1: estimated common panel scale error ε (currents (1 + ε) × nominal)
+    double attitude_bound = 0.0;    // rad: 3σ bound on the filter's attitude error
+    bool filter_valid = false;
+    std::int32_t filter_resets = 0; // divergence resets so far
     bool mag_set_reset = true;        // the set/reset pulse commanded last: true set, false reset (to the sensor)
     Vec3d mag_offset{};               // V, the sensor offset estimated from set/reset pairs
 
@@ -115,6 +134,13 @@ struct EstimatorData {
     std::array<Vec3d, kMaxSpinWindow> sun_history{};  // ring of sun_meas for the FFT
     std::int32_t history_head = 0;             // next write position
     std::int32_t history_filled = 0;           // consecutive valid samples in the ring (≤ spin_window)
+    MekfState<double> filter_state{};          // the recursive filter (estimate and covariance)
+    // The turn between successive valid estimates one sample apart, smoothed: rate_mean's increments span
+    // rate_interval and alias when the turn over one of them nears π (rate_valid is then false).
+    std::array<double, 4> rate_last_q{0.0, 0.0, 0.0, 1.0};
+    double rate_last_t = 0.0;
+    bool rate_has_last = false;
+    double rate_step_turn = 0.0;               // rad per sample (exponential average)
     SetResetState<double> set_reset{};         // the sensor's polarity as commanded, the offset estimate
 };
 
@@ -147,6 +173,7 @@ public:
 private:
     void take_sample(double t);
     void update_rates(double t);
+    void update_filter(double t, const SampleResult<double>& r, const EstimatorConfig<double>& nominal, double polarity);
 
     SpinWorkspace spin_;
 };
@@ -158,5 +185,7 @@ SampleInputs<double> inputs_from(const EstimatorData& d);
 SolverKind solver_from(std::string_view name);
 // SunMethod of the `sun_method` parameter's text; throws fmu::Error for any other text.
 SunMethod sun_method_from(std::string_view name);
+// The filter's configuration from the block's parameters.
+MekfConfig<double> filter_config_from(const EstimatorData& d);
 
 }  // namespace attitude_estimator

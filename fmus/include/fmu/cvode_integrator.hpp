@@ -23,12 +23,8 @@ public:
     CvodeIntegrator(const CvodeIntegrator&) = delete;
     CvodeIntegrator& operator=(const CvodeIntegrator&) = delete;
 
-    // Optional: the Newton matrix's Jacobian df/dx at (t, x) with f(t, x) = fx, written column by column
-    // (column(j) points at n doubles, zeroed before the call). Without it CVODE builds one by
-    // difference quotients of the whole right-hand side, n evaluations of it.
-    using ColumnOf = std::function<double*(std::size_t j)>;
-    using Jacobian = std::function<void(double t, std::span<const double> x, std::span<const double> fx, const ColumnOf& column)>;
-    void set_jacobian(Jacobian jacobian);
+    // The longest step CVODE may take (0: no limit).
+    void set_max_step(double h);
 
     // Start afresh from (t, x): after every discontinuity.
     void restart(double t, std::span<const double> x);

@@ -111,36 +111,6 @@ struct Execution::Impl {
         }
     }
 
-    // The Newton matrix's Jacobian, block by block: component c's columns from its own derivatives with
-    // its states perturbed one at a time and its inputs held (the coupling between components through
-    // their connections is left out: CVODE's Newton iteration converges with an approximate matrix,
-    // and each column costs one derivative evaluation of one component instead of the whole system's).
-    std::vector<double> jac_states, jac_derivatives;
-    void jacobian(double time, std::span<const double> states, std::span<const double> f,
-                  const fmu::CvodeIntegrator::ColumnOf& column) {
-        set_integrating(time, states);
-        const double srur = std::sqrt(std::numeric_limits<double>::epsilon());
-        for (auto i : me) {
-            auto& c = comp(i);
-            if (!c.state_count) continue;
-            jac_states.assign(states.begin() + c.state_offset, states.begin() + c.state_offset + c.state_count);
-            jac_derivatives.resize(c.state_count);
-            for (std::size_t j = 0; j < c.state_count; ++j) {
-                const double xj = jac_states[j];
-                const double inc = srur * std::max(std::abs(xj), nominal[c.state_offset + j]);
-                jac_states[j] = xj + inc;
-                c.instance->set_states(jac_states.data(), c.state_count);
-                c.instance->get_derivatives(jac_derivatives.data(), c.state_count);
-                ++c.rhs_evaluations;
-                double* col = column(c.state_offset + j);
-                for (std::size_t r = 0; r < c.state_count; ++r)
-                    col[c.state_offset + r] = (jac_derivatives[r] - f[c.state_offset + r]) / inc;
-                jac_states[j] = xj;
-            }
-            c.instance->set_states(jac_states.data(), c.state_count);
-        }
-    }
-
     // A component joins the instant's event mode when it has an event of its own or one of its
     // inputs changed in a way it must see: a discrete input, or any input of a component whose
     // derivatives or indicators use it.
@@ -222,9 +192,13 @@ struct Execution::Impl {
     }
 
     // Hard instants stop CVODE exactly: time events of components whose right-hand side or
-    // indicators jump there. Soft ones are read off its interpolation.
-    double next_hard_time() {
-        double next = options.stop_time;
+    // indicators jump there, and output points. Soft ones (samples of components without states,
+    // communication points) are read off its interpolating polynomial, which is accurate for the
+    // smooth signals samplers read but not for a stiff state between two long steps (the averaged
+    // plant's bus, whose loop settles in microseconds, through a kink of its duty over a 30 s step):
+    // what a user sees in the results comes from steps.
+    double next_hard_time(double t_out) {
+        double next = std::min(options.stop_time, t_out);
         for (auto i : me)
             if (options.reference || comp(i).has_dynamics()) next = std::min(next, comp(i).next_time_event);
         return next;
@@ -294,23 +268,20 @@ struct Execution::Impl {
         }
     }
 
-    std::vector<double> nominal;
     void start_integrator() {
         if (n == 0) return;
-        nominal.assign(n, 1.0);
+        std::vector<double> abstol(n, 1.0);  // the states' nominal magnitudes times the relative tolerance
         for (auto i : me) {
             auto& c = comp(i);
-            if (c.state_count) c.instance->get_nominals(nominal.data() + c.state_offset, c.state_count);
+            if (c.state_count) c.instance->get_nominals(abstol.data() + c.state_offset, c.state_count);
         }
-        std::vector<double> abstol = nominal;
         for (auto& a : abstol) a *= options.relative_tolerance;
         cvode = std::make_unique<fmu::CvodeIntegrator>(
             n, m, [this](double tt, std::span<const double> xx, std::span<double> dx) { rhs(tt, xx, dx); },
             [this](double tt, std::span<const double> xx, std::span<double> z) { indicators(tt, xx, z); },
             options.relative_tolerance, abstol);
-        if (!options.reference)
-            cvode->set_jacobian([this](double tt, std::span<const double> xx, std::span<const double> fx,
-                                       const fmu::CvodeIntegrator::ColumnOf& column) { jacobian(tt, xx, fx, column); });
+        // A system's own limit (its .ssd) unless the run gives one.
+        if (const auto h = options.max_step ? options.max_step : system.description().max_step) cvode->set_max_step(*h);
     }
 
     RunStatistics run() {
@@ -343,7 +314,7 @@ struct Execution::Impl {
         const double tiny = 1e-12 * std::max(1.0, std::abs(stop));
         while (!terminate && t < stop - tiny) {
             const double t_out = std::min(start + static_cast<double>(k_out + 1) * h_out, stop);
-            const double t_hard = options.reference ? std::min(next_hard_time(), next_soft_time(t_out)) : next_hard_time();
+            const double t_hard = options.reference ? std::min(next_hard_time(t_out), next_soft_time(t_out)) : next_hard_time(t_out);
             const double t_soft = next_soft_time(t_out);
             const bool state_event = integrate(std::min(t_soft, t_hard), t_hard);
             set_everywhere(t, x);

@@ -9,11 +9,14 @@
 // - CVODE is restarted only when something it integrates jumped: a component said its states
 //   changed, or the derivatives or event indicators differ after the event from before it. Samplers
 //   (the on-board computer) and pulses that flip a sensor's output but not its dynamics cost no restart.
-// - Only the time events of components with states or indicators stop the integrator exactly; the
-//   other instants (output points, samples of stateless components, communication points) take
-//   CVODE's interpolated solution and let it go on with its step.
+// - Only output points and the time events of components with states or indicators stop the
+//   integrator exactly; the other instants (samples of stateless components, communication points)
+//   take CVODE's interpolated solution and let it go on with its step.
 // - Between events, inputs are copied only into the components whose derivatives or indicators can
 //   see them (the "continuous consumers"), in batches, with no allocation.
+// (A Jacobian built component by component, each block from that component's own derivatives, was
+// tried: with restarts this rare it saved nothing, and its missing coupling blocks made CVODE's Newton
+// iteration fail at a kink of the averaged plant's duty in one orbit run. CVODE builds its own.)
 #pragma once
 
 #include <functional>
@@ -31,6 +34,7 @@ struct ExecutionOptions {
     double output_interval = 0.01;
     std::optional<double> communication_step;  // Co-Simulation components without a step of their own; default: the output interval
     double relative_tolerance = 1e-6;
+    std::optional<double> max_step;  // the longest step of the Model Exchange integrator (default: the .ssd's)
     bool realtime = false;   // pace simulated time to the wall clock
     bool event_rows = false; // also sample just before and just after each event
     // Today's reference execution (before the speed work): every Model Exchange component goes

@@ -45,6 +45,8 @@ int main(int argc, char** argv) {
                     "but no finer than a thousandth of the run)");
     run->add_option("--step", run_options.communication_step,
                     "Communication step of every Co-Simulation component (default: the .ssd's, else the output interval)");
+    run->add_option("--max-step", run_options.max_step, "Longest step of the Model Exchange integrator in s (default: the .ssd's, else none)")
+        ->check(CLI::PositiveNumber);
     run->add_option("--tolerance", run_options.tolerance, "Relative tolerance (default: the FMUs' smallest)");
     run->add_option("--set", run_options.system.settings, "component.variable=value before initialization (repeatable)");
     run->add_option("--cs", run_options.system.co_simulation, "Run this component through its Co-Simulation interface");

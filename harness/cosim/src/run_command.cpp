@@ -137,6 +137,7 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
     ex.realtime = options.realtime;
     ex.event_rows = options.event_rows;
     ex.reference = options.reference;
+    ex.max_step = options.max_step;
     check_intervals(ex, options.force);
 
     const bool tty = options.progress && isatty(fileno(stderr));

@@ -14,7 +14,7 @@ namespace cosim {
 
 struct RunOptions {
     std::filesystem::path ssd;
-    std::optional<double> stop_time, output_interval, tolerance, communication_step;
+    std::optional<double> stop_time, output_interval, tolerance, communication_step, max_step;
     std::optional<std::filesystem::path> csv;
     SystemOptions system;
     std::vector<std::string> columns;

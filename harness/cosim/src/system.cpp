@@ -380,7 +380,7 @@ void System::record_co_simulation_inputs(std::size_t c) {
 
 void System::step_co_simulation(std::size_t c, double t, double h) {
     auto& target = *components_[c].instance;
-    std::vector<double> slopes;
+    auto& slopes = slopes_;  // reused: no allocation per communication point
     for (auto& g : groups_) {
         if (g.to != c) continue;
         transfer(g, {});  // the sources' values now, at the end of the step: g.last

@@ -124,6 +124,7 @@ private:
     std::vector<Connection> connections_;
     std::vector<TransferGroup> groups_;  // connections_ in order, batched by (source, target) component
     std::vector<char> changed_, discrete_changed_;  // per component, since clear_changes()
+    std::vector<double> slopes_;                    // step_co_simulation's input derivatives
     std::vector<std::pair<std::size_t, std::string>> settings_;  // component, "variable=value"
     std::optional<double> tolerance_;
 };

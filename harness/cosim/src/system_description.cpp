@@ -145,15 +145,11 @@ std::optional<BridgeDescription> read_bridge(const xmlNode* component, const std
     return out;
 }
 
-// The first element of an annotation of `type` under n's <Annotations>, or null.
-const xmlNode* annotation(const xmlNode* n, const char* type, const char* element, const std::filesystem::path& file) {
+// The element `element` of the annotation of `type` under n's <Annotations>, or null.
+const xmlNode* annotation(const xmlNode* n, const char* type, const char* element) {
     const xmlNode* found = nullptr;
     for_children(first_child(n, "Annotations"), "Annotation", [&](const xmlNode* a) {
-        if (found || attribute(a, "type").value_or("") != type) return;
-        found = first_child(a, element);
-        if (!found)
-            throw CosimError(file.string() + ":" + std::to_string(a->line) + ": a " + type + " annotation needs a <" + element +
-                             "> element");
+        if (!found && attribute(a, "type").value_or("") == type) found = first_child(a, element);
     });
     return found;
 }
@@ -166,7 +162,7 @@ double positive_attribute(const xmlNode* n, const char* name, const std::filesys
 }
 
 std::optional<ExecutionHint> read_execution(const xmlNode* component, const std::filesystem::path& file) {
-    const xmlNode* e = annotation(component, execution_annotation, "Execution", file);
+    const xmlNode* e = annotation(component, execution_annotation, "Execution");
     if (!e) return std::nullopt;
     ExecutionHint hint;
     const std::string kind = required(e, "interface", file);
@@ -229,8 +225,10 @@ SystemDescription read_system_description(const std::filesystem::path& ssd) {
     if (const xmlNode* ex = first_child(root, "DefaultExperiment")) {
         if (auto s = attribute(ex, "startTime")) out.start_time = parse_real(*s, ssd.string() + ": startTime");
         if (auto s = attribute(ex, "stopTime")) out.stop_time = parse_real(*s, ssd.string() + ": stopTime");
-        if (const xmlNode* o = annotation(ex, execution_annotation, "Output", ssd))
+        if (const xmlNode* o = annotation(ex, execution_annotation, "Output"))
             out.output_interval = positive_attribute(o, "interval", ssd);
+        if (const xmlNode* i = annotation(ex, execution_annotation, "Integrator"))
+            out.max_step = positive_attribute(i, "maxStep", ssd);
     }
     return out;
 }

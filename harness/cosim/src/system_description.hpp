@@ -75,6 +75,7 @@ struct SystemDescription {
     std::vector<ConnectionDescription> connections;
     std::optional<double> start_time, stop_time;
     std::optional<double> output_interval;  // DefaultExperiment's execution annotation <Output interval=".."/>
+    std::optional<double> max_step;         // and <Integrator maxStep=".."/>
 };
 
 // Throws CosimError naming the file, line and cause for anything malformed or unsupported.
