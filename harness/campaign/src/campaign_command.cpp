@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "campaign_error.hpp"
+#include "campaign_identity.hpp"
 #include "campaign_run.hpp"
 #include "collector.hpp"
 #include "drivers.hpp"
@@ -53,6 +54,9 @@ int campaign_on_rank0(const CampaignSetup& setup, const CampaignOptions& options
     const auto header = table_header(spec);
     std::map<long, std::string> rows;
     const bool append = options.resume && std::filesystem::exists(table_file);
+    if (!append && std::filesystem::exists(table_file))
+        throw CampaignError(table_file.string() + " exists: give --resume to continue that campaign, or another --output");
+    record_identity(spec.output, campaign_identity(setup), append);
     if (append) rows = read_results(table_file, header, spec.runs);
     ResultsWriter writer(table_file, header, append);
     std::vector<long> to_do;
@@ -60,7 +64,10 @@ int campaign_on_rank0(const CampaignSetup& setup, const CampaignOptions& options
         if (!rows.contains(i)) to_do.push_back(i);
     if (append) out << "resuming: " << rows.size() << " runs in " << table_file.string() << ", " << to_do.size() << " to do\n";
 
-    Collector collector(writer, rows, static_cast<long>(to_do.size()), ranks, options.progress && isatty(fileno(stderr)));
+    Progress progress = Progress::none;
+    if (options.progress && isatty(fileno(stderr))) progress = Progress::terminal;
+    else if (options.progress && options.progress_lines) progress = Progress::log;
+    Collector collector(writer, rows, static_cast<long>(to_do.size()), ranks, progress);
 #ifdef PVATT_MPI
     if (ranks > 1) run_distributed(setup, to_do, collector, ranks);
     else run_sequential(setup, to_do, collector);
@@ -76,6 +83,7 @@ int campaign_on_rank0(const CampaignSetup& setup, const CampaignOptions& options
     if (options.figures) {
         try {
             figures = draw_figures(spec.output, spec, table);
+            if (figures.empty()) note = "no figures: no angle metric has a value in a finished run";
         } catch (const CampaignError& e) {
             note = std::string("figures not drawn: ") + e.what();
             std::cerr << "cosim campaign: " << note << "\n";

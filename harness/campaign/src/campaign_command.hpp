@@ -21,7 +21,8 @@ struct CampaignOptions {
     std::optional<long> replay;                   // --run K
     bool resume = false;
     bool figures = true;
-    bool progress = true;  // on a terminal only
+    bool progress = true;         // on a terminal
+    bool progress_lines = false;  // --progress: as log lines when stderr is not a terminal
 };
 
 // Returns the process exit code: 0 when the campaign completed (failed runs included: they are

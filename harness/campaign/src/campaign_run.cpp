@@ -8,12 +8,20 @@
 #include "campaign_error.hpp"
 #include "draws.hpp"
 #include "execution.hpp"
+#include "interrupt.hpp"
 #include "metric_observer.hpp"
 #include "observer.hpp"
+#include "run_command.hpp"
 
 namespace campaign {
 
 namespace {
+
+// At every output point: a signal (Ctrl-C, SIGTERM, forwarded by mpirun) ends the campaign there
+// instead of being recorded as a failed run; the rows written so far stay.
+struct InterruptCheck : cosim::Observer {
+    void sample(double, cosim::System&) override { cosim::throw_if_interrupted(); }
+};
 
 // The variable a "component.variable=value" setting names.
 std::string setting_variable(const std::string& setting) { return setting.substr(0, setting.find('=')); }
@@ -58,6 +66,8 @@ CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path
     if (!stop) throw CampaignError(spec.system.string() + " has no DefaultExperiment stopTime: give stop_time in the spec");
     s.stop_time = *stop;
     if (!(s.stop_time > s.start_time)) throw CampaignError("the stop time must be after the start time");
+    // The defaults of `cosim run` (run_command.cpp): the .ssd's output interval, else the FMUs'
+    // smallest step size but no finer than a thousandth of the run; the FMUs' smallest tolerance.
     double interval = std::numeric_limits<double>::infinity(), tolerance = 1e-6;
     for (const auto& c : system.components()) {
         const auto& ex = c.description().default_experiment;
@@ -65,8 +75,13 @@ CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path
         if (ex->step_size && *ex->step_size > 0) interval = std::min(interval, *ex->step_size);
         if (ex->tolerance && *ex->tolerance > 0) tolerance = std::min(tolerance, *ex->tolerance);
     }
-    if (!std::isfinite(interval)) interval = (s.stop_time - s.start_time) / 500.0;
+    const double span = s.stop_time - s.start_time;
+    if (s.description.output_interval) interval = *s.description.output_interval;
+    else if (!std::isfinite(interval) || interval < span / 1000.0) interval = span / 1000.0;
     s.output_interval = spec.output_interval.value_or(interval);
+    if (!(s.output_interval > 0.0) || !std::isfinite(s.output_interval) || span / s.output_interval > cosim::max_run_points)
+        throw CampaignError("the output interval must be positive and give at most " + std::to_string(cosim::max_run_points) +
+                            " output points per run (max_run_points)");
     s.tolerance = spec.tolerance.value_or(tolerance);
     s.spec = std::move(spec);
     return s;
@@ -83,7 +98,8 @@ RunResult run_one(const CampaignSetup& setup, long index, const std::optional<st
         options.settings.insert(options.settings.end(), draws.settings.begin(), draws.settings.end());
         cosim::System system(setup.description, options);
         MetricObserver metrics(setup.spec.metrics, system);
-        std::vector<cosim::Observer*> observers = {&metrics};
+        InterruptCheck interrupt;
+        std::vector<cosim::Observer*> observers = {&interrupt, &metrics};
         std::unique_ptr<cosim::CsvWriter> csv;
         if (full_csv) {
             csv = std::make_unique<cosim::CsvWriter>(*full_csv, system, std::vector<std::string>{});
@@ -99,7 +115,10 @@ RunResult run_one(const CampaignSetup& setup, long index, const std::optional<st
         r.status = stats.terminated_early ? "stopped" : "ok";
         if (stats.terminated_early)
             r.message = "a component ended the run at t = " + std::to_string(stats.simulated_time) + " s";
+    } catch (const cosim::Interrupted&) {
+        throw;
     } catch (const std::exception& e) {
+        if (cosim::interrupt_signal()) throw;  // a load cancelled by the signal is not the run's failure
         r.status = "failed";
         r.message = e.what();
         r.metric_cells.assign(metric_columns(setup.spec).size(), "");

@@ -8,7 +8,7 @@
 
 namespace campaign {
 
-Collector::Collector(ResultsWriter& writer, std::map<long, std::string>& rows, long to_do, int ranks, bool progress)
+Collector::Collector(ResultsWriter& writer, std::map<long, std::string>& rows, long to_do, int ranks, Progress progress)
     : writer_(writer), rows_(rows), to_do_(to_do), progress_(progress), started_(std::chrono::steady_clock::now()),
       last_shown_(started_) {
     stats_.ranks.resize(static_cast<std::size_t>(ranks));
@@ -32,16 +32,18 @@ void Collector::accept(int rank, const std::string& row) {
 }
 
 void Collector::show_progress() {
-    if (!progress_) return;
+    if (progress_ == Progress::none) return;
     const auto now = std::chrono::steady_clock::now();
-    if (stats_.runs != to_do_ && now - last_shown_ < std::chrono::milliseconds(250)) return;
+    const auto every = progress_ == Progress::terminal ? std::chrono::milliseconds(250) : std::chrono::milliseconds(10'000);
+    if (stats_.runs != to_do_ && now - last_shown_ < every) return;
     last_shown_ = now;
     const double elapsed = std::chrono::duration<double>(now - started_).count();
     const double left = elapsed / static_cast<double>(stats_.runs) * static_cast<double>(to_do_ - stats_.runs);
-    std::fprintf(stderr, "\rcampaign: %ld/%ld runs, %ld failed, %.2f runs/s, about %.0f s left   ", stats_.runs, to_do_,
-                 stats_.failed, static_cast<double>(stats_.runs) / elapsed, left);
+    std::fprintf(stderr, "%scampaign: %ld/%ld runs, %ld failed, %.2f runs/s, about %.0f s left%s",
+                 progress_ == Progress::terminal ? "\r" : "", stats_.runs, to_do_, stats_.failed,
+                 static_cast<double>(stats_.runs) / elapsed, left, progress_ == Progress::terminal ? "   " : "\n");
     std::fflush(stderr);
-    shown_ = true;
+    shown_ = progress_ == Progress::terminal;
 }
 
 CampaignStatistics Collector::finish() {

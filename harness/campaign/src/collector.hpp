@@ -24,9 +24,13 @@ struct CampaignStatistics {
     std::vector<RankStatistics> ranks;
 };
 
+// Progress: none; on a terminal (one line rewritten 4 times a second); or as log lines every 10 s
+// (--progress under mpirun or a batch system, where stderr is not a terminal).
+enum class Progress { none, terminal, log };
+
 class Collector {
 public:
-    Collector(ResultsWriter& writer, std::map<long, std::string>& rows, long to_do, int ranks, bool progress);
+    Collector(ResultsWriter& writer, std::map<long, std::string>& rows, long to_do, int ranks, Progress progress);
     void accept(int rank, const std::string& row);
     CampaignStatistics finish();  // clears the progress line
 
@@ -35,7 +39,7 @@ private:
     ResultsWriter& writer_;
     std::map<long, std::string>& rows_;
     long to_do_;
-    bool progress_;
+    Progress progress_;
     CampaignStatistics stats_;
     std::chrono::steady_clock::time_point started_, last_shown_;
     bool shown_ = false;

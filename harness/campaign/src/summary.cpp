@@ -62,12 +62,25 @@ std::string file_name(const std::string& text) {
     return out;
 }
 
+// gnuplot's own remarks (an empty range adjusted, ...) go to a log beside the figure, shown only
+// when it fails; the campaign's output stays the campaign's.
 void run_gnuplot(const std::string& script, const std::filesystem::path& png) {
-    FILE* gp = popen("gnuplot 2>&1", "w");
+    const auto log = std::filesystem::path(png.string() + ".gnuplot.log");
+    const std::string command = "gnuplot > '" + log.string() + "' 2>&1";
+    if (log.string().find('\'') != std::string::npos) throw CampaignError("a quote in the output folder's name: " + log.string());
+    FILE* gp = popen(command.c_str(), "w");
     if (!gp) throw CampaignError("cannot start gnuplot (install the Debian package gnuplot-nox)");
     std::fputs(script.c_str(), gp);
     const int rc = pclose(gp);
-    if (rc != 0 || !std::filesystem::exists(png)) throw CampaignError("gnuplot failed drawing " + png.string());
+    if (rc != 0 || !std::filesystem::exists(png)) {
+        std::ifstream in(log);
+        std::stringstream text;
+        text << in.rdbuf();
+        std::error_code ignored;
+        std::filesystem::remove(log, ignored);
+        throw CampaignError("gnuplot failed drawing " + png.string() + ": " + text.str());
+    }
+    std::filesystem::remove(log);
 }
 
 std::string preamble(const std::filesystem::path& png, const std::string& title, const std::string& xlabel,
@@ -76,6 +89,15 @@ std::string preamble(const std::filesystem::path& png, const std::string& title,
            "\nset title " + gp_string(title) + "\nset xlabel " + gp_string(xlabel) + "\nset ylabel " + gp_string(ylabel) +
            "\nset grid\nset key bottom right\n";
 }
+
+// The data files of the figures: removed when the figures are drawn, or when drawing fails.
+struct TemporaryFiles {
+    std::vector<std::filesystem::path> files;
+    ~TemporaryFiles() {
+        std::error_code ignored;
+        for (const auto& f : files) std::filesystem::remove(f, ignored);
+    }
+};
 
 void write_data(const std::filesystem::path& file, const std::string& text) {
     std::ofstream out(file);
@@ -89,6 +111,7 @@ void write_data(const std::filesystem::path& file, const std::string& text) {
 std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir, const CampaignSpec& spec,
                                                 const ResultRows& table) {
     std::vector<std::filesystem::path> written;
+    TemporaryFiles temporary;
     const auto columns = draw_columns(spec);
     for (const auto& m : spec.metrics) {
         if (m.kind == MetricKind::column) continue;
@@ -105,6 +128,7 @@ std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir
             for (std::size_t i = 0; i < values.size(); ++i)
                 text << cosim::format_real(values[i]) << ' ' << static_cast<double>(i + 1) / static_cast<double>(values.size()) << '\n';
             data_files.push_back(dir / ("cdf_" + file_name(m.name) + "_" + file_name(s) + ".dat"));
+            temporary.files.push_back(data_files.back());
             write_data(data_files.back(), text.str());
             plots += std::string(plots.empty() ? "plot " : ", ") + gp_string(data_files.back().string()) +
                      " using 1:2 with steps lw 2 title " + gp_string("per-run " + s);
@@ -116,6 +140,41 @@ std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir
             written.push_back(png);
         }
         for (const auto& f : data_files) std::filesystem::remove(f);
+
+        // The same distribution split by the values of the first grid draw (the compared designs).
+        if (const auto grid = std::find_if(spec.draws.begin(), spec.draws.end(),
+                                           [](const Draw& d) { return d.kind == DrawKind::grid; });
+            grid != spec.draws.end()) {
+            const std::string stat_column = m.name + "." + m.figure_stat;
+            const std::size_t g = table.column(grid->target), y = table.column(stat_column), status = table.header.size() - 2;
+            const auto by = dir / ("cdf_" + file_name(m.name) + "_by_" + file_name(grid->target) + ".png");
+            std::string lines;
+            std::vector<std::filesystem::path> files;
+            for (const auto& value : grid->values) {
+                std::vector<double> values;
+                for (const auto& row : table.rows)
+                    if (row[status] != "failed" && row[g] == value.text)
+                        if (const auto v = number_in(row[y])) values.push_back(*v);
+                if (values.empty()) continue;
+                std::sort(values.begin(), values.end());
+                std::ostringstream text;
+                for (std::size_t i = 0; i < values.size(); ++i)
+                    text << cosim::format_real(values[i]) << ' ' << static_cast<double>(i + 1) / static_cast<double>(values.size()) << '\n';
+                files.push_back(dir / ("cdf_by_" + file_name(m.name) + "_" + file_name(value.text) + ".dat"));
+                temporary.files.push_back(files.back());
+                write_data(files.back(), text.str());
+                lines += std::string(lines.empty() ? "plot " : ", ") + gp_string(files.back().string()) +
+                         " using 1:2 with steps lw 2 title " + gp_string(value.text);
+            }
+            if (!lines.empty()) {
+                run_gnuplot(preamble(by, stat_column + " by " + grid->target + ": distribution over runs", "degrees",
+                                     "fraction of runs") +
+                                "set yrange [0:1]\n" + lines + "\n",
+                            by);
+                written.push_back(by);
+            }
+            for (const auto& f : files) std::filesystem::remove(f);
+        }
 
         // The metric's figure statistic against each drawn quantity; text values as categories.
         const std::string y_name = m.name + "." + m.figure_stat;
@@ -145,6 +204,7 @@ std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir
             if (points == 0) continue;
             const auto data = dir / (file_name(m.name) + "_vs_" + file_name(c.name) + ".dat");
             const auto scatter = dir / (file_name(m.name) + "_vs_" + file_name(c.name) + ".png");
+            temporary.files.push_back(data);
             write_data(data, text.str());
             std::string script = preamble(scatter, y_name + " against " + c.name, c.name, y_name + " (degrees)") + "set key off\n";
             if (!numeric) {

@@ -1,7 +1,7 @@
 // The campaign's report, from the results table in run order: summary.md (runs, failures, the
 // campaign's own statistics, percentiles across runs of every metric column, the failed runs) and the
-// PNG figures drawn with gnuplot (the CDF over runs of each angle metric, and each angle metric
-// against each drawn quantity).
+// PNG figures drawn with gnuplot (the CDF over runs of each angle metric, the same split by the
+// values of the first grid draw, and each angle metric against each drawn quantity).
 #pragma once
 
 #include <filesystem>

@@ -150,3 +150,35 @@ TEST(Campaign, UnknownVariablesFailTheCampaignAtOnce) {
     EXPECT_THROW(run_campaign(o, out), std::exception);
     EXPECT_FALSE(std::filesystem::exists(dir / "results.csv"));
 }
+
+// --resume continues only the same campaign: another stop time (or seed, setting, draw) is refused
+// before any run, more runs extend it.
+TEST(Campaign, ResumeRefusesAnotherCampaignAndExtendsThisOne) {
+    const auto dir = fresh_dir("identity");
+    auto o = options_for("leo_short.toml", dir);
+    o.runs = 2;
+    o.stop_time = 5.0;
+    o.figures = false;
+    std::ostringstream out;
+    ASSERT_EQ(run_campaign(o, out), 0);
+    o.resume = true;
+    o.runs = 3;
+    auto refusal = [&] {
+        try {
+            run_campaign(o, out);
+        } catch (const std::exception& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    o.stop_time = 6.0;
+    EXPECT_NE(refusal().find("was run with other settings"), std::string::npos);
+    o.stop_time = 5.0;
+    o.settings = {"est.weight_mag=2"};
+    EXPECT_NE(refusal().find("was run with other settings"), std::string::npos);
+    o.settings.clear();
+    ASSERT_EQ(run_campaign(o, out), 0);
+    EXPECT_NE(out.str().find("resuming: 2 runs"), std::string::npos) << out.str();
+    EXPECT_EQ(lines_of(dir / "results.csv").size(), 4u);
+    std::filesystem::remove_all(dir);
+}

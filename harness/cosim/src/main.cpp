@@ -88,6 +88,8 @@ int main(int argc, char** argv) {
     campaign->add_option("--run", campaign_options.replay, "Replay this run alone, writing its full CSV");
     campaign->add_flag("--resume", campaign_options.resume, "Continue the campaign of the results table in the output folder");
     campaign->add_flag("!--no-figures", campaign_options.figures, "Skip the PNG figures");
+    campaign->add_flag("--progress", campaign_options.progress_lines,
+                       "Progress as log lines every 10 s when stderr is not a terminal (mpirun, batch jobs)");
 
     CLI11_PARSE(app, argc, argv);
     cosim::install_interrupt_handlers();

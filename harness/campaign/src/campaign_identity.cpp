@@ -1,0 +1,71 @@
+#include "campaign_identity.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "campaign_error.hpp"
+#include "value_text.hpp"
+
+namespace campaign {
+
+namespace {
+
+using cosim::format_real;
+
+std::string join(const std::vector<std::string>& items) {
+    std::string out;
+    for (const auto& i : items) out += (out.empty() ? "" : " ") + i;
+    return out;
+}
+
+}  // namespace
+
+std::string campaign_identity(const CampaignSetup& s) {
+    std::ostringstream id;
+    id << "system " << std::filesystem::absolute(s.spec.system).lexically_normal().string() << "\n";
+    id << "start_time " << format_real(s.start_time) << "\nstop_time " << format_real(s.stop_time) << "\n";
+    id << "output_interval " << format_real(s.output_interval) << "\ntolerance " << format_real(s.tolerance) << "\n";
+    id << "seed " << s.spec.seed << "\npaired " << (s.spec.paired ? "true" : "false") << "\n";
+    for (const auto& setting : s.options.settings) id << "set " << setting << "\n";
+    for (const auto& d : s.spec.draws) {
+        std::vector<std::string> values;
+        for (const auto& v : d.values) values.push_back(v.text);
+        std::vector<std::string> weights;
+        for (double w : d.weights) weights.push_back(format_real(w));
+        id << "draw " << d.target << " kind " << static_cast<int>(d.kind) << " min " << format_real(d.min) << " max "
+           << format_real(d.max) << " mean " << format_real(d.mean) << " sd " << format_real(d.sd) << " values ["
+           << join(values) << "] weights [" << join(weights) << "] epoch " << format_real(d.epoch_from) << " "
+           << format_real(d.epoch_to) << "\n";
+    }
+    for (const auto& m : s.spec.metrics)
+        id << "metric " << m.name << " kind " << static_cast<int>(m.kind) << " a " << m.a << " b " << m.b << " valid "
+           << m.valid << " when " << m.when << " after " << format_real(m.after) << " stats [" << join(m.stats) << "]\n";
+    return id.str();
+}
+
+void record_identity(const std::filesystem::path& dir, const std::string& identity, bool resume) {
+    const auto file = dir / "campaign.txt";
+    if (resume && std::filesystem::exists(file)) {
+        std::ifstream in(file);
+        std::stringstream text;
+        text << in.rdbuf();
+        if (!in && !in.eof()) throw CampaignError("--resume: cannot read " + file.string());
+        if (text.str() == identity) return;
+        std::istringstream was(text.str()), is(identity);
+        std::string a, b;
+        while (std::getline(was, a) && std::getline(is, b) && a == b) {
+        }
+        throw CampaignError("--resume: the campaign in " + dir.string() + " was run with other settings (" + file.string() +
+                            " has '" + a + "', this invocation '" + b + "'): use another --output");
+    }
+    const auto temporary = std::filesystem::path(file.string() + ".writing");
+    {
+        std::ofstream out(temporary);
+        out << identity;
+        out.close();
+        if (!out) throw CampaignError("cannot write " + temporary.string());
+    }
+    std::filesystem::rename(temporary, file);
+}
+
+}  // namespace campaign
