@@ -71,27 +71,19 @@ struct Execution::Impl {
 
     Component& comp(std::size_t i) { return system.components()[i]; }
 
-    // Between events: time and states into the components whose derivatives or indicators are
-    // asked for, and the values they see.
-    void set_integrating(double time, std::span<const double> states) {
-        for (auto i : consumers) {
+    // Time and states into the given Model Exchange components, then the values they see.
+    void set_continuous(const std::vector<std::size_t>& which, Pass pass, double time, std::span<const double> states) {
+        for (auto i : which) {
             auto& c = comp(i);
             c.instance->set_time(time);
             if (c.state_count) c.instance->set_states(states.data() + c.state_offset, c.state_count);
         }
-        system.propagate(Pass::integrating);
+        system.propagate(pass);
     }
-
-    // At an instant the master stops at: every Model Exchange component at (time, states), every
-    // continuous input current, so that any output can be read.
-    void set_everywhere(double time, std::span<const double> states) {
-        for (auto i : me) {
-            auto& c = comp(i);
-            c.instance->set_time(time);
-            if (c.state_count) c.instance->set_states(states.data() + c.state_offset, c.state_count);
-        }
-        system.propagate(Pass::continuous);
-    }
+    // Between events: only the components whose derivatives or indicators are asked for.
+    void set_integrating(double time, std::span<const double> states) { set_continuous(consumers, Pass::integrating, time, states); }
+    // At an instant the master stops at: every component, every continuous input, so that any output can be read.
+    void set_everywhere(double time, std::span<const double> states) { set_continuous(me, Pass::continuous, time, states); }
 
     void rhs(double time, std::span<const double> states, std::span<double> dx) {
         set_integrating(time, states);
