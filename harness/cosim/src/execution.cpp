@@ -123,7 +123,7 @@ struct Execution::Impl {
     // components whose inputs changed drawn in, until nobody asks for another round. Returns true
     // when a component said its continuous states changed (CVODE must restart).
     bool event_iteration() {
-        bool continuous_change = options.reference;
+        bool continuous_change = false;
         const auto join_for_discrete_input = [this](std::size_t i) {
             if (!in_event[i]) join(i);
         };
@@ -192,7 +192,7 @@ struct Execution::Impl {
     double next_hard_time(double t_out) {
         double next = std::min(options.stop_time, t_out);
         for (auto i : me)
-            if (options.reference || comp(i).has_dynamics()) next = std::min(next, comp(i).next_time_event);
+            if (comp(i).has_dynamics()) next = std::min(next, comp(i).next_time_event);
         return next;
     }
 
@@ -307,8 +307,9 @@ struct Execution::Impl {
         const double tiny = 1e-12 * std::max(1.0, std::abs(stop));
         while (!terminate && t < stop - tiny) {
             const double t_out = std::min(start + static_cast<double>(k_out + 1) * h_out, stop);
-            const double t_hard = options.reference ? std::min(next_hard_time(t_out), next_soft_time(t_out)) : next_hard_time(t_out);
+            // The reference execution stops at every instant.
             const double t_soft = next_soft_time(t_out);
+            const double t_hard = options.reference ? std::min(next_hard_time(t_out), t_soft) : next_hard_time(t_out);
             const bool state_event = integrate(std::min(t_soft, t_hard), t_hard);
             set_everywhere(t, x);
 
@@ -332,11 +333,11 @@ struct Execution::Impl {
             if (state_event) mark_state_event_components();
             const bool any_event = state_event || time_event || step_event;
 
+            if (options.event_rows && any_event && t != last_sample) sample();  // just before the event
             bool communicated = false;
             for (auto i : cs) {
                 const double t_comm = next_communication(i);
                 if (!reached(t, t_comm)) continue;
-                if (options.event_rows && !communicated && any_event && t != last_sample) sample();
                 auto& s = stepping[i];
                 system.step_co_simulation(i, t_comm, t_comm - s.last);
                 s.last = t_comm;
@@ -347,7 +348,6 @@ struct Execution::Impl {
             }
 
             if (any_event || communicated) {
-                if (options.event_rows && any_event && !communicated) sample();
                 stats.state_events += state_event;
                 stats.time_events += time_event;
                 stats.step_events += step_event;

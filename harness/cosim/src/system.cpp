@@ -315,11 +315,11 @@ bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; 
 
 }  // namespace
 
-bool System::transfer(TransferGroup& g, const std::function<void(std::size_t)>& before_discrete_change) {
+// The group's source values into g.values (and `text` for a String); true when they differ from the
+// last ones given.
+bool System::read_sources(TransferGroup& g, std::string& text) {
     auto& from = *components_[g.from].instance;
-    auto& to = *components_[g.to].instance;
     bool changed = !g.given;
-    std::string text;
     switch (g.type) {
         case VariableType::real: from.get_reals(g.source_vrs, g.values); break;
         case VariableType::integer:
@@ -331,21 +331,34 @@ bool System::transfer(TransferGroup& g, const std::function<void(std::size_t)>& 
             break;
     }
     for (std::size_t i = 0; i < g.values.size(); ++i) changed = changed || !same_bits(g.values[i], g.last[i]);
-    // An unchanged value is not set again: the target keeps its evaluated outputs.
-    if (!changed) return false;
-    if (!g.continuous_target && before_discrete_change) before_discrete_change(g.to);
-    switch (g.type) {
-        case VariableType::real: to.set_reals(g.target_vrs, g.values); break;
-        case VariableType::integer:
-        case VariableType::enumeration: to.set_integer(g.target_vrs[0], static_cast<fmi2Integer>(g.values[0])); break;
-        case VariableType::boolean: to.set_boolean(g.target_vrs[0], g.values[0] != 0.0); break;
-        case VariableType::string:
-            to.set_string(g.target_vrs[0], text);
-            g.last_string = std::move(text);
-            break;
-    }
+    return changed;
+}
+
+// What read_sources read becomes the last values given.
+void System::accept(TransferGroup& g, std::string& text) {
     g.last.swap(g.values);
+    if (g.type == VariableType::string) g.last_string = std::move(text);
     g.given = true;
+}
+
+void System::write_targets(const TransferGroup& g, std::span<const double> values, const std::string& text) {
+    auto& to = *components_[g.to].instance;
+    switch (g.type) {
+        case VariableType::real: to.set_reals(g.target_vrs, values); break;
+        case VariableType::integer:
+        case VariableType::enumeration: to.set_integer(g.target_vrs[0], static_cast<fmi2Integer>(values[0])); break;
+        case VariableType::boolean: to.set_boolean(g.target_vrs[0], values[0] != 0.0); break;
+        case VariableType::string: to.set_string(g.target_vrs[0], text); break;
+    }
+}
+
+bool System::transfer(TransferGroup& g, const std::function<void(std::size_t)>& before_discrete_change) {
+    std::string text;
+    // An unchanged value is not set again: the target keeps its evaluated outputs.
+    if (!read_sources(g, text)) return false;
+    if (!g.continuous_target && before_discrete_change) before_discrete_change(g.to);
+    write_targets(g, g.values, text);
+    accept(g, text);
     changed_[g.to] = 1;
     if (!g.continuous_target) discrete_changed_[g.to] = 1;
     return true;
@@ -383,15 +396,9 @@ void System::step_co_simulation(std::size_t c, double t, double h) {
     auto& slopes = slopes_;  // reused: no allocation per communication point
     for (auto& g : groups_) {
         if (g.to != c) continue;
-        transfer(g, {});  // the sources' values now, at the end of the step: g.last
-        // The step starts from the values recorded at its start.
-        switch (g.type) {
-            case VariableType::real: target.set_reals(g.target_vrs, g.step_start); break;
-            case VariableType::integer:
-            case VariableType::enumeration: target.set_integer(g.target_vrs[0], static_cast<fmi2Integer>(g.step_start[0])); break;
-            case VariableType::boolean: target.set_boolean(g.target_vrs[0], g.step_start[0] != 0.0); break;
-            case VariableType::string: target.set_string(g.target_vrs[0], g.step_start_string); break;
-        }
+        std::string text;
+        if (read_sources(g, text)) accept(g, text);  // the sources' values now, at the end of the step: g.last
+        write_targets(g, g.step_start, g.step_start_string);  // the step starts from the values at its start
         const bool interpolate = components_[c].interpolates_inputs && g.continuous_target && h > 0.0 &&
                                  components_[g.from].interface == Interface::model_exchange;
         if (!interpolate) continue;

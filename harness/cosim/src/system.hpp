@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -116,6 +117,9 @@ private:
     void check_open_inputs() const;
     void mark_continuous_consumers();
     void group_transfers();
+    bool read_sources(TransferGroup& g, std::string& text);
+    void accept(TransferGroup& g, std::string& text);
+    void write_targets(const TransferGroup& g, std::span<const double> values, const std::string& text);
     bool transfer(TransferGroup& g, const std::function<void(std::size_t)>& before_discrete_change);
     void record_co_simulation_inputs(std::size_t c);
 
