@@ -21,6 +21,7 @@
 #include "execution.hpp"
 #include "fmi2_instance.hpp"
 #include "fmi_loader/fmu.hpp"
+#include "run_command.hpp"
 #include "system.hpp"
 #include "system_description.hpp"
 
@@ -56,7 +57,9 @@ Row run_system(const std::string& name, const std::string& ssd, double stop, boo
     cosim::System system(description, options);  // loading (extraction, dlopen) is part of a user's run
     cosim::ExecutionOptions ex;
     ex.stop_time = stop;
-    ex.output_interval = description.output_interval.value_or(stop / 1000.0);
+    const auto defaults = cosim::run_defaults(system, 0.0, stop);  // as `cosim run` without options
+    ex.output_interval = defaults.output_interval;
+    ex.relative_tolerance = defaults.tolerance;
     ex.reference = reference;
     Row r{name, stop, 0, 0, cosim::Execution(system, ex).run({}), 0};
     r.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();

@@ -66,23 +66,13 @@ CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path
     if (!stop) throw CampaignError(spec.system.string() + " has no DefaultExperiment stopTime: give stop_time in the spec");
     s.stop_time = *stop;
     if (!(s.stop_time > s.start_time)) throw CampaignError("the stop time must be after the start time");
-    // The defaults of `cosim run` (run_command.cpp): the .ssd's output interval, else the FMUs'
-    // smallest step size but no finer than a thousandth of the run; the FMUs' smallest tolerance.
-    double interval = std::numeric_limits<double>::infinity(), tolerance = 1e-6;
-    for (const auto& c : system.components()) {
-        const auto& ex = c.description().default_experiment;
-        if (!ex) continue;
-        if (ex->step_size && *ex->step_size > 0) interval = std::min(interval, *ex->step_size);
-        if (ex->tolerance && *ex->tolerance > 0) tolerance = std::min(tolerance, *ex->tolerance);
-    }
+    const cosim::RunDefaults defaults = cosim::run_defaults(system, s.start_time, s.stop_time);  // as `cosim run`
     const double span = s.stop_time - s.start_time;
-    if (s.description.output_interval) interval = *s.description.output_interval;
-    else if (!std::isfinite(interval) || interval < span / 1000.0) interval = span / 1000.0;
-    s.output_interval = spec.output_interval.value_or(interval);
+    s.output_interval = spec.output_interval.value_or(defaults.output_interval);
     if (!(s.output_interval > 0.0) || !std::isfinite(s.output_interval) || span / s.output_interval > cosim::max_run_points)
         throw CampaignError("the output interval must be positive and give at most " + std::to_string(cosim::max_run_points) +
                             " output points per run (max_run_points)");
-    s.tolerance = spec.tolerance.value_or(tolerance);
+    s.tolerance = spec.tolerance.value_or(defaults.tolerance);
     s.spec = std::move(spec);
     return s;
 }

@@ -20,16 +20,6 @@ namespace cosim {
 
 namespace {
 
-// The smallest step size and tolerance any component's DefaultExperiment asks for.
-void defaults_from_components(const System& system, double& interval, double& tolerance) {
-    for (const auto& c : system.components()) {
-        const auto& ex = c.description().default_experiment;
-        if (!ex) continue;
-        if (ex->step_size && *ex->step_size > 0) interval = std::min(interval, *ex->step_size);
-        if (ex->tolerance && *ex->tolerance > 0) tolerance = std::min(tolerance, *ex->tolerance);
-    }
-}
-
 // Every --cs names a component of the system: a misspelt name would otherwise run the whole system
 // through Model Exchange and report success.
 void check_co_simulation_names(const SystemDescription& description, const std::vector<std::string>& names) {
@@ -106,6 +96,22 @@ struct InterruptCheck : Observer {
 
 }  // namespace
 
+RunDefaults run_defaults(const System& system, double start, double stop) {
+    RunDefaults d{std::numeric_limits<double>::infinity(), 1e-6};
+    for (const auto& c : system.components()) {
+        const auto& ex = c.description().default_experiment;
+        if (!ex) continue;
+        if (ex->step_size && *ex->step_size > 0) d.output_interval = std::min(d.output_interval, *ex->step_size);
+        if (ex->tolerance && *ex->tolerance > 0) d.tolerance = std::min(d.tolerance, *ex->tolerance);
+    }
+    // The .ssd's own output interval, else no finer than a thousandth of the run: an orbit at the FMUs'
+    // 1 ms default would write millions of rows.
+    const double span = stop - start;
+    if (system.description().output_interval) d.output_interval = *system.description().output_interval;
+    else if (!std::isfinite(d.output_interval) || d.output_interval < span / 1000.0) d.output_interval = span / 1000.0;
+    return d;
+}
+
 RunStatistics run_system(const RunOptions& options, std::ostream& report) {
     throw_if_interrupted();
     const SystemDescription description = read_system_description(options.ssd);
@@ -125,15 +131,9 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
     ExecutionOptions ex;
     ex.start_time = description.start_time.value_or(0.0);
     ex.stop_time = *stop;
-    double interval = std::numeric_limits<double>::infinity(), tolerance = 1e-6;
-    defaults_from_components(system, interval, tolerance);
-    // The .ssd's own output interval, else no finer than a thousandth of the run: an orbit at the FMUs'
-    // 1 ms default would write millions of rows.
-    const double span = ex.stop_time - ex.start_time;
-    if (description.output_interval) interval = *description.output_interval;
-    else if (!std::isfinite(interval) || interval < span / 1000.0) interval = span / 1000.0;
-    ex.output_interval = options.output_interval.value_or(interval);
-    ex.relative_tolerance = options.tolerance.value_or(tolerance);
+    const RunDefaults defaults = run_defaults(system, ex.start_time, ex.stop_time);
+    ex.output_interval = options.output_interval.value_or(defaults.output_interval);
+    ex.relative_tolerance = options.tolerance.value_or(defaults.tolerance);
     ex.realtime = options.realtime;
     ex.realtime_tolerance = options.realtime_tolerance;
     ex.event_rows = options.event_rows;

@@ -36,6 +36,14 @@ inline constexpr double large_output_rows = 1e6;
 // not positive and finite, longer than the run or more than max_run_points points, and a CSV that
 // would not fit on its disk (the last two unless `force`). Throws Interrupted after a signal
 // (install_interrupt_handlers), with the CSV closed and a line of statistics on `report`.
+// cosim run's defaults for a system run from start to stop: the .ssd's output interval, else the FMUs'
+// smallest DefaultExperiment step but no finer than a thousandth of the run; the FMUs' smallest
+// tolerance (1e-6 when none is smaller).
+struct RunDefaults {
+    double output_interval, tolerance;
+};
+RunDefaults run_defaults(const System& system, double start, double stop);
+
 RunStatistics run_system(const RunOptions& options, std::ostream& report);
 void print_statistics(const RunStatistics& stats, std::ostream& out);
 
