@@ -282,7 +282,7 @@ struct Execution::Impl {
         if (!(stop > start) || !(h_out > 0.0))
             throw CosimError("the stop time must exceed the start time, and the output interval be positive");
         for (auto i : cs) {
-            stepping[i].step = comp(i).communication_step.value_or(options.communication_step.value_or(h_out));
+            stepping[i].step = comp(i).communication_step.value_or(h_out);  // without a step of its own: the output interval
             stepping[i].last = start;
             if (!(stepping[i].step > 0.0)) throw CosimError(comp(i).name + ": the communication step must be positive");
         }

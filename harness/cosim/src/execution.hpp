@@ -32,7 +32,6 @@ struct ExecutionOptions {
     double start_time = 0.0;
     double stop_time = 1.0;
     double output_interval = 0.01;
-    std::optional<double> communication_step;  // Co-Simulation components without a step of their own; default: the output interval
     double relative_tolerance = 1e-6;
     std::optional<double> max_step;  // the longest step of the Model Exchange integrator (default: the .ssd's)
     bool realtime = false;   // pace simulated time to the wall clock
