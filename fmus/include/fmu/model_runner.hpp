@@ -58,7 +58,7 @@ public:
     // index into the table) follows u(t) = u(t0) + slope * (t - t0) whenever the time is set, t0 being
     // the time the slope or the input's value was last set (setting the value keeps the slope, so a
     // host may set values and derivatives in either order). The host gives slopes for one step:
-    // clear_input_slopes() after it. A restore drops them too (host knowledge, not block state).
+    // clear_input_slopes() after it.
     void set_input_slope(std::size_t variable, double slope);
     void input_value_set(std::size_t variable);
     void clear_input_slopes() { input_slopes_.clear(); }
