@@ -43,8 +43,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         fmi_loader::FmuArchive archive(input, limits);
         for (const auto& entry : fs::recursive_directory_iterator(archive.directory()))
             if (entry.is_symlink()) std::abort();  // nothing may link out of the extraction directory
-    } catch (const fmi_loader::LoaderError&) {
-    }
+    } catch (const fmi_loader::LoaderError&) {}
     if (!fs::is_empty(scratch)) std::abort();  // an extraction directory was left behind
     return 0;
 }

@@ -23,8 +23,7 @@ void decode_and_check(std::span<const std::uint8_t> bytes) {
         expected[body] = static_cast<std::uint8_t>(crc);
         expected[body + 1] = static_cast<std::uint8_t>(crc >> 8);
         if (bridge::encode(frame) != expected) std::abort();
-    } catch (const bridge::FrameError&) {
-    }
+    } catch (const bridge::FrameError&) {}
 }
 
 }  // namespace

@@ -8,8 +8,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     try {
-        const auto md = fmi_loader::parse_model_description(
-            std::string_view(reinterpret_cast<const char*>(data), size), "<fuzz>");
+        const auto md =
+            fmi_loader::parse_model_description(std::string_view(reinterpret_cast<const char*>(data), size), "<fuzz>");
         // What users of a description do with it: look variables up, read start values.
         for (const auto& v : md.model_variables) {
             (void)md.find_variable(v.name);
@@ -18,7 +18,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
         for (const auto* list : {&md.model_structure.outputs, &md.model_structure.derivatives})
             for (const auto& u : *list) (void)md.model_variables.at(u.index - 1);
-    } catch (const fmi_loader::LoaderError&) {
-    }
+    } catch (const fmi_loader::LoaderError&) {}
     return 0;
 }

@@ -26,7 +26,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     try {
         (void)cosim::read_system_description(file);
-    } catch (const cosim::CosimError&) {
-    }
+    } catch (const cosim::CosimError&) {}
     return 0;
 }

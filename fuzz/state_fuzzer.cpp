@@ -34,7 +34,8 @@ struct Block {
     std::vector<fmi2ValueReference> reals, integers, booleans, strings;
 
     fmi2Component start() const {
-        fmi2Component c = fmi2Instantiate("fuzz", fmi2CoSimulation, guid.c_str(), nullptr, &callbacks, fmi2False, fmi2False);
+        fmi2Component c =
+            fmi2Instantiate("fuzz", fmi2CoSimulation, guid.c_str(), nullptr, &callbacks, fmi2False, fmi2False);
         if (!c || fmi2SetupExperiment(c, fmi2False, 0.0, 0.0, fmi2False, 0.0) != fmi2OK ||
             fmi2EnterInitializationMode(c) != fmi2OK || fmi2ExitInitializationMode(c) != fmi2OK)
             std::abort();
@@ -44,10 +45,18 @@ struct Block {
     Block() {
         for (const auto& v : model->table().variables()) {
             switch (v.type) {
-                case fmu::ValueType::Real: reals.push_back(v.value_reference); break;
-                case fmu::ValueType::Integer: integers.push_back(v.value_reference); break;
-                case fmu::ValueType::Boolean: booleans.push_back(v.value_reference); break;
-                case fmu::ValueType::String: strings.push_back(v.value_reference); break;
+                case fmu::ValueType::Real:
+                    reals.push_back(v.value_reference);
+                    break;
+                case fmu::ValueType::Integer:
+                    integers.push_back(v.value_reference);
+                    break;
+                case fmu::ValueType::Boolean:
+                    booleans.push_back(v.value_reference);
+                    break;
+                case fmu::ValueType::String:
+                    strings.push_back(v.value_reference);
+                    break;
             }
         }
         fmi2Component c = start();
@@ -77,7 +86,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         bytes = b.valid;
         const std::size_t payload = b.valid.size() - header - 8;
         for (std::size_t i = size > 0 ? 1 : 0; i + 3 <= size;) {
-            const std::size_t offset = (static_cast<std::size_t>(data[i]) | static_cast<std::size_t>(data[i + 1]) << 8) % payload;
+            const std::size_t offset =
+                (static_cast<std::size_t>(data[i]) | static_cast<std::size_t>(data[i + 1]) << 8) % payload;
             const std::size_t length = data[i + 2] % 17;
             i += 3;
             for (std::size_t k = 0; k < length && i < size && offset + k < payload; ++k, ++i)

@@ -16,6 +16,7 @@ packages=(
   libtomlplusplus-dev # cosim campaign specs (TOML)
   libopenmpi-dev openmpi-bin  # cosim campaign over MPI ranks (build option PVATT_MPI)
   zip unzip
+  clang-format        # one format for every C++ file (scripts/format.sh --check in scripts/test.sh)
   clang libclang-rt-14-dev   # libFuzzer with ASan and UBSan (scripts/fuzz.sh, fuzz/)
 )
 

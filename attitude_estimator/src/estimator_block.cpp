@@ -21,8 +21,7 @@ constexpr SunMethod kSunMethods[] = {SunMethod::difference, SunMethod::inverse_r
 
 // The rates' state must travel with the FMU state as bytes.
 static_assert(std::is_trivially_copyable_v<MeanAngularRate<double>> &&
-              std::is_trivially_copyable_v<SunMethodState<double>> &&
-              std::is_trivially_copyable_v<MekfState<double>> &&
+              std::is_trivially_copyable_v<SunMethodState<double>> && std::is_trivially_copyable_v<MekfState<double>> &&
               std::is_trivially_copyable_v<SetResetState<double>>);
 
 // A face's current is used for the panel-scale update only well inside the response curve (below about
@@ -123,9 +122,15 @@ EstimatorConfig<double> config_from(const EstimatorData& d) {
 
 SampleInputs<double> inputs_from(const EstimatorData& d) {
     return SampleInputs<double>{
-        .i_sh = d.i_sh, .i_face = d.i_face, .v_mag = d.v_mag, .v_mag_ref = d.v_mag_ref, .sun_ref = d.sun_ref, .mag_ref = d.mag_ref,
+        .i_sh = d.i_sh,
+        .i_face = d.i_face,
+        .v_mag = d.v_mag,
+        .v_mag_ref = d.v_mag_ref,
+        .sun_ref = d.sun_ref,
+        .mag_ref = d.mag_ref,
         // The reading now at the inputs was taken in the polarity commanded at the previous sample.
-        .mag_polarity = d.set_reset.polarity, .mag_offset = applied_offset(d.set_reset, set_reset_config_from(d))};
+        .mag_polarity = d.set_reset.polarity,
+        .mag_offset = applied_offset(d.set_reset, set_reset_config_from(d))};
 }
 
 void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
@@ -137,7 +142,8 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
             "every sun_method except difference");
     t.input("v_mag", &D::v_mag, "V", "Magnetometer output voltages X, Y, Z (magnetometer v_out)");
     t.input("v_mag_ref", &D::v_mag_ref, "V", "Magnetometer zero-field reference voltage (magnetometer v_ref)");
-    t.input("sun_ref", &D::sun_ref, "1", "Sun direction in the inertial frame, any nonzero length (environment sun_eci)");
+    t.input("sun_ref", &D::sun_ref, "1",
+            "Sun direction in the inertial frame, any nonzero length (environment sun_eci)");
     t.input("mag_ref", &D::mag_ref, "T",
             "Geomagnetic field in the inertial frame, any nonzero length (environment mag_eci)");
 
@@ -198,8 +204,9 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.parameter("kelly_value", &D::kelly_value, "1",
                 "Kelly table: relative response at kelly_angle, the first 1 (default ssr_plant's)")
         .range(0.0, 1.0);
-    t.parameter("i_face_norm", &D::i_face_norm, "A",
-                "Each face's current facing the sun squarely in full sun at 1 AU (default ssr_plant's i_sc at 1367 W/m2)")
+    t.parameter(
+         "i_face_norm", &D::i_face_norm, "A",
+         "Each face's current facing the sun squarely in full sun at 1 AU (default ssr_plant's i_sc at 1367 W/m2)")
         .min(1e-6);
     t.parameter("face_dark_threshold", &D::face_dark_threshold, "1",
                 "A face counts as lit above this fraction of its i_face_norm")
@@ -212,8 +219,9 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
                 "cones: a transition the panel-cube graph forbids is accepted when the sun moved less than this "
                 "since the last sample (0: the seed's graph alone; fast spin: about 1.5 x the turn per sample)")
         .range(0.0, 3.14159);
-    t.parameter("orbit_altitude", &D::orbit_altitude, "m",
-                "cones: altitude of the orbit, for the Earth-albedo model's view of the Earth (default 570 km, seed 004)")
+    t.parameter(
+         "orbit_altitude", &D::orbit_altitude, "m",
+         "cones: altitude of the orbit, for the Earth-albedo model's view of the Earth (default 570 km, seed 004)")
         .range(100e3, 100e6);
     t.parameter("cone_fit_tolerance", &D::cone_fit_tolerance, "1",
                 "cones: an albedo-model fit is accepted below this RMS misfit of the relative face responses; 0 "
@@ -277,9 +285,7 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.output("mag_meas", &D::mag_meas, "1", "Measured field direction, body axes, unit (zero when mag_valid is false)")
         .discrete()
         .depends_on({});
-    t.output("mag_field", &D::mag_field, "T", "Measured geomagnetic field, body axes")
-        .discrete()
-        .depends_on({});
+    t.output("mag_field", &D::mag_field, "T", "Measured geomagnetic field, body axes").discrete().depends_on({});
     t.output("sun_norm", &D::sun_norm, "1", "|s| of 000 eq. 5 before normalization: 1 in full sun")
         .discrete()
         .depends_on({});
@@ -289,9 +295,7 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.output("valid", &D::valid, "", "The estimate is valid (sun and field valid and separated)")
         .discrete()
         .depends_on({});
-    t.output("sun_valid", &D::sun_valid, "", "The sun vector is valid (not in eclipse)")
-        .discrete()
-        .depends_on({});
+    t.output("sun_valid", &D::sun_valid, "", "The sun vector is valid (not in eclipse)").discrete().depends_on({});
     t.output("mag_valid", &D::mag_valid, "", "The field vector is valid (no channel saturated, field not tiny)")
         .discrete()
         .depends_on({});
@@ -345,9 +349,7 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.output("q_filt", &D::q_filt, "1", "mekf: filter attitude quaternion, scalar-last [x, y, z, w], w >= 0")
         .discrete()
         .depends_on({});
-    t.output("omega_filt", &D::omega_filt, "rad/s", "mekf: filter body rate")
-        .discrete()
-        .depends_on({});
+    t.output("omega_filt", &D::omega_filt, "rad/s", "mekf: filter body rate").discrete().depends_on({});
     t.output("mag_offset_filt", &D::mag_offset_filt, "V",
              "mekf: estimated magnetometer offset per axis, as it reads after a set pulse")
         .discrete()
@@ -521,8 +523,8 @@ void EstimatorBlock::update_filter(double t, const SampleResult<double>& r, cons
         for (std::size_t k = 0; k < 6; ++k) {
             const double i = convert(nominal.face_adc[k], d.i_face[k]).value;
             in.face_r[k] = i / nominal.sun.i_face_norm[k];
-            const bool usable = (r.lit_faces >> k & 1) && !(r.rejected_faces >> k & 1) &&
-                                in.face_r[k] >= kScaleFaceMinResponse;
+            const bool usable =
+                (r.lit_faces >> k & 1) && !(r.rejected_faces >> k & 1) && in.face_r[k] >= kScaleFaceMinResponse;
             if (usable) in.face_use |= static_cast<std::uint8_t>(1u << k);
         }
         in.response = &nominal.sun.response;
@@ -565,8 +567,8 @@ void EstimatorBlock::update_rates(double t) {
         d.rate_last_t = t;
         d.rate_has_last = true;
     }
-    const bool step_aliases = d.rate_step_turn >= kStepNoise &&
-                              d.rate_step_turn / d.sample_period * d.rate_interval >= kHalfPi;
+    const bool step_aliases =
+        d.rate_step_turn >= kStepNoise && d.rate_step_turn / d.sample_period * d.rate_interval >= kHalfPi;
     const auto& f = d.filter_state;
     const double filter_rate = std::sqrt(f.omega[0] * f.omega[0] + f.omega[1] * f.omega[1] + f.omega[2] * f.omega[2]);
     const bool filter_aliases = d.filter == "mekf" && f.stage == 2 && filter_rate * d.rate_interval >= kHalfPi;
@@ -589,7 +591,8 @@ void EstimatorBlock::update_rates(double t) {
         // The analyser gets the window afresh from the history, which (unlike the analyser) is FMU state.
         spectrum.reset();
         for (std::int32_t i = n; i > 0; --i)
-            spectrum.push(d.sun_history[static_cast<std::size_t>((d.history_head - i + kMaxSpinWindow) % kMaxSpinWindow)]);
+            spectrum.push(
+                d.sun_history[static_cast<std::size_t>((d.history_head - i + kMaxSpinWindow) % kMaxSpinWindow)]);
         rates = spectrum.analyze();
     }
     d.spin_theta_dot = rates.valid ? rates.theta_dot : 0.0;
@@ -651,15 +654,17 @@ void EstimatorBlock::check_state() const {
     fmu::require_range(d.sun_state.cube_state, 0, 26, "sun_state.cube_state");
     fmu::require_range(d.sun_state.refusals, 0, std::numeric_limits<int>::max(), "sun_state.refusals");
     fmu::require_bool(d.sun_state.has_last, "sun_state.has_last");
-    fmu::require_finite(std::span<const double>(d.sun_state.last_unit.data(), d.sun_state.last_unit.size()), "sun_state.last_unit");
+    fmu::require_finite(std::span<const double>(d.sun_state.last_unit.data(), d.sun_state.last_unit.size()),
+                        "sun_state.last_unit");
     if (!d.rate_state.consistent()) throw fmu::Error("restored FMU state: rate_state is inconsistent");
     const MekfState<double>& f = d.filter_state;
     fmu::require_range(f.stage, 0, 2, "filter_state.stage");
     fmu::require_range(f.refused_in_row, 0, std::numeric_limits<std::int32_t>::max(), "filter_state.refused_in_row");
     fmu::require_range(f.resets, 0, std::numeric_limits<std::int32_t>::max(), "filter_state.resets");
-    const double filter_scalars[] = {f.q.x, f.q.y, f.q.z, f.q.w, f.q_first.x, f.q_first.y, f.q_first.z,
-                                     f.q_first.w, f.omega[0], f.omega[1], f.omega[2], f.mag_offset[0],
-                                     f.mag_offset[1], f.mag_offset[2], f.panel_scale, f.t_first, f.t_last};
+    const double filter_scalars[] = {f.q.x,       f.q.y,           f.q.z,           f.q.w,           f.q_first.x,
+                                     f.q_first.y, f.q_first.z,     f.q_first.w,     f.omega[0],      f.omega[1],
+                                     f.omega[2],  f.mag_offset[0], f.mag_offset[1], f.mag_offset[2], f.panel_scale,
+                                     f.t_first,   f.t_last};
     fmu::require_finite(filter_scalars, "filter_state");
     fmu::require_finite(std::span<const double>(f.p.data(), f.p.size()), "filter_state.p");
     fmu::require_finite(std::span<const double>(d.rate_last_q.data(), d.rate_last_q.size()), "rate_last_q");

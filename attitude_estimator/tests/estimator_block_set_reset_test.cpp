@@ -12,10 +12,10 @@ TEST(EstimatorFmuSetReset, CommandsAlternatingPulsesAndRemovesTheOffset) {
     auto& d = sim.data();
     d.adc_bits = 0;  // ideal converters: the hand values hold exactly
     d.mag_set_reset_samples = 1;
-    d.mag_offset_window = 1;  // apply the first estimate
+    d.mag_offset_window = 1;                         // apply the first estimate
     const double field[3] = {30e-6, -20e-6, 10e-6};  // T; at 1e4 V/T: 0.3, −0.2, 0.1 V
     const double offset = 0.02;                      // V
-    auto sensor = [&] {  // the HMC2003 in the polarity the block commanded last
+    auto sensor = [&] {                              // the HMC2003 in the polarity the block commanded last
         const double p = d.mag_set_reset ? 1.0 : -1.0;
         for (int k = 0; k < 3; ++k) d.v_mag[k] = 2.5 + p * 1e4 * field[k] + offset;
         d.v_mag_ref = 2.5;

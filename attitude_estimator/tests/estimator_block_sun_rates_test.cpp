@@ -9,10 +9,10 @@
 #include <numbers>
 
 #include "attitude_estimator/estimator_block.hpp"
+#include "block_simulation.hpp"
 #include "fmu/cs_solver.hpp"
 #include "fmu/errors.hpp"
 #include "fmu/model_runner.hpp"
-#include "block_simulation.hpp"
 
 namespace attitude_estimator {
 namespace {
@@ -115,7 +115,7 @@ TEST(EstimatorFmuSun, BadSunMethodAndKellyTableAreRefused) {
     b.data().kelly_angle[3] = 45.0;  // below the previous knot's 50°
     EXPECT_THROW(b.validate(), fmu::Error);
     b.data().kelly_angle[3] = 60.0;
-    b.data().kelly_value[4] = 0.5;   // response rising with the angle
+    b.data().kelly_value[4] = 0.5;  // response rising with the angle
     EXPECT_THROW(b.validate(), fmu::Error);
     b.data().kelly_value[4] = 0.1;
     EXPECT_NO_THROW(b.validate());

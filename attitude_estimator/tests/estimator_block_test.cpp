@@ -12,10 +12,10 @@
 #include <numbers>
 
 #include "attitude_estimator/estimator_block.hpp"
+#include "block_simulation.hpp"
 #include "fmu/cs_solver.hpp"
 #include "fmu/errors.hpp"
 #include "fmu/model_runner.hpp"
-#include "block_simulation.hpp"
 #include "test_support.hpp"
 
 namespace attitude_estimator {
@@ -33,7 +33,9 @@ Eigen::Matrix3d a_est(Simulation& sim) {
     return m;
 }
 
-Eigen::Vector3d vec(const Vec3d& v) { return {v[0], v[1], v[2]}; }
+Eigen::Vector3d vec(const Vec3d& v) {
+    return {v[0], v[1], v[2]};
+}
 
 // The sensor signals an ideal sensor chain produces at attitude A (w_body = A v_ref):
 //   i_sh = i_sc_norm ⊙ (A ŝ_ref)            (000 eq. 5 solved for the currents)
@@ -60,7 +62,9 @@ std::array<double, 4> true_quaternion(const Eigen::Matrix3d& a) {
     return {-s * e.x(), -s * e.y(), -s * e.z(), s * e.w()};
 }
 
-double max_abs_diff(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) { return (a - b).cwiseAbs().maxCoeff(); }
+double max_abs_diff(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) {
+    return (a - b).cwiseAbs().maxCoeff();
+}
 
 // A random test case: attitude, unit sun reference scaled by 3 (the block must normalize), a 40 µT field
 // reference, the two references at least 60° from (anti)parallel.
@@ -85,7 +89,9 @@ Case random_case(Random& rng) {
 // ---------------------------------------------------------------------------------------------------
 // Timing
 
-Eigen::Matrix3d about_z(double angle) { return Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()).toRotationMatrix().transpose(); }
+Eigen::Matrix3d about_z(double angle) {
+    return Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()).toRotationMatrix().transpose();
+}
 
 TEST(EstimatorFmuTiming, SamplesExactlyEveryPeriodAndHoldsBetween) {
     Simulation sim;
@@ -241,9 +247,10 @@ TEST(EstimatorFmuKnownAttitude, TwelveBitConverterStaysWithinTheDerivedBound) {
             loosest_bound = std::max(loosest_bound, bound);
         }
     }
-    std::printf("12-bit ADC, 400 runs, 40 uT: worst attitude error %.3g rad (%.3g deg), worst error/bound %.3g, "
-                "bound up to %.3g rad\n",
-                worst, worst * 180.0 / std::numbers::pi, worst_ratio, loosest_bound);
+    std::printf(
+        "12-bit ADC, 400 runs, 40 uT: worst attitude error %.3g rad (%.3g deg), worst error/bound %.3g, "
+        "bound up to %.3g rad\n",
+        worst, worst * 180.0 / std::numbers::pi, worst_ratio, loosest_bound);
 }
 
 // ---------------------------------------------------------------------------------------------------

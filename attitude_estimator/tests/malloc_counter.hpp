@@ -20,26 +20,28 @@ void* __libc_calloc(std::size_t, std::size_t);
 void* __libc_realloc(void*, std::size_t);
 void __libc_free(void*);
 void* malloc(std::size_t n) {
-  malloc_counter::allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_malloc(n);
+    malloc_counter::allocations.fetch_add(1, std::memory_order_relaxed);
+    return __libc_malloc(n);
 }
 void* calloc(std::size_t n, std::size_t s) {
-  malloc_counter::allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_calloc(n, s);
+    malloc_counter::allocations.fetch_add(1, std::memory_order_relaxed);
+    return __libc_calloc(n, s);
 }
 void* realloc(void* p, std::size_t n) {
-  malloc_counter::allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_realloc(p, n);
+    malloc_counter::allocations.fetch_add(1, std::memory_order_relaxed);
+    return __libc_realloc(p, n);
 }
-void free(void* p) { __libc_free(p); }
+void free(void* p) {
+    __libc_free(p);
+}
 }
 #endif
 
 // Allocator calls so far (0 when not counting).
 inline long allocation_count() {
 #if PVATT_COUNT_MALLOC
-  return malloc_counter::allocations.load(std::memory_order_relaxed);
+    return malloc_counter::allocations.load(std::memory_order_relaxed);
 #else
-  return 0;
+    return 0;
 #endif
 }

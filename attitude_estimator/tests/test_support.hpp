@@ -17,61 +17,61 @@ namespace attitude_estimator::test {
 using Scalars = ::testing::Types<float, double>;
 
 struct ScalarName {
-  template <class T>
-  static std::string GetName(int) {
-    return std::is_same_v<T, float> ? "float" : "double";
-  }
+    template <class T>
+    static std::string GetName(int) {
+        return std::is_same_v<T, float> ? "float" : "double";
+    }
 };
 
 // Tolerance by scalar type: float for the DSP build, double for the host.
 template <class T>
 constexpr double tol(double for_float, double for_double) {
-  return std::is_same_v<T, float> ? for_float : for_double;
+    return std::is_same_v<T, float> ? for_float : for_double;
 }
 
 template <class T>
 Vec3<T> to_vec(const Eigen::Vector3d& v) {
-  return {static_cast<T>(v.x()), static_cast<T>(v.y()), static_cast<T>(v.z())};
+    return {static_cast<T>(v.x()), static_cast<T>(v.y()), static_cast<T>(v.z())};
 }
 
 template <class T>
 Eigen::Matrix3d to_eigen(const Matrix3RowMajor<T>& a) {
-  Eigen::Matrix3d m;
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) m(r, c) = static_cast<double>(a[3 * r + c]);
-  return m;
+    Eigen::Matrix3d m;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) m(r, c) = static_cast<double>(a[3 * r + c]);
+    return m;
 }
 
 // Rotation angle (rad) of A1 A2ᵀ, i.e. the attitude difference, computed in double through Eigen's own
 // matrix-to-quaternion conversion, in the atan2 form that keeps small angles accurate.
 inline double attitude_angle(const Eigen::Matrix3d& a1, const Eigen::Matrix3d& a2) {
-  Eigen::Matrix3d d = a1 * a2.transpose();
-  // Re-orthonormalize float results so the metric measures direction, not rounding of the norm.
-  Eigen::JacobiSVD<Eigen::Matrix3d> svd(d, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  d = svd.matrixU() * svd.matrixV().transpose();
-  const Eigen::Quaterniond q(d);
-  return 2.0 * std::atan2(q.vec().norm(), std::fabs(q.w()));
+    Eigen::Matrix3d d = a1 * a2.transpose();
+    // Re-orthonormalize float results so the metric measures direction, not rounding of the norm.
+    Eigen::JacobiSVD<Eigen::Matrix3d> svd(d, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    d = svd.matrixU() * svd.matrixV().transpose();
+    const Eigen::Quaterniond q(d);
+    return 2.0 * std::atan2(q.vec().norm(), std::fabs(q.w()));
 }
 
 class Random {
- public:
-  explicit Random(std::uint64_t seed) : gen_(seed) {}
-  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(gen_); }
-  double gauss() { return std::normal_distribution<double>(0.0, 1.0)(gen_); }
-  int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(gen_); }
-  Eigen::Vector3d unit() {
-    Eigen::Vector3d v;
-    do {
-      v = Eigen::Vector3d(gauss(), gauss(), gauss());
-    } while (v.norm() < 1e-3);
-    return v.normalized();
-  }
-  // A rotation matrix of the given angle about a random axis (Eigen's AngleAxis, independent of the core).
-  Eigen::Matrix3d rotation(double angle) { return Eigen::AngleAxisd(angle, unit()).toRotationMatrix(); }
-  Eigen::Matrix3d rotation() { return rotation(uniform(0.0, M_PI)); }
+public:
+    explicit Random(std::uint64_t seed) : gen_(seed) {}
+    double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(gen_); }
+    double gauss() { return std::normal_distribution<double>(0.0, 1.0)(gen_); }
+    int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(gen_); }
+    Eigen::Vector3d unit() {
+        Eigen::Vector3d v;
+        do {
+            v = Eigen::Vector3d(gauss(), gauss(), gauss());
+        } while (v.norm() < 1e-3);
+        return v.normalized();
+    }
+    // A rotation matrix of the given angle about a random axis (Eigen's AngleAxis, independent of the core).
+    Eigen::Matrix3d rotation(double angle) { return Eigen::AngleAxisd(angle, unit()).toRotationMatrix(); }
+    Eigen::Matrix3d rotation() { return rotation(uniform(0.0, M_PI)); }
 
- private:
-  std::mt19937_64 gen_;
+private:
+    std::mt19937_64 gen_;
 };
 
 }  // namespace attitude_estimator::test

@@ -6,38 +6,38 @@
 namespace {
 
 void BM_EnvironmentFullEvaluation(benchmark::State& state) {
-  environment::EnvironmentParams p;  // spin mode, IGRF-14, albedo 24 x 48
-  const environment::Environment env(p);
-  double t = 100.0;  // sunlit part of the default orbit start
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(env.evaluate(t));
-    t += 1e-3;
-  }
+    environment::EnvironmentParams p;  // spin mode, IGRF-14, albedo 24 x 48
+    const environment::Environment env(p);
+    double t = 100.0;  // sunlit part of the default orbit start
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(env.evaluate(t));
+        t += 1e-3;
+    }
 }
 BENCHMARK(BM_EnvironmentFullEvaluation);
 
 void BM_EnvironmentWithoutAlbedo(benchmark::State& state) {
-  environment::EnvironmentParams p;
-  p.albedo.enabled = false;
-  const environment::Environment env(p);
-  double t = 100.0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(env.evaluate(t));
-    t += 1e-3;
-  }
+    environment::EnvironmentParams p;
+    p.albedo.enabled = false;
+    const environment::Environment env(p);
+    double t = 100.0;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(env.evaluate(t));
+        t += 1e-3;
+    }
 }
 BENCHMARK(BM_EnvironmentWithoutAlbedo);
 
 void BM_EnvironmentDipoleNoAlbedo(benchmark::State& state) {
-  environment::EnvironmentParams p;
-  p.albedo.enabled = false;
-  p.field_model = environment::FieldModel::dipole;
-  const environment::Environment env(p);
-  double t = 100.0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(env.evaluate(t));
-    t += 1e-3;
-  }
+    environment::EnvironmentParams p;
+    p.albedo.enabled = false;
+    p.field_model = environment::FieldModel::dipole;
+    const environment::Environment env(p);
+    double t = 100.0;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(env.evaluate(t));
+        t += 1e-3;
+    }
 }
 BENCHMARK(BM_EnvironmentDipoleNoAlbedo);
 

@@ -13,39 +13,47 @@
 namespace {
 
 void run_block(benchmark::State& state, const char* mode, bool albedo) {
-  fmu::ModelRunner runner{std::make_unique<environment::EnvironmentBlock>()};
-  auto& d = static_cast<environment::EnvironmentBlock&>(runner.model()).data();
-  d.attitude_mode = std::string_view(mode);
-  d.albedo_enabled = albedo;
-  runner.set_initializing(true);
-  runner.ensure_evaluated();
-  runner.set_initializing(false);
-  std::vector<double> x(runner.state_count()), dx(x.size());
-  runner.get_states(x);
-  double t = 100.0;
-  for (auto _ : state) {
-    runner.set_time(t);  // marks the outputs stale: the next read evaluates
-    runner.get_derivatives(dx);
-    benchmark::DoNotOptimize(dx.data());
-    t += 1e-3;
-  }
+    fmu::ModelRunner runner{std::make_unique<environment::EnvironmentBlock>()};
+    auto& d = static_cast<environment::EnvironmentBlock&>(runner.model()).data();
+    d.attitude_mode = std::string_view(mode);
+    d.albedo_enabled = albedo;
+    runner.set_initializing(true);
+    runner.ensure_evaluated();
+    runner.set_initializing(false);
+    std::vector<double> x(runner.state_count()), dx(x.size());
+    runner.get_states(x);
+    double t = 100.0;
+    for (auto _ : state) {
+        runner.set_time(t);  // marks the outputs stale: the next read evaluates
+        runner.get_derivatives(dx);
+        benchmark::DoNotOptimize(dx.data());
+        t += 1e-3;
+    }
 }
 
-void BM_BlockSpinWithAlbedo(benchmark::State& state) { run_block(state, "spin", true); }
-void BM_BlockSpinNoAlbedo(benchmark::State& state) { run_block(state, "spin", false); }
-void BM_BlockRigidBodyWithAlbedo(benchmark::State& state) { run_block(state, "rigid_body", true); }
-void BM_BlockRigidBodyNoAlbedo(benchmark::State& state) { run_block(state, "rigid_body", false); }
+void BM_BlockSpinWithAlbedo(benchmark::State& state) {
+    run_block(state, "spin", true);
+}
+void BM_BlockSpinNoAlbedo(benchmark::State& state) {
+    run_block(state, "spin", false);
+}
+void BM_BlockRigidBodyWithAlbedo(benchmark::State& state) {
+    run_block(state, "rigid_body", true);
+}
+void BM_BlockRigidBodyNoAlbedo(benchmark::State& state) {
+    run_block(state, "rigid_body", false);
+}
 BENCHMARK(BM_BlockSpinWithAlbedo);
 BENCHMARK(BM_BlockSpinNoAlbedo);
 BENCHMARK(BM_BlockRigidBodyWithAlbedo);
 BENCHMARK(BM_BlockRigidBodyNoAlbedo);
 
 void BM_CoreConstruction(benchmark::State& state) {
-  const environment::EnvironmentParams p = environment::environment_params(environment::EnvironmentData{});
-  for (auto _ : state) {
-    environment::Environment env(p);
-    benchmark::DoNotOptimize(&env);
-  }
+    const environment::EnvironmentParams p = environment::environment_params(environment::EnvironmentData{});
+    for (auto _ : state) {
+        environment::Environment env(p);
+        benchmark::DoNotOptimize(&env);
+    }
 }
 BENCHMARK(BM_CoreConstruction);
 

@@ -20,351 +20,364 @@ constexpr double kTwoPi = 2.0 * kPi;
 // (offset, size) in EnvironmentData of every parameter's value, from the variable table: the bytes
 // the cached core was built from. Field by field, so struct padding never enters the comparison.
 const std::vector<std::pair<std::size_t, std::size_t>>& parameter_bytes() {
-  static const std::vector<std::pair<std::size_t, std::size_t>> spans = [] {
-    std::vector<std::pair<std::size_t, std::size_t>> s;
-    for (const fmu::Variable& v : EnvironmentBlock::static_table().variables()) {
-      if (v.causality != fmu::Causality::parameter) continue;
-      std::size_t size = 0;
-      switch (v.type) {
-        case fmu::ValueType::Real: size = sizeof(double); break;
-        case fmu::ValueType::Integer: size = sizeof(std::int32_t); break;
-        case fmu::ValueType::Boolean: size = sizeof(bool); break;
-        case fmu::ValueType::String: size = v.string_capacity + 1; break;
-      }
-      s.emplace_back(v.offset, size);
-    }
-    return s;
-  }();
-  return spans;
+    static const std::vector<std::pair<std::size_t, std::size_t>> spans = [] {
+        std::vector<std::pair<std::size_t, std::size_t>> s;
+        for (const fmu::Variable& v : EnvironmentBlock::static_table().variables()) {
+            if (v.causality != fmu::Causality::parameter) continue;
+            std::size_t size = 0;
+            switch (v.type) {
+                case fmu::ValueType::Real:
+                    size = sizeof(double);
+                    break;
+                case fmu::ValueType::Integer:
+                    size = sizeof(std::int32_t);
+                    break;
+                case fmu::ValueType::Boolean:
+                    size = sizeof(bool);
+                    break;
+                case fmu::ValueType::String:
+                    size = v.string_capacity + 1;
+                    break;
+            }
+            s.emplace_back(v.offset, size);
+        }
+        return s;
+    }();
+    return spans;
 }
 
 UtcDate utc_date(std::int32_t year, std::int32_t month, std::int32_t day, std::int32_t hour, std::int32_t minute,
                  double second) {
-  return UtcDate{.year = year, .month = month, .day = day, .hour = hour, .minute = minute, .second = second};
+    return UtcDate{.year = year, .month = month, .day = day, .hour = hour, .minute = minute, .second = second};
 }
 
 // The core's julian_date() accepts day 1..31 in any month (30 February would silently be 2 March).
 void check_calendar_day(const char* what, std::int32_t year, std::int32_t month, std::int32_t day) {
-  static constexpr std::array<int, 12> days = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
-  if (month < 1 || month > 12) throw fmu::Error(std::string(what) + ": month must be 1..12");
-  const bool leap = (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
-  const int last = days[month - 1] + (month == 2 && leap ? 1 : 0);
-  if (day < 1 || day > last) {
-    throw fmu::Error(std::string(what) + ": day " + std::to_string(day) + " does not exist in month " +
-                     std::to_string(month) + " of " + std::to_string(year));
-  }
+    static constexpr std::array<int, 12> days = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+    if (month < 1 || month > 12) throw fmu::Error(std::string(what) + ": month must be 1..12");
+    const bool leap = (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
+    const int last = days[month - 1] + (month == 2 && leap ? 1 : 0);
+    if (day < 1 || day > last) {
+        throw fmu::Error(std::string(what) + ": day " + std::to_string(day) + " does not exist in month " +
+                         std::to_string(month) + " of " + std::to_string(year));
+    }
 }
 
 }  // namespace
 
 EnvironmentParams environment_params(const EnvironmentData& d) {
-  EnvironmentParams p;
-  if (d.attitude_mode == "spin") {
-    p.attitude_mode = AttitudeMode::spin;
-  } else if (d.attitude_mode == "rigid_body") {
-    p.attitude_mode = AttitudeMode::rigid_body;
-  } else {
-    throw fmu::Error("attitude_mode must be spin or rigid_body, not '" + std::string(d.attitude_mode.view()) + "'");
-  }
-  p.spin = SpinParams{
-      .phi0 = d.spin_phi0, .theta0 = d.spin_theta0, .phi_dot = d.spin_phi_dot, .theta_dot = d.spin_theta_dot};
-  p.rigid_body = RigidBodyParams{.inertia = d.inertia, .q0 = d.q0, .omega0 = d.omega0};
-  p.orbit = OrbitParams{.altitude = d.orbit_altitude,
-                        .inclination = d.orbit_inclination,
-                        .raan = d.orbit_raan,
-                        .argument_of_latitude0 = d.orbit_argument_of_latitude0};
-  p.epoch = utc_date(d.epoch_year, d.epoch_month, d.epoch_day, d.epoch_hour, d.epoch_minute, d.epoch_second);
-  if (d.sun_model == "almanac") {
-    p.sun_model = SunModel::almanac;
-  } else if (d.sun_model == "seed002") {
-    p.sun_model = SunModel::seed002;
-  } else {
-    throw fmu::Error("sun_model must be almanac or seed002, not '" + std::string(d.sun_model.view()) + "'");
-  }
-  p.vernal_equinox =
-      utc_date(d.equinox_year, d.equinox_month, d.equinox_day, d.equinox_hour, d.equinox_minute, d.equinox_second);
-  p.seed002_elevation_amplitude = d.seed002_elevation_amplitude;
-  p.solar_constant = d.solar_constant;
-  p.eclipse_enabled = d.eclipse_enabled;
-  if (d.field_model == "igrf14") {
-    p.field_model = FieldModel::igrf14;
-  } else if (d.field_model == "dipole") {
-    p.field_model = FieldModel::dipole;
-  } else {
-    throw fmu::Error("field_model must be igrf14 or dipole, not '" + std::string(d.field_model.view()) + "'");
-  }
-  p.igrf_max_degree = d.igrf_max_degree;
-  p.albedo = AlbedoParams{.enabled = d.albedo_enabled,
-                          .reflectivity = d.albedo_reflectivity,
-                          .rings = d.albedo_rings,
-                          .sectors = d.albedo_sectors};
-  if (d.albedo_response == "kelly") p.albedo.response = AlbedoResponse::kelly;
-  else if (d.albedo_response != "cosine") throw fmu::Error("albedo_response must be cosine or kelly");
-  return p;
+    EnvironmentParams p;
+    if (d.attitude_mode == "spin") {
+        p.attitude_mode = AttitudeMode::spin;
+    } else if (d.attitude_mode == "rigid_body") {
+        p.attitude_mode = AttitudeMode::rigid_body;
+    } else {
+        throw fmu::Error("attitude_mode must be spin or rigid_body, not '" + std::string(d.attitude_mode.view()) + "'");
+    }
+    p.spin = SpinParams{
+        .phi0 = d.spin_phi0, .theta0 = d.spin_theta0, .phi_dot = d.spin_phi_dot, .theta_dot = d.spin_theta_dot};
+    p.rigid_body = RigidBodyParams{.inertia = d.inertia, .q0 = d.q0, .omega0 = d.omega0};
+    p.orbit = OrbitParams{.altitude = d.orbit_altitude,
+                          .inclination = d.orbit_inclination,
+                          .raan = d.orbit_raan,
+                          .argument_of_latitude0 = d.orbit_argument_of_latitude0};
+    p.epoch = utc_date(d.epoch_year, d.epoch_month, d.epoch_day, d.epoch_hour, d.epoch_minute, d.epoch_second);
+    if (d.sun_model == "almanac") {
+        p.sun_model = SunModel::almanac;
+    } else if (d.sun_model == "seed002") {
+        p.sun_model = SunModel::seed002;
+    } else {
+        throw fmu::Error("sun_model must be almanac or seed002, not '" + std::string(d.sun_model.view()) + "'");
+    }
+    p.vernal_equinox =
+        utc_date(d.equinox_year, d.equinox_month, d.equinox_day, d.equinox_hour, d.equinox_minute, d.equinox_second);
+    p.seed002_elevation_amplitude = d.seed002_elevation_amplitude;
+    p.solar_constant = d.solar_constant;
+    p.eclipse_enabled = d.eclipse_enabled;
+    if (d.field_model == "igrf14") {
+        p.field_model = FieldModel::igrf14;
+    } else if (d.field_model == "dipole") {
+        p.field_model = FieldModel::dipole;
+    } else {
+        throw fmu::Error("field_model must be igrf14 or dipole, not '" + std::string(d.field_model.view()) + "'");
+    }
+    p.igrf_max_degree = d.igrf_max_degree;
+    p.albedo = AlbedoParams{.enabled = d.albedo_enabled,
+                            .reflectivity = d.albedo_reflectivity,
+                            .rings = d.albedo_rings,
+                            .sectors = d.albedo_sectors};
+    if (d.albedo_response == "kelly")
+        p.albedo.response = AlbedoResponse::kelly;
+    else if (d.albedo_response != "cosine")
+        throw fmu::Error("albedo_response must be cosine or kelly");
+    return p;
 }
 
 void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
-  using D = EnvironmentData;
-  // Attitude motion.
-  t.parameter("attitude_mode", &D::attitude_mode, "",
-              "Attitude motion: spin (seed 000 section 4, a pure function of time) or rigid_body (torque-free "
-              "Euler equations, states q and omega)")
-      .one_of({"spin", "rigid_body"});
-  t.parameter("spin_phi0", &D::spin_phi0, "rad", "Spin mode: phi at t = 0 in s_body = (sin phi sin theta, cos phi "
-                                                 "sin theta, cos theta)");
-  t.parameter("spin_theta0", &D::spin_theta0, "rad", "Spin mode: theta at t = 0");
-  t.parameter("spin_phi_dot", &D::spin_phi_dot, "rad/s", "Spin mode: rate of phi (seed 000: 1.26 rad/s)");
-  t.parameter("spin_theta_dot", &D::spin_theta_dot, "rad/s", "Spin mode: rate of theta (seed 000: 6.28 rad/s)");
-  t.parameter("inertia", &D::inertia, "kg.m2",
-              "Rigid-body mode: inertia matrix about the centre of mass in body axes, row-major (symmetric, positive "
-              "definite, principal moments obeying the triangle inequality)");
-  t.parameter("q0", &D::q0, "1",
-              "Rigid-body mode: initial attitude quaternion [x, y, z, w], ECI to body (normalised on use)")
-      .range(-1.0, 1.0);
-  t.parameter("omega0", &D::omega0, "rad/s", "Rigid-body mode: initial angular velocity, body axes")
-      .range(-100.0, 100.0);
-  t.parameter("quaternion_norm_gain", &D::quaternion_norm_gain, "1/s",
-              "Rigid-body mode: gain k of the term k(1 - |q|^2) q added to dq/dt that pulls |q| back to 1 at the "
-              "rate 2k under any integrator (zero on |q| = 1; 0 disables it). An explicit fixed-step host needs "
-              "steps below 1/k")
-      .range(0.0, 1e3);
-  // Orbit.
-  t.parameter("orbit_altitude", &D::orbit_altitude, "m",
-              "Circular orbit: altitude above the equatorial radius 6378.137 km (seed 004: about 570 km)")
-      .range(1.0, 1e9);
-  t.parameter("orbit_inclination", &D::orbit_inclination, "rad", "Circular orbit: inclination (seed 004: 64.9 deg)")
-      .range(0.0, kPi);
-  t.parameter("orbit_raan", &D::orbit_raan, "rad", "Circular orbit: right ascension of the ascending node (J2000)")
-      .range(-kTwoPi, kTwoPi);
-  t.parameter("orbit_argument_of_latitude0", &D::orbit_argument_of_latitude0, "rad",
-              "Circular orbit: argument of latitude at t = 0 (angle from the ascending node)")
-      .range(-kTwoPi, kTwoPi);
-  // Epoch.
-  t.parameter("epoch_year", &D::epoch_year, "", "Epoch (UTC at t = 0): year; IGRF-14 covers 2025.0 to 2030.0")
-      .range(2025, 2029);
-  t.parameter("epoch_month", &D::epoch_month, "", "Epoch (UTC at t = 0): month 1..12").range(1, 12);
-  t.parameter("epoch_day", &D::epoch_day, "", "Epoch (UTC at t = 0): day of the month").range(1, 31);
-  t.parameter("epoch_hour", &D::epoch_hour, "", "Epoch (UTC at t = 0): hour 0..23").range(0, 23);
-  t.parameter("epoch_minute", &D::epoch_minute, "", "Epoch (UTC at t = 0): minute 0..59").range(0, 59);
-  t.parameter("epoch_second", &D::epoch_second, "s", "Epoch (UTC at t = 0): second of the minute").range(0.0, 61.0);
-  // Sun.
-  t.parameter("sun_model", &D::sun_model, "",
-              "Sun position: almanac (Astronomical Almanac low-precision formula, about 0.01 deg) or seed002 "
-              "(seed 002 eq. 21-23, 1 AU)")
-      .one_of({"almanac", "seed002"});
-  t.parameter("equinox_year", &D::equinox_year, "", "seed002 sun: vernal equinox the days are counted from (UTC), year")
-      .range(1900, 2100);
-  t.parameter("equinox_month", &D::equinox_month, "", "seed002 sun: vernal equinox, month").range(1, 12);
-  t.parameter("equinox_day", &D::equinox_day, "", "seed002 sun: vernal equinox, day").range(1, 31);
-  t.parameter("equinox_hour", &D::equinox_hour, "", "seed002 sun: vernal equinox, hour").range(0, 23);
-  t.parameter("equinox_minute", &D::equinox_minute, "", "seed002 sun: vernal equinox, minute").range(0, 59);
-  t.parameter("equinox_second", &D::equinox_second, "s", "seed002 sun: vernal equinox, second").range(0.0, 61.0);
-  t.parameter("seed002_elevation_amplitude", &D::seed002_elevation_amplitude, "rad",
-              "seed002 sun: amplitude of the sun's elevation (default the obliquity 23.439 deg; the paper prints "
-              "2 pi/180)")
-      .range(-kPi / 2.0, kPi / 2.0);
-  t.parameter("solar_constant", &D::solar_constant, "W/m2",
-              "Solar irradiance at 1 AU (seed 000: 1367 W/m2), scaled by the actual distance")
-      .range(0.0, 1e5)
-      .tunable();
-  t.parameter("eclipse_enabled", &D::eclipse_enabled, "",
-              "Earth shadow: conical umbra and smooth penumbra (false: always lit)")
-      .tunable();
-  // Field.
-  t.parameter("field_model", &D::field_model, "",
-              "Geomagnetic field: igrf14 (IGRF-14 spherical harmonics) or dipole (tilted centred dipole from "
-              "IGRF-14's degree-1 terms)")
-      .one_of({"igrf14", "dipole"});
-  t.parameter("igrf_max_degree", &D::igrf_max_degree, "", "igrf14 field: highest degree of the synthesis (1..13)")
-      .range(1, 13);
-  // Albedo.
-  t.parameter("albedo_enabled", &D::albedo_enabled, "", "Earth albedo on the six faces (false: albedo_face = 0)")
-      .tunable();
-  t.parameter("albedo_reflectivity", &D::albedo_reflectivity, "1",
-              "Earth's reflectivity (Lambertian; mean Bond albedo about 0.3)")
-      .range(0.0, 1.0)
-      .tunable();
-  t.parameter("albedo_rings", &D::albedo_rings, "",
-              "Albedo quadrature: Gauss-Legendre points in the central angle over the visible cap")
-      .range(1, 1000);
-  t.parameter("albedo_sectors", &D::albedo_sectors, "", "Albedo quadrature: midpoint points in azimuth")
-      .range(3, 4000);
-  t.parameter("albedo_response", &D::albedo_response, "",
-              "Angular response the faces weigh albedo with: cosine (ideal) or kelly (seed 000 fig. 4, set it as the "
-              "plant's angular_response: albedo_face is then the equivalent normal-incidence irradiance)")
-      .one_of({"cosine", "kelly"});
-  t.calculated_parameter("orbit_period", &D::orbit_period, "s", "Period of the circular orbit, 2 pi sqrt(a^3/mu)");
+    using D = EnvironmentData;
+    // Attitude motion.
+    t.parameter("attitude_mode", &D::attitude_mode, "",
+                "Attitude motion: spin (seed 000 section 4, a pure function of time) or rigid_body (torque-free "
+                "Euler equations, states q and omega)")
+        .one_of({"spin", "rigid_body"});
+    t.parameter("spin_phi0", &D::spin_phi0, "rad",
+                "Spin mode: phi at t = 0 in s_body = (sin phi sin theta, cos phi "
+                "sin theta, cos theta)");
+    t.parameter("spin_theta0", &D::spin_theta0, "rad", "Spin mode: theta at t = 0");
+    t.parameter("spin_phi_dot", &D::spin_phi_dot, "rad/s", "Spin mode: rate of phi (seed 000: 1.26 rad/s)");
+    t.parameter("spin_theta_dot", &D::spin_theta_dot, "rad/s", "Spin mode: rate of theta (seed 000: 6.28 rad/s)");
+    t.parameter("inertia", &D::inertia, "kg.m2",
+                "Rigid-body mode: inertia matrix about the centre of mass in body axes, row-major (symmetric, positive "
+                "definite, principal moments obeying the triangle inequality)");
+    t.parameter("q0", &D::q0, "1",
+                "Rigid-body mode: initial attitude quaternion [x, y, z, w], ECI to body (normalised on use)")
+        .range(-1.0, 1.0);
+    t.parameter("omega0", &D::omega0, "rad/s", "Rigid-body mode: initial angular velocity, body axes")
+        .range(-100.0, 100.0);
+    t.parameter("quaternion_norm_gain", &D::quaternion_norm_gain, "1/s",
+                "Rigid-body mode: gain k of the term k(1 - |q|^2) q added to dq/dt that pulls |q| back to 1 at the "
+                "rate 2k under any integrator (zero on |q| = 1; 0 disables it). An explicit fixed-step host needs "
+                "steps below 1/k")
+        .range(0.0, 1e3);
+    // Orbit.
+    t.parameter("orbit_altitude", &D::orbit_altitude, "m",
+                "Circular orbit: altitude above the equatorial radius 6378.137 km (seed 004: about 570 km)")
+        .range(1.0, 1e9);
+    t.parameter("orbit_inclination", &D::orbit_inclination, "rad", "Circular orbit: inclination (seed 004: 64.9 deg)")
+        .range(0.0, kPi);
+    t.parameter("orbit_raan", &D::orbit_raan, "rad", "Circular orbit: right ascension of the ascending node (J2000)")
+        .range(-kTwoPi, kTwoPi);
+    t.parameter("orbit_argument_of_latitude0", &D::orbit_argument_of_latitude0, "rad",
+                "Circular orbit: argument of latitude at t = 0 (angle from the ascending node)")
+        .range(-kTwoPi, kTwoPi);
+    // Epoch.
+    t.parameter("epoch_year", &D::epoch_year, "", "Epoch (UTC at t = 0): year; IGRF-14 covers 2025.0 to 2030.0")
+        .range(2025, 2029);
+    t.parameter("epoch_month", &D::epoch_month, "", "Epoch (UTC at t = 0): month 1..12").range(1, 12);
+    t.parameter("epoch_day", &D::epoch_day, "", "Epoch (UTC at t = 0): day of the month").range(1, 31);
+    t.parameter("epoch_hour", &D::epoch_hour, "", "Epoch (UTC at t = 0): hour 0..23").range(0, 23);
+    t.parameter("epoch_minute", &D::epoch_minute, "", "Epoch (UTC at t = 0): minute 0..59").range(0, 59);
+    t.parameter("epoch_second", &D::epoch_second, "s", "Epoch (UTC at t = 0): second of the minute").range(0.0, 61.0);
+    // Sun.
+    t.parameter("sun_model", &D::sun_model, "",
+                "Sun position: almanac (Astronomical Almanac low-precision formula, about 0.01 deg) or seed002 "
+                "(seed 002 eq. 21-23, 1 AU)")
+        .one_of({"almanac", "seed002"});
+    t.parameter("equinox_year", &D::equinox_year, "",
+                "seed002 sun: vernal equinox the days are counted from (UTC), year")
+        .range(1900, 2100);
+    t.parameter("equinox_month", &D::equinox_month, "", "seed002 sun: vernal equinox, month").range(1, 12);
+    t.parameter("equinox_day", &D::equinox_day, "", "seed002 sun: vernal equinox, day").range(1, 31);
+    t.parameter("equinox_hour", &D::equinox_hour, "", "seed002 sun: vernal equinox, hour").range(0, 23);
+    t.parameter("equinox_minute", &D::equinox_minute, "", "seed002 sun: vernal equinox, minute").range(0, 59);
+    t.parameter("equinox_second", &D::equinox_second, "s", "seed002 sun: vernal equinox, second").range(0.0, 61.0);
+    t.parameter("seed002_elevation_amplitude", &D::seed002_elevation_amplitude, "rad",
+                "seed002 sun: amplitude of the sun's elevation (default the obliquity 23.439 deg; the paper prints "
+                "2 pi/180)")
+        .range(-kPi / 2.0, kPi / 2.0);
+    t.parameter("solar_constant", &D::solar_constant, "W/m2",
+                "Solar irradiance at 1 AU (seed 000: 1367 W/m2), scaled by the actual distance")
+        .range(0.0, 1e5)
+        .tunable();
+    t.parameter("eclipse_enabled", &D::eclipse_enabled, "",
+                "Earth shadow: conical umbra and smooth penumbra (false: always lit)")
+        .tunable();
+    // Field.
+    t.parameter("field_model", &D::field_model, "",
+                "Geomagnetic field: igrf14 (IGRF-14 spherical harmonics) or dipole (tilted centred dipole from "
+                "IGRF-14's degree-1 terms)")
+        .one_of({"igrf14", "dipole"});
+    t.parameter("igrf_max_degree", &D::igrf_max_degree, "", "igrf14 field: highest degree of the synthesis (1..13)")
+        .range(1, 13);
+    // Albedo.
+    t.parameter("albedo_enabled", &D::albedo_enabled, "", "Earth albedo on the six faces (false: albedo_face = 0)")
+        .tunable();
+    t.parameter("albedo_reflectivity", &D::albedo_reflectivity, "1",
+                "Earth's reflectivity (Lambertian; mean Bond albedo about 0.3)")
+        .range(0.0, 1.0)
+        .tunable();
+    t.parameter("albedo_rings", &D::albedo_rings, "",
+                "Albedo quadrature: Gauss-Legendre points in the central angle over the visible cap")
+        .range(1, 1000);
+    t.parameter("albedo_sectors", &D::albedo_sectors, "", "Albedo quadrature: midpoint points in azimuth")
+        .range(3, 4000);
+    t.parameter("albedo_response", &D::albedo_response, "",
+                "Angular response the faces weigh albedo with: cosine (ideal) or kelly (seed 000 fig. 4, set it as the "
+                "plant's angular_response: albedo_face is then the equivalent normal-incidence irradiance)")
+        .one_of({"cosine", "kelly"});
+    t.calculated_parameter("orbit_period", &D::orbit_period, "s", "Period of the circular orbit, 2 pi sqrt(a^3/mu)");
 
-  // States: used in rigid_body mode only (derivatives 0 in spin mode).
-  auto q = t.state("q", &D::q, &D::der_q, "1",
-                   "Rigid-body mode: attitude quaternion [x, y, z, w], ECI to body (its norm is held at 1 by "
-                   "quaternion_norm_gain)");
-  q.calculated_start();
-  t.state("omega", &D::omega, &D::der_omega, "rad/s", "Rigid-body mode: angular velocity, body axes")
-      .nominal(0.01)  // body rates of a tumbling satellite: about 1 deg/s
-      .calculated_start()
-      .derivative_depends_on({"omega"});
-  q.derivative_depends_on({"q", "omega"});  // after omega is declared
+    // States: used in rigid_body mode only (derivatives 0 in spin mode).
+    auto q = t.state("q", &D::q, &D::der_q, "1",
+                     "Rigid-body mode: attitude quaternion [x, y, z, w], ECI to body (its norm is held at 1 by "
+                     "quaternion_norm_gain)");
+    q.calculated_start();
+    t.state("omega", &D::omega, &D::der_omega, "rad/s", "Rigid-body mode: angular velocity, body axes")
+        .nominal(0.01)  // body rates of a tumbling satellite: about 1 deg/s
+        .calculated_start()
+        .derivative_depends_on({"omega"});
+    q.derivative_depends_on({"q", "omega"});  // after omega is declared
 
-  t.output("sun_body", &D::sun_body, "1", "Unit vector satellite to sun, body axes").depends_on({"q"});
-  t.output("sun_eci", &D::sun_eci, "1", "Unit vector satellite to sun, ECI (J2000)").depends_on({});
-  t.output("irradiance", &D::irradiance, "W/m2",
-           "Solar irradiance at the satellite: solar_constant (1 AU / distance)^2, times the visible fraction of "
-           "the solar disc (0 in umbra)")
-      .depends_on({});
-  t.output("albedo_face", &D::albedo_face, "W/m2",
-           "Earth-albedo irradiance on the faces +x, -x, +y, -y, +z, -z")
-      .depends_on({"q"});
-  t.output("mag_body", &D::mag_body, "T", "Geomagnetic flux density at the satellite, body axes").depends_on({"q"});
-  t.output("mag_eci", &D::mag_eci, "T", "Geomagnetic flux density at the satellite, ECI (J2000)").depends_on({});
-  t.output("q_true", &D::q_true, "1", "True attitude quaternion [x, y, z, w] (scalar last), ECI to body, unit")
-      .depends_on({"q"});
-  t.output("omega_body", &D::omega_body, "rad/s", "True angular velocity, body axes")
-      .depends_elementwise({"omega"});
-  t.output("r_eci", &D::r_eci, "m", "Satellite position, ECI (J2000)").depends_on({});
+    t.output("sun_body", &D::sun_body, "1", "Unit vector satellite to sun, body axes").depends_on({"q"});
+    t.output("sun_eci", &D::sun_eci, "1", "Unit vector satellite to sun, ECI (J2000)").depends_on({});
+    t.output("irradiance", &D::irradiance, "W/m2",
+             "Solar irradiance at the satellite: solar_constant (1 AU / distance)^2, times the visible fraction of "
+             "the solar disc (0 in umbra)")
+        .depends_on({});
+    t.output("albedo_face", &D::albedo_face, "W/m2", "Earth-albedo irradiance on the faces +x, -x, +y, -y, +z, -z")
+        .depends_on({"q"});
+    t.output("mag_body", &D::mag_body, "T", "Geomagnetic flux density at the satellite, body axes").depends_on({"q"});
+    t.output("mag_eci", &D::mag_eci, "T", "Geomagnetic flux density at the satellite, ECI (J2000)").depends_on({});
+    t.output("q_true", &D::q_true, "1", "True attitude quaternion [x, y, z, w] (scalar last), ECI to body, unit")
+        .depends_on({"q"});
+    t.output("omega_body", &D::omega_body, "rad/s", "True angular velocity, body axes").depends_elementwise({"omega"});
+    t.output("r_eci", &D::r_eci, "m", "Satellite position, ECI (J2000)").depends_on({});
 
-  t.local("sunlight_fraction", &D::sunlight_fraction, "1", "Visible fraction of the solar disc (1 lit, 0 umbra)");
-  t.output("sun_distance", &D::sun_distance, "m",
-           "Distance satellite to sun (what an on-board ephemeris knows: scales the expected panel currents)")
-      .depends_on({});
+    t.local("sunlight_fraction", &D::sunlight_fraction, "1", "Visible fraction of the solar disc (1 lit, 0 umbra)");
+    t.output("sun_distance", &D::sun_distance, "m",
+             "Distance satellite to sun (what an on-board ephemeris knows: scales the expected panel currents)")
+        .depends_on({});
 }
 
 fmu::ModelInfo EnvironmentBlock::describe() {
-  fmu::ModelInfo info;
-  info.model_identifier = "environment";
-  info.model_name = "environment";
-  info.description =
-      "Truth for the sensors: attitude motion, circular orbit, sun and eclipse, geomagnetic field, Earth albedo";
-  info.documentation_html =
-      "<p>Everything the sensors see and the truth the estimate is scored against. Inertial frame ECI (J2000); "
-      "time t is seconds since the epoch parameters (UTC). Quaternions scalar-last [x, y, z, w], "
-      "A(q) = (w&sup2; &minus; |Q|&sup2;) I + 2QQ<sup>T</sup> &minus; 2w[Q&times;] maps ECI to body; faces in the "
-      "order +x, &minus;x, +y, &minus;y, +z, &minus;z.</p>"
-      "<ul>"
-      "<li><b>Attitude</b> (<code>attitude_mode</code>): <code>spin</code> (default) is seed 000 section 4: the "
-      "sun in body axes is s = (sin &phi; sin &theta;, cos &phi; sin &theta;, cos &theta;), &phi; = &phi;<sub>0</sub> "
-      "+ &phi;&#775; t, &theta; = &theta;<sub>0</sub> + &theta;&#775; t, exactly for the sun direction at the "
-      "epoch; the attitude is a pure function of time and the states q, omega are idle (derivatives 0). "
-      "<code>rigid_body</code> integrates the torque-free Euler equations J&omega;&#775; = &minus;&omega; &times; "
-      "J&omega; and q&#775; = &frac12;&Omega;(&omega;)q + k(1 &minus; |q|&sup2;)q as the continuous states q[1..4], "
-      "omega[1..3] (initial values q0, omega0). The second term (k = <code>quaternion_norm_gain</code>, default "
-      "0.01/s) is zero on |q| = 1 and pulls the norm back at the rate 2k under any integrator, so |q| does not "
-      "drift (an explicit fixed-step host needs steps below 1/k = 100 s); outputs use q/|q|.</li>"
-      "<li><b>Orbit</b>: circular Kepler orbit from altitude, inclination, RAAN and argument of latitude at t = 0 "
-      "(defaults 570 km, 64.9&deg;, seed 004).</li>"
-      "<li><b>Sun</b> (<code>sun_model</code>): the Astronomical Almanac's low-precision formula "
-      "(<code>almanac</code>) or seed 002 eq. 21&ndash;23 (<code>seed002</code>, counted from the "
-      "<code>equinox_*</code> date). Irradiance = solar_constant &middot; (1 AU/d)&sup2; &middot; &nu;, &nu; the "
-      "visible fraction of the solar disc from a conical umbra/penumbra model (0 in umbra). &nu; is continuous "
-      "through the penumbra, so eclipse entry and exit need no events and the FMU declares none.</li>"
-      "<li><b>Field</b> (<code>field_model</code>): IGRF-14 to degree <code>igrf_max_degree</code> (default 13) "
-      "with its secular variation, or the tilted dipole of its degree-1 terms; valid 2025.0&ndash;2030.0 (a "
-      "time outside is an error).</li>"
-      "<li><b>Albedo</b>: Lambertian Earth of reflectivity <code>albedo_reflectivity</code> (0.3), the exact "
-      "view factor integrated over the sunlit visible cap, per face; <code>albedo_enabled = false</code> gives "
-      "zeros.</li>"
-      "</ul>"
-      "<p>Outputs: sun_body, sun_eci (unit), sun_distance (m), irradiance, albedo_face, mag_body, mag_eci (T), q_true, omega_body, "
-      "r_eci (m). In spin mode sun_body = A(q_true) sun_eci is the seed formula up to the sun's orbital parallax "
-      "(&lt; 5e-5 rad) and its motion of 2e-7 rad/s. Default experiment: the seed scenario, 10 s in 0.01 s "
-      "steps.</p>";
-  info.default_experiment = {.start_time = 0.0, .stop_time = 10.0, .tolerance = 1e-6, .step_size = 0.01};
-  return info;
+    fmu::ModelInfo info;
+    info.model_identifier = "environment";
+    info.model_name = "environment";
+    info.description =
+        "Truth for the sensors: attitude motion, circular orbit, sun and eclipse, geomagnetic field, Earth albedo";
+    info.documentation_html =
+        "<p>Everything the sensors see and the truth the estimate is scored against. Inertial frame ECI (J2000); "
+        "time t is seconds since the epoch parameters (UTC). Quaternions scalar-last [x, y, z, w], "
+        "A(q) = (w&sup2; &minus; |Q|&sup2;) I + 2QQ<sup>T</sup> &minus; 2w[Q&times;] maps ECI to body; faces in the "
+        "order +x, &minus;x, +y, &minus;y, +z, &minus;z.</p>"
+        "<ul>"
+        "<li><b>Attitude</b> (<code>attitude_mode</code>): <code>spin</code> (default) is seed 000 section 4: the "
+        "sun in body axes is s = (sin &phi; sin &theta;, cos &phi; sin &theta;, cos &theta;), &phi; = "
+        "&phi;<sub>0</sub> "
+        "+ &phi;&#775; t, &theta; = &theta;<sub>0</sub> + &theta;&#775; t, exactly for the sun direction at the "
+        "epoch; the attitude is a pure function of time and the states q, omega are idle (derivatives 0). "
+        "<code>rigid_body</code> integrates the torque-free Euler equations J&omega;&#775; = &minus;&omega; &times; "
+        "J&omega; and q&#775; = &frac12;&Omega;(&omega;)q + k(1 &minus; |q|&sup2;)q as the continuous states q[1..4], "
+        "omega[1..3] (initial values q0, omega0). The second term (k = <code>quaternion_norm_gain</code>, default "
+        "0.01/s) is zero on |q| = 1 and pulls the norm back at the rate 2k under any integrator, so |q| does not "
+        "drift (an explicit fixed-step host needs steps below 1/k = 100 s); outputs use q/|q|.</li>"
+        "<li><b>Orbit</b>: circular Kepler orbit from altitude, inclination, RAAN and argument of latitude at t = 0 "
+        "(defaults 570 km, 64.9&deg;, seed 004).</li>"
+        "<li><b>Sun</b> (<code>sun_model</code>): the Astronomical Almanac's low-precision formula "
+        "(<code>almanac</code>) or seed 002 eq. 21&ndash;23 (<code>seed002</code>, counted from the "
+        "<code>equinox_*</code> date). Irradiance = solar_constant &middot; (1 AU/d)&sup2; &middot; &nu;, &nu; the "
+        "visible fraction of the solar disc from a conical umbra/penumbra model (0 in umbra). &nu; is continuous "
+        "through the penumbra, so eclipse entry and exit need no events and the FMU declares none.</li>"
+        "<li><b>Field</b> (<code>field_model</code>): IGRF-14 to degree <code>igrf_max_degree</code> (default 13) "
+        "with its secular variation, or the tilted dipole of its degree-1 terms; valid 2025.0&ndash;2030.0 (a "
+        "time outside is an error).</li>"
+        "<li><b>Albedo</b>: Lambertian Earth of reflectivity <code>albedo_reflectivity</code> (0.3), the exact "
+        "view factor integrated over the sunlit visible cap, per face; <code>albedo_enabled = false</code> gives "
+        "zeros.</li>"
+        "</ul>"
+        "<p>Outputs: sun_body, sun_eci (unit), sun_distance (m), irradiance, albedo_face, mag_body, mag_eci (T), "
+        "q_true, omega_body, "
+        "r_eci (m). In spin mode sun_body = A(q_true) sun_eci is the seed formula up to the sun's orbital parallax "
+        "(&lt; 5e-5 rad) and its motion of 2e-7 rad/s. Default experiment: the seed scenario, 10 s in 0.01 s "
+        "steps.</p>";
+    info.default_experiment = {.start_time = 0.0, .stop_time = 10.0, .tolerance = 1e-6, .step_size = 0.01};
+    return info;
 }
 
 bool EnvironmentBlock::parameters_match_cache() const {
-  if (!core_) return false;
-  const auto* bytes = reinterpret_cast<const std::byte*>(&data());
-  std::size_t pos = 0;
-  for (const auto& [offset, size] : parameter_bytes()) {
-    if (std::memcmp(bytes + offset, core_key_.data() + pos, size) != 0) return false;
-    pos += size;
-  }
-  return true;
+    if (!core_) return false;
+    const auto* bytes = reinterpret_cast<const std::byte*>(&data());
+    std::size_t pos = 0;
+    for (const auto& [offset, size] : parameter_bytes()) {
+        if (std::memcmp(bytes + offset, core_key_.data() + pos, size) != 0) return false;
+        pos += size;
+    }
+    return true;
 }
 
 void EnvironmentBlock::remember_parameters() const {
-  const auto* bytes = reinterpret_cast<const std::byte*>(&data());
-  core_key_.clear();
-  for (const auto& [offset, size] : parameter_bytes()) core_key_.insert(core_key_.end(), bytes + offset, bytes + offset + size);
+    const auto* bytes = reinterpret_cast<const std::byte*>(&data());
+    core_key_.clear();
+    for (const auto& [offset, size] : parameter_bytes())
+        core_key_.insert(core_key_.end(), bytes + offset, bytes + offset + size);
 }
 
 const Environment& EnvironmentBlock::core() const {
-  if (!parameters_match_cache()) {
-    core_.reset();
-    try {
-      core_.emplace(environment_params(data()));
-    } catch (const fmu::Error&) {
-      throw;
-    } catch (const std::exception& e) {
-      throw fmu::Error(std::string("environment: ") + e.what());
+    if (!parameters_match_cache()) {
+        core_.reset();
+        try {
+            core_.emplace(environment_params(data()));
+        } catch (const fmu::Error&) {
+            throw;
+        } catch (const std::exception& e) {
+            throw fmu::Error(std::string("environment: ") + e.what());
+        }
+        remember_parameters();
     }
-    remember_parameters();
-  }
-  return *core_;
+    return *core_;
 }
 
 void EnvironmentBlock::validate() const {
-  // Everything the core checks (inertia, q0, dates, IGRF validity at the epoch, albedo grid), at exit of
-  // initialization with a message, rather than at the first step.
-  const auto& d = data();
-  check_calendar_day("epoch", d.epoch_year, d.epoch_month, d.epoch_day);
-  check_calendar_day("equinox", d.equinox_year, d.equinox_month, d.equinox_day);
-  (void)core();
+    // Everything the core checks (inertia, q0, dates, IGRF validity at the epoch, albedo grid), at exit of
+    // initialization with a message, rather than at the first step.
+    const auto& d = data();
+    check_calendar_day("epoch", d.epoch_year, d.epoch_month, d.epoch_day);
+    check_calendar_day("equinox", d.equinox_year, d.equinox_month, d.equinox_day);
+    (void)core();
 }
 
 void EnvironmentBlock::initialize(double) {
-  auto& d = data();
-  // The states start from the parameters, q normalised (a zero q0 is left as is; validate() refuses it).
-  double n2 = 0.0;
-  for (double c : d.q0) n2 += c * c;
-  const double n = std::sqrt(n2);
-  for (int i = 0; i < 4; ++i) d.q[i] = n > 0.0 ? d.q0[i] / n : d.q0[i];
-  d.omega = d.omega0;
-  const double a = kEarthRadius + d.orbit_altitude;
-  d.orbit_period = kTwoPi * std::sqrt(a * a * a / kEarthGravitationalParameter);
+    auto& d = data();
+    // The states start from the parameters, q normalised (a zero q0 is left as is; validate() refuses it).
+    double n2 = 0.0;
+    for (double c : d.q0) n2 += c * c;
+    const double n = std::sqrt(n2);
+    for (int i = 0; i < 4; ++i) d.q[i] = n > 0.0 ? d.q0[i] / n : d.q0[i];
+    d.omega = d.omega0;
+    const double a = kEarthRadius + d.orbit_altitude;
+    d.orbit_period = kTwoPi * std::sqrt(a * a * a / kEarthGravitationalParameter);
 }
 
 void EnvironmentBlock::evaluate_derivatives(double) {
-  const Environment& env = core();
-  auto& d = data();
-  if (env.params().attitude_mode != AttitudeMode::rigid_body) {
-    d.der_q = {};
-    d.der_omega = {};
-    return;
-  }
-  const RigidBodyState x{d.q[0], d.q[1], d.q[2], d.q[3], d.omega[0], d.omega[1], d.omega[2]};
-  RigidBodyState dx{};
-  env.derivative(x.data(), dx.data());
-  // Norm stabilization (header): k (1 - |q|^2) q, zero on the unit sphere.
-  const double n2 = d.q[0] * d.q[0] + d.q[1] * d.q[1] + d.q[2] * d.q[2] + d.q[3] * d.q[3];
-  const double pull = d.quaternion_norm_gain * (1.0 - n2);
-  for (int i = 0; i < 4; ++i) d.der_q[i] = dx[i] + pull * d.q[i];
-  for (int i = 0; i < 3; ++i) d.der_omega[i] = dx[4 + i];
+    const Environment& env = core();
+    auto& d = data();
+    if (env.params().attitude_mode != AttitudeMode::rigid_body) {
+        d.der_q = {};
+        d.der_omega = {};
+        return;
+    }
+    const RigidBodyState x{d.q[0], d.q[1], d.q[2], d.q[3], d.omega[0], d.omega[1], d.omega[2]};
+    RigidBodyState dx{};
+    env.derivative(x.data(), dx.data());
+    // Norm stabilization (header): k (1 - |q|^2) q, zero on the unit sphere.
+    const double n2 = d.q[0] * d.q[0] + d.q[1] * d.q[1] + d.q[2] * d.q[2] + d.q[3] * d.q[3];
+    const double pull = d.quaternion_norm_gain * (1.0 - n2);
+    for (int i = 0; i < 4; ++i) d.der_q[i] = dx[i] + pull * d.q[i];
+    for (int i = 0; i < 3; ++i) d.der_omega[i] = dx[4 + i];
 }
 
 void EnvironmentBlock::evaluate(double t) {
-  const Environment& env = core();
-  auto& d = data();
-  evaluate_derivatives(t);
-  EnvironmentOutputs o;
-  if (env.params().attitude_mode == AttitudeMode::rigid_body) {
-    const RigidBodyState x{d.q[0], d.q[1], d.q[2], d.q[3], d.omega[0], d.omega[1], d.omega[2]};
-    o = env.evaluate(t, &x);  // normalises q before use
-  } else {
-    o = env.evaluate(t);
-  }
-  d.sun_body = o.sun_body;
-  d.sun_eci = o.sun_eci;
-  d.irradiance = o.irradiance;
-  d.albedo_face = o.albedo_face;
-  d.mag_body = o.mag_body;
-  d.mag_eci = o.mag_eci;
-  d.q_true = o.q_true;
-  d.omega_body = o.omega_body;
-  d.r_eci = o.r_eci;
-  d.sunlight_fraction = o.sunlight_fraction;
-  d.sun_distance = o.sun_distance;
+    const Environment& env = core();
+    auto& d = data();
+    evaluate_derivatives(t);
+    EnvironmentOutputs o;
+    if (env.params().attitude_mode == AttitudeMode::rigid_body) {
+        const RigidBodyState x{d.q[0], d.q[1], d.q[2], d.q[3], d.omega[0], d.omega[1], d.omega[2]};
+        o = env.evaluate(t, &x);  // normalises q before use
+    } else {
+        o = env.evaluate(t);
+    }
+    d.sun_body = o.sun_body;
+    d.sun_eci = o.sun_eci;
+    d.irradiance = o.irradiance;
+    d.albedo_face = o.albedo_face;
+    d.mag_body = o.mag_body;
+    d.mag_eci = o.mag_eci;
+    d.q_true = o.q_true;
+    d.omega_body = o.omega_body;
+    d.r_eci = o.r_eci;
+    d.sunlight_fraction = o.sunlight_fraction;
+    d.sun_distance = o.sun_distance;
 }
 
 }  // namespace environment

@@ -9,8 +9,7 @@
 
 namespace fmu {
 
-CsSolver::CsSolver(ModelRunner& runner, double relative_tolerance)
-    : runner_(runner), x_(runner.state_count()) {
+CsSolver::CsSolver(ModelRunner& runner, double relative_tolerance) : runner_(runner), x_(runner.state_count()) {
     const std::size_t n = runner_.state_count();
     if (n == 0) return;  // nothing to integrate; events are located by bisection
     // Absolute tolerance of each state from its nominal magnitude: reltol × nominal.
@@ -62,11 +61,12 @@ bool CsSolver::integrate_to(double t_stop) {
 
 bool CsSolver::locate_without_states(double t_stop) {
     const std::size_t m = runner_.indicator_count();
-    const auto crossing = m == 0 ? std::nullopt
-                                 : bisect_indicator_crossing(runner_.time(), t_stop, m, [this](double t, std::span<double> z) {
-                                       runner_.set_time(t);
-                                       runner_.get_indicators(z);
-                                   });
+    const auto crossing =
+        m == 0 ? std::nullopt
+               : bisect_indicator_crossing(runner_.time(), t_stop, m, [this](double t, std::span<double> z) {
+                     runner_.set_time(t);
+                     runner_.get_indicators(z);
+                 });
     runner_.set_time(crossing.value_or(t_stop));
     return crossing.has_value();
 }

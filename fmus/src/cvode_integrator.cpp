@@ -22,8 +22,12 @@ template <class T, auto Free>
 struct Deleter {
     void operator()(T* p) const { Free(p); }
 };
-void free_cvode(void* mem) { CVodeFree(&mem); }
-void free_context(SUNContext ctx) { SUNContext_Free(&ctx); }
+void free_cvode(void* mem) {
+    CVodeFree(&mem);
+}
+void free_context(SUNContext ctx) {
+    SUNContext_Free(&ctx);
+}
 
 template <class Handle, auto Free>
 using Owned = std::unique_ptr<std::remove_pointer_t<Handle>, Deleter<std::remove_pointer_t<Handle>, Free>>;
@@ -118,8 +122,9 @@ CvodeIntegrator::CvodeIntegrator(std::size_t n, std::size_t m, Rhs rhs, Roots ro
 
 CvodeIntegrator::~CvodeIntegrator() = default;
 
-void CvodeIntegrator::set_max_step(double h) { check(CVodeSetMaxStep(h_->mem.get(), h), "CVodeSetMaxStep"); }
-
+void CvodeIntegrator::set_max_step(double h) {
+    check(CVodeSetMaxStep(h_->mem.get(), h), "CVodeSetMaxStep");
+}
 
 void CvodeIntegrator::restart(double t, std::span<const double> x) {
     steps_before_restart_ = steps();

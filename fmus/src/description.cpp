@@ -18,10 +18,14 @@ std::string format_real(double value) {
 
 std::string start_text(const Variable& v, std::span<const std::byte> defaults) {
     switch (v.type) {
-        case ValueType::Real: return format_real(read_real(defaults, v));
-        case ValueType::Integer: return std::to_string(read_integer(defaults, v));
-        case ValueType::Boolean: return read_boolean(defaults, v) ? "true" : "false";
-        case ValueType::String: return std::string(read_string(defaults, v));
+        case ValueType::Real:
+            return format_real(read_real(defaults, v));
+        case ValueType::Integer:
+            return std::to_string(read_integer(defaults, v));
+        case ValueType::Boolean:
+            return read_boolean(defaults, v) ? "true" : "false";
+        case ValueType::String:
+            return std::string(read_string(defaults, v));
     }
     return {};
 }

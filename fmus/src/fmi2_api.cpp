@@ -77,8 +77,12 @@ std::span<const T> span_of(const T* p, size_t n) {
 
 extern "C" {
 
-const char* fmi2GetTypesPlatform(void) { return fmi2TypesPlatform; }
-const char* fmi2GetVersion(void) { return fmi2Version; }
+const char* fmi2GetTypesPlatform(void) {
+    return fmi2TypesPlatform;
+}
+const char* fmi2GetVersion(void) {
+    return fmi2Version;
+}
 
 fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2String fmuGUID, fmi2String,
                               const fmi2CallbackFunctions* functions, fmi2Boolean, fmi2Boolean loggingOn) {
@@ -96,8 +100,9 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
         if (!fmuGUID || model_guid() != fmuGUID)
             return refuse(std::string("fmi2Instantiate: GUID ") + (fmuGUID ? fmuGUID : "(null)") +
                           " does not match this FMU's " + model_guid());
-        auto* instance = new Instance(instanceName, fmuType == fmi2ModelExchange ? Kind::model_exchange : Kind::co_simulation,
-                                      *functions, loggingOn != fmi2False, fmu::make_model(), model_guid());
+        auto* instance =
+            new Instance(instanceName, fmuType == fmi2ModelExchange ? Kind::model_exchange : Kind::co_simulation,
+                         *functions, loggingOn != fmi2False, fmu::make_model(), model_guid());
         auto& r = registry();
         std::lock_guard lock(r.mutex);
         r.live.insert(instance);
@@ -127,8 +132,8 @@ fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nC
     });
 }
 
-fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fmi2Real tolerance,
-                               fmi2Real startTime, fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
+fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fmi2Real tolerance, fmi2Real startTime,
+                               fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
     return guarded(c, Call::setup_experiment, [&](Instance& i) {
         i.setup_experiment(toleranceDefined != fmi2False, tolerance, startTime, stopTimeDefined != fmi2False, stopTime);
     });
@@ -179,7 +184,8 @@ fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate* FMUstate) {
     });
 }
 fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate) {
-    return guarded(c, Call::set_fmu_state, [&](Instance& i) { i.set_state(static_cast<const fmu::Snapshot*>(FMUstate)); });
+    return guarded(c, Call::set_fmu_state,
+                   [&](Instance& i) { i.set_state(static_cast<const fmu::Snapshot*>(FMUstate)); });
 }
 fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate* FMUstate) {
     return guarded(c, Call::free_fmu_state, [&](Instance& i) {
@@ -209,7 +215,8 @@ fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedSta
     return guarded(c, Call::serialize_fmu_state, [&](Instance& i) {
         if (!serializedState || !FMUstate) throw fmu::Error("fmi2DeSerializeFMUstate: null pointer");
         fmu::Snapshot* fresh = i.deserialize(span_of(serializedState, size));
-        if (*FMUstate) i.free_state(static_cast<fmu::Snapshot*>(*FMUstate));  // the standard lets a host pass one to reuse
+        if (*FMUstate)
+            i.free_state(static_cast<fmu::Snapshot*>(*FMUstate));  // the standard lets a host pass one to reuse
         *FMUstate = fresh;
     });
 }

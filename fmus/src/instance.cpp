@@ -20,7 +20,6 @@ constexpr std::size_t serial_guid_bytes = 40;
 constexpr std::size_t serial_header = sizeof serial_magic + 8 + 8 + 8 + 1 + serial_guid_bytes;
 constexpr std::size_t serial_checksum = 8;
 
-
 constexpr std::size_t category_index(std::string_view name) {
     for (std::size_t i = 0; i < std::size(log_categories); ++i)
         if (name == log_categories[i]) return i;
@@ -83,7 +82,8 @@ void Instance::set_debug_logging(bool on, std::span<const fmi2String> categories
     for (fmi2String c : categories) {
         if (!c) throw Error("fmi2SetDebugLogging: a category is a null pointer");
         const auto i = category_index(c);
-        if (i >= category_enabled_.size()) throw Error(std::string("fmi2SetDebugLogging: unknown category '") + c + "'");
+        if (i >= category_enabled_.size())
+            throw Error(std::string("fmi2SetDebugLogging: unknown category '") + c + "'");
         indices.push_back(i);
     }
     for (auto i : indices) category_enabled_[i] = on;
@@ -186,7 +186,8 @@ void Instance::check_settable(const Variable& v) const {
             if (v.causality == Causality::input && v.variability == Variability::continuous) return;
             refuse("in continuous-time mode only continuous inputs can be set");
             return;
-        default: refuse("setting is not allowed in this mode");
+        default:
+            refuse("setting is not allowed in this mode");
     }
 }
 
@@ -280,7 +281,8 @@ void Instance::set_real(std::span<const fmi2ValueReference> vr, const fmi2Real* 
         },
         [&](const Variable& v, double x) {
             write_real(runner_.model().bytes(), v, x);
-            if (v.causality == Causality::input) runner_.input_value_set(static_cast<std::size_t>(&v - runner_.table().variables().data()));
+            if (v.causality == Causality::input)
+                runner_.input_value_set(static_cast<std::size_t>(&v - runner_.table().variables().data()));
         });
 }
 void Instance::set_real_input_derivatives(std::span<const fmi2ValueReference> vr, const fmi2Integer* order,
@@ -295,7 +297,8 @@ void Instance::set_real_input_derivatives(std::span<const fmi2ValueReference> vr
         if (order[i] != 1)
             throw Error("fmi2SetRealInputDerivatives: order " + std::to_string(order[i]) + " for " + v.name +
                         " (this FMU interpolates inputs linearly: only order 1)");
-        if (!std::isfinite(values[i])) throw Error("fmi2SetRealInputDerivatives: the derivative of " + v.name + " is not finite");
+        if (!std::isfinite(values[i]))
+            throw Error("fmi2SetRealInputDerivatives: the derivative of " + v.name + " is not finite");
     }
     for (std::size_t i = 0; i < vr.size(); ++i) runner_.set_input_slope(vr[i], values[i]);
     runner_.mark_changed();
@@ -333,7 +336,8 @@ void Instance::set_string(std::span<const fmi2ValueReference> vr, const fmi2Stri
 }
 
 void Instance::require_owned(const Snapshot* state) const {
-    if (!state || !snapshots_.contains(state)) throw Error("the FMU state pointer was not made by this instance, or was freed");
+    if (!state || !snapshots_.contains(state))
+        throw Error("the FMU state pointer was not made by this instance, or was freed");
 }
 
 Snapshot* Instance::get_state(Snapshot* reuse) {
@@ -391,7 +395,8 @@ std::vector<fmi2Byte> Instance::serialize(const Snapshot* state) const {
     put(&terminate, 1);
     put(guid, serial_guid_bytes);
     put(data.data(), data.size());
-    const std::uint64_t checksum = serialized_state_checksum(std::span<const char>(out.data(), out.size() - serial_checksum));
+    const std::uint64_t checksum =
+        serialized_state_checksum(std::span<const char>(out.data(), out.size() - serial_checksum));
     put(&checksum, serial_checksum);
     return out;
 }
@@ -437,7 +442,9 @@ Snapshot* Instance::deserialize(std::span<const fmi2Byte> bytes) {
     return raw;
 }
 
-void Instance::enter_event_mode() { mode_ = Mode::event; }
+void Instance::enter_event_mode() {
+    mode_ = Mode::event;
+}
 
 void Instance::new_discrete_states(fmi2EventInfo& info) {
     const bool time_event = runner_.time_event_due();
@@ -454,7 +461,9 @@ void Instance::new_discrete_states(fmi2EventInfo& info) {
     info.nextEventTime = std::isfinite(next) ? next : 0.0;
 }
 
-void Instance::enter_continuous_time_mode() { mode_ = Mode::continuous_time; }
+void Instance::enter_continuous_time_mode() {
+    mode_ = Mode::continuous_time;
+}
 
 void Instance::completed_integrator_step(fmi2Boolean* enter_event_mode, fmi2Boolean* terminate) {
     if (!enter_event_mode || !terminate) throw Error("fmi2CompletedIntegratorStep: null output pointer");
@@ -462,11 +471,14 @@ void Instance::completed_integrator_step(fmi2Boolean* enter_event_mode, fmi2Bool
     *terminate = fmi2False;
 }
 
-void Instance::set_time(double t) { runner_.set_time(t); }
+void Instance::set_time(double t) {
+    runner_.set_time(t);
+}
 
 void Instance::check_count(std::size_t given, std::size_t expected, const char* what) const {
     if (given != expected)
-        throw Error(std::string(what) + ": expected " + std::to_string(expected) + " values, got " + std::to_string(given));
+        throw Error(std::string(what) + ": expected " + std::to_string(expected) + " values, got " +
+                    std::to_string(given));
 }
 
 void Instance::set_continuous_states(std::span<const double> x) {
@@ -505,8 +517,8 @@ fmi2Status Instance::do_step(double current_time, double step_size) {
     if (terminate_requested_) throw Error("fmi2DoStep: the block has asked to terminate the simulation");
     const double now = runner_.time();
     if (std::abs(current_time - now) > 1e-9 * std::max(1.0, std::abs(now)))
-        throw Error("fmi2DoStep: communication point " + format_time(current_time) +
-                    " is not the FMU's current time " + format_time(now));
+        throw Error("fmi2DoStep: communication point " + format_time(current_time) + " is not the FMU's current time " +
+                    format_time(now));
     try {
         runner_.set_time(current_time);
         cs_solver_->invalidate();  // inputs may have jumped at the communication point

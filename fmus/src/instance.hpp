@@ -17,14 +17,15 @@
 namespace fmu {
 
 // The log categories this FMU declares in its model description, in that order.
-inline constexpr const char* log_categories[] = {"logEvents",       "logStatusWarning", "logStatusDiscard",
-                                                 "logStatusError",  "logStatusFatal",   "logStatistics",
-                                                 "logAll"};
-inline constexpr const char* log_category_descriptions[] = {
-    "Events: time and state events, discrete updates",  "Messages with status fmi2Warning",
-    "Messages with status fmi2Discard",                  "Messages with status fmi2Error",
-    "Messages with status fmi2Fatal",                    "Integrator statistics of Co-Simulation runs",
-    "Every call of the FMI functions"};
+inline constexpr const char* log_categories[] = {
+    "logEvents", "logStatusWarning", "logStatusDiscard", "logStatusError", "logStatusFatal", "logStatistics", "logAll"};
+inline constexpr const char* log_category_descriptions[] = {"Events: time and state events, discrete updates",
+                                                            "Messages with status fmi2Warning",
+                                                            "Messages with status fmi2Discard",
+                                                            "Messages with status fmi2Error",
+                                                            "Messages with status fmi2Fatal",
+                                                            "Integrator statistics of Co-Simulation runs",
+                                                            "Every call of the FMI functions"};
 
 enum class Kind { model_exchange, co_simulation };
 

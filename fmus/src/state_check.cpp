@@ -22,8 +22,10 @@ void check_variable(const Variable& v, std::span<const std::byte> bytes) {
             std::memcpy(&x, at, sizeof x);
             if (std::isnan(x)) refuse(v, "is NaN");
             if (std::isinf(x) && (v.min || v.max)) refuse(v, "is infinite");
-            if (v.min && x < *v.min) refuse(v, "= " + std::to_string(x) + " is below its min " + std::to_string(*v.min));
-            if (v.max && x > *v.max) refuse(v, "= " + std::to_string(x) + " is above its max " + std::to_string(*v.max));
+            if (v.min && x < *v.min)
+                refuse(v, "= " + std::to_string(x) + " is below its min " + std::to_string(*v.min));
+            if (v.max && x > *v.max)
+                refuse(v, "= " + std::to_string(x) + " is above its max " + std::to_string(*v.max));
             break;
         }
         case ValueType::Integer: {

@@ -8,7 +8,9 @@
 
 namespace fmu {
 
-const Variable& TableBase::by_name(std::string_view name) const { return variables_[index_of(name)]; }
+const Variable& TableBase::by_name(std::string_view name) const {
+    return variables_[index_of(name)];
+}
 
 std::size_t TableBase::index_of(std::string_view name) const {
     for (std::size_t i = 0; i < variables_.size(); ++i)

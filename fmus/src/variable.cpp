@@ -5,43 +5,62 @@ namespace fmu {
 
 std::string_view to_string(ValueType v) {
     switch (v) {
-        case ValueType::Real: return "Real";
-        case ValueType::Integer: return "Integer";
-        case ValueType::Boolean: return "Boolean";
-        case ValueType::String: return "String";
+        case ValueType::Real:
+            return "Real";
+        case ValueType::Integer:
+            return "Integer";
+        case ValueType::Boolean:
+            return "Boolean";
+        case ValueType::String:
+            return "String";
     }
     return "?";
 }
 
 std::string_view to_string(Causality c) {
     switch (c) {
-        case Causality::parameter: return "parameter";
-        case Causality::calculated_parameter: return "calculatedParameter";
-        case Causality::input: return "input";
-        case Causality::output: return "output";
-        case Causality::local: return "local";
-        case Causality::independent: return "independent";
+        case Causality::parameter:
+            return "parameter";
+        case Causality::calculated_parameter:
+            return "calculatedParameter";
+        case Causality::input:
+            return "input";
+        case Causality::output:
+            return "output";
+        case Causality::local:
+            return "local";
+        case Causality::independent:
+            return "independent";
     }
     return "?";
 }
 
 std::string_view to_string(Variability v) {
     switch (v) {
-        case Variability::constant: return "constant";
-        case Variability::fixed: return "fixed";
-        case Variability::tunable: return "tunable";
-        case Variability::discrete: return "discrete";
-        case Variability::continuous: return "continuous";
+        case Variability::constant:
+            return "constant";
+        case Variability::fixed:
+            return "fixed";
+        case Variability::tunable:
+            return "tunable";
+        case Variability::discrete:
+            return "discrete";
+        case Variability::continuous:
+            return "continuous";
     }
     return "?";
 }
 
 std::string_view to_string(Initial i) {
     switch (i) {
-        case Initial::none: return "";
-        case Initial::exact: return "exact";
-        case Initial::approx: return "approx";
-        case Initial::calculated: return "calculated";
+        case Initial::none:
+            return "";
+        case Initial::exact:
+            return "exact";
+        case Initial::approx:
+            return "approx";
+        case Initial::calculated:
+            return "calculated";
     }
     return "?";
 }

@@ -30,8 +30,12 @@ void logger(fmi2ComponentEnvironment env, fmi2String, fmi2Status status, fmi2Str
     static_cast<Log*>(env)->messages.emplace_back(status, text);
 }
 
-const fmu::TableBase& table() { return fmu_test::Ball::static_table(); }
-fmi2ValueReference vr(const char* name) { return table().by_name(name).value_reference; }
+const fmu::TableBase& table() {
+    return fmu_test::Ball::static_table();
+}
+fmi2ValueReference vr(const char* name) {
+    return table().by_name(name).value_reference;
+}
 
 class Api : public ::testing::Test {
 protected:
@@ -76,7 +80,7 @@ TEST_F(Api, CallsInTheWrongModeAreRefused) {
     fmi2Component c = make(fmi2CoSimulation);
     expect_refused(fmi2DoStep(c, 0.0, 0.1, fmi2True));  // before initialization
     fmi2Real x[2];
-    expect_refused(fmi2GetContinuousStates(c, x, 2));   // a Model Exchange function
+    expect_refused(fmi2GetContinuousStates(c, x, 2));  // a Model Exchange function
     ASSERT_EQ(fmi2EnterInitializationMode(c), fmi2OK);
     expect_refused(fmi2SetupExperiment(c, 0, 0, 0, 0, 0));
     ASSERT_EQ(fmi2ExitInitializationMode(c), fmi2OK);
@@ -223,7 +227,8 @@ TEST_F(Api, ModelExchangeSequenceWithEventsAndLogging) {
     ASSERT_EQ(fmi2NewDiscreteStates(c, &info), fmi2OK);
     EXPECT_DOUBLE_EQ(info.nextEventTime, 0.5);
     bool saw_event_log = false;
-    for (const auto& [status, text] : log.messages) saw_event_log = saw_event_log || text.find("time event") != std::string::npos;
+    for (const auto& [status, text] : log.messages)
+        saw_event_log = saw_event_log || text.find("time event") != std::string::npos;
     EXPECT_TRUE(saw_event_log);
     const fmi2ValueReference ticks = vr("ticks");
     fmi2Integer n = 0;

@@ -41,7 +41,9 @@ void reseal(std::vector<fmi2Byte>& b) {
     const std::uint64_t h = fnv1a(b, b.size() - 8);
     std::memcpy(b.data() + b.size() - 8, &h, 8);
 }
-std::size_t offset_of(const char* name) { return header + fmu_test::Ball::static_table().by_name(name).offset; }
+std::size_t offset_of(const char* name) {
+    return header + fmu_test::Ball::static_table().by_name(name).offset;
+}
 
 class StateBytes : public ::testing::Test {
 protected:
@@ -94,7 +96,9 @@ TEST_F(StateBytes, AnyChangedByteFailsTheChecksum) {
     expect_refused(b, "checksum");
 }
 
-TEST_F(StateBytes, NaNIsRefused) { expect_refused(edited("h", std::numeric_limits<double>::quiet_NaN()), "h is NaN"); }
+TEST_F(StateBytes, NaNIsRefused) {
+    expect_refused(edited("h", std::numeric_limits<double>::quiet_NaN()), "h is NaN");
+}
 
 TEST_F(StateBytes, ValueBeyondItsDeclaredRangeIsRefused) {
     expect_refused(edited("e", 2.26e6), "e = ");

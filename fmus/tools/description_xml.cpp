@@ -177,7 +177,9 @@ std::string model_description_xml(const Model& model) {
         if (v.type == ValueType::Real && !v.unit.empty()) w.attribute("unit", v.unit);
         if (v.has_start()) w.attribute("start", start_text(v, default_bytes));
         if (v.type == ValueType::Real || v.type == ValueType::Integer) {
-            auto bound = [&](double x) { return v.type == ValueType::Real ? format_real(x) : std::to_string(static_cast<long long>(x)); };
+            auto bound = [&](double x) {
+                return v.type == ValueType::Real ? format_real(x) : std::to_string(static_cast<long long>(x));
+            };
             if (v.min) w.attribute("min", bound(*v.min));
             if (v.max) w.attribute("max", bound(*v.max));
         }

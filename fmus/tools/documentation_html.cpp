@@ -12,11 +12,20 @@ std::string escape(std::string_view text) {
     std::string out;
     for (char c : text) {
         switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            default:
+                out += c;
         }
     }
     return out;
@@ -41,12 +50,12 @@ std::string documentation_html(const Model& model) {
     defaults->reset_to_defaults();
     const auto bytes = std::as_const(*defaults).bytes();
 
-    std::string html = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" +
-                       escape(info.model_name) + "</title>\n<style>body{font-family:sans-serif;max-width:60em;margin:auto}"
-                       "table{border-collapse:collapse}td,th{border:1px solid #999;padding:2px 6px;text-align:left}"
-                       "</style>\n</head>\n<body>\n<h1>" +
-                       escape(info.model_name) + "</h1>\n<p>" + escape(info.description) + "</p>\n" +
-                       info.documentation_html + "\n";
+    std::string html =
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + escape(info.model_name) +
+        "</title>\n<style>body{font-family:sans-serif;max-width:60em;margin:auto}"
+        "table{border-collapse:collapse}td,th{border:1px solid #999;padding:2px 6px;text-align:left}"
+        "</style>\n</head>\n<body>\n<h1>" +
+        escape(info.model_name) + "</h1>\n<p>" + escape(info.description) + "</p>\n" + info.documentation_html + "\n";
     html += "<p>FMI 2.0, Model Exchange and Co-Simulation, binaries for linux64. Model identifier <code>" +
             escape(info.model_identifier) + "</code>, GUID <code>" + description_guid(model) +
             "</code>. Default experiment: " + format_real(info.default_experiment.start_time) + " s to " +

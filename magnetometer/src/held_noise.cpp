@@ -20,7 +20,9 @@ std::uint64_t mix64(std::uint64_t z) {  // the splitmix64 finaliser: a bijection
 }
 
 // Uniform in (0, 1): the top 53 bits, centred in their cell so that 0 is never returned (log(0)).
-double unit_open(std::uint64_t bits) { return (static_cast<double>(bits >> 11) + 0.5) * 0x1.0p-53; }
+double unit_open(std::uint64_t bits) {
+    return (static_cast<double>(bits >> 11) + 0.5) * 0x1.0p-53;
+}
 
 }  // namespace
 

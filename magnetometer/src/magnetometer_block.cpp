@@ -104,7 +104,8 @@ void MagnetometerBlock::check_state() const {
     const auto& d = data();
     fmu::require_bool(d.set_polarity, "set_polarity");
     for (const double n : d.noise) fmu::require_finite(n, "noise");
-    if (std::isnan(d.next_set_reset) || !std::isfinite(d.noise_start)) throw fmu::Error("restored FMU state: an event time is NaN");
+    if (std::isnan(d.next_set_reset) || !std::isfinite(d.noise_start))
+        throw fmu::Error("restored FMU state: an event time is NaN");
     if (d.noise_index < 0 && d.noise_index != no_noise_index)
         throw fmu::Error("restored FMU state: the noise hold interval is negative");
 }
@@ -163,7 +164,9 @@ fmu::EventUpdate MagnetometerBlock::event_update(double t, bool time_event_due) 
     return {};
 }
 
-double MagnetometerBlock::next_time_event() const { return data().next_set_reset; }
+double MagnetometerBlock::next_time_event() const {
+    return data().next_set_reset;
+}
 
 }  // namespace magnetometer
 

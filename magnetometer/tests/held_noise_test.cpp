@@ -41,8 +41,8 @@ TEST(HeldNoise, IndexRefusesTimesBeyondItsLimitInsteadOfOverflowing) {
     EXPECT_THROW(noise_index(1e300, 0.0, 1e-5), fmu::Error);  // (t - t0)/period = 1e305: no int64 holds it
     EXPECT_THROW(noise_index(std::numeric_limits<double>::quiet_NaN(), 0.0, 0.01), fmu::Error);
     EXPECT_THROW(noise_index(std::numeric_limits<double>::infinity(), 0.0, 0.01), fmu::Error);
-    EXPECT_THROW(noise_index(0.0, 0.0, 0.0), fmu::Error);  // 0/0
-    EXPECT_THROW(noise_index(1e11, 0.0, 1e-5), fmu::Error);  // 1e16 > 2^53 ≈ 9.007e15 intervals
+    EXPECT_THROW(noise_index(0.0, 0.0, 0.0), fmu::Error);       // 0/0
+    EXPECT_THROW(noise_index(1e11, 0.0, 1e-5), fmu::Error);     // 1e16 > 2^53 ≈ 9.007e15 intervals
     EXPECT_EQ(noise_index(9e10, 0.0, 1e-5), 9000000000000000);  // 9e15 < 2^53: still exact
 }
 

@@ -13,7 +13,9 @@ namespace {
 constexpr double gauss = tesla_per_gauss;
 const OutputStage ideal{.sensitivity = 1.0 / gauss, .v_null = 2.5, .offset = 0.0, .v_low = 0.0, .v_high = 5.0};
 
-TEST(Hmc2003, ZeroFieldGivesTheNullVoltage) { EXPECT_DOUBLE_EQ(output_voltage(ideal, 0.0, 0.0, 1.0), 2.5); }
+TEST(Hmc2003, ZeroFieldGivesTheNullVoltage) {
+    EXPECT_DOUBLE_EQ(output_voltage(ideal, 0.0, 0.0, 1.0), 2.5);
+}
 
 TEST(Hmc2003, PlusMinusTwoGaussSpanHalfToFourAndAHalfVolts) {
     EXPECT_NEAR(output_voltage(ideal, 2.0 * gauss, 0.0, 1.0), 4.5, 1e-12);

@@ -105,7 +105,7 @@ TEST(MagnetometerBlock, CommandedSetResetFollowsTheInputWithoutTimeEvents) {
     sim.advance_to(0.1);
     EXPECT_TRUE(d.set_polarity);
     EXPECT_NEAR(d.v_out[0], 2.5 + 0.25 - 0.03, 1e-9);  // 2.72 V
-    d.set_reset_command = false;  // the computer pulses the reset strap
+    d.set_reset_command = false;                       // the computer pulses the reset strap
     sim.runner.mark_changed();
     sim.runner.event_iteration();
     EXPECT_FALSE(d.set_polarity);
@@ -191,7 +191,7 @@ TEST(MagnetometerBlock, TableDeclaresEveryFieldOnceWithUnitsAndDescriptions) {
             EXPECT_FALSE(v.unit.empty()) << v.name;
         }
     }
-    EXPECT_EQ(table.by_name("v_out[2]").dependencies->size(), 2u);  // b_filt[2] and set_reset_command
+    EXPECT_EQ(table.by_name("v_out[2]").dependencies->size(), 2u);        // b_filt[2] and set_reset_command
     EXPECT_EQ(table.by_name("der(b_filt[1])").dependencies->size(), 4u);  // b_filt[1] and mag_body[1..3]
 }
 

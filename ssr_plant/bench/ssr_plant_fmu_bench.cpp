@@ -66,12 +66,12 @@ void report(const char* fidelity, double duration, double h, bool held) {
         if (i == 0 || r.wall < best.wall) best = r;
     }
     const auto& s = best.stats;
-    std::printf("%-9s %-5s step %-7g %5.1f s in %8.4f s wall  RTF %8.1f  | comm steps %6ld  PWM (time) events %6lld  "
-                "state events %lld  CVODE steps %7lld  RHS %7lld  restarts %6lld\n",
-                fidelity, held ? "held" : "seed", h, duration, best.wall, duration / best.wall, best.communication_steps,
-                static_cast<long long>(s.time_events), static_cast<long long>(s.state_events),
-                static_cast<long long>(s.steps), static_cast<long long>(s.rhs_evaluations),
-                static_cast<long long>(s.restarts));
+    std::printf(
+        "%-9s %-5s step %-7g %5.1f s in %8.4f s wall  RTF %8.1f  | comm steps %6ld  PWM (time) events %6lld  "
+        "state events %lld  CVODE steps %7lld  RHS %7lld  restarts %6lld\n",
+        fidelity, held ? "held" : "seed", h, duration, best.wall, duration / best.wall, best.communication_steps,
+        static_cast<long long>(s.time_events), static_cast<long long>(s.state_events), static_cast<long long>(s.steps),
+        static_cast<long long>(s.rhs_evaluations), static_cast<long long>(s.restarts));
 }
 
 }  // namespace
@@ -81,7 +81,8 @@ int main(int argc, char** argv) {
     const double step = argc > 2 ? std::atof(argv[2]) : 0.0;
     const std::string_view which = argc > 3 ? argv[3] : "all";
     const bool held = argc > 4 && std::string_view(argv[4]) == "held";
-    const std::vector<double> steps = step > 0.0 ? std::vector<double>{step} : std::vector<double>{0.5e-3, 1e-3, 1e-2, 0.1};
+    const std::vector<double> steps =
+        step > 0.0 ? std::vector<double>{step} : std::vector<double>{0.5e-3, 1e-3, 1e-2, 0.1};
     for (const char* fidelity : {"switching", "averaged"}) {
         if (which != "all" && which != fidelity) continue;
         for (double h : steps) report(fidelity, duration, h, held);

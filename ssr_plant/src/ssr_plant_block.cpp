@@ -14,7 +14,8 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
     using D = SsrPlantData;
     t.input("sun_body", &D::sun_body, "1", "Sun direction in body axes (normalized inside; zero: no direct sun)");
     t.input("irradiance", &D::irradiance, "W/m2", "Direct solar irradiance, 0 in eclipse").min(0.0);
-    t.input("albedo_face", &D::albedo_face, "W/m2", "Earth albedo irradiance on each face (+x, -x, +y, -y, +z, -z)").min(0.0);
+    t.input("albedo_face", &D::albedo_face, "W/m2", "Earth albedo irradiance on each face (+x, -x, +y, -y, +z, -z)")
+        .min(0.0);
 
     t.parameter("fidelity", &D::fidelity, "",
                 "switching: every PWM edge a time event, S/H tracks while the gate is on; averaged: state-space "
@@ -29,35 +30,64 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
                 "regular (controller sampled once per period, pulse of D*T; a 0/1 limit cycle at 300 per volt, "
                 "15.28 V at 3 per volt)")
         .one_of({"latched_natural", "regular"});
-    t.parameter("rated_irradiance", &D::rated_irradiance, "W/m2", "Irradiance of the datasheet ratings (seed: 10 Wp at 1000 W/m2)").min(1.0);
-    t.parameter("panel_isc", &D::panel_isc, "A", "Panel short-circuit current at the rated irradiance (assumed 36-cell 10 Wp panel)").min(1e-3);
+    t.parameter("rated_irradiance", &D::rated_irradiance, "W/m2",
+                "Irradiance of the datasheet ratings (seed: 10 Wp at 1000 W/m2)")
+        .min(1.0);
+    t.parameter("panel_isc", &D::panel_isc, "A",
+                "Panel short-circuit current at the rated irradiance (assumed 36-cell 10 Wp panel)")
+        .min(1e-3);
     t.parameter("panel_voc", &D::panel_voc, "V", "Panel open-circuit voltage (assumed)").min(0.1);
     t.parameter("panel_imp", &D::panel_imp, "A", "Panel current at the maximum-power point (assumed)").min(1e-3);
-    t.parameter("panel_vmp", &D::panel_vmp, "V", "Panel voltage at the maximum-power point (assumed; Vmp Imp = 10 Wp)").min(0.1);
+    t.parameter("panel_vmp", &D::panel_vmp, "V", "Panel voltage at the maximum-power point (assumed; Vmp Imp = 10 Wp)")
+        .min(0.1);
     t.parameter("cells_in_series", &D::cells_in_series, "", "Cells in series per panel").range(1, 1000);
-    t.parameter("panel_shunt_resistance", &D::panel_shunt_resistance, "Ohm", "Shunt resistance R_sh of the panel (seed 000 fig. 2; assumed)").min(1.0);
-    t.parameter("cell_temperature", &D::cell_temperature, "K", "Cell temperature (thermal voltage of eq. 2)").range(100.0, 500.0);
-    t.parameter("or_diode_forward_voltage", &D::or_diode_forward_voltage, "V", "Forward drop of each panel's OR diode (assumed)").range(0.0, 2.0);
-    t.parameter("or_diode_resistance", &D::or_diode_resistance, "Ohm", "Forward slope of the OR diode (assumed)").range(1e-4, 10.0);
-    t.parameter("shunt_switch_resistance", &D::shunt_switch_resistance, "Ohm", "On-resistance of each shunt MOSFET (assumed)").range(1e-4, 10.0);
-    t.parameter("pwm_frequency", &D::pwm_frequency, "Hz", "PWM frequency of the shunt switches (seed: 5 kHz)").range(1.0, 1e6);
+    t.parameter("panel_shunt_resistance", &D::panel_shunt_resistance, "Ohm",
+                "Shunt resistance R_sh of the panel (seed 000 fig. 2; assumed)")
+        .min(1.0);
+    t.parameter("cell_temperature", &D::cell_temperature, "K", "Cell temperature (thermal voltage of eq. 2)")
+        .range(100.0, 500.0);
+    t.parameter("or_diode_forward_voltage", &D::or_diode_forward_voltage, "V",
+                "Forward drop of each panel's OR diode (assumed)")
+        .range(0.0, 2.0);
+    t.parameter("or_diode_resistance", &D::or_diode_resistance, "Ohm", "Forward slope of the OR diode (assumed)")
+        .range(1e-4, 10.0);
+    t.parameter("shunt_switch_resistance", &D::shunt_switch_resistance, "Ohm",
+                "On-resistance of each shunt MOSFET (assumed)")
+        .range(1e-4, 10.0);
+    t.parameter("pwm_frequency", &D::pwm_frequency, "Hz", "PWM frequency of the shunt switches (seed: 5 kHz)")
+        .range(1.0, 1e6);
     t.parameter("bus_capacitance", &D::bus_capacitance, "F", "Bus capacitor (seed: 1500 uF)").min(1e-9);
-    t.parameter("load_resistance", &D::load_resistance, "Ohm", "Resistive load on the bus (seed: 90 Ohm); tunable: a load step")
+    t.parameter("load_resistance", &D::load_resistance, "Ohm",
+                "Resistive load on the bus (seed: 90 Ohm); tunable: a load step")
         .min(1e-3)
         .tunable();
-    t.parameter("bus_voltage_reference", &D::bus_voltage_reference, "V", "Bus voltage reference of the controller (seed: 15 V)").range(0.0, 100.0);
+    t.parameter("bus_voltage_reference", &D::bus_voltage_reference, "V",
+                "Bus voltage reference of the controller (seed: 15 V)")
+        .range(0.0, 100.0);
     t.parameter("controller_gain", &D::controller_gain, "1/V",
                 "Proportional gain, duty per volt of bus error: D = clamp(K (v_bus - v_ref), 0, 1) (seed: 300 per "
                 "volt, offset D/K = 2.8 mV). The regular modulator is unstable above about 12 per volt")
         .range(0.0, 1e5);
     t.parameter("battery_capacity", &D::battery_capacity, "C", "Battery capacity (assumed 2 Ah = 7200 C)").min(1.0);
-    t.parameter("battery_ocv", &D::battery_ocv, "V", "Battery open-circuit voltage at soc = 0, 0.1, ..., 1 (assumed 12 V lead-acid)").range(0.0, 100.0);
-    t.parameter("battery_internal_resistance", &D::battery_internal_resistance, "Ohm", "Battery internal resistance (assumed)").range(1e-4, 100.0);
-    t.parameter("charge_path_resistance", &D::charge_path_resistance, "Ohm", "Current-limiting resistance of the charge path (assumed)").range(1e-3, 1e4);
-    t.parameter("battery_diode_forward_voltage", &D::battery_diode_forward_voltage, "V", "Forward drop of the battery's series (discharge) diode").range(0.0, 2.0);
-    t.parameter("battery_diode_resistance", &D::battery_diode_resistance, "Ohm", "Forward slope of the battery diode").range(1e-4, 10.0);
-    t.parameter("soc_connect", &D::soc_connect, "1", "Hysteresis: connect the battery for charging when soc falls to this").range(0.0, 1.0);
-    t.parameter("soc_disconnect", &D::soc_disconnect, "1", "Hysteresis: disconnect at this state of charge (full)").range(0.0, 1.0);
+    t.parameter("battery_ocv", &D::battery_ocv, "V",
+                "Battery open-circuit voltage at soc = 0, 0.1, ..., 1 (assumed 12 V lead-acid)")
+        .range(0.0, 100.0);
+    t.parameter("battery_internal_resistance", &D::battery_internal_resistance, "Ohm",
+                "Battery internal resistance (assumed)")
+        .range(1e-4, 100.0);
+    t.parameter("charge_path_resistance", &D::charge_path_resistance, "Ohm",
+                "Current-limiting resistance of the charge path (assumed)")
+        .range(1e-3, 1e4);
+    t.parameter("battery_diode_forward_voltage", &D::battery_diode_forward_voltage, "V",
+                "Forward drop of the battery's series (discharge) diode")
+        .range(0.0, 2.0);
+    t.parameter("battery_diode_resistance", &D::battery_diode_resistance, "Ohm", "Forward slope of the battery diode")
+        .range(1e-4, 10.0);
+    t.parameter("soc_connect", &D::soc_connect, "1",
+                "Hysteresis: connect the battery for charging when soc falls to this")
+        .range(0.0, 1.0);
+    t.parameter("soc_disconnect", &D::soc_disconnect, "1", "Hysteresis: disconnect at this state of charge (full)")
+        .range(0.0, 1.0);
     t.parameter("charge_control", &D::charge_control, "",
                 "What the charge hysteresis watches: voltage (default: connect when the battery's terminal voltage "
                 "falls to v_connect and the bus can charge it, disconnect when the charge current tapers to "
@@ -69,8 +99,9 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
     t.parameter("charge_end_current", &D::charge_end_current, "A",
                 "Charge current at which the battery counts as full and is disconnected (assumed C/20 = 0.1 A)")
         .range(1e-6, 100.0);
-    t.parameter("charge_voltage", &D::charge_voltage, "V",
-                "Constant-voltage limit of the charger on the battery terminal (assumed 14.4 V, 2.4 V per cell; 0 = none)")
+    t.parameter(
+         "charge_voltage", &D::charge_voltage, "V",
+         "Constant-voltage limit of the charger on the battery terminal (assumed 14.4 V, 2.4 V per cell; 0 = none)")
         .range(0.0, 100.0);
     t.parameter("charge_polarization", &D::charge_polarization, "Ohm",
                 "K of the charge polarization resistance K soc/(1 - soc + 0.01) (Shepherd/Tremblay form; assumed 0.2; "
@@ -78,30 +109,35 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
         .range(0.0, 100.0);
 
     auto v = t.state("v_cap", &D::v_cap, &D::der_v_cap, "V", "Bus capacitor voltage (the bus voltage)").nominal(15.0);
-    auto q = t.state("soc_state", &D::soc_state, &D::der_soc_state, "1", "Battery state of charge (charge / capacity)").nominal(1.0);
+    auto q = t.state("soc_state", &D::soc_state, &D::der_soc_state, "1", "Battery state of charge (charge / capacity)")
+                 .nominal(1.0);
     v.derivative_depends_on({"v_cap", "soc_state", "sun_body", "irradiance", "albedo_face"});
     q.derivative_depends_on({"v_cap", "soc_state"});
 
-    t.output("i_sh", &D::i_sh, "A", "Sample/hold of the differential Hall current I(+axis) - I(-axis) of the short-circuited panels")
+    t.output("i_sh", &D::i_sh, "A",
+             "Sample/hold of the differential Hall current I(+axis) - I(-axis) of the short-circuited panels")
         .depends_on({"sun_body", "irradiance", "albedo_face"});
     t.output("i_face_sh", &D::i_face_sh, "A",
              "Sample/hold of each face's Hall channel (+x, -x, +y, -y, +z, -z), the current of its short-circuited "
              "panel: tracks while the gate is on, holds while it is off (averaged fidelity: the live current); "
              "i_sh[k] = i_face_sh[2k-1] - i_face_sh[2k]")
         .depends_on({"sun_body", "irradiance", "albedo_face"});
-    t.output("i_sc", &D::i_sc, "A", "Each panel's true short-circuit current").depends_on({"sun_body", "irradiance", "albedo_face"});
+    t.output("i_sc", &D::i_sc, "A", "Each panel's true short-circuit current")
+        .depends_on({"sun_body", "irradiance", "albedo_face"});
     t.output("i_panel", &D::i_panel, "A", "Each panel's current delivered to the bus (averaged over the PWM state)")
         .depends_on({"sun_body", "irradiance", "albedo_face", "v_cap"});
     t.output("v_bus", &D::v_bus, "V", "Bus voltage").depends_on({"v_cap"});
     t.output("v_batt", &D::v_batt, "V", "Battery terminal voltage").depends_on({"v_cap", "soc_state"});
     t.output("i_batt", &D::i_batt, "A", "Battery current, positive charging").depends_on({"v_cap", "soc_state"});
     t.output("soc", &D::soc, "1", "Battery state of charge").depends_on({"soc_state"});
-    t.output("duty", &D::duty, "1", "Shunt duty cycle (fraction of the PWM period the panels are shorted)").depends_on({"v_cap"});
+    t.output("duty", &D::duty, "1", "Shunt duty cycle (fraction of the PWM period the panels are shorted)")
+        .depends_on({"v_cap"});
     t.output("pwm_period", &D::pwm_period, "",
              "Index of the PWM period in progress (the controller's samples so far; switching fidelity; 0 in averaged "
              "fidelity; saturates at 2^31 - 1, 5 days at 5 kHz)")
         .depends_on({});
-    t.output("gate", &D::gate, "", "Shunt MOSFETs on (switching fidelity); always false in averaged fidelity, which has no gate")
+    t.output("gate", &D::gate, "",
+             "Shunt MOSFETs on (switching fidelity); always false in averaged fidelity, which has no gate")
         .depends_on({});
     t.output("i_load", &D::i_load, "A", "Load current").depends_on({"v_cap"});
 }
@@ -139,15 +175,24 @@ fmu::ModelInfo SsrPlantBlock::describe() {
 Parameters SsrPlantBlock::parameters() const {
     const auto& d = data();
     Parameters p{};
-    if (d.fidelity == "switching") p.fidelity = Fidelity::switching;
-    else if (d.fidelity == "averaged") p.fidelity = Fidelity::averaged;
-    else throw fmu::Error("fidelity must be switching or averaged");
-    if (d.angular_response == "cosine") p.angular_response = AngularResponse::cosine;
-    else if (d.angular_response == "kelly") p.angular_response = AngularResponse::kelly;
-    else throw fmu::Error("angular_response must be cosine or kelly");
-    if (d.modulation == "latched_natural") p.modulation = Modulation::latched_natural;
-    else if (d.modulation == "regular") p.modulation = Modulation::regular;
-    else throw fmu::Error("modulation must be latched_natural or regular");
+    if (d.fidelity == "switching")
+        p.fidelity = Fidelity::switching;
+    else if (d.fidelity == "averaged")
+        p.fidelity = Fidelity::averaged;
+    else
+        throw fmu::Error("fidelity must be switching or averaged");
+    if (d.angular_response == "cosine")
+        p.angular_response = AngularResponse::cosine;
+    else if (d.angular_response == "kelly")
+        p.angular_response = AngularResponse::kelly;
+    else
+        throw fmu::Error("angular_response must be cosine or kelly");
+    if (d.modulation == "latched_natural")
+        p.modulation = Modulation::latched_natural;
+    else if (d.modulation == "regular")
+        p.modulation = Modulation::regular;
+    else
+        throw fmu::Error("modulation must be latched_natural or regular");
     p.panel.rated_irradiance = d.rated_irradiance;
     p.panel.short_circuit_current = d.panel_isc;
     p.panel.open_circuit_voltage = d.panel_voc;
@@ -172,9 +217,12 @@ Parameters SsrPlantBlock::parameters() const {
     p.battery.diode_resistance = d.battery_diode_resistance;
     p.battery.soc_connect = d.soc_connect;
     p.battery.soc_disconnect = d.soc_disconnect;
-    if (d.charge_control == "voltage") p.battery.charge_control = ChargeControl::voltage;
-    else if (d.charge_control == "state_of_charge") p.battery.charge_control = ChargeControl::state_of_charge;
-    else throw fmu::Error("charge_control must be voltage or state_of_charge");
+    if (d.charge_control == "voltage")
+        p.battery.charge_control = ChargeControl::voltage;
+    else if (d.charge_control == "state_of_charge")
+        p.battery.charge_control = ChargeControl::state_of_charge;
+    else
+        throw fmu::Error("charge_control must be voltage or state_of_charge");
     p.battery.v_connect = d.v_connect;
     p.battery.charge_end_current = d.charge_end_current;
     p.battery.charge_voltage = d.charge_voltage;
@@ -238,7 +286,9 @@ Inputs SsrPlantBlock::inputs() const {
     return u;
 }
 
-State SsrPlantBlock::state() const { return {data().v_cap, data().soc_state}; }
+State SsrPlantBlock::state() const {
+    return {data().v_cap, data().soc_state};
+}
 
 // The core's discrete state (outside the table) of a state restored from bytes (issue 14 case 8).
 void SsrPlantBlock::check_state() const {

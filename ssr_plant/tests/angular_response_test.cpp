@@ -25,8 +25,7 @@ TEST(SsrCoreAngular, KellyMatchesPatelTableAtTabulatedAngles) {
     const double values[] = {1.000, 0.866, 0.635, 0.450, 0.100, 0.000};
     for (int i = 0; i < 6; ++i) {
         EXPECT_NEAR(kelly_response(angles[i] * deg), values[i], 1e-4) << angles[i];
-        EXPECT_NEAR(angular_response(AngularResponse::kelly, std::cos(angles[i] * deg)), values[i], 1e-4)
-            << angles[i];
+        EXPECT_NEAR(angular_response(AngularResponse::kelly, std::cos(angles[i] * deg)), values[i], 1e-4) << angles[i];
     }
     // Beyond 85° and behind the face: zero.
     for (double b : {85.0, 86.0, 89.9, 90.0, 100.0, 180.0})

@@ -21,7 +21,7 @@ TEST(SsrCoreBattery, OpenCircuitVoltageInterpolatesTheTable) {
     EXPECT_DOUBLE_EQ(open_circuit_voltage(b, 1.0), 12.73);
     EXPECT_NEAR(open_circuit_voltage(b, 0.5), 12.10, 1e-12);
     EXPECT_NEAR(open_circuit_voltage(b, 0.85), 0.5 * (12.50 + 12.62), 1e-12);  // halfway 0.8…0.9
-    EXPECT_DOUBLE_EQ(open_circuit_voltage(b, -0.2), 11.30);  // held outside [0, 1]
+    EXPECT_DOUBLE_EQ(open_circuit_voltage(b, -0.2), 11.30);                    // held outside [0, 1]
     EXPECT_DOUBLE_EQ(open_circuit_voltage(b, 1.3), 12.73);
 }
 
@@ -72,12 +72,14 @@ TEST(SsrCoreBattery, ChargeCurrentTapersWithPolarizationAndStopsAtTheChargeVolta
                           Case{0.997, 0.108737, true}}) {
         const auto pt = battery_operating_point(d, c.soc, 15.0, true);
         EXPECT_NEAR(pt.current, c.current, 1e-6) << c.soc;
-        if (c.limited) EXPECT_NEAR(pt.terminal_voltage, 14.4, 1e-12) << c.soc;
-        else EXPECT_LT(pt.terminal_voltage, 14.4) << c.soc;
+        if (c.limited)
+            EXPECT_NEAR(pt.terminal_voltage, 14.4, 1e-12) << c.soc;
+        else
+            EXPECT_LT(pt.terminal_voltage, 14.4) << c.soc;
     }
     // Discharging through the closed switch (bus below the EMF) sees no polarization: the plain network.
-    EXPECT_NEAR(battery_operating_point(d, 0.5, 11.0, true).current, battery_operating_point(b, 0.5, 11.0, true).current,
-                1e-12);
+    EXPECT_NEAR(battery_operating_point(d, 0.5, 11.0, true).current,
+                battery_operating_point(b, 0.5, 11.0, true).current, 1e-12);
     // Continuous where charging starts (bus = EMF).
     EXPECT_NEAR(battery_operating_point(d, 0.5, 12.10 + 1e-9, true).current, 0.0, 1e-9);
     EXPECT_NEAR(battery_operating_point(d, 0.5, 12.10 - 1e-9, true).current, 0.0, 1e-7);

@@ -12,8 +12,8 @@
 #include <cmath>
 #include <memory>
 
-#include "ssr_plant/plant.hpp"
 #include "earlier_reading.hpp"
+#include "ssr_plant/plant.hpp"
 #include "test_integrator.hpp"
 
 namespace {
@@ -60,14 +60,24 @@ int roots(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
 }
 
 CvodeRun run_cvode(const Model& m, const ssr_plant_test::InputsAt& u, State x0, double t1, double settle) {
-    struct CtxFree { void operator()(SUNContext c) const { SUNContext_Free(&c); } };
+    struct CtxFree {
+        void operator()(SUNContext c) const { SUNContext_Free(&c); }
+    };
     SUNContext sunctx = nullptr;
     if (SUNContext_Create(nullptr, &sunctx) != 0) throw std::runtime_error("SUNContext_Create");
     std::unique_ptr<std::remove_pointer_t<SUNContext>, CtxFree> ctx(sunctx);  // freed last
-    struct VecFree { void operator()(N_Vector v) const { N_VDestroy(v); } };
-    struct MemFree { void operator()(void* p) const { CVodeFree(&p); } };
-    struct MatFree { void operator()(SUNMatrix a) const { SUNMatDestroy(a); } };
-    struct LsFree { void operator()(SUNLinearSolver s) const { SUNLinSolFree(s); } };
+    struct VecFree {
+        void operator()(N_Vector v) const { N_VDestroy(v); }
+    };
+    struct MemFree {
+        void operator()(void* p) const { CVodeFree(&p); }
+    };
+    struct MatFree {
+        void operator()(SUNMatrix a) const { SUNMatDestroy(a); }
+    };
+    struct LsFree {
+        void operator()(SUNLinearSolver s) const { SUNLinSolFree(s); }
+    };
 
     std::unique_ptr<std::remove_pointer_t<N_Vector>, VecFree> y(N_VNew_Serial(2, ctx.get()));
     std::unique_ptr<std::remove_pointer_t<N_Vector>, VecFree> atol(N_VNew_Serial(2, ctx.get()));
@@ -155,12 +165,13 @@ TEST(SsrCoreCvode, SeedScenarioAgreesWithFixedStepRun) {
         State x{15.0, 0.9};
         double sum = 0.0;
         long n = 0;
-        ssr_plant_test::simulate(m, u, x, 0.0, t1, 20e-6, 50e-6, [&](double t, const State& xs, const DiscreteState&, bool out) {
-            if (out && t >= settle) {
-                sum += xs[0];
-                ++n;
-            }
-        });
+        ssr_plant_test::simulate(m, u, x, 0.0, t1, 20e-6, 50e-6,
+                                 [&](double t, const State& xs, const DiscreteState&, bool out) {
+                                     if (out && t >= settle) {
+                                         sum += xs[0];
+                                         ++n;
+                                     }
+                                 });
         const double rk_mean = sum / static_cast<double>(n);
         std::cout << "[cvode " << (f == Fidelity::switching ? "switching" : "averaged") << "] v_bus mean " << cv.v_mean
                   << " (RK4 " << rk_mean << "), min " << cv.v_min << ", max " << cv.v_max << ", CVODE steps "

@@ -19,7 +19,7 @@ TEST(SsrCorePlantFarTime, SteppedOverPeriodsAreSkippedAtOnce) {
     Inputs u;
     u.sun_body = {1, 0, 0};
     u.irradiance = 1367.0;
-    State x{15.001, 0.9};  // just above the set point: a duty inside (0, 1)
+    State x{15.001, 0.9};                               // just above the set point: a duty inside (0, 1)
     const double duty = initialize(m, u, 0.0, x).duty;  // the controller's law is tested elsewhere
     ASSERT_GT(duty, 0.0);
     ASSERT_LT(duty, 1.0);

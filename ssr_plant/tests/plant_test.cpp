@@ -7,9 +7,9 @@
 #include <limits>
 #include <vector>
 
+#include "earlier_reading.hpp"
 #include "reference_formulas.hpp"
 #include "ssr_plant/battery.hpp"
-#include "earlier_reading.hpp"
 #include "test_integrator.hpp"
 
 namespace {
@@ -170,9 +170,10 @@ TEST(SsrCorePlant, SampleHoldTracksWhileGateOnAndHoldsWhileOff) {
     EXPECT_NEAR(y.i_sh[1], -ix, 1e-9);
     EXPECT_NEAR(y.i_sh[2], 0.0, 1e-12);
     // The true short-circuit currents are live regardless of the S/H: +z panel, V = 0, no switch R.
-    EXPECT_NEAR(y.i_sc[4], ssr_plant_test::lambert_panel_current(m.diode.photocurrent_rated * 1.367,
-                                                                 m.diode.saturation_current, m.diode.ideality_voltage,
-                                                                 m.diode.series_resistance, m.diode.shunt_resistance, 0.0),
+    EXPECT_NEAR(y.i_sc[4],
+                ssr_plant_test::lambert_panel_current(m.diode.photocurrent_rated * 1.367, m.diode.saturation_current,
+                                                      m.diode.ideality_voltage, m.diode.series_resistance,
+                                                      m.diode.shunt_resistance, 0.0),
                 1e-9);
     // Next period: the gate closes and the S/H tracks again.
     d = event_update(m, u3, d, T, x).discrete;
@@ -239,15 +240,15 @@ TEST(SsrCorePlant, DerivativesBalanceChargeAndPower) {
                     const State x{v, 0.5};
                     const State dx = derivatives(m, u, d, 0.0, x);
                     const auto g = face_irradiance(m, u);
-                    const double sigma = f == Fidelity::averaged
-                                             ? std::clamp(3.0 * (v - 15.0), 0.0, 1.0)
-                                             : (gate ? 1.0 : 0.0);
+                    const double sigma =
+                        f == Fidelity::averaged ? std::clamp(3.0 * (v - 15.0), 0.0, 1.0) : (gate ? 1.0 : 0.0);
                     double i_pv = 0.0, p_panels = 0.0;
                     for (int k = 0; k < 6; ++k) {
-                        const double i = std::max(0.0, ssr_plant_test::lambert_panel_current(
-                            m.diode.photocurrent_rated * g[k] / 1000.0, m.diode.saturation_current,
-                            m.diode.ideality_voltage, m.diode.series_resistance + 0.05, m.diode.shunt_resistance,
-                            v + 0.6));
+                        const double i =
+                            std::max(0.0, ssr_plant_test::lambert_panel_current(
+                                              m.diode.photocurrent_rated * g[k] / 1000.0, m.diode.saturation_current,
+                                              m.diode.ideality_voltage, m.diode.series_resistance + 0.05,
+                                              m.diode.shunt_resistance, v + 0.6));
                         i_pv += (1 - sigma) * i;
                         p_panels += (1 - sigma) * i * (v + 0.6 + 0.05 * i);  // panel terminal power
                     }
@@ -271,7 +272,9 @@ TEST(SsrCorePlant, DerivativesBalanceChargeAndPower) {
 // The memo of bus-side solves changes nothing: evaluations through it equal fresh ones bit for bit, on
 // the call pattern of CVODE's difference-quotient Jacobian (base, v perturbed, soc perturbed: the third
 // hits the first's entry), repeats, and misses that overwrite the oldest entry.
-bool same_bits(const Evaluation& a, const Evaluation& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same_bits(const Evaluation& a, const Evaluation& b) {
+    return std::memcmp(&a, &b, sizeof a) == 0;
+}
 
 TEST(SsrCorePlant, BusSideMemoGivesBitIdenticalEvaluations) {
     for (Fidelity f : {Fidelity::switching, Fidelity::averaged}) {
@@ -285,8 +288,8 @@ TEST(SsrCorePlant, BusSideMemoGivesBitIdenticalEvaluations) {
         d.gate = false;  // switching: the off-time, when the panels feed the bus (averaged: σ = D < 1)
         BusSideMemo memo;
         const double v0 = 15.27, dv = 1e-7;
-        const std::vector<State> pattern = {{v0, 0.9}, {v0 + dv, 0.9}, {v0, 0.9 + 1e-8}, {v0, 0.9},
-                                            {14.9, 0.5}, {v0 + dv, 0.9}, {14.8, 0.5}, {14.9, 0.5}, {v0, 0.9}};
+        const std::vector<State> pattern = {{v0, 0.9},      {v0 + dv, 0.9}, {v0, 0.9 + 1e-8}, {v0, 0.9}, {14.9, 0.5},
+                                            {v0 + dv, 0.9}, {14.8, 0.5},    {14.9, 0.5},      {v0, 0.9}};
         for (const State& x : pattern) {
             Evaluation fresh{}, memoized{};  // zeroed first: padding compares equal too
             fresh = evaluate(m, l, d, 0.0, x);
@@ -308,18 +311,20 @@ TEST(SsrCorePlant, HysteresisRunHasFiniteSwitchingsAndRespectsFullCharge) {
         p.fidelity = f;
         p.battery.capacity = 1.0;
         const Model m = make_model(p);
-        auto u = [](double t) { return sun_along(1 / std::sqrt(3.0), 1 / std::sqrt(3.0), 1 / std::sqrt(3.0), t < 0.5 ? 0.0 : 1367.0); };
+        auto u = [](double t) {
+            return sun_along(1 / std::sqrt(3.0), 1 / std::sqrt(3.0), 1 / std::sqrt(3.0), t < 0.5 ? 0.0 : 1367.0);
+        };
         State x{15.0, 0.82};
         double soc_max = 0.0, soc_min = 1.0, t_connect = -1, t_disconnect = -1;
         bool prev_conn = false;
         const auto st = ssr_plant_test::simulate(m, u, x, 0.0, 1.2, 20e-6, 1e-4,
-            [&](double t, const State& xs, const DiscreteState& d, bool) {
-                soc_max = std::max(soc_max, xs[state_soc]);
-                soc_min = std::min(soc_min, xs[state_soc]);
-                if (d.charge_connected && !prev_conn) t_connect = t;
-                if (!d.charge_connected && prev_conn) t_disconnect = t;
-                prev_conn = d.charge_connected;
-            });
+                                                 [&](double t, const State& xs, const DiscreteState& d, bool) {
+                                                     soc_max = std::max(soc_max, xs[state_soc]);
+                                                     soc_min = std::min(soc_min, xs[state_soc]);
+                                                     if (d.charge_connected && !prev_conn) t_connect = t;
+                                                     if (!d.charge_connected && prev_conn) t_disconnect = t;
+                                                     prev_conn = d.charge_connected;
+                                                 });
         EXPECT_EQ(st.charge_switchings, 2) << static_cast<int>(f);
         EXPECT_GT(t_connect, 0.0);
         EXPECT_LT(t_connect, 0.5);  // in eclipse
@@ -329,9 +334,8 @@ TEST(SsrCorePlant, HysteresisRunHasFiniteSwitchingsAndRespectsFullCharge) {
         EXPECT_LT(soc_min, 0.8);
         EXPECT_NEAR(x[state_soc], 1.0, 1e-6);  // no discharge after disconnect in the sun
         std::cout << "[hysteresis " << (f == Fidelity::averaged ? "averaged" : "switching") << "] connect at "
-                  << t_connect << " s, disconnect at " << t_disconnect << " s, soc min " << soc_min
-                  << ", steps " << st.steps << ", time events " << st.time_events << ", state events "
-                  << st.state_events << "\n";
+                  << t_connect << " s, disconnect at " << t_disconnect << " s, soc min " << soc_min << ", steps "
+                  << st.steps << ", time events " << st.time_events << ", state events " << st.state_events << "\n";
     }
 }
 
@@ -345,26 +349,28 @@ TEST(SsrCorePlant, VoltageControlledChargeConnectsInTheSunAtTheMinimumVoltageAnd
     p.fidelity = Fidelity::averaged;
     p.battery.capacity = 1.0;
     const Model m = make_model(p);
-    auto u = [](double t) { return sun_along(1 / std::sqrt(3.0), 1 / std::sqrt(3.0), 1 / std::sqrt(3.0), t < 0.5 ? 0.0 : 1367.0); };
+    auto u = [](double t) {
+        return sun_along(1 / std::sqrt(3.0), 1 / std::sqrt(3.0), 1 / std::sqrt(3.0), t < 0.5 ? 0.0 : 1367.0);
+    };
     State x{12.0, 0.82};
     double t_connect = -1, t_disconnect = -1, soc_at_disconnect = -1, soc_max = 0.0;
     bool prev = false;
     const auto st = ssr_plant_test::simulate(m, u, x, 0.0, 3.0, 20e-6, 1e-4,
-        [&](double t, const State& xs, const DiscreteState& d, bool) {
-            soc_max = std::max(soc_max, xs[state_soc]);
-            if (d.charge_connected && !prev) t_connect = t;
-            if (!d.charge_connected && prev) {
-                t_disconnect = t;
-                soc_at_disconnect = xs[state_soc];
-            }
-            prev = d.charge_connected;
-        });
+                                             [&](double t, const State& xs, const DiscreteState& d, bool) {
+                                                 soc_max = std::max(soc_max, xs[state_soc]);
+                                                 if (d.charge_connected && !prev) t_connect = t;
+                                                 if (!d.charge_connected && prev) {
+                                                     t_disconnect = t;
+                                                     soc_at_disconnect = xs[state_soc];
+                                                 }
+                                                 prev = d.charge_connected;
+                                             });
     EXPECT_EQ(st.charge_switchings, 2);
     EXPECT_GT(t_connect, 0.5);   // not in eclipse
     EXPECT_LT(t_connect, 0.51);  // but as soon as the sun is back
     EXPECT_GT(t_disconnect, t_connect);
     EXPECT_NEAR(soc_at_disconnect, 0.998027, 1e-3);
-    EXPECT_LT(soc_max, 0.9995);  // no longer a constant 0.5 A up to 100 %
+    EXPECT_LT(soc_max, 0.9995);                          // no longer a constant 0.5 A up to 100 %
     EXPECT_NEAR(x[state_soc], soc_at_disconnect, 1e-6);  // standby after the disconnect
     std::cout << "[voltage-controlled charge] connect at " << t_connect << " s, disconnect at " << t_disconnect
               << " s at soc " << soc_at_disconnect << "\n";

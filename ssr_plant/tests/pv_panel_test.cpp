@@ -45,12 +45,15 @@ TEST_F(SsrCorePanel, MaximumPowerIsTenWattsPeak) {
     const double r = (std::sqrt(5.0) - 1.0) / 2.0;
     for (int i = 0; i < 100; ++i) {
         const double a = hi - r * (hi - lo), b = lo + r * (hi - lo);
-        if (a * panel_current(m, iph, a) > b * panel_current(m, iph, b)) hi = b; else lo = a;
+        if (a * panel_current(m, iph, a) > b * panel_current(m, iph, b))
+            hi = b;
+        else
+            lo = a;
     }
     const double v = 0.5 * (lo + hi);
     const double p = v * panel_current(m, iph, v);
-    EXPECT_NEAR(p, 10.0, 0.1);           // within 1 % of 10 Wp
-    EXPECT_NEAR(v, vmp, 0.01 * vmp);     // at the datasheet's Vmp
+    EXPECT_NEAR(p, 10.0, 0.1);        // within 1 % of 10 Wp
+    EXPECT_NEAR(v, vmp, 0.01 * vmp);  // at the datasheet's Vmp
     // Coarse scan confirms no higher power elsewhere on the curve.
     for (int i = 0; i <= 2150; ++i) EXPECT_LE(0.01 * i * panel_current(m, iph, 0.01 * i), p + 1e-9);
 }
@@ -66,7 +69,8 @@ TEST_F(SsrCorePanel, SolverAgreesWithLambertWClosedForm) {
                     ip, m.saturation_current, m.ideality_voltage, m.series_resistance + extra, m.shunt_resistance, v);
                 const double got = panel_current(m, ip, v, extra);
                 ASSERT_TRUE(std::isfinite(got));
-                EXPECT_NEAR(got, expected, 1e-9 * (1.0 + std::abs(expected))) << "g=" << g << " v=" << v << " extra=" << extra;
+                EXPECT_NEAR(got, expected, 1e-9 * (1.0 + std::abs(expected)))
+                    << "g=" << g << " v=" << v << " extra=" << extra;
             }
         }
     }

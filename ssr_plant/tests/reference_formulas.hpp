@@ -35,7 +35,8 @@ inline double lambert_w_of_exp(double log_z) {
 //   I = (R_sh (I_ph + I_0) − V) / (R_s + R_sh) − (a / R_s) W(θ),
 //   θ = R_s R_sh I_0 / (a (R_s + R_sh)) · exp(R_sh (R_s I_ph + R_s I_0 + V) / (a (R_s + R_sh))).
 inline double lambert_panel_current(double iph, double i0, double a, double rs, double rsh, double v) {
-    const double log_theta = std::log(rs * rsh * i0 / (a * (rs + rsh))) + rsh * (rs * iph + rs * i0 + v) / (a * (rs + rsh));
+    const double log_theta =
+        std::log(rs * rsh * i0 / (a * (rs + rsh))) + rsh * (rs * iph + rs * i0 + v) / (a * (rs + rsh));
     return (rsh * (iph + i0) - v) / (rs + rsh) - a / rs * lambert_w_of_exp(log_theta);
 }
 

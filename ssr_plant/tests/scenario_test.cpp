@@ -5,8 +5,8 @@
 #include <cmath>
 #include <iostream>
 
-#include "ssr_plant/plant.hpp"
 #include "earlier_reading.hpp"
+#include "ssr_plant/plant.hpp"
 #include "test_integrator.hpp"
 
 namespace {
@@ -38,8 +38,15 @@ ScenarioResult run(Fidelity f, AngularResponse law, double soc0, double t_end = 
         return in;
     };
     // i_sc0: the true short-circuit current of one panel at normal incidence (eq. 5 denominators).
-    const double i_sc0 = outputs(m, [] { Inputs in; in.sun_body = {1, 0, 0}; return in; }(), DiscreteState{}, 0.0,
-                                 State{15.0, 0.9}).i_sc[0];
+    const double i_sc0 = outputs(
+                             m,
+                             [] {
+                                 Inputs in;
+                                 in.sun_body = {1, 0, 0};
+                                 return in;
+                             }(),
+                             DiscreteState{}, 0.0, State{15.0, 0.9})
+                             .i_sc[0];
     const double T = 1.0 / p.pwm_frequency;
     const double settle = 0.05;  // start-up transient excluded
     ScenarioResult r;
@@ -49,43 +56,44 @@ ScenarioResult run(Fidelity f, AngularResponse law, double soc0, double t_end = 
     double pmin = 1e9, pmax = -1e9;
     State x{15.0, soc0};
     r.stats = ssr_plant_test::simulate(m, u, x, 0.0, t_end, 20e-6, 50e-6,
-        [&](double t, const State& xs, const DiscreteState& d, bool is_output) {
-            if (t < settle) return;
-            const double v = xs[state_v_bus];
-            r.v_min = std::min(r.v_min, v);
-            r.v_max = std::max(r.v_max, v);
-            const long k = static_cast<long>(std::floor((t + 1e-12) / T));
-            if (k != period) {
-                if (period >= 0) r.max_period_ripple = std::max(r.max_period_ripple, pmax - pmin);
-                period = k;
-                pmin = pmax = v;
-            }
-            pmin = std::min(pmin, v);
-            pmax = std::max(pmax, v);
-            if (!is_output) return;  // statistics on the uniform 50 µs grid only
-            const auto y = outputs(m, u(t), d, t, xs);
-            r.duty_min = std::min(r.duty_min, y.duty);
-            r.duty_max = std::max(r.duty_max, y.duty);
-            const auto s = sun(t);
-            for (int a = 0; a < 3; ++a) {
-                const double e = y.i_sh[a] / i_sc0 - s[a];
-                sq[a] += e * e;
-                r.err_max[a] = std::max(r.err_max[a], std::abs(e));
-            }
-            r.v_mean += v;
-            ++n;
-        });
+                                       [&](double t, const State& xs, const DiscreteState& d, bool is_output) {
+                                           if (t < settle) return;
+                                           const double v = xs[state_v_bus];
+                                           r.v_min = std::min(r.v_min, v);
+                                           r.v_max = std::max(r.v_max, v);
+                                           const long k = static_cast<long>(std::floor((t + 1e-12) / T));
+                                           if (k != period) {
+                                               if (period >= 0)
+                                                   r.max_period_ripple = std::max(r.max_period_ripple, pmax - pmin);
+                                               period = k;
+                                               pmin = pmax = v;
+                                           }
+                                           pmin = std::min(pmin, v);
+                                           pmax = std::max(pmax, v);
+                                           if (!is_output) return;  // statistics on the uniform 50 µs grid only
+                                           const auto y = outputs(m, u(t), d, t, xs);
+                                           r.duty_min = std::min(r.duty_min, y.duty);
+                                           r.duty_max = std::max(r.duty_max, y.duty);
+                                           const auto s = sun(t);
+                                           for (int a = 0; a < 3; ++a) {
+                                               const double e = y.i_sh[a] / i_sc0 - s[a];
+                                               sq[a] += e * e;
+                                               r.err_max[a] = std::max(r.err_max[a], std::abs(e));
+                                           }
+                                           r.v_mean += v;
+                                           ++n;
+                                       });
     r.v_mean /= static_cast<double>(n);
     for (int a = 0; a < 3; ++a) r.err_rms[a] = std::sqrt(sq[a] / static_cast<double>(n));
     return r;
 }
 
 void print(const char* name, const ScenarioResult& r) {
-    std::cout << "[" << name << "] v_bus mean " << r.v_mean << " V, min " << r.v_min << ", max " << r.v_max
-              << " (p-p " << r.v_max - r.v_min << "), max ripple within one PWM period " << r.max_period_ripple
-              << " V; duty " << r.duty_min << ".." << r.duty_max << "; i_sh/i_sc0 − s: RMS (" << r.err_rms[0] << ", "
-              << r.err_rms[1] << ", " << r.err_rms[2] << "), max (" << r.err_max[0] << ", " << r.err_max[1] << ", "
-              << r.err_max[2] << "); steps " << r.stats.steps << ", time events " << r.stats.time_events << "\n";
+    std::cout << "[" << name << "] v_bus mean " << r.v_mean << " V, min " << r.v_min << ", max " << r.v_max << " (p-p "
+              << r.v_max - r.v_min << "), max ripple within one PWM period " << r.max_period_ripple << " V; duty "
+              << r.duty_min << ".." << r.duty_max << "; i_sh/i_sc0 − s: RMS (" << r.err_rms[0] << ", " << r.err_rms[1]
+              << ", " << r.err_rms[2] << "), max (" << r.err_max[0] << ", " << r.err_max[1] << ", " << r.err_max[2]
+              << "); steps " << r.stats.steps << ", time events " << r.stats.time_events << "\n";
 }
 
 // Hand bounds used below (seed values, defaults of parameters.hpp):

@@ -9,10 +9,10 @@ using namespace ssr_plant;
 TEST(SsrCoreController, DutyIsProportionalPerVoltAndClamped) {
     const Parameters p{};  // gain 300 per volt, reference 15 V (seed)
     EXPECT_EQ(controller_duty(p, 15.0), 0.0);
-    EXPECT_NEAR(controller_duty(p, 15.001), 0.30, 1e-9);   // 300 /V · 1 mV = 0.30
+    EXPECT_NEAR(controller_duty(p, 15.001), 0.30, 1e-9);  // 300 /V · 1 mV = 0.30
     EXPECT_NEAR(controller_duty(p, 15.0025), 0.75, 1e-9);
-    EXPECT_EQ(controller_duty(p, 15.004), 1.0);   // clamped above (from 15 + 1/300 V = 15.0033 V)
-    EXPECT_EQ(controller_duty(p, 12.0), 0.0);     // clamped below
+    EXPECT_EQ(controller_duty(p, 15.004), 1.0);  // clamped above (from 15 + 1/300 V = 15.0033 V)
+    EXPECT_EQ(controller_duty(p, 12.0), 0.0);    // clamped below
 }
 
 TEST(SsrCoreHall, DifferentialCurrentsSubtractOppositeFaces) {

@@ -142,12 +142,12 @@ SeedResult run_seed(const char* fidelity) {
     r.final = run.data();
     r.v_mean /= sunlit;
     for (auto& e : r.err_rms) e = std::sqrt(e / sunlit);
-    std::printf("%s seed 10 s: v_bus mean %.4f min %.4f max %.4f V (samples every 0.5 ms); i_sh/i_sc0 - s: "
-                "rms (%.3e %.3e %.3e) max (%.3e %.3e %.3e), vs applied input max %.2e; eclipse soc slope %.5e /s, "
-                "i_load %.5f A, v_bus at 10 s %.4f V\n",
-                fidelity, r.v_mean, r.v_min, r.v_max, r.err_rms[0], r.err_rms[1], r.err_rms[2], r.err_max[0],
-                r.err_max[1], r.err_max[2], r.held_input_err_max, (r.soc_b - r.soc_a) / (r.t_b - r.t_a), r.i_load_a,
-                r.v_bus_end);
+    std::printf(
+        "%s seed 10 s: v_bus mean %.4f min %.4f max %.4f V (samples every 0.5 ms); i_sh/i_sc0 - s: "
+        "rms (%.3e %.3e %.3e) max (%.3e %.3e %.3e), vs applied input max %.2e; eclipse soc slope %.5e /s, "
+        "i_load %.5f A, v_bus at 10 s %.4f V\n",
+        fidelity, r.v_mean, r.v_min, r.v_max, r.err_rms[0], r.err_rms[1], r.err_rms[2], r.err_max[0], r.err_max[1],
+        r.err_max[2], r.held_input_err_max, (r.soc_b - r.soc_a) / (r.t_b - r.t_a), r.i_load_a, r.v_bus_end);
     return r;
 }
 
@@ -200,7 +200,7 @@ void expect_battery(const SeedResult& r, const char* what) {
     EXPECT_NEAR(slope, predicted, 0.02 * std::abs(predicted)) << what;
     EXPECT_NEAR(slope, -i_hand / r.final.battery_capacity, 0.02 * std::abs(predicted)) << what;
     for (double i : r.i_sh_max_eclipse) EXPECT_EQ(i, 0.0) << what;  // dark panels: no Hall current
-    EXPECT_LT(r.v_bus_end, 12.1) << what;  // battery 12.62 V less its diode (0.6 V) and drops
+    EXPECT_LT(r.v_bus_end, 12.1) << what;                           // battery 12.62 V less its diode (0.6 V) and drops
 }
 
 // The verification, averaged fidelity: 10 s of seed spin, eclipse at 5 s.
@@ -309,7 +309,8 @@ TEST(SsrFmu, EachFaceChannelFollowsItsOwnIllumination) {
             const double c = face_currents(fidelity, law, {1.0, 0.0, 0.0}, 1367.0, {})[0] / 1367.0;
             EXPECT_NEAR(c, 0.62 / 1000.0, 0.01 * 0.62 / 1000.0) << fidelity << " " << law;  // Isc at 1000 W/m²
             const auto i = face_currents(fidelity, law, s, 1367.0, albedo);
-            const AngularResponse f = std::string_view(law) == "kelly" ? AngularResponse::kelly : AngularResponse::cosine;
+            const AngularResponse f =
+                std::string_view(law) == "kelly" ? AngularResponse::kelly : AngularResponse::cosine;
             for (int k = 0; k < 6; ++k) {
                 const double cos_beta = (k % 2 == 0 ? 1.0 : -1.0) * s[k / 2];
                 const double g = 1367.0 * angular_response(f, cos_beta) + albedo[k];

@@ -25,8 +25,8 @@ using InputsAt = std::function<ssr_plant::Inputs(double)>;
 // (t, x, discrete state, is_output_point).
 using Observer = std::function<void(double, const ssr_plant::State&, const ssr_plant::DiscreteState&, bool)>;
 
-inline ssr_plant::State rk4(const ssr_plant::Model& m, const InputsAt& u, const ssr_plant::DiscreteState& d,
-                            double t, const ssr_plant::State& x, double h) {
+inline ssr_plant::State rk4(const ssr_plant::Model& m, const InputsAt& u, const ssr_plant::DiscreteState& d, double t,
+                            const ssr_plant::State& x, double h) {
     using ssr_plant::State;
     auto add = [](const State& a, const State& k, double s) {
         State r;
@@ -79,7 +79,10 @@ inline RunStats simulate(const ssr_plant::Model& m, const InputsAt& u, ssr_plant
             while (hi - lo > 1e-12) {
                 const double mid = 0.5 * (lo + hi);
                 const auto xm = rk4(m, u, d, t, x, mid);
-                if (crossed(z0, ssr_plant::event_indicators(m, u(t + mid), d, t + mid, xm))) hi = mid; else lo = mid;
+                if (crossed(z0, ssr_plant::event_indicators(m, u(t + mid), d, t + mid, xm)))
+                    hi = mid;
+                else
+                    lo = mid;
             }
             x = rk4(m, u, d, t, x, hi);
             t += hi;

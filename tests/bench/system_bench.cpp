@@ -90,7 +90,8 @@ Row run_plant_alone(double stop) {
         const double phi = 1.26 * t, theta = 6.28 * t;
         u = {std::sin(phi) * std::sin(theta), std::cos(phi) * std::sin(theta), std::cos(theta), irradiance};
         du = {1.26 * std::cos(phi) * std::sin(theta) + 6.28 * std::sin(phi) * std::cos(theta),
-              -1.26 * std::sin(phi) * std::sin(theta) + 6.28 * std::cos(phi) * std::cos(theta), -6.28 * std::sin(theta), 0.0};
+              -1.26 * std::sin(phi) * std::sin(theta) + 6.28 * std::cos(phi) * std::cos(theta), -6.28 * std::sin(theta),
+              0.0};
     };
     std::array<double, 4> u{}, du{};
     inputs(0.0, u, du);
@@ -117,9 +118,9 @@ void print(const Row& r) {
     const auto& s = r.stats;
     long events = 0;
     for (const auto& c : s.components) events += c.events;
-    std::printf("| %s | %.0f | %.3f | %.3f | %.1f | %.1f | %ld | %ld | %ld | %ld | %ld | %ld |\n", r.name.c_str(), r.simulated,
-                r.wall, r.cpu, r.simulated / r.wall, r.simulated / r.cpu, s.integrator_steps, s.rhs_evaluations,
-                s.time_events, events, s.restarts, r.co_simulation_steps);
+    std::printf("| %s | %.0f | %.3f | %.3f | %.1f | %.1f | %ld | %ld | %ld | %ld | %ld | %ld |\n", r.name.c_str(),
+                r.simulated, r.wall, r.cpu, r.simulated / r.wall, r.simulated / r.cpu, s.integrator_steps,
+                s.rhs_evaluations, s.time_events, events, s.restarts, r.co_simulation_steps);
 }
 
 }  // namespace
@@ -129,8 +130,9 @@ int main(int argc, char** argv) {
     const double seed_stop = quick ? 1.0 : 10.0, seed_reference_stop = quick ? 0.2 : 1.0;
     const double orbit = quick ? 600.0 : 5764.0, orbit_reference = quick ? 60.0 : 300.0;
     std::printf("load average before: %s\n\n", load_average().c_str());
-    std::printf("| run | simulated s | wall s | CPU s | RTF (wall) | RTF (CPU) | ME steps | RHS | time events | "
-                "component events | restarts | CS steps |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf(
+        "| run | simulated s | wall s | CPU s | RTF (wall) | RTF (CPU) | ME steps | RHS | time events | "
+        "component events | restarts | CS steps |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     const Row plant = run_plant_alone(seed_stop);
     print(plant);
     const Row seed = run_system("seed_spin.ssd as bundled", "seed_spin.ssd", seed_stop, false);
@@ -143,9 +145,11 @@ int main(int argc, char** argv) {
     print(leo_ref);
     auto rtf = [](const Row& r, bool cpu) { return r.simulated / (cpu ? r.cpu : r.wall); };
     std::printf("\nload average after: %s\n\n", load_average().c_str());
-    std::printf("aim 1: seed_spin RTF %.1f (wall) / %.1f (CPU), aim >= 10; over the plant alone %.2f (wall) / %.2f (CPU), aim >= 0.6\n",
-                rtf(seed, false), rtf(seed, true), rtf(seed, false) / rtf(plant, false), rtf(seed, true) / rtf(plant, true));
+    std::printf(
+        "aim 1: seed_spin RTF %.1f (wall) / %.1f (CPU), aim >= 10; over the plant alone %.2f (wall) / %.2f (CPU), aim "
+        ">= 0.6\n",
+        rtf(seed, false), rtf(seed, true), rtf(seed, false) / rtf(plant, false), rtf(seed, true) / rtf(plant, true));
     std::printf("aim 2: leo_orbit RTF %.0f (wall) / %.0f (CPU), aim >= 1000\n", rtf(leo, false), rtf(leo, true));
-    std::printf("speed-up over the reference execution: seed %.1fx, orbit %.1fx (CPU)\n", rtf(seed, true) / rtf(seed_ref, true),
-                rtf(leo, true) / rtf(leo_ref, true));
+    std::printf("speed-up over the reference execution: seed %.1fx, orbit %.1fx (CPU)\n",
+                rtf(seed, true) / rtf(seed_ref, true), rtf(leo, true) / rtf(leo_ref, true));
 }

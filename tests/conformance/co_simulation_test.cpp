@@ -25,7 +25,8 @@ TEST_P(ConformanceCoSimulation, FullCallSequenceOverDefaultExperiment) {
             std::string text;
             ASSERT_FMI_OK(inst, inst.get_text(v, text));
             if (v.type == VariableType::real) {
-                ASSERT_TRUE(std::isfinite(std::strtod(text.c_str(), nullptr))) << v.name << " = " << text << " after step " << k;
+                ASSERT_TRUE(std::isfinite(std::strtod(text.c_str(), nullptr)))
+                    << v.name << " = " << text << " after step " << k;
             }
         }
     }

@@ -8,8 +8,8 @@
 
 #include "fmi_loader/fmu.hpp"
 #include "fmi_loader/loader_error.hpp"
-#include "fmu_catalog.hpp"
 #include "fmi_session.hpp"
+#include "fmu_catalog.hpp"
 
 namespace conformance {
 
@@ -35,15 +35,16 @@ protected:
 }  // namespace conformance
 
 // Declares a fixture `Name` and runs it over every FMU of the catalog.
-#define CONFORMANCE_SUITE(Name)                                \
-    class Name : public ::conformance::FmuTest {};             \
+#define CONFORMANCE_SUITE(Name)                    \
+    class Name : public ::conformance::FmuTest {}; \
     INSTANTIATE_TEST_SUITE_P(Fmus, Name, ::testing::ValuesIn(::conformance::fmu_files()), ::conformance::fmu_param_name)
 
 namespace conformance {
 // fmi2OK or fmi2Warning passes; anything else fails with the call, the status and the FMU's log.
 inline ::testing::AssertionResult fmi_ok(fmi2Status status, const char* call, Instance& inst) {
     if (status <= fmi2Warning) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << call << " returned " << status_name(status) << "\nFMU log:\n" << inst.log().dump();
+    return ::testing::AssertionFailure() << call << " returned " << status_name(status) << "\nFMU log:\n"
+                                         << inst.log().dump();
 }
 }  // namespace conformance
 

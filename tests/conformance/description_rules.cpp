@@ -10,11 +10,15 @@ using namespace fmi_loader;
 
 int accessor_class(VariableType type) {
     switch (type) {
-    case VariableType::real: return 0;
-    case VariableType::integer:
-    case VariableType::enumeration: return 1;
-    case VariableType::boolean: return 2;
-    case VariableType::string: return 3;
+        case VariableType::real:
+            return 0;
+        case VariableType::integer:
+        case VariableType::enumeration:
+            return 1;
+        case VariableType::boolean:
+            return 2;
+        case VariableType::string:
+            return 3;
     }
     return 4;
 }
@@ -120,7 +124,9 @@ std::string label(const ScalarVariable& v, std::size_t index) {
 
 }  // namespace
 
-bool is_structured_name(std::string_view name) { return NameParser(name).name(); }
+bool is_structured_name(std::string_view name) {
+    return NameParser(name).name();
+}
 
 std::vector<std::string> description_violations(const ModelDescription& md) {
     std::vector<std::string> out;
@@ -129,9 +135,11 @@ std::vector<std::string> description_violations(const ModelDescription& md) {
 
     if (md.guid.empty()) out.push_back("guid is empty");
     if (md.model_exchange && !is_c_identifier(md.model_exchange->model_identifier))
-        out.push_back("ModelExchange modelIdentifier '" + md.model_exchange->model_identifier + "' is not a C identifier");
+        out.push_back("ModelExchange modelIdentifier '" + md.model_exchange->model_identifier +
+                      "' is not a C identifier");
     if (md.co_simulation && !is_c_identifier(md.co_simulation->model_identifier))
-        out.push_back("CoSimulation modelIdentifier '" + md.co_simulation->model_identifier + "' is not a C identifier");
+        out.push_back("CoSimulation modelIdentifier '" + md.co_simulation->model_identifier +
+                      "' is not a C identifier");
     if (const auto& de = md.default_experiment) {
         if (de->start_time && de->stop_time && *de->stop_time <= *de->start_time)
             out.push_back("DefaultExperiment stopTime is not after startTime");
@@ -166,15 +174,19 @@ std::vector<std::string> description_violations(const ModelDescription& md) {
         }
         if (v.variability == Variability::continuous && v.type != VariableType::real)
             out.push_back(who + ": only Real variables may be continuous");
-        const bool start_required = v.initial == Initial::exact || v.initial == Initial::approx || v.causality == Causality::input;
+        const bool start_required =
+            v.initial == Initial::exact || v.initial == Initial::approx || v.causality == Causality::input;
         const bool start_forbidden = v.initial == Initial::calculated || v.causality == Causality::independent;
         if (start_required && !v.start) out.push_back(who + ": start value required (initial/causality) but absent");
-        if (start_forbidden && v.start) out.push_back(who + ": start value given but initial=calculated or independent forbids it");
+        if (start_forbidden && v.start)
+            out.push_back(who + ": start value given but initial=calculated or independent forbids it");
 
         if (v.start) {
-            const bool numeric = v.type == VariableType::real || v.type == VariableType::integer || v.type == VariableType::enumeration;
+            const bool numeric =
+                v.type == VariableType::real || v.type == VariableType::integer || v.type == VariableType::enumeration;
             if (numeric && !v.start_as_real()) out.push_back(who + ": start '" + *v.start + "' is not a number");
-            if (v.type == VariableType::boolean && !v.start_as_boolean()) out.push_back(who + ": start '" + *v.start + "' is not a boolean");
+            if (v.type == VariableType::boolean && !v.start_as_boolean())
+                out.push_back(who + ": start '" + *v.start + "' is not a boolean");
             if (numeric && v.start_as_real()) {
                 const double s = *v.start_as_real();
                 if ((v.min && s < *v.min) || (v.max && s > *v.max)) out.push_back(who + ": start outside [min, max]");
@@ -188,17 +200,22 @@ std::vector<std::string> description_violations(const ModelDescription& md) {
             } else if (!v.display_unit.empty()) {
                 bool found = false;
                 for (const auto& d : unit->display_units) found = found || d.name == v.display_unit;
-                if (!found) out.push_back(who + ": displayUnit '" + v.display_unit + "' is not a DisplayUnit of '" + v.unit + "'");
+                if (!found)
+                    out.push_back(who + ": displayUnit '" + v.display_unit + "' is not a DisplayUnit of '" + v.unit +
+                                  "'");
             }
         }
         if (!v.declared_type.empty()) {
             const SimpleType* t = md.find_type(v.declared_type);
-            if (t && t->type != v.type) out.push_back(who + ": declaredType '" + v.declared_type + "' has another base type");
+            if (t && t->type != v.type)
+                out.push_back(who + ": declaredType '" + v.declared_type + "' has another base type");
         }
         if (v.derivative) {
             if (v.type != VariableType::real) out.push_back(who + ": derivative attribute on a non-Real");
-            if (*v.derivative > n) out.push_back(who + ": derivative index " + std::to_string(*v.derivative) + " out of range");
-            else if (vars[*v.derivative - 1].type != VariableType::real) out.push_back(who + ": derivative points at a non-Real");
+            if (*v.derivative > n)
+                out.push_back(who + ": derivative index " + std::to_string(*v.derivative) + " out of range");
+            else if (vars[*v.derivative - 1].type != VariableType::real)
+                out.push_back(who + ": derivative points at a non-Real");
         }
     }
 
@@ -219,13 +236,14 @@ std::vector<std::string> description_violations(const ModelDescription& md) {
         for (std::size_t d : *u.dependencies) {
             if (!in_range(list, d)) continue;
             const ScalarVariable& k = vars[d - 1];
-            const bool known = k.causality == Causality::input || k.causality == Causality::independent || states.count(d) ||
-                               (initial_unknowns && (k.initial == Initial::exact || k.initial == Initial::approx ||
-                                                     k.causality == Causality::parameter));
+            const bool known =
+                k.causality == Causality::input || k.causality == Causality::independent || states.count(d) ||
+                (initial_unknowns &&
+                 (k.initial == Initial::exact || k.initial == Initial::approx || k.causality == Causality::parameter));
             // Derivatives of states may depend on other InitialUnknowns only in InitialUnknowns.
             if (!known && !initial_unknowns)
-                out.push_back(std::string(list) + ": unknown " + std::to_string(u.index) + " depends on " + std::to_string(d) +
-                              " which is neither input, state nor independent");
+                out.push_back(std::string(list) + ": unknown " + std::to_string(u.index) + " depends on " +
+                              std::to_string(d) + " which is neither input, state nor independent");
         }
     };
     std::set<std::size_t> listed_outputs;
@@ -233,7 +251,8 @@ std::vector<std::string> description_violations(const ModelDescription& md) {
         if (!in_range("Outputs", u.index)) continue;
         if (vars[u.index - 1].causality != Causality::output)
             out.push_back("Outputs: index " + std::to_string(u.index) + " is not causality=output");
-        if (!listed_outputs.insert(u.index).second) out.push_back("Outputs: index " + std::to_string(u.index) + " listed twice");
+        if (!listed_outputs.insert(u.index).second)
+            out.push_back("Outputs: index " + std::to_string(u.index) + " listed twice");
         check_dependencies("Outputs", u, false);
     }
     for (std::size_t i = 0; i < n; ++i)
@@ -244,16 +263,20 @@ std::vector<std::string> description_violations(const ModelDescription& md) {
         if (!in_range("Derivatives", u.index)) continue;
         if (!vars[u.index - 1].derivative)
             out.push_back("Derivatives: index " + std::to_string(u.index) + " has no derivative attribute");
-        if (!listed_derivatives.insert(u.index).second) out.push_back("Derivatives: index " + std::to_string(u.index) + " listed twice");
+        if (!listed_derivatives.insert(u.index).second)
+            out.push_back("Derivatives: index " + std::to_string(u.index) + " listed twice");
         check_dependencies("Derivatives", u, false);
     }
     // InitialUnknowns must list exactly: outputs with initial approx/calculated, calculated
     // parameters, and states and derivatives with initial approx/calculated (section 2.2.8).
     std::set<std::size_t> expected_initial;
-    auto approx_or_calculated = [](const ScalarVariable& v) { return v.initial == Initial::approx || v.initial == Initial::calculated; };
+    auto approx_or_calculated = [](const ScalarVariable& v) {
+        return v.initial == Initial::approx || v.initial == Initial::calculated;
+    };
     for (std::size_t i = 0; i < n; ++i) {
         const ScalarVariable& v = vars[i];
-        if ((v.causality == Causality::output && approx_or_calculated(v)) || v.causality == Causality::calculated_parameter)
+        if ((v.causality == Causality::output && approx_or_calculated(v)) ||
+            v.causality == Causality::calculated_parameter)
             expected_initial.insert(i + 1);
     }
     for (std::size_t d : listed_derivatives) {
@@ -265,13 +288,16 @@ std::vector<std::string> description_violations(const ModelDescription& md) {
     std::set<std::size_t> listed_initial;
     for (const auto& u : md.model_structure.initial_unknowns) {
         if (!in_range("InitialUnknowns", u.index)) continue;
-        if (!listed_initial.insert(u.index).second) out.push_back("InitialUnknowns: index " + std::to_string(u.index) + " listed twice");
+        if (!listed_initial.insert(u.index).second)
+            out.push_back("InitialUnknowns: index " + std::to_string(u.index) + " listed twice");
         check_dependencies("InitialUnknowns", u, true);
     }
     for (std::size_t i : expected_initial)
-        if (!listed_initial.count(i)) out.push_back(label(vars[i - 1], i) + ": missing from ModelStructure/InitialUnknowns");
+        if (!listed_initial.count(i))
+            out.push_back(label(vars[i - 1], i) + ": missing from ModelStructure/InitialUnknowns");
     for (std::size_t i : listed_initial)
-        if (!expected_initial.count(i)) out.push_back(label(vars[i - 1], i) + ": listed in InitialUnknowns but is not an initial unknown");
+        if (!expected_initial.count(i))
+            out.push_back(label(vars[i - 1], i) + ": listed in InitialUnknowns but is not an initial unknown");
     return out;
 }
 

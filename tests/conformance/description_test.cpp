@@ -73,12 +73,16 @@ TEST(ConformanceRules, ConformingDescriptionHasNoViolation) {
 TEST(ConformanceRules, DuplicateNamesAndValueReferencesAreFound) {
     // A duplicate name, or an alias set with two start values, the loader itself refuses (issue 14):
     // the rules never see such a file.
-    EXPECT_THROW(violations_of(R"x(<ScalarVariable name="a" valueReference="1" causality="input"><Real start="0"/></ScalarVariable>
+    EXPECT_THROW(
+        violations_of(
+            R"x(<ScalarVariable name="a" valueReference="1" causality="input"><Real start="0"/></ScalarVariable>
            <ScalarVariable name="a" valueReference="2" causality="input"><Real start="0"/></ScalarVariable>)x"),
-                 fmi_loader::LoaderError);
-    EXPECT_THROW(violations_of(R"x(<ScalarVariable name="a" valueReference="1" causality="input"><Real start="0"/></ScalarVariable>
+        fmi_loader::LoaderError);
+    EXPECT_THROW(
+        violations_of(
+            R"x(<ScalarVariable name="a" valueReference="1" causality="input"><Real start="0"/></ScalarVariable>
            <ScalarVariable name="b" valueReference="1" causality="input"><Real start="0"/></ScalarVariable>)x"),
-                 fmi_loader::LoaderError);
+        fmi_loader::LoaderError);
     // A true alias (one start value) loads; our own FMUs must still not use one.
     const auto v = violations_of(
         R"x(<ScalarVariable name="a" valueReference="1" causality="input"><Real start="0"/></ScalarVariable>
@@ -124,20 +128,23 @@ TEST(ConformanceRules, ModelStructureIndicesAreChecked) {
 }
 
 TEST(ConformanceRules, UndefinedUnitIsFound) {
-    const auto v = violations_of(R"x(<ScalarVariable name="u" valueReference="0" causality="input"><Real start="0" unit="furlong"/></ScalarVariable>)x");
+    const auto v = violations_of(
+        R"x(<ScalarVariable name="u" valueReference="0" causality="input"><Real start="0" unit="furlong"/></ScalarVariable>)x");
     EXPECT_TRUE(mentions(v, "unit 'furlong' is not defined"));
 }
 
 TEST(ConformanceRules, StructuredNameGrammar) {
     // Examples from the structured-name grammar of FMI 2.0.4 section 2.2.9.
-    for (const char* good : {"a", "_a1", "vehicle.engine.speed", "sun_body[1]", "a[1,2].b[3]", "der(x)", "der(a.b[2],2)",
-                             "'quoted name'", "a.'b c'[1]", "'it\\'s'"})
+    for (const char* good : {"a", "_a1", "vehicle.engine.speed", "sun_body[1]", "a[1,2].b[3]", "der(x)",
+                             "der(a.b[2],2)", "'quoted name'", "a.'b c'[1]", "'it\\'s'"})
         EXPECT_TRUE(is_structured_name(good)) << good;
-    for (const char* bad : {"", "1a", "a.", ".a", "a[]", "a[1", "a[x]", "der(x", "der()", "a b", "''", "a..b", "sun_body(1)"}) {
+    for (const char* bad :
+         {"", "1a", "a.", ".a", "a[]", "a[1", "a[x]", "der(x", "der()", "a b", "''", "a..b", "sun_body(1)"}) {
         EXPECT_FALSE(is_structured_name(bad)) << bad;
     }
-    const auto v = violations_of(R"x(<ScalarVariable name="a b" valueReference="0" causality="input"><Real start="0"/></ScalarVariable>)x",
-                                 "", "variableNamingConvention=\"structured\"");
+    const auto v = violations_of(
+        R"x(<ScalarVariable name="a b" valueReference="0" causality="input"><Real start="0"/></ScalarVariable>)x", "",
+        "variableNamingConvention=\"structured\"");
     EXPECT_TRUE(mentions(v, "not a valid structured name"));
 }
 

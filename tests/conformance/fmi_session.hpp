@@ -69,7 +69,8 @@ struct Experiment {
     double start = 0.0, stop = 1.0, step = 0.01;
     std::size_t steps() const;
 };
-Experiment experiment_of(const fmi_loader::ModelDescription& md, double max_seconds = 3.0, std::size_t max_steps = 1000);
+Experiment experiment_of(const fmi_loader::ModelDescription& md, double max_seconds = 3.0,
+                         std::size_t max_steps = 1000);
 
 // Value of every Real output, as bits: "bit-identical" comparisons are exact by construction.
 std::vector<std::uint64_t> real_output_bits(Instance& inst);

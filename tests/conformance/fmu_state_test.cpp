@@ -29,7 +29,9 @@ TEST_P(ConformanceFmuState, RestoredRunIsBitIdentical) {
     auto step = [&](Instance& inst, std::size_t i) {
         return inst.f().fmi2DoStep(inst.c(), ex.start + static_cast<double>(i) * ex.step, ex.step, fmi2True);
     };
-    for (std::size_t i = 0; i < half; ++i) { ASSERT_FMI_OK(a, step(a, i)); }
+    for (std::size_t i = 0; i < half; ++i) {
+        ASSERT_FMI_OK(a, step(a, i));
+    }
 
     fmi2FMUstate state = nullptr;
     ASSERT_FMI_OK(a, f.fmi2GetFMUstate(a.c(), &state));

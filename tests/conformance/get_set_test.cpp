@@ -13,15 +13,18 @@ namespace {
 
 bool settable_before_init(const ScalarVariable& v) {
     // Instantiated: variability != constant with initial exact or approx.
-    return v.variability != Variability::constant && (v.initial == Initial::exact || v.initial == Initial::approx) && v.start;
+    return v.variability != Variability::constant && (v.initial == Initial::exact || v.initial == Initial::approx) &&
+           v.start;
 }
 bool settable_in_init(const ScalarVariable& v) {
     // Initialization Mode: variability != constant with initial exact, or inputs.
-    return v.start && ((v.variability != Variability::constant && v.initial == Initial::exact) || v.causality == Causality::input);
+    return v.start &&
+           ((v.variability != Variability::constant && v.initial == Initial::exact) || v.causality == Causality::input);
 }
 bool settable_after_init(const ScalarVariable& v) {
     // Step complete (CS) / Event Mode (ME): inputs and tunable parameters.
-    return v.start && (v.causality == Causality::input || (v.causality == Causality::parameter && v.variability == Variability::tunable));
+    return v.start && (v.causality == Causality::input ||
+                       (v.causality == Causality::parameter && v.variability == Variability::tunable));
 }
 
 // Numeric equality of a read-back value with the start text it was set from.
@@ -52,11 +55,15 @@ TEST_P(ConformanceGetSet, EveryStateAllowsItsVariables) {
         }
     ASSERT_FMI_OK(inst, f.fmi2EnterInitializationMode(inst.c()));
     for (const auto& v : md().model_variables)
-        if (settable_in_init(v)) { ASSERT_FMI_OK(inst, inst.set_start(v)) << " (initialization) for " << v.name; }
+        if (settable_in_init(v)) {
+            ASSERT_FMI_OK(inst, inst.set_start(v)) << " (initialization) for " << v.name;
+        }
     for (const auto& v : md().model_variables) {
         std::string text;
         ASSERT_FMI_OK(inst, inst.get_text(v, text)) << " (initialization) reading " << v.name;
-        if (settable_in_init(v)) { EXPECT_TRUE(same_value(v, text)) << v.name << " reads " << text << " after set to " << *v.start; }
+        if (settable_in_init(v)) {
+            EXPECT_TRUE(same_value(v, text)) << v.name << " reads " << text << " after set to " << *v.start;
+        }
     }
     ASSERT_FMI_OK(inst, f.fmi2ExitInitializationMode(inst.c()));
 
@@ -67,7 +74,8 @@ TEST_P(ConformanceGetSet, EveryStateAllowsItsVariables) {
             if (v.type == VariableType::real) {
                 EXPECT_FALSE(std::isnan(std::strtod(text.c_str(), nullptr))) << v.name << " is NaN (" << state << ")";
             }
-            if (v.variability == Variability::constant || (v.causality == Causality::parameter && v.variability == Variability::fixed)) {
+            if (v.variability == Variability::constant ||
+                (v.causality == Causality::parameter && v.variability == Variability::fixed)) {
                 EXPECT_TRUE(!v.start || same_value(v, text)) << v.name << " = " << text << " but start " << *v.start;
             }
         }

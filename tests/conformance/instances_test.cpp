@@ -21,7 +21,8 @@ struct Knob {
 Knob choose_knob(const ModelDescription& md) {
     auto pick = [&](auto accept) -> const ScalarVariable* {
         for (const auto& v : md.model_variables)
-            if (accept(v) && v.start && (v.type == VariableType::real || v.type == VariableType::integer) && v.start_as_real())
+            if (accept(v) && v.start && (v.type == VariableType::real || v.type == VariableType::integer) &&
+                v.start_as_real())
                 return &v;
         return nullptr;
     };
@@ -61,7 +62,8 @@ TEST_P(ConformanceInstances, AreIndependent) {
     if (!k.var) GTEST_SKIP() << "no input or parameter with a numeric start value";
     if (k.a == k.b) GTEST_SKIP() << "no second value inside [min, max] for " << k.var->name;
     bool has_output = false;
-    for (const auto& v : md().model_variables) has_output = has_output || (v.causality == Causality::output && v.type == VariableType::real);
+    for (const auto& v : md().model_variables)
+        has_output = has_output || (v.causality == Causality::output && v.type == VariableType::real);
     if (!has_output) GTEST_SKIP() << "no Real output to compare";
     const Experiment ex = experiment_of(md(), 1.0, 200);
     const std::size_t n = ex.steps();
@@ -72,15 +74,16 @@ TEST_P(ConformanceInstances, AreIndependent) {
         ASSERT_FMI_OK(inst, prepare(inst, k, value, ex));
         trace.push_back(real_output_bits(inst));
         for (std::size_t i = 0; i < n; ++i) {
-            ASSERT_FMI_OK(inst, inst.f().fmi2DoStep(inst.c(), ex.start + static_cast<double>(i) * ex.step, ex.step, fmi2True));
+            ASSERT_FMI_OK(
+                inst, inst.f().fmi2DoStep(inst.c(), ex.start + static_cast<double>(i) * ex.step, ex.step, fmi2True));
             trace.push_back(real_output_bits(inst));
         }
     };
     Trace alone_a, alone_b;
     ASSERT_NO_FATAL_FAILURE(separate(k.a, alone_a));
     ASSERT_NO_FATAL_FAILURE(separate(k.b, alone_b));
-    EXPECT_NE(alone_a, alone_b) << "setting " << k.var->name << " to " << k.a << " or " << k.b << " changes no output in "
-                                << n << " steps";
+    EXPECT_NE(alone_a, alone_b) << "setting " << k.var->name << " to " << k.a << " or " << k.b
+                                << " changes no output in " << n << " steps";
 
     Instance a(fmu(), FmuKind::co_simulation, "a");
     Instance b(fmu(), FmuKind::co_simulation, "b");

@@ -27,7 +27,9 @@ bool in_initialization_mode(Instance& inst) {
            inst.f().fmi2EnterInitializationMode(inst.c()) <= fmi2Warning;
 }
 
-bool instantiated(Instance&) { return true; }
+bool instantiated(Instance&) {
+    return true;
+}
 
 // Runs `misuse` on a fresh instance brought to a state by `prepare`; expects `expected` and a log
 // message at least as severe, or only "no crash and not fmi2OK" when `require_log` is false.
@@ -51,7 +53,8 @@ void expect_rejected(Fmu& fmu, FmuKind kind, const Prepare& prepare, const Misus
     if (require_log) {
         EXPECT_EQ(r.status, expected) << what << " returned " << status_name(r.status) << "\nFMU log:\n" << r.log;
         EXPECT_TRUE(r.logged) << what << ": no message of severity >= " << status_name(expected)
-                              << " reached the logger\nFMU log:\n" << r.log;
+                              << " reached the logger\nFMU log:\n"
+                              << r.log;
     } else {
         EXPECT_GE(r.status, fmi2Error) << what << " returned " << status_name(r.status);
     }
@@ -73,59 +76,72 @@ std::uint32_t unused_value_reference(const ModelDescription& md) {
 
 TEST_P(ConformanceMisuse, DoStepBeforeInitialization) {
     if (!md().co_simulation) GTEST_SKIP() << "no CoSimulation";
-    expect_rejected(fmu(), FmuKind::co_simulation, instantiated,
-                    [](Instance& i) { return i.f().fmi2DoStep(i.c(), 0.0, 0.1, fmi2True); }, "fmi2DoStep in Instantiated");
+    expect_rejected(
+        fmu(), FmuKind::co_simulation, instantiated,
+        [](Instance& i) { return i.f().fmi2DoStep(i.c(), 0.0, 0.1, fmi2True); }, "fmi2DoStep in Instantiated");
 }
 
 TEST_P(ConformanceMisuse, DoStepAfterTerminate) {
     if (!md().co_simulation) GTEST_SKIP() << "no CoSimulation";
-    expect_rejected(fmu(), FmuKind::co_simulation,
-                    [](Instance& i) { return initialized(i) && i.f().fmi2Terminate(i.c()) <= fmi2Warning; },
-                    [](Instance& i) { return i.f().fmi2DoStep(i.c(), 0.0, 0.1, fmi2True); }, "fmi2DoStep in Terminated");
+    expect_rejected(
+        fmu(), FmuKind::co_simulation,
+        [](Instance& i) { return initialized(i) && i.f().fmi2Terminate(i.c()) <= fmi2Warning; },
+        [](Instance& i) { return i.f().fmi2DoStep(i.c(), 0.0, 0.1, fmi2True); }, "fmi2DoStep in Terminated");
 }
 
 TEST_P(ConformanceMisuse, ExitInitializationWithoutEnter) {
-    expect_rejected(fmu(), preferred_kind(), instantiated,
-                    [](Instance& i) { return i.f().fmi2ExitInitializationMode(i.c()); }, "fmi2ExitInitializationMode in Instantiated");
+    expect_rejected(
+        fmu(), preferred_kind(), instantiated, [](Instance& i) { return i.f().fmi2ExitInitializationMode(i.c()); },
+        "fmi2ExitInitializationMode in Instantiated");
 }
 
 TEST_P(ConformanceMisuse, GetDerivativesOnCoSimulationInstance) {
     if (!md().co_simulation) GTEST_SKIP() << "no CoSimulation";
-    if (!fmu().library(FmuKind::co_simulation)->fmi2GetDerivatives) GTEST_SKIP() << "binary has no Model Exchange functions";
+    if (!fmu().library(FmuKind::co_simulation)->fmi2GetDerivatives)
+        GTEST_SKIP() << "binary has no Model Exchange functions";
     const std::size_t nx = std::max<std::size_t>(1, md().number_of_continuous_states());
-    expect_rejected(fmu(), FmuKind::co_simulation, initialized,
-                    [nx](Instance& i) {
-                        std::vector<double> dx(nx);
-                        return i.f().fmi2GetDerivatives(i.c(), dx.data(), nx);
-                    },
-                    "fmi2GetDerivatives on a Co-Simulation instance");
+    expect_rejected(
+        fmu(), FmuKind::co_simulation, initialized,
+        [nx](Instance& i) {
+            std::vector<double> dx(nx);
+            return i.f().fmi2GetDerivatives(i.c(), dx.data(), nx);
+        },
+        "fmi2GetDerivatives on a Co-Simulation instance");
 }
 
 TEST_P(ConformanceMisuse, SetFixedParameterAfterInitialization) {
     const ScalarVariable* p = nullptr;
     for (const auto& v : md().model_variables)
-        if (v.causality == Causality::parameter && v.variability == Variability::fixed && v.start) { p = &v; break; }
+        if (v.causality == Causality::parameter && v.variability == Variability::fixed && v.start) {
+            p = &v;
+            break;
+        }
     if (!p) GTEST_SKIP() << "no fixed parameter";
-    expect_rejected(fmu(), preferred_kind(), initialized, [p](Instance& i) { return i.set_start(*p); },
-                    ("setting fixed parameter '" + p->name + "' after initialization").c_str());
+    expect_rejected(
+        fmu(), preferred_kind(), initialized, [p](Instance& i) { return i.set_start(*p); },
+        ("setting fixed parameter '" + p->name + "' after initialization").c_str());
 }
 
 TEST_P(ConformanceMisuse, NullValueReferenceArray) {
     double values[1] = {0.0};
-    expect_rejected(fmu(), preferred_kind(), in_initialization_mode,
-                    [&](Instance& i) { return i.f().fmi2GetReal(i.c(), nullptr, 1, values); }, "fmi2GetReal with vr=NULL, nvr=1");
-    expect_rejected(fmu(), preferred_kind(), in_initialization_mode,
-                    [&](Instance& i) { return i.f().fmi2SetReal(i.c(), nullptr, 1, values); }, "fmi2SetReal with vr=NULL, nvr=1");
+    expect_rejected(
+        fmu(), preferred_kind(), in_initialization_mode,
+        [&](Instance& i) { return i.f().fmi2GetReal(i.c(), nullptr, 1, values); }, "fmi2GetReal with vr=NULL, nvr=1");
+    expect_rejected(
+        fmu(), preferred_kind(), in_initialization_mode,
+        [&](Instance& i) { return i.f().fmi2SetReal(i.c(), nullptr, 1, values); }, "fmi2SetReal with vr=NULL, nvr=1");
 }
 
 TEST_P(ConformanceMisuse, NullValueArray) {
     const ScalarVariable* v = first_real(md());
     if (!v) GTEST_SKIP() << "no Real variable";
     const fmi2ValueReference vr = v->value_reference;
-    expect_rejected(fmu(), preferred_kind(), in_initialization_mode,
-                    [vr](Instance& i) { return i.f().fmi2GetReal(i.c(), &vr, 1, nullptr); }, "fmi2GetReal with value=NULL");
-    expect_rejected(fmu(), preferred_kind(), in_initialization_mode,
-                    [vr](Instance& i) { return i.f().fmi2SetReal(i.c(), &vr, 1, nullptr); }, "fmi2SetReal with value=NULL");
+    expect_rejected(
+        fmu(), preferred_kind(), in_initialization_mode,
+        [vr](Instance& i) { return i.f().fmi2GetReal(i.c(), &vr, 1, nullptr); }, "fmi2GetReal with value=NULL");
+    expect_rejected(
+        fmu(), preferred_kind(), in_initialization_mode,
+        [vr](Instance& i) { return i.f().fmi2SetReal(i.c(), &vr, 1, nullptr); }, "fmi2SetReal with value=NULL");
 }
 
 TEST_P(ConformanceMisuse, NullComponentDoesNotCrash) {
@@ -133,62 +149,93 @@ TEST_P(ConformanceMisuse, NullComponentDoesNotCrash) {
     const fmi2ValueReference vr = 0;
     double value = 0.0;
     const FmuKind kind = preferred_kind();
-    expect_rejected(fmu(), kind, instantiated, [&](Instance& i) { return i.f().fmi2GetReal(nullptr, &vr, 1, &value); },
-                    "fmi2GetReal(NULL component)", false);
-    expect_rejected(fmu(), kind, instantiated, [&](Instance& i) { return i.f().fmi2SetReal(nullptr, &vr, 1, &value); },
-                    "fmi2SetReal(NULL component)", false);
-    expect_rejected(fmu(), kind, instantiated, [](Instance& i) { return i.f().fmi2EnterInitializationMode(nullptr); },
-                    "fmi2EnterInitializationMode(NULL component)", false);
-    expect_rejected(fmu(), kind, instantiated, [](Instance& i) { return i.f().fmi2SetDebugLogging(nullptr, fmi2True, 0, nullptr); },
-                    "fmi2SetDebugLogging(NULL component)", false);
+    expect_rejected(
+        fmu(), kind, instantiated, [&](Instance& i) { return i.f().fmi2GetReal(nullptr, &vr, 1, &value); },
+        "fmi2GetReal(NULL component)", false);
+    expect_rejected(
+        fmu(), kind, instantiated, [&](Instance& i) { return i.f().fmi2SetReal(nullptr, &vr, 1, &value); },
+        "fmi2SetReal(NULL component)", false);
+    expect_rejected(
+        fmu(), kind, instantiated, [](Instance& i) { return i.f().fmi2EnterInitializationMode(nullptr); },
+        "fmi2EnterInitializationMode(NULL component)", false);
+    expect_rejected(
+        fmu(), kind, instantiated, [](Instance& i) { return i.f().fmi2SetDebugLogging(nullptr, fmi2True, 0, nullptr); },
+        "fmi2SetDebugLogging(NULL component)", false);
     if (kind == FmuKind::co_simulation)
-        expect_rejected(fmu(), kind, instantiated, [](Instance& i) { return i.f().fmi2DoStep(nullptr, 0.0, 0.1, fmi2True); },
-                        "fmi2DoStep(NULL component)", false);
+        expect_rejected(
+            fmu(), kind, instantiated, [](Instance& i) { return i.f().fmi2DoStep(nullptr, 0.0, 0.1, fmi2True); },
+            "fmi2DoStep(NULL component)", false);
     // fmi2FreeInstance(NULL) returns nothing; it just must not crash.
-    expect_rejected(fmu(), kind, instantiated, [](Instance& i) { i.f().fmi2FreeInstance(nullptr); return fmi2Error; },
-                    "fmi2FreeInstance(NULL)", false);
+    expect_rejected(
+        fmu(), kind, instantiated,
+        [](Instance& i) {
+            i.f().fmi2FreeInstance(nullptr);
+            return fmi2Error;
+        },
+        "fmi2FreeInstance(NULL)", false);
 }
 
 TEST_P(ConformanceMisuse, UnknownValueReference) {
     const fmi2ValueReference vr = unused_value_reference(md());
-    expect_rejected(fmu(), preferred_kind(), in_initialization_mode,
-                    [vr](Instance& i) { double x; return i.f().fmi2GetReal(i.c(), &vr, 1, &x); }, "fmi2GetReal of an unknown vr");
-    expect_rejected(fmu(), preferred_kind(), in_initialization_mode,
-                    [vr](Instance& i) { return i.set_real(vr, 1.0); }, "fmi2SetReal of an unknown vr");
-    expect_rejected(fmu(), preferred_kind(), in_initialization_mode,
-                    [vr](Instance& i) { fmi2Integer x; return i.f().fmi2GetInteger(i.c(), &vr, 1, &x); }, "fmi2GetInteger of an unknown vr");
+    expect_rejected(
+        fmu(), preferred_kind(), in_initialization_mode,
+        [vr](Instance& i) {
+            double x;
+            return i.f().fmi2GetReal(i.c(), &vr, 1, &x);
+        },
+        "fmi2GetReal of an unknown vr");
+    expect_rejected(
+        fmu(), preferred_kind(), in_initialization_mode, [vr](Instance& i) { return i.set_real(vr, 1.0); },
+        "fmi2SetReal of an unknown vr");
+    expect_rejected(
+        fmu(), preferred_kind(), in_initialization_mode,
+        [vr](Instance& i) {
+            fmi2Integer x;
+            return i.f().fmi2GetInteger(i.c(), &vr, 1, &x);
+        },
+        "fmi2GetInteger of an unknown vr");
 }
 
 TEST_P(ConformanceMisuse, NaNForRealInput) {
     const ScalarVariable* u = nullptr;
     for (const auto& v : md().model_variables)
-        if (v.causality == Causality::input && v.type == VariableType::real) { u = &v; break; }
+        if (v.causality == Causality::input && v.type == VariableType::real) {
+            u = &v;
+            break;
+        }
     if (!u) GTEST_SKIP() << "no Real input";
     const fmi2ValueReference vr = u->value_reference;
-    expect_rejected(fmu(), preferred_kind(), initialized,
-                    [vr](Instance& i) { return i.set_real(vr, std::numeric_limits<double>::quiet_NaN()); },
-                    ("NaN into input '" + u->name + "'").c_str());
+    expect_rejected(
+        fmu(), preferred_kind(), initialized,
+        [vr](Instance& i) { return i.set_real(vr, std::numeric_limits<double>::quiet_NaN()); },
+        ("NaN into input '" + u->name + "'").c_str());
 }
 
 TEST_P(ConformanceMisuse, OutOfRangeParameter) {
     const ScalarVariable* p = nullptr;
     for (const auto& v : md().model_variables)
         if (v.causality == Causality::parameter && (v.min || v.max) && v.start &&
-            (v.type == VariableType::real || v.type == VariableType::integer || v.type == VariableType::enumeration)) { p = &v; break; }
+            (v.type == VariableType::real || v.type == VariableType::integer || v.type == VariableType::enumeration)) {
+            p = &v;
+            break;
+        }
     if (!p) GTEST_SKIP() << "no parameter declares min or max";
     // Just beyond the bound: one unit (or the bound's magnitude) outside.
-    const double beyond = p->max ? *p->max + std::max(1.0, std::fabs(*p->max)) : *p->min - std::max(1.0, std::fabs(*p->min));
+    const double beyond =
+        p->max ? *p->max + std::max(1.0, std::fabs(*p->max)) : *p->min - std::max(1.0, std::fabs(*p->min));
     const fmi2ValueReference vr = p->value_reference;
     const bool real = p->type == VariableType::real;
-    expect_rejected(fmu(), preferred_kind(), instantiated,
-                    [=](Instance& i) { return real ? i.set_real(vr, beyond) : i.set_integer(vr, static_cast<int>(beyond)); },
-                    ("out-of-range value " + std::to_string(beyond) + " into parameter '" + p->name + "'").c_str());
+    expect_rejected(
+        fmu(), preferred_kind(), instantiated,
+        [=](Instance& i) { return real ? i.set_real(vr, beyond) : i.set_integer(vr, static_cast<int>(beyond)); },
+        ("out-of-range value " + std::to_string(beyond) + " into parameter '" + p->name + "'").c_str());
 }
 
 TEST_P(ConformanceMisuse, WrongGuidIsRefused) {
     const FmuKind kind = preferred_kind();
     const IsolatedResult r = run_isolated([&](bool& logged, std::string& log) {
-        Instance inst(fmu(), kind, "wrong_guid", std::string("{00000000-0000-0000-0000-000000000000}-not-") + md().guid);
+        Instance inst(fmu(), kind, "wrong_guid",
+                      std::string("{00000000-0000-0000-0000-000000000000}-not-") + md().guid);
         logged = inst.log().has_since(0, fmi2Error);
         log = inst.log().dump();
         return inst.ok() ? fmi2OK : fmi2Error;

@@ -16,7 +16,9 @@ namespace {
     info = fmi2EventInfo{fmi2True, fmi2False, fmi2False, fmi2False, fmi2False, 0.0};
     for (int i = 0; i < 1000 && info.newDiscreteStatesNeeded && !info.terminateSimulation; ++i) {
         const fmi2Status s = inst.f().fmi2NewDiscreteStates(inst.c(), &info);
-        if (s > fmi2Warning) return ::testing::AssertionFailure() << "fmi2NewDiscreteStates returned " << status_name(s) << "\n" << inst.log().dump();
+        if (s > fmi2Warning)
+            return ::testing::AssertionFailure() << "fmi2NewDiscreteStates returned " << status_name(s) << "\n"
+                                                 << inst.log().dump();
     }
     if (info.newDiscreteStatesNeeded && !info.terminateSimulation)
         return ::testing::AssertionFailure() << "event iteration did not converge in 1000 calls";
@@ -50,9 +52,13 @@ TEST_P(ConformanceModelExchange, FullCallSequenceWithEulerIntegrator) {
     if (nx > 0) {
         ASSERT_FMI_OK(inst, f.fmi2GetContinuousStates(inst.c(), x.data(), nx));
         ASSERT_FMI_OK(inst, f.fmi2GetNominalsOfContinuousStates(inst.c(), nominal.data(), nx));
-        for (double n : nominal) { EXPECT_GT(n, 0.0) << "nominal of a continuous state must be positive"; }
+        for (double n : nominal) {
+            EXPECT_GT(n, 0.0) << "nominal of a continuous state must be positive";
+        }
     }
-    if (nz > 0) { ASSERT_FMI_OK(inst, f.fmi2GetEventIndicators(inst.c(), z_prev.data(), nz)); }
+    if (nz > 0) {
+        ASSERT_FMI_OK(inst, f.fmi2GetEventIndicators(inst.c(), z_prev.data(), nz));
+    }
 
     double t = ex.start;
     const double h = ex.step;
@@ -72,7 +78,9 @@ TEST_P(ConformanceModelExchange, FullCallSequenceWithEulerIntegrator) {
         }
         t = t_next;
         ASSERT_FMI_OK(inst, f.fmi2SetTime(inst.c(), t));
-        if (nx > 0) { ASSERT_FMI_OK(inst, f.fmi2SetContinuousStates(inst.c(), x.data(), nx)); }
+        if (nx > 0) {
+            ASSERT_FMI_OK(inst, f.fmi2SetContinuousStates(inst.c(), x.data(), nx));
+        }
         bool state_event = false;
         if (nz > 0) {
             ASSERT_FMI_OK(inst, f.fmi2GetEventIndicators(inst.c(), z.data(), nz));
@@ -90,8 +98,12 @@ TEST_P(ConformanceModelExchange, FullCallSequenceWithEulerIntegrator) {
             terminated = info.terminateSimulation;
             if (terminated) break;
             ASSERT_FMI_OK(inst, f.fmi2EnterContinuousTimeMode(inst.c()));
-            if (nx > 0) { ASSERT_FMI_OK(inst, f.fmi2GetContinuousStates(inst.c(), x.data(), nx)); }
-            if (nz > 0) { ASSERT_FMI_OK(inst, f.fmi2GetEventIndicators(inst.c(), z.data(), nz)); }
+            if (nx > 0) {
+                ASSERT_FMI_OK(inst, f.fmi2GetContinuousStates(inst.c(), x.data(), nx));
+            }
+            if (nz > 0) {
+                ASSERT_FMI_OK(inst, f.fmi2GetEventIndicators(inst.c(), z.data(), nz));
+            }
         }
         z_prev = z;
     }

@@ -35,7 +35,8 @@ double quaternion_angle_deg(const double a[4], const double b[4]) {
     return 2.0 * std::acos(std::min(1.0, d)) * 180.0 / std::numbers::pi;
 }
 
-Outcome run(const std::string& ssd, double stop, double interval, bool reference, std::vector<std::string> settings = {}) {
+Outcome run(const std::string& ssd, double stop, double interval, bool reference,
+            std::vector<std::string> settings = {}) {
     cosim::SystemOptions options;
     options.fmu_dirs = {PVATT_FMU_DIR};
     options.model_exchange_only = reference;
@@ -54,8 +55,10 @@ Outcome run(const std::string& ssd, double stop, double interval, bool reference
     for (std::size_t k = 0; k < rec.time.size(); ++k) {
         const double real[3] = {rec["env.sun_body[1]"][k], rec["env.sun_body[2]"][k], rec["env.sun_body[3]"][k]};
         const double meas[3] = {rec["est.sun_meas[1]"][k], rec["est.sun_meas[2]"][k], rec["est.sun_meas[3]"][k]};
-        const double qt[4] = {rec["env.q_true[1]"][k], rec["env.q_true[2]"][k], rec["env.q_true[3]"][k], rec["env.q_true[4]"][k]};
-        const double qe[4] = {rec["est.q_est[1]"][k], rec["est.q_est[2]"][k], rec["est.q_est[3]"][k], rec["est.q_est[4]"][k]};
+        const double qt[4] = {rec["env.q_true[1]"][k], rec["env.q_true[2]"][k], rec["env.q_true[3]"][k],
+                              rec["env.q_true[4]"][k]};
+        const double qe[4] = {rec["est.q_est[1]"][k], rec["est.q_est[2]"][k], rec["est.q_est[3]"][k],
+                              rec["est.q_est[4]"][k]};
         o.time.push_back(rec.time[k]);
         o.valid.push_back(rec["est.valid"][k] > 0.5);
         o.sun_error.push_back(o.valid.back() ? angle_deg(real, meas) : 0.0);
@@ -85,11 +88,13 @@ double mean(const std::vector<double>& x) {
 }
 
 // bus_per_sample: the bus compared sample by sample (a modulator without sub-harmonics), else its mean.
-void expect_agreement(const Outcome& fast, const Outcome& ref, bool well_conditioned, double sun_bound, bool bus_per_sample = true) {
+void expect_agreement(const Outcome& fast, const Outcome& ref, bool well_conditioned, double sun_bound,
+                      bool bus_per_sample = true) {
     ASSERT_EQ(fast.time.size(), ref.time.size());
     double worst_sun = 0, worst_attitude = 0, worst_bus = 0, worst_soc = 0;
     for (std::size_t k = 0; k < fast.time.size(); ++k) {
-        ASSERT_NEAR(fast.time[k], ref.time[k], 1e-12);  // the reference stops at PWM edges computed from their own count
+        ASSERT_NEAR(fast.time[k], ref.time[k],
+                    1e-12);  // the reference stops at PWM edges computed from their own count
         ASSERT_EQ(fast.valid[k], ref.valid[k]) << "t = " << fast.time[k];
         worst_sun = std::max(worst_sun, std::abs(fast.sun_error[k] - ref.sun_error[k]));
         worst_attitude = std::max(worst_attitude, std::abs(fast.attitude_error[k] - ref.attitude_error[k]));
@@ -101,7 +106,8 @@ void expect_agreement(const Outcome& fast, const Outcome& ref, bool well_conditi
         EXPECT_LE(worst_attitude, 0.05) << "attitude error, deg";
     }
     for (double p : {0.5, 0.95}) {
-        EXPECT_NEAR(percentile(fast.sun_error, fast.valid, p), percentile(ref.sun_error, ref.valid, p), 0.05) << "sun error percentile " << p;
+        EXPECT_NEAR(percentile(fast.sun_error, fast.valid, p), percentile(ref.sun_error, ref.valid, p), 0.05)
+            << "sun error percentile " << p;
         EXPECT_NEAR(percentile(fast.attitude_error, fast.valid, p), percentile(ref.attitude_error, ref.valid, p), 0.05)
             << "attitude error percentile " << p;
     }

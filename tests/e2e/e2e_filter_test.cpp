@@ -32,8 +32,13 @@ double p95_of(std::vector<double> v) {
 TEST(E2eFilter, SeedSpinFilterNoWorseThanTheQMethod) {
     cosim::SystemOptions options;
     options.fmu_dirs = {PVATT_FMU_DIR};
-    options.settings = {"est.filter=mekf", "est.inertia[1]=1", "est.inertia[5]=1", "est.inertia[9]=0.001",
-                        "est.filter_rate_noise=0.003", "est.filter_sun_sigma=0.002", "est.filter_mag_sigma=1e-7"};
+    options.settings = {"est.filter=mekf",
+                        "est.inertia[1]=1",
+                        "est.inertia[5]=1",
+                        "est.inertia[9]=0.001",
+                        "est.filter_rate_noise=0.003",
+                        "est.filter_sun_sigma=0.002",
+                        "est.filter_mag_sigma=1e-7"};
     cosim::System system(cosim::read_system_description(PVATT_SYSTEMS_DIR "/seed_spin.ssd"), options);
     cosim::ExecutionOptions ex;
     ex.stop_time = 2.0;
@@ -44,7 +49,8 @@ TEST(E2eFilter, SeedSpinFilterNoWorseThanTheQMethod) {
         for (const auto& c : e2e::vec(prefix, 4)) cols.push_back(c);
     for (const auto& prefix : {"est.omega_filt", "env.omega_body"})
         for (const auto& c : e2e::vec(prefix, 3)) cols.push_back(c);
-    for (const char* c : {"est.valid", "est.filter_valid", "est.attitude_bound", "est.filter_resets"}) cols.push_back(c);
+    for (const char* c : {"est.valid", "est.filter_valid", "est.attitude_bound", "est.filter_resets"})
+        cols.push_back(c);
     e2e::Recorder rec(system, cols);
     cosim::Execution(system, ex).run({&rec});
 

@@ -48,9 +48,10 @@ std::pair<double, double> field_direction_error(std::vector<std::string> setting
 TEST(E2eLeoSetReset, PulsesTakeTheMagnetometerOffsetOutOfTheField) {
     const auto [with_median, with_p95] = field_direction_error({});
     const auto [without_median, without_p95] = field_direction_error({"est.mag_set_reset_samples=0"});
-    std::printf("leo_orbit 0-60 s, field-direction error: set/reset every sample median %.3f deg, p95 %.3f deg; "
-                "no pulses median %.3f deg, p95 %.3f deg\n",
-                with_median, with_p95, without_median, without_p95);
+    std::printf(
+        "leo_orbit 0-60 s, field-direction error: set/reset every sample median %.3f deg, p95 %.3f deg; "
+        "no pulses median %.3f deg, p95 %.3f deg\n",
+        with_median, with_p95, without_median, without_p95);
     EXPECT_LT(with_median, 0.4);
     EXPECT_LT(with_p95, 0.6);
     EXPECT_GT(without_median, 2.0);  // the offset's tilt, several degrees

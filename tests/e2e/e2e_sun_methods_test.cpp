@@ -25,7 +25,7 @@ struct SunScore {
     int valid = 0;        // of those, rows with a valid sun vector
     double median = 0.0;  // degrees, over the valid rows
     double p95 = 0.0;
-    double attitude_median = 0.0;  // degrees, q_est against q_true over the valid attitudes
+    double attitude_median = 0.0;    // degrees, q_est against q_true over the valid attitudes
     double rate_error_median = 0.0;  // |rate_mean − |ω|| / |ω| over the rows with a valid rate
     int rate_rows = 0;
 };
@@ -65,13 +65,16 @@ SunScore run_leo(const std::string& method) {
         const double meas[3] = {rec["est.sun_meas[1]"][k], rec["est.sun_meas[2]"][k], rec["est.sun_meas[3]"][k]};
         errors.push_back(e2e::angle_deg(real, meas));
         if (rec["est.valid"][k] > 0.5) {
-            const double qt[4] = {rec["env.q_true[1]"][k], rec["env.q_true[2]"][k], rec["env.q_true[3]"][k], rec["env.q_true[4]"][k]};
-            const double qe[4] = {rec["est.q_est[1]"][k], rec["est.q_est[2]"][k], rec["est.q_est[3]"][k], rec["est.q_est[4]"][k]};
+            const double qt[4] = {rec["env.q_true[1]"][k], rec["env.q_true[2]"][k], rec["env.q_true[3]"][k],
+                                  rec["env.q_true[4]"][k]};
+            const double qe[4] = {rec["est.q_est[1]"][k], rec["est.q_est[2]"][k], rec["est.q_est[3]"][k],
+                                  rec["est.q_est[4]"][k]};
             attitude_errors.push_back(cosim::attitude_error_degrees(qt, qe));
         }
         if (rec["est.rate_valid"][k] > 0.5) {
             // Torque-free: |ω| changes little over the 4-minute window, so the value now is the reference.
-            const double w = std::hypot(rec["env.omega_body[1]"][k], rec["env.omega_body[2]"][k], rec["env.omega_body[3]"][k]);
+            const double w =
+                std::hypot(rec["env.omega_body[1]"][k], rec["env.omega_body[2]"][k], rec["env.omega_body[3]"][k]);
             rate_errors.push_back(std::abs(rec["est.rate_mean"][k] - w) / w);
         }
     }
@@ -83,10 +86,11 @@ SunScore run_leo(const std::string& method) {
         score.median = errors[errors.size() / 2];
         score.p95 = errors[std::min(errors.size() - 1, errors.size() * 95 / 100)];
     }
-    std::printf("LEO 0-1800 s, sun_method %s: %d lit rows, %d valid; sun error median %.2f deg, p95 %.2f deg; "
-                "attitude median %.2f deg; eq. 4 rate (60 s x 4) rows %d, median relative error %.1f %%\n",
-                method.c_str(), score.lit, score.valid, score.median, score.p95, score.attitude_median,
-                score.rate_rows, 100.0 * score.rate_error_median);
+    std::printf(
+        "LEO 0-1800 s, sun_method %s: %d lit rows, %d valid; sun error median %.2f deg, p95 %.2f deg; "
+        "attitude median %.2f deg; eq. 4 rate (60 s x 4) rows %d, median relative error %.1f %%\n",
+        method.c_str(), score.lit, score.valid, score.median, score.p95, score.attitude_median, score.rate_rows,
+        100.0 * score.rate_error_median);
     return score;
 }
 

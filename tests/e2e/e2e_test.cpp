@@ -12,9 +12,9 @@
 
 #include "execution.hpp"
 #include "plot_command.hpp"
+#include "recorder.hpp"
 #include "system.hpp"
 #include "system_description.hpp"
-#include "recorder.hpp"
 
 namespace {
 
@@ -65,8 +65,10 @@ TEST(E2eSeedSpin, BusHeldSunAcquiredAttitudeEstimated) {
         if (rec["est.valid"][k] < 0.5) continue;
         ++valid;
         worst_sun = std::max(worst_sun, angle_deg(real, meas));
-        const double qt[4] = {rec["env.q_true[1]"][k], rec["env.q_true[2]"][k], rec["env.q_true[3]"][k], rec["env.q_true[4]"][k]};
-        const double qe[4] = {rec["est.q_est[1]"][k], rec["est.q_est[2]"][k], rec["est.q_est[3]"][k], rec["est.q_est[4]"][k]};
+        const double qt[4] = {rec["env.q_true[1]"][k], rec["env.q_true[2]"][k], rec["env.q_true[3]"][k],
+                              rec["env.q_true[4]"][k]};
+        const double qe[4] = {rec["est.q_est[1]"][k], rec["est.q_est[2]"][k], rec["est.q_est[3]"][k],
+                              rec["est.q_est[4]"][k]};
         worst_attitude = std::max(worst_attitude, cosim::attitude_error_degrees(qt, qe));
     }
     EXPECT_GE(valid, 35);  // the sun is always up in the seed scenario
@@ -120,13 +122,15 @@ TEST(E2eLeoOrbit, EclipseInvalidatesTheEstimateAndDrainsTheBattery) {
             EXPECT_GT(rec["plant.v_bus"][k], 14.8) << "t = " << rec.time[k];
             if (valid) {
                 ++lit_valid;
-                const double qt[4] = {rec["env.q_true[1]"][k], rec["env.q_true[2]"][k], rec["env.q_true[3]"][k], rec["env.q_true[4]"][k]};
-                const double qe[4] = {rec["est.q_est[1]"][k], rec["est.q_est[2]"][k], rec["est.q_est[3]"][k], rec["est.q_est[4]"][k]};
+                const double qt[4] = {rec["env.q_true[1]"][k], rec["env.q_true[2]"][k], rec["env.q_true[3]"][k],
+                                      rec["env.q_true[4]"][k]};
+                const double qe[4] = {rec["est.q_est[1]"][k], rec["est.q_est[2]"][k], rec["est.q_est[3]"][k],
+                                      rec["est.q_est[4]"][k]};
                 errors.push_back(cosim::attitude_error_degrees(qt, qe));
             }
         }
     }
-    ASSERT_GT(dark, 20);  // eclipse was reached
+    ASSERT_GT(dark, 20);                // eclipse was reached
     EXPECT_GT(lit_valid, lit * 3 / 4);  // lit and not parallel: mostly valid
     // soc falls at the rate the load predicts (charge switch open above soc 0.8; no self-discharge).
     const double rate = (soc_last - soc_enter) / (t_last - t_enter);
@@ -138,6 +142,8 @@ TEST(E2eLeoOrbit, EclipseInvalidatesTheEstimateAndDrainsTheBattery) {
     const double median = errors[errors.size() / 2];
     EXPECT_LT(median, 20.0);
     RecordProperty("median_attitude_error_deg", std::to_string(median));
-    std::printf("LEO: %d dark, %d lit (%d valid) samples; median attitude error %.2f deg, 90th pct %.2f deg; soc rate %.3e /s vs %.3e\n",
-                dark, lit, lit_valid, median, errors[errors.size() * 9 / 10], rate, -i_load / 7200.0);
+    std::printf(
+        "LEO: %d dark, %d lit (%d valid) samples; median attitude error %.2f deg, 90th pct %.2f deg; soc rate %.3e /s "
+        "vs %.3e\n",
+        dark, lit, lit_valid, median, errors[errors.size() * 9 / 10], rate, -i_load / 7200.0);
 }

@@ -43,7 +43,7 @@ struct Recorder : cosim::Observer {
                 return static_cast<const fmi_loader::ScalarVariable*>(nullptr);
             }();
             values[names[i]].push_back(v->type == fmi_loader::VariableType::real ? inst.get_real(refs[i].second)
-                                                                                  : std::stod(inst.get_as_text(*v)));
+                                                                                 : std::stod(inst.get_as_text(*v)));
         }
     }
     const std::vector<double>& operator[](const std::string& n) const { return values.at(n); }
@@ -77,6 +77,5 @@ inline std::vector<std::string> columns() {
     for (const auto& n : {"est.valid", "est.samples", "plant.v_bus", "plant.soc", "plant.i_batt"}) c.push_back(n);
     return c;
 }
-
 
 }  // namespace e2e

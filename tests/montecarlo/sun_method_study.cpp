@@ -99,7 +99,7 @@ attitude_estimator::SunMethodConfig<double> method_config(const SceneConfig& sce
     c.method = method;
     c.i_face_norm.fill(i_face_norm);
     c.response = scene.response == ssr_plant::AngularResponse::kelly ? panel_response::kelly<double>()
-                                                                      : panel_response::cosine<double>();
+                                                                     : panel_response::cosine<double>();
     return c;
 }
 

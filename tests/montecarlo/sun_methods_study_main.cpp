@@ -17,10 +17,13 @@ int main(int argc, char** argv) {
     app.add_option("--samples", samples, "Scenes per case (uniform sun directions in body axes)")
         ->check(CLI::Range(std::size_t{1}, std::size_t{100000000}));
     app.add_option("--seed", seed, "Seed of the scene generator");
-    app.add_option("--bits", bits, "A/D converter resolution of the face currents (0 = ideal)")->check(CLI::Range(0u, 24u));
+    app.add_option("--bits", bits, "A/D converter resolution of the face currents (0 = ideal)")
+        ->check(CLI::Range(0u, 24u));
     CLI11_PARSE(app, argc, argv);
 
-    std::printf("| panels | albedo | method | valid | mean ° | median ° | 95th pct ° | max ° | scenes with a face rejected |\n");
+    std::printf(
+        "| panels | albedo | method | valid | mean ° | median ° | 95th pct ° | max ° | scenes with a face rejected "
+        "|\n");
     std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
     for (auto response : {ssr_plant::AngularResponse::kelly, ssr_plant::AngularResponse::cosine}) {
         for (bool albedo : {false, true}) {
@@ -36,10 +39,10 @@ int main(int argc, char** argv) {
             }
             for (const auto& s : montecarlo::run_study(scene, samples, seed)) {
                 std::printf("| %s | %s | %s | %.2f %% | %.3f | %.3f | %.3f | %.3f | %zu |\n",
-                            response == ssr_plant::AngularResponse::kelly ? "Kelly" : "cosine",
-                            albedo ? "0.3" : "off", attitude_estimator::sun_method_name(s.method),
-                            100.0 * static_cast<double>(s.valid) / static_cast<double>(s.samples), s.mean_deg, s.median_deg,
-                            s.p95_deg, s.max_deg, s.faces_rejected);
+                            response == ssr_plant::AngularResponse::kelly ? "Kelly" : "cosine", albedo ? "0.3" : "off",
+                            attitude_estimator::sun_method_name(s.method),
+                            100.0 * static_cast<double>(s.valid) / static_cast<double>(s.samples), s.mean_deg,
+                            s.median_deg, s.p95_deg, s.max_deg, s.faces_rejected);
             }
         }
     }

@@ -14,7 +14,9 @@ namespace montecarlo {
 
 namespace {
 
-std::array<double, 3> to_array(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+std::array<double, 3> to_array(const Eigen::Vector3d& v) {
+    return {v.x(), v.y(), v.z()};
+}
 
 // The sun sits on the ECI +x axis at 1 AU: with the attitude uniformly random, the sun direction in body
 // axes is uniform on the sphere whatever the sun's inertial direction is.
@@ -22,8 +24,7 @@ const Eigen::Vector3d kSunEci = Eigen::Vector3d::UnitX();
 
 }  // namespace
 
-SceneGenerator::SceneGenerator(const SceneConfig& config, std::uint64_t seed)
-    : config_(config), state_(seed) {
+SceneGenerator::SceneGenerator(const SceneConfig& config, std::uint64_t seed) : config_(config), state_(seed) {
     ssr_plant::Parameters p;
     p.fidelity = ssr_plant::Fidelity::averaged;
     p.angular_response = config.response;

@@ -14,12 +14,12 @@ namespace montecarlo {
 
 struct SceneConfig {
     ssr_plant::AngularResponse response = ssr_plant::AngularResponse::kelly;  // the plant's panels
-    bool albedo = true;            // Earth albedo on the faces (environment's Lambertian sphere model)
-    double reflectivity = 0.3;     // Earth's mean Bond albedo
-    double altitude = 570e3;       // m
-    double irradiance = 1367.0;    // W/m², direct sun (seed 000 §4)
-    unsigned adc_bits = 12;        // the estimator's converters (TMS320F2808), 0 = ideal
-    double adc_max = 1.2;          // A, full scale of the per-face current channels (0 … adc_max)
+    bool albedo = true;          // Earth albedo on the faces (environment's Lambertian sphere model)
+    double reflectivity = 0.3;   // Earth's mean Bond albedo
+    double altitude = 570e3;     // m
+    double irradiance = 1367.0;  // W/m², direct sun (seed 000 §4)
+    unsigned adc_bits = 12;      // the estimator's converters (TMS320F2808), 0 = ideal
+    double adc_max = 1.2;        // A, full scale of the per-face current channels (0 … adc_max)
 };
 
 struct Scene {

@@ -22,359 +22,361 @@ using VecN = Eigen::Matrix<T, kMekfStates, 1>;
 
 template <class T>
 V3<T> v3(const Vec3<T>& v) {
-  return V3<T>(v[0], v[1], v[2]);
+    return V3<T>(v[0], v[1], v[2]);
 }
 
 template <class T>
 Mat3<T> skew(const V3<T>& v) {
-  Mat3<T> m;
-  m << T(0), -v.z(), v.y(), v.z(), T(0), -v.x(), -v.y(), v.x(), T(0);
-  return m;
+    Mat3<T> m;
+    m << T(0), -v.z(), v.y(), v.z(), T(0), -v.x(), -v.y(), v.x(), T(0);
+    return m;
 }
 
 template <class T>
 Mat3<T> matrix_of(const Quaternion<T>& q) {
-  const Matrix3RowMajor<T> a = attitude_matrix(q);
-  return Eigen::Map<const Eigen::Matrix<T, 3, 3, Eigen::RowMajor>>(a.data());
+    const Matrix3RowMajor<T> a = attitude_matrix(q);
+    return Eigen::Map<const Eigen::Matrix<T, 3, 3, Eigen::RowMajor>>(a.data());
 }
 
 // The quaternion product in Shuster's order, A(p ⊗ q) = A(p) A(q) for the attitude matrix of
 // attitude_matrix.hpp: p ⊗ q = [p_w Q + q_w P − P × Q; p_w q_w − P·Q].
 template <class T>
 Quaternion<T> compose(const Quaternion<T>& p, const Quaternion<T>& q) {
-  return {p.w * q.x + q.w * p.x - (p.y * q.z - p.z * q.y), p.w * q.y + q.w * p.y - (p.z * q.x - p.x * q.z),
-          p.w * q.z + q.w * p.z - (p.x * q.y - p.y * q.x), p.w * q.w - (p.x * q.x + p.y * q.y + p.z * q.z)};
+    return {p.w * q.x + q.w * p.x - (p.y * q.z - p.z * q.y), p.w * q.y + q.w * p.y - (p.z * q.x - p.x * q.z),
+            p.w * q.z + q.w * p.z - (p.x * q.y - p.y * q.x), p.w * q.w - (p.x * q.x + p.y * q.y + p.z * q.z)};
 }
 
 template <class T>
 Quaternion<T> normalized(const Quaternion<T>& q) {
-  const T n = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
-  const T s = (q.w < T(0) ? T(-1) : T(1)) / n;
-  return {q.x * s, q.y * s, q.z * s, q.w * s};
+    const T n = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+    const T s = (q.w < T(0) ? T(-1) : T(1)) / n;
+    return {q.x * s, q.y * s, q.z * s, q.w * s};
 }
 
 // The quaternion of the rotation vector φ: A(rotation(φ)) = exp(−[φ×]), the turn of the body frame by φ.
 template <class T>
 Quaternion<T> rotation(const V3<T>& phi) {
-  const T angle = phi.norm();
-  const T half = angle / T(2);
-  // sin(half)/angle, by its series near 0 (relative error below 1e-16 at these sizes).
-  const T k = angle < T(1e-4) ? T(0.5) - angle * angle / T(48) : std::sin(half) / angle;
-  return {phi.x() * k, phi.y() * k, phi.z() * k, std::cos(half)};
+    const T angle = phi.norm();
+    const T half = angle / T(2);
+    // sin(half)/angle, by its series near 0 (relative error below 1e-16 at these sizes).
+    const T k = angle < T(1e-4) ? T(0.5) - angle * angle / T(48) : std::sin(half) / angle;
+    return {phi.x() * k, phi.y() * k, phi.z() * k, std::cos(half)};
 }
 
 // The rotation vector φ of q (the inverse of rotation()), angle in [0, π].
 template <class T>
 V3<T> rotation_vector(const Quaternion<T>& q) {
-  const T sign = q.w < T(0) ? T(-1) : T(1);
-  const V3<T> v(q.x * sign, q.y * sign, q.z * sign);
-  const T s = v.norm();
-  if (s < T(1e-12)) return T(2) * v;
-  return v * (T(2) * std::atan2(s, q.w * sign) / s);
+    const T sign = q.w < T(0) ? T(-1) : T(1);
+    const V3<T> v(q.x * sign, q.y * sign, q.z * sign);
+    const T s = v.norm();
+    if (s < T(1e-12)) return T(2) * v;
+    return v * (T(2) * std::atan2(s, q.w * sign) / s);
 }
 
 // ∫₀ʰ exp(−[ω u×]) du: how a rate error turns into attitude error over one step of a turning body.
 template <class T>
 Mat3<T> rate_to_attitude(const V3<T>& omega, T h) {
-  const Mat3<T> w = skew(omega);
-  const T n = omega.norm();
-  const T theta = n * h;
-  if (theta < T(1e-3)) return h * Mat3<T>::Identity() - h * h / T(2) * w + h * h * h / T(6) * w * w;
-  return h * Mat3<T>::Identity() - (T(1) - std::cos(theta)) / (n * n) * w + (h - std::sin(theta) / n) / (n * n) * w * w;
+    const Mat3<T> w = skew(omega);
+    const T n = omega.norm();
+    const T theta = n * h;
+    if (theta < T(1e-3)) return h * Mat3<T>::Identity() - h * h / T(2) * w + h * h * h / T(6) * w * w;
+    return h * Mat3<T>::Identity() - (T(1) - std::cos(theta)) / (n * n) * w +
+           (h - std::sin(theta) / n) / (n * n) * w * w;
 }
 
 template <class T>
 bool has_inertia(const MekfConfig<T>& c) {
-  for (T v : c.inertia)
-    if (v != T(0)) return true;
-  return false;
+    for (T v : c.inertia)
+        if (v != T(0)) return true;
+    return false;
 }
 
 template <class T>
 struct Euler {
-  Mat3<T> j;
-  Mat3<T> j_inv;
-  V3<T> rate(const V3<T>& w) const { return j_inv * (-w.cross(j * w)); }
-  // ∂ω̇/∂ω = J⁻¹ ([(Jω)×] − [ω×] J)
-  Mat3<T> jacobian(const V3<T>& w) const { return j_inv * (skew<T>(j * w) - skew(w) * j); }
+    Mat3<T> j;
+    Mat3<T> j_inv;
+    V3<T> rate(const V3<T>& w) const { return j_inv * (-w.cross(j * w)); }
+    // ∂ω̇/∂ω = J⁻¹ ([(Jω)×] − [ω×] J)
+    Mat3<T> jacobian(const V3<T>& w) const { return j_inv * (skew<T>(j * w) - skew(w) * j); }
 };
 
 template <class T>
 MatN<T> map_p(const MekfState<T>& s) {
-  return Eigen::Map<const MatN<T>>(s.p.data());
+    return Eigen::Map<const MatN<T>>(s.p.data());
 }
 
 template <class T>
 void store_p(MekfState<T>& s, const MatN<T>& p) {
-  const MatN<T> sym = T(0.5) * (p + p.transpose());
-  Eigen::Map<MatN<T>>(s.p.data()) = sym;
+    const MatN<T> sym = T(0.5) * (p + p.transpose());
+    Eigen::Map<MatN<T>>(s.p.data()) = sym;
 }
 
 // Applies an error-state correction to the estimate (the multiplicative reset of the attitude).
 template <class T>
 void apply(MekfState<T>& s, const VecN<T>& dx) {
-  s.q = normalized(compose(rotation<T>(dx.template segment<3>(kMekfAttitude)), s.q));
-  for (int i = 0; i < 3; ++i) {
-    s.omega[i] += dx(kMekfRate + i);
-    s.mag_offset[i] += dx(kMekfOffset + i);
-  }
-  s.panel_scale += dx(kMekfScale);
+    s.q = normalized(compose(rotation<T>(dx.template segment<3>(kMekfAttitude)), s.q));
+    for (int i = 0; i < 3; ++i) {
+        s.omega[i] += dx(kMekfRate + i);
+        s.mag_offset[i] += dx(kMekfOffset + i);
+    }
+    s.panel_scale += dx(kMekfScale);
 }
 
 // One linear update with measurement residual y (M components), Jacobian H and noise covariance R,
 // gated by the normalized innovation squared; Joseph form for the covariance.
 template <class T, int M>
-MekfUpdate<T> linear_update(MekfState<T>& s, const Eigen::Matrix<T, M, 1>& y,
-                            const Eigen::Matrix<T, M, kMekfStates>& h, const Eigen::Matrix<T, M, M>& r, T gate) {
-  MekfUpdate<T> u;
-  if (!y.allFinite() || !h.allFinite()) return u;
-  const MatN<T> p = map_p(s);
-  const Eigen::Matrix<T, kMekfStates, M> pht = p.lazyProduct(h.transpose());
-  const Eigen::Matrix<T, M, M> sm = h.lazyProduct(pht) + r;
-  // S is 3 × 3 or 1 × 1: Eigen's closed-form inverse (a matrix-valued LLT solve would pull in its blocked,
-  // allocating triangular solver). Positive definiteness is checked by the Cholesky factorization.
-  if (Eigen::LLT<Eigen::Matrix<T, M, M>>(sm).info() != Eigen::Success) return u;
-  const Eigen::Matrix<T, M, M> s_inv = sm.inverse();
-  u.nis = y.dot(s_inv.lazyProduct(y));
-  if (!(u.nis <= gate)) return u;
-  const Eigen::Matrix<T, kMekfStates, M> k = pht.lazyProduct(s_inv);
-  const MatN<T> ikh = MatN<T>::Identity() - k.lazyProduct(h);
-  const MatN<T> ikh_p = ikh.lazyProduct(p);
-  store_p<T>(s, MatN<T>(ikh_p.lazyProduct(ikh.transpose()) + k.lazyProduct(r).lazyProduct(k.transpose())));
-  apply<T>(s, k.lazyProduct(y));
-  u.accepted = true;
-  return u;
+MekfUpdate<T> linear_update(MekfState<T>& s, const Eigen::Matrix<T, M, 1>& y, const Eigen::Matrix<T, M, kMekfStates>& h,
+                            const Eigen::Matrix<T, M, M>& r, T gate) {
+    MekfUpdate<T> u;
+    if (!y.allFinite() || !h.allFinite()) return u;
+    const MatN<T> p = map_p(s);
+    const Eigen::Matrix<T, kMekfStates, M> pht = p.lazyProduct(h.transpose());
+    const Eigen::Matrix<T, M, M> sm = h.lazyProduct(pht) + r;
+    // S is 3 × 3 or 1 × 1: Eigen's closed-form inverse (a matrix-valued LLT solve would pull in its blocked,
+    // allocating triangular solver). Positive definiteness is checked by the Cholesky factorization.
+    if (Eigen::LLT<Eigen::Matrix<T, M, M>>(sm).info() != Eigen::Success) return u;
+    const Eigen::Matrix<T, M, M> s_inv = sm.inverse();
+    u.nis = y.dot(s_inv.lazyProduct(y));
+    if (!(u.nis <= gate)) return u;
+    const Eigen::Matrix<T, kMekfStates, M> k = pht.lazyProduct(s_inv);
+    const MatN<T> ikh = MatN<T>::Identity() - k.lazyProduct(h);
+    const MatN<T> ikh_p = ikh.lazyProduct(p);
+    store_p<T>(s, MatN<T>(ikh_p.lazyProduct(ikh.transpose()) + k.lazyProduct(r).lazyProduct(k.transpose())));
+    apply<T>(s, k.lazyProduct(y));
+    u.accepted = true;
+    return u;
 }
 
 template <class T>
 bool finite(const MekfState<T>& s) {
-  if (!std::isfinite(s.q.x + s.q.y + s.q.z + s.q.w + s.panel_scale)) return false;
-  for (int i = 0; i < 3; ++i)
-    if (!std::isfinite(s.omega[i] + s.mag_offset[i])) return false;
-  for (T v : s.p)
-    if (!std::isfinite(v)) return false;
-  return true;
+    if (!std::isfinite(s.q.x + s.q.y + s.q.z + s.q.w + s.panel_scale)) return false;
+    for (int i = 0; i < 3; ++i)
+        if (!std::isfinite(s.omega[i] + s.mag_offset[i])) return false;
+    for (T v : s.p)
+        if (!std::isfinite(v)) return false;
+    return true;
 }
 
 }  // namespace
 
 template <class T>
-void mekf_start(MekfState<T>& s, const Quaternion<T>& q, const Vec3<T>& omega, T t,
-                const MekfConfig<T>& c) noexcept {
-  s.q = normalized(q);
-  s.omega = omega;
-  s.t_last = t;
-  s.stage = 2;
-  s.refused_in_row = 0;
-  MatN<T> p = MatN<T>::Zero();
-  const T sa = c.init_attitude_sigma, sw = c.init_rate_sigma;
-  for (int i = 0; i < 3; ++i) {
-    p(kMekfAttitude + i, kMekfAttitude + i) = sa * sa;
-    p(kMekfRate + i, kMekfRate + i) = sw * sw;
-    if (c.estimate_offset) p(kMekfOffset + i, kMekfOffset + i) = c.init_offset_sigma * c.init_offset_sigma;
-  }
-  if (c.estimate_scale) p(kMekfScale, kMekfScale) = c.init_scale_sigma * c.init_scale_sigma;
-  store_p<T>(s, p);
+void mekf_start(MekfState<T>& s, const Quaternion<T>& q, const Vec3<T>& omega, T t, const MekfConfig<T>& c) noexcept {
+    s.q = normalized(q);
+    s.omega = omega;
+    s.t_last = t;
+    s.stage = 2;
+    s.refused_in_row = 0;
+    MatN<T> p = MatN<T>::Zero();
+    const T sa = c.init_attitude_sigma, sw = c.init_rate_sigma;
+    for (int i = 0; i < 3; ++i) {
+        p(kMekfAttitude + i, kMekfAttitude + i) = sa * sa;
+        p(kMekfRate + i, kMekfRate + i) = sw * sw;
+        if (c.estimate_offset) p(kMekfOffset + i, kMekfOffset + i) = c.init_offset_sigma * c.init_offset_sigma;
+    }
+    if (c.estimate_scale) p(kMekfScale, kMekfScale) = c.init_scale_sigma * c.init_scale_sigma;
+    store_p<T>(s, p);
 }
 
 template <class T>
 void mekf_propagate(MekfState<T>& s, T dt, const MekfConfig<T>& c) noexcept {
-  if (!(dt > T(0))) return;
-  const bool euler = has_inertia(c);
-  Euler<T> dyn{};
-  if (euler) {
-    dyn.j = Eigen::Map<const Eigen::Matrix<T, 3, 3, Eigen::RowMajor>>(c.inertia.data());
-    dyn.j_inv = dyn.j.inverse();
-  }
-  V3<T> w = v3(s.omega);
-  // Kinematic: one exact step (constant rate). Euler: substeps of at most 0.05 rad of turn, 16 at most.
-  int n = 1;
-  if (euler) {
-    const T turns = w.norm() * dt / T(0.05);
-    n = turns < T(1) ? 1 : (turns > T(15) ? 16 : static_cast<int>(turns) + 1);
-  }
-  const T h = dt / static_cast<T>(n);
-  const T qa = c.attitude_noise * c.attitude_noise, qw = c.rate_noise * c.rate_noise;
-  MatN<T> p = map_p(s);
-  MatN<T> q = MatN<T>::Zero();
-  for (int i = 0; i < 3; ++i) {
-    q(kMekfAttitude + i, kMekfAttitude + i) = qa * h + qw * h * h * h / T(3);
-    q(kMekfAttitude + i, kMekfRate + i) = q(kMekfRate + i, kMekfAttitude + i) = qw * h * h / T(2);
-    q(kMekfRate + i, kMekfRate + i) = qw * h;
-    if (c.estimate_offset) q(kMekfOffset + i, kMekfOffset + i) = c.offset_noise * c.offset_noise * h;
-  }
-  if (c.estimate_scale) q(kMekfScale, kMekfScale) = c.scale_noise * c.scale_noise * h;
-  for (int step = 0; step < n; ++step) {
-    V3<T> w_next = w;
-    Mat3<T> phi_ww = Mat3<T>::Identity();
-    if (euler) {  // RK4 on Euler's equations; the rate Jacobian at the midpoint
-      const V3<T> k1 = dyn.rate(w);
-      const V3<T> k2 = dyn.rate(w + h / T(2) * k1);
-      const V3<T> k3 = dyn.rate(w + h / T(2) * k2);
-      const V3<T> k4 = dyn.rate(w + h * k3);
-      w_next = w + h / T(6) * (k1 + T(2) * k2 + T(2) * k3 + k4);
-      phi_ww += h * dyn.jacobian(T(0.5) * (w + w_next));
+    if (!(dt > T(0))) return;
+    const bool euler = has_inertia(c);
+    Euler<T> dyn{};
+    if (euler) {
+        dyn.j = Eigen::Map<const Eigen::Matrix<T, 3, 3, Eigen::RowMajor>>(c.inertia.data());
+        dyn.j_inv = dyn.j.inverse();
     }
-    const V3<T> w_mid = euler ? V3<T>(T(0.5) * (w + w_next)) : w;
-    const Quaternion<T> turn = rotation<T>(w_mid * h);
-    MatN<T> phi = MatN<T>::Identity();
-    phi.template block<3, 3>(kMekfAttitude, kMekfAttitude) = matrix_of(turn);
-    phi.template block<3, 3>(kMekfAttitude, kMekfRate) = rate_to_attitude(w_mid, h);
-    phi.template block<3, 3>(kMekfRate, kMekfRate) = phi_ww;
-    const MatN<T> phi_p = phi.lazyProduct(p);
-    p = phi_p.lazyProduct(phi.transpose()) + q;
-    s.q = normalized(compose(turn, s.q));
-    w = w_next;
-  }
-  for (int i = 0; i < 3; ++i) s.omega[i] = w(i);
-  store_p<T>(s, p);
-  s.t_last += dt;
+    V3<T> w = v3(s.omega);
+    // Kinematic: one exact step (constant rate). Euler: substeps of at most 0.05 rad of turn, 16 at most.
+    int n = 1;
+    if (euler) {
+        const T turns = w.norm() * dt / T(0.05);
+        n = turns < T(1) ? 1 : (turns > T(15) ? 16 : static_cast<int>(turns) + 1);
+    }
+    const T h = dt / static_cast<T>(n);
+    const T qa = c.attitude_noise * c.attitude_noise, qw = c.rate_noise * c.rate_noise;
+    MatN<T> p = map_p(s);
+    MatN<T> q = MatN<T>::Zero();
+    for (int i = 0; i < 3; ++i) {
+        q(kMekfAttitude + i, kMekfAttitude + i) = qa * h + qw * h * h * h / T(3);
+        q(kMekfAttitude + i, kMekfRate + i) = q(kMekfRate + i, kMekfAttitude + i) = qw * h * h / T(2);
+        q(kMekfRate + i, kMekfRate + i) = qw * h;
+        if (c.estimate_offset) q(kMekfOffset + i, kMekfOffset + i) = c.offset_noise * c.offset_noise * h;
+    }
+    if (c.estimate_scale) q(kMekfScale, kMekfScale) = c.scale_noise * c.scale_noise * h;
+    for (int step = 0; step < n; ++step) {
+        V3<T> w_next = w;
+        Mat3<T> phi_ww = Mat3<T>::Identity();
+        if (euler) {  // RK4 on Euler's equations; the rate Jacobian at the midpoint
+            const V3<T> k1 = dyn.rate(w);
+            const V3<T> k2 = dyn.rate(w + h / T(2) * k1);
+            const V3<T> k3 = dyn.rate(w + h / T(2) * k2);
+            const V3<T> k4 = dyn.rate(w + h * k3);
+            w_next = w + h / T(6) * (k1 + T(2) * k2 + T(2) * k3 + k4);
+            phi_ww += h * dyn.jacobian(T(0.5) * (w + w_next));
+        }
+        const V3<T> w_mid = euler ? V3<T>(T(0.5) * (w + w_next)) : w;
+        const Quaternion<T> turn = rotation<T>(w_mid * h);
+        MatN<T> phi = MatN<T>::Identity();
+        phi.template block<3, 3>(kMekfAttitude, kMekfAttitude) = matrix_of(turn);
+        phi.template block<3, 3>(kMekfAttitude, kMekfRate) = rate_to_attitude(w_mid, h);
+        phi.template block<3, 3>(kMekfRate, kMekfRate) = phi_ww;
+        const MatN<T> phi_p = phi.lazyProduct(p);
+        p = phi_p.lazyProduct(phi.transpose()) + q;
+        s.q = normalized(compose(turn, s.q));
+        w = w_next;
+    }
+    for (int i = 0; i < 3; ++i) s.omega[i] = w(i);
+    store_p<T>(s, p);
+    s.t_last += dt;
 }
 
 template <class T>
 MekfUpdate<T> mekf_update_sun(MekfState<T>& s, const Vec3<T>& sun_ref, const Vec3<T>& sun_body,
                               const MekfConfig<T>& c) noexcept {
-  const V3<T> ref = v3(sun_ref).normalized();
-  const V3<T> predicted = matrix_of(s.q) * ref;
-  const V3<T> y = v3(sun_body).normalized() - predicted;
-  Eigen::Matrix<T, 3, kMekfStates> h = Eigen::Matrix<T, 3, kMekfStates>::Zero();
-  h.template block<3, 3>(0, kMekfAttitude) = skew(predicted);
-  const Mat3<T> r = c.sun_sigma * c.sun_sigma * Mat3<T>::Identity();
-  return linear_update<T, 3>(s, y, h, r, c.gate);
+    const V3<T> ref = v3(sun_ref).normalized();
+    const V3<T> predicted = matrix_of(s.q) * ref;
+    const V3<T> y = v3(sun_body).normalized() - predicted;
+    Eigen::Matrix<T, 3, kMekfStates> h = Eigen::Matrix<T, 3, kMekfStates>::Zero();
+    h.template block<3, 3>(0, kMekfAttitude) = skew(predicted);
+    const Mat3<T> r = c.sun_sigma * c.sun_sigma * Mat3<T>::Identity();
+    return linear_update<T, 3>(s, y, h, r, c.gate);
 }
 
 template <class T>
 MekfUpdate<T> mekf_update_field(MekfState<T>& s, const Vec3<T>& field_ref, const Vec3<T>& field_body, T polarity,
                                 const MekfConfig<T>& c) noexcept {
-  // The residual in µT: in tesla the innovation covariance (~1e-14 T²) has a determinant below float's
-  // smallest normal number. The offset state stays in tesla (its Jacobian carries the 1e6).
-  const T micro = T(1e6);
-  const V3<T> predicted_field = matrix_of(s.q) * v3(field_ref);
-  const V3<T> y = micro * (v3(field_body) - (predicted_field + polarity * v3(s.mag_offset)));
-  Eigen::Matrix<T, 3, kMekfStates> h = Eigen::Matrix<T, 3, kMekfStates>::Zero();
-  h.template block<3, 3>(0, kMekfAttitude) = skew<T>(micro * predicted_field);
-  h.template block<3, 3>(0, kMekfOffset) = micro * polarity * Mat3<T>::Identity();
-  const T sigma = micro * c.mag_sigma;
-  const Mat3<T> r = sigma * sigma * Mat3<T>::Identity();
-  return linear_update<T, 3>(s, y, h, r, c.gate);
+    // The residual in µT: in tesla the innovation covariance (~1e-14 T²) has a determinant below float's
+    // smallest normal number. The offset state stays in tesla (its Jacobian carries the 1e6).
+    const T micro = T(1e6);
+    const V3<T> predicted_field = matrix_of(s.q) * v3(field_ref);
+    const V3<T> y = micro * (v3(field_body) - (predicted_field + polarity * v3(s.mag_offset)));
+    Eigen::Matrix<T, 3, kMekfStates> h = Eigen::Matrix<T, 3, kMekfStates>::Zero();
+    h.template block<3, 3>(0, kMekfAttitude) = skew<T>(micro * predicted_field);
+    h.template block<3, 3>(0, kMekfOffset) = micro * polarity * Mat3<T>::Identity();
+    const T sigma = micro * c.mag_sigma;
+    const Mat3<T> r = sigma * sigma * Mat3<T>::Identity();
+    return linear_update<T, 3>(s, y, h, r, c.gate);
 }
 
 template <class T>
 int mekf_update_faces(MekfState<T>& s, const Vec3<T>& sun_ref, const std::array<T, 6>& r, std::uint8_t use,
                       const panel_response::Response<T>& response, const MekfConfig<T>& c) noexcept {
-  int accepted = 0;
-  const V3<T> ref = v3(sun_ref).normalized();
-  for (int k = 0; k < 6; ++k) {
-    if (!(use & (1u << k))) continue;
-    const V3<T> sun = matrix_of(s.q) * ref;  // afresh: each accepted face moves the attitude
-    V3<T> normal = V3<T>::Zero();
-    normal(k / 2) = (k % 2 == 0) ? T(1) : T(-1);
-    const T cos_beta = normal.dot(sun);
-    // The response's slope by a central difference (the table law is C¹; the cosine's slope is 1).
-    const T d = T(1e-3);
-    const T slope = (panel_response::response_from_cos(response, cos_beta + d) -
-                     panel_response::response_from_cos(response, cos_beta - d)) / (T(2) * d);
-    const T nominal = panel_response::response_from_cos(response, cos_beta);
-    const T gain = T(1) + s.panel_scale;
-    Eigen::Matrix<T, 1, 1> y;
-    y(0) = r[static_cast<std::size_t>(k)] - gain * nominal;
-    Eigen::Matrix<T, 1, kMekfStates> h = Eigen::Matrix<T, 1, kMekfStates>::Zero();
-    // Only the scale is updated: the attitude enters through the prediction but its column is left out,
-    // so that the albedo on a face and the angular law's model error (which the scale cannot absorb)
-    // do not pull the attitude. The slope still counts in the innovation's variance.
-    const T attitude_variance = (gain * slope * normal.cross(sun)).squaredNorm() *
-                                (s.p[0] + s.p[kMekfStates + 1] + s.p[2 * kMekfStates + 2]) / T(3);
-    h(0, kMekfScale) = nominal;
-    Eigen::Matrix<T, 1, 1> rr;
-    rr(0, 0) = c.face_sigma * c.face_sigma + attitude_variance;
-    if (linear_update<T, 1>(s, y, h, rr, c.face_gate).accepted) ++accepted;
-  }
-  return accepted;
+    int accepted = 0;
+    const V3<T> ref = v3(sun_ref).normalized();
+    for (int k = 0; k < 6; ++k) {
+        if (!(use & (1u << k))) continue;
+        const V3<T> sun = matrix_of(s.q) * ref;  // afresh: each accepted face moves the attitude
+        V3<T> normal = V3<T>::Zero();
+        normal(k / 2) = (k % 2 == 0) ? T(1) : T(-1);
+        const T cos_beta = normal.dot(sun);
+        // The response's slope by a central difference (the table law is C¹; the cosine's slope is 1).
+        const T d = T(1e-3);
+        const T slope = (panel_response::response_from_cos(response, cos_beta + d) -
+                         panel_response::response_from_cos(response, cos_beta - d)) /
+                        (T(2) * d);
+        const T nominal = panel_response::response_from_cos(response, cos_beta);
+        const T gain = T(1) + s.panel_scale;
+        Eigen::Matrix<T, 1, 1> y;
+        y(0) = r[static_cast<std::size_t>(k)] - gain * nominal;
+        Eigen::Matrix<T, 1, kMekfStates> h = Eigen::Matrix<T, 1, kMekfStates>::Zero();
+        // Only the scale is updated: the attitude enters through the prediction but its column is left out,
+        // so that the albedo on a face and the angular law's model error (which the scale cannot absorb)
+        // do not pull the attitude. The slope still counts in the innovation's variance.
+        const T attitude_variance = (gain * slope * normal.cross(sun)).squaredNorm() *
+                                    (s.p[0] + s.p[kMekfStates + 1] + s.p[2 * kMekfStates + 2]) / T(3);
+        h(0, kMekfScale) = nominal;
+        Eigen::Matrix<T, 1, 1> rr;
+        rr(0, 0) = c.face_sigma * c.face_sigma + attitude_variance;
+        if (linear_update<T, 1>(s, y, h, rr, c.face_gate).accepted) ++accepted;
+    }
+    return accepted;
 }
 
 template <class T>
 T mekf_attitude_bound(const MekfState<T>& s) noexcept {
-  const T trace = s.p[0] + s.p[kMekfStates + 1] + s.p[2 * kMekfStates + 2];
-  return T(3) * std::sqrt(trace > T(0) ? trace : T(0));
+    const T trace = s.p[0] + s.p[kMekfStates + 1] + s.p[2 * kMekfStates + 2];
+    return T(3) * std::sqrt(trace > T(0) ? trace : T(0));
 }
 
 template <class T>
 MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, const MekfConfig<T>& c) noexcept {
-  MekfSampleResult<T> result;
-  if (s.stage == 2) {
-    mekf_propagate(s, in.t - s.t_last, c);
-  } else {
-    // Initialisation from two single-frame attitudes: the first gives the attitude, the difference to the
-    // second (close enough not to alias) the rate.
-    if (in.attitude_valid) {
-      const T gap = in.t - s.t_first;
-      if (s.stage == 1 && gap > T(0) && gap <= c.max_init_gap) {
-        const Quaternion<T> inverse_first{-s.q_first.x, -s.q_first.y, -s.q_first.z, s.q_first.w};
-        const V3<T> turn = rotation_vector(compose(in.q_single, inverse_first));
-        const V3<T> w = turn / gap;
-        mekf_start(s, in.q_single, Vec3<T>{w.x(), w.y(), w.z()}, in.t, c);
-        // The differenced rate carries both attitudes' errors.
-        MatN<T> p = map_p(s);
-        for (int i = 0; i < 3; ++i)
-          p(kMekfRate + i, kMekfRate + i) += T(2) * c.init_attitude_sigma * c.init_attitude_sigma / (gap * gap);
-        store_p<T>(s, p);
-      } else {
-        s.stage = 1;
+    MekfSampleResult<T> result;
+    if (s.stage == 2) {
+        mekf_propagate(s, in.t - s.t_last, c);
+    } else {
+        // Initialisation from two single-frame attitudes: the first gives the attitude, the difference to the
+        // second (close enough not to alias) the rate.
+        if (in.attitude_valid) {
+            const T gap = in.t - s.t_first;
+            if (s.stage == 1 && gap > T(0) && gap <= c.max_init_gap) {
+                const Quaternion<T> inverse_first{-s.q_first.x, -s.q_first.y, -s.q_first.z, s.q_first.w};
+                const V3<T> turn = rotation_vector(compose(in.q_single, inverse_first));
+                const V3<T> w = turn / gap;
+                mekf_start(s, in.q_single, Vec3<T>{w.x(), w.y(), w.z()}, in.t, c);
+                // The differenced rate carries both attitudes' errors.
+                MatN<T> p = map_p(s);
+                for (int i = 0; i < 3; ++i)
+                    p(kMekfRate + i, kMekfRate + i) +=
+                        T(2) * c.init_attitude_sigma * c.init_attitude_sigma / (gap * gap);
+                store_p<T>(s, p);
+            } else {
+                s.stage = 1;
+                s.q_first = in.q_single;
+                s.t_first = in.t;
+            }
+        } else if (s.stage == 1 && in.t - s.t_first > c.max_init_gap) {
+            s.stage = 0;
+        }
+        return result;  // the starting sample's measurements are already in the single-frame attitude
+    }
+
+    int offered = 0, accepted = 0;
+    if (in.sun_valid) {
+        result.sun = mekf_update_sun(s, in.sun_ref, in.sun_body, c);
+        ++offered;
+        accepted += result.sun.accepted;
+    }
+    if (in.mag_valid) {
+        result.mag = mekf_update_field(s, in.mag_ref, in.mag_body, in.polarity, c);
+        ++offered;
+        accepted += result.mag.accepted;
+    }
+    if (c.estimate_scale && in.sun_valid && in.response != nullptr && in.face_use != 0)
+        result.faces_accepted = mekf_update_faces(s, in.sun_ref, in.face_r, in.face_use, *in.response, c);
+
+    if (offered > 0) s.refused_in_row = accepted > 0 ? 0 : s.refused_in_row + 1;
+    if (s.refused_in_row >= c.reset_after || !finite(s)) {
+        // Diverged: back to the single-frame attitude (and a fresh rate from the next one).
+        ++s.resets;
+        result.reset = true;
+        s.refused_in_row = 0;
+        if (!finite(s)) {
+            s.omega = {};
+            s.mag_offset = {};
+            s.panel_scale = T(0);
+        }
+        s.stage = in.attitude_valid ? 1 : 0;
         s.q_first = in.q_single;
         s.t_first = in.t;
-      }
-    } else if (s.stage == 1 && in.t - s.t_first > c.max_init_gap) {
-      s.stage = 0;
+        return result;
     }
-    return result;  // the starting sample's measurements are already in the single-frame attitude
-  }
-
-  int offered = 0, accepted = 0;
-  if (in.sun_valid) {
-    result.sun = mekf_update_sun(s, in.sun_ref, in.sun_body, c);
-    ++offered;
-    accepted += result.sun.accepted;
-  }
-  if (in.mag_valid) {
-    result.mag = mekf_update_field(s, in.mag_ref, in.mag_body, in.polarity, c);
-    ++offered;
-    accepted += result.mag.accepted;
-  }
-  if (c.estimate_scale && in.sun_valid && in.response != nullptr && in.face_use != 0)
-    result.faces_accepted = mekf_update_faces(s, in.sun_ref, in.face_r, in.face_use, *in.response, c);
-
-  if (offered > 0) s.refused_in_row = accepted > 0 ? 0 : s.refused_in_row + 1;
-  if (s.refused_in_row >= c.reset_after || !finite(s)) {
-    // Diverged: back to the single-frame attitude (and a fresh rate from the next one).
-    ++s.resets;
-    result.reset = true;
-    s.refused_in_row = 0;
-    if (!finite(s)) {
-      s.omega = {};
-      s.mag_offset = {};
-      s.panel_scale = T(0);
-    }
-    s.stage = in.attitude_valid ? 1 : 0;
-    s.q_first = in.q_single;
-    s.t_first = in.t;
+    result.bound = mekf_attitude_bound(s);
+    result.valid = result.bound < c.valid_bound;
     return result;
-  }
-  result.bound = mekf_attitude_bound(s);
-  result.valid = result.bound < c.valid_bound;
-  return result;
 }
 
-#define ATTITUDE_ESTIMATOR_MEKF_INSTANTIATE(T)                                                                \
-  template void mekf_start(MekfState<T>&, const Quaternion<T>&, const Vec3<T>&, T, const MekfConfig<T>&) noexcept; \
-  template void mekf_propagate(MekfState<T>&, T, const MekfConfig<T>&) noexcept;                             \
-  template MekfUpdate<T> mekf_update_sun(MekfState<T>&, const Vec3<T>&, const Vec3<T>&,                      \
-                                         const MekfConfig<T>&) noexcept;                                     \
-  template MekfUpdate<T> mekf_update_field(MekfState<T>&, const Vec3<T>&, const Vec3<T>&, T,                 \
-                                           const MekfConfig<T>&) noexcept;                                   \
-  template int mekf_update_faces(MekfState<T>&, const Vec3<T>&, const std::array<T, 6>&, std::uint8_t,       \
-                                 const panel_response::Response<T>&, const MekfConfig<T>&) noexcept;         \
-  template T mekf_attitude_bound(const MekfState<T>&) noexcept;                                              \
-  template MekfSampleResult<T> mekf_sample(MekfState<T>&, const MekfSampleInputs<T>&, const MekfConfig<T>&) noexcept;
+#define ATTITUDE_ESTIMATOR_MEKF_INSTANTIATE(T)                                                                       \
+    template void mekf_start(MekfState<T>&, const Quaternion<T>&, const Vec3<T>&, T, const MekfConfig<T>&) noexcept; \
+    template void mekf_propagate(MekfState<T>&, T, const MekfConfig<T>&) noexcept;                                   \
+    template MekfUpdate<T> mekf_update_sun(MekfState<T>&, const Vec3<T>&, const Vec3<T>&,                            \
+                                           const MekfConfig<T>&) noexcept;                                           \
+    template MekfUpdate<T> mekf_update_field(MekfState<T>&, const Vec3<T>&, const Vec3<T>&, T,                       \
+                                             const MekfConfig<T>&) noexcept;                                         \
+    template int mekf_update_faces(MekfState<T>&, const Vec3<T>&, const std::array<T, 6>&, std::uint8_t,             \
+                                   const panel_response::Response<T>&, const MekfConfig<T>&) noexcept;               \
+    template T mekf_attitude_bound(const MekfState<T>&) noexcept;                                                    \
+    template MekfSampleResult<T> mekf_sample(MekfState<T>&, const MekfSampleInputs<T>&, const MekfConfig<T>&) noexcept;
 ATTITUDE_ESTIMATOR_MEKF_INSTANTIATE(float)
 ATTITUDE_ESTIMATOR_MEKF_INSTANTIATE(double)
 #undef ATTITUDE_ESTIMATOR_MEKF_INSTANTIATE

@@ -6,9 +6,8 @@
 namespace attitude_estimator {
 
 template <class T>
-WahbaSolution<T> solve_wahba(const ObservationSet<T>& set, SolverKind kind,
-                             const WahbaOptions<T>& options) noexcept {
-  return kind == SolverKind::qmethod ? solve_q_method(set, options) : solve_fast(set, options);
+WahbaSolution<T> solve_wahba(const ObservationSet<T>& set, SolverKind kind, const WahbaOptions<T>& options) noexcept {
+    return kind == SolverKind::qmethod ? solve_q_method(set, options) : solve_fast(set, options);
 }
 
 template WahbaSolution<float> solve_wahba(const ObservationSet<float>&, SolverKind,

@@ -13,20 +13,24 @@
 namespace environment {
 
 namespace {
-std::array<double, 3> to_array(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+std::array<double, 3> to_array(const Eigen::Vector3d& v) {
+    return {v.x(), v.y(), v.z()};
+}
 
 void validate(const EnvironmentParams& p) {
-  if (!(p.solar_constant >= 0.0) || !std::isfinite(p.solar_constant)) {
-    throw std::invalid_argument("Environment: solar_constant must be finite and >= 0");
-  }
-  if (p.igrf_max_degree < 1 || p.igrf_max_degree > 13) throw std::invalid_argument("Environment: igrf_max_degree must be 1..13");
-  if (!(p.albedo.reflectivity >= 0.0 && p.albedo.reflectivity <= 1.0)) {
-    throw std::invalid_argument("Environment: albedo reflectivity must be in [0, 1]");
-  }
-  if (p.albedo.rings < 1 || p.albedo.rings > 1000 || p.albedo.sectors < 3 || p.albedo.sectors > 4000) {
-    throw std::invalid_argument("Environment: albedo grid must have 1..1000 rings and 3..4000 sectors");
-  }
-  if (!std::isfinite(p.seed002_elevation_amplitude)) throw std::invalid_argument("Environment: seed002 amplitude not finite");
+    if (!(p.solar_constant >= 0.0) || !std::isfinite(p.solar_constant)) {
+        throw std::invalid_argument("Environment: solar_constant must be finite and >= 0");
+    }
+    if (p.igrf_max_degree < 1 || p.igrf_max_degree > 13)
+        throw std::invalid_argument("Environment: igrf_max_degree must be 1..13");
+    if (!(p.albedo.reflectivity >= 0.0 && p.albedo.reflectivity <= 1.0)) {
+        throw std::invalid_argument("Environment: albedo reflectivity must be in [0, 1]");
+    }
+    if (p.albedo.rings < 1 || p.albedo.rings > 1000 || p.albedo.sectors < 3 || p.albedo.sectors > 4000) {
+        throw std::invalid_argument("Environment: albedo grid must have 1..1000 rings and 3..4000 sectors");
+    }
+    if (!std::isfinite(p.seed002_elevation_amplitude))
+        throw std::invalid_argument("Environment: seed002 amplitude not finite");
 }
 }  // namespace
 
@@ -37,74 +41,75 @@ Environment::Environment(const EnvironmentParams& params)
       orbit_(params.orbit),
       rigid_body_(params.rigid_body),
       spin_(params.spin, sun_position_eci(jd0_)) {
-  // Fail at construction, not at the first step, when the epoch lies outside IGRF-14's validity.
-  if (params.field_model == FieldModel::igrf14 || params.field_model == FieldModel::dipole) {
-    (void)igrf_coefficients(decimal_year(jd0_));
-  }
+    // Fail at construction, not at the first step, when the epoch lies outside IGRF-14's validity.
+    if (params.field_model == FieldModel::igrf14 || params.field_model == FieldModel::dipole) {
+        (void)igrf_coefficients(decimal_year(jd0_));
+    }
 }
 
 Eigen::Vector3d Environment::sun_position_eci(double jd) const {
-  const SunPosition s = (params_.sun_model == SunModel::seed002)
-                            ? sun_seed002(jd, jd_equinox_, params_.seed002_elevation_amplitude)
-                            : sun_almanac_j2000(jd);  // the field's frame too: one ECI, J2000
-  return s.direction_eci * s.distance;
+    const SunPosition s = (params_.sun_model == SunModel::seed002)
+                              ? sun_seed002(jd, jd_equinox_, params_.seed002_elevation_amplitude)
+                              : sun_almanac_j2000(jd);  // the field's frame too: one ECI, J2000
+    return s.direction_eci * s.distance;
 }
 
 EnvironmentOutputs Environment::evaluate(double t, const RigidBodyState* state) const {
-  if (!std::isfinite(t)) throw std::invalid_argument("Environment::evaluate: time is not finite");
-  EnvironmentOutputs out;
-  out.time = t;
-  out.julian_date = jd0_ + t / kSecondsPerDay;
-  out.gmst = gmst(out.julian_date);
+    if (!std::isfinite(t)) throw std::invalid_argument("Environment::evaluate: time is not finite");
+    EnvironmentOutputs out;
+    out.time = t;
+    out.julian_date = jd0_ + t / kSecondsPerDay;
+    out.gmst = gmst(out.julian_date);
 
-  // Orbit and sun.
-  const Eigen::Vector3d r = orbit_.position_eci(t);
-  const Eigen::Vector3d r_sun = sun_position_eci(out.julian_date);
-  const Eigen::Vector3d to_sun = r_sun - r;
-  const double d_sun = to_sun.norm();
-  const Eigen::Vector3d s = to_sun / d_sun;
-  out.r_eci = to_array(r);
-  out.sun_eci = to_array(s);
-  out.sun_distance = d_sun;
-  out.sunlight_fraction = params_.eclipse_enabled ? sunlight_fraction(r, r_sun) : 1.0;
-  const double au_ratio = kAstronomicalUnit / d_sun;
-  out.irradiance = params_.solar_constant * au_ratio * au_ratio * out.sunlight_fraction;
+    // Orbit and sun.
+    const Eigen::Vector3d r = orbit_.position_eci(t);
+    const Eigen::Vector3d r_sun = sun_position_eci(out.julian_date);
+    const Eigen::Vector3d to_sun = r_sun - r;
+    const double d_sun = to_sun.norm();
+    const Eigen::Vector3d s = to_sun / d_sun;
+    out.r_eci = to_array(r);
+    out.sun_eci = to_array(s);
+    out.sun_distance = d_sun;
+    out.sunlight_fraction = params_.eclipse_enabled ? sunlight_fraction(r, r_sun) : 1.0;
+    const double au_ratio = kAstronomicalUnit / d_sun;
+    out.irradiance = params_.solar_constant * au_ratio * au_ratio * out.sunlight_fraction;
 
-  // Attitude.
-  Eigen::Matrix3d A;
-  if (params_.attitude_mode == AttitudeMode::spin) {
-    A = spin_.attitude_matrix(t);
-    out.q_true = quaternion_from_attitude_matrix(A);
-    out.omega_body = to_array(spin_.angular_velocity_body(t));
-  } else {
-    if (state == nullptr) throw std::invalid_argument("Environment::evaluate: rigid_body mode needs the state");
-    RigidBodyState x = *state;
-    for (double v : x) {
-      if (!std::isfinite(v)) throw std::invalid_argument("Environment::evaluate: state is not finite");
+    // Attitude.
+    Eigen::Matrix3d A;
+    if (params_.attitude_mode == AttitudeMode::spin) {
+        A = spin_.attitude_matrix(t);
+        out.q_true = quaternion_from_attitude_matrix(A);
+        out.omega_body = to_array(spin_.angular_velocity_body(t));
+    } else {
+        if (state == nullptr) throw std::invalid_argument("Environment::evaluate: rigid_body mode needs the state");
+        RigidBodyState x = *state;
+        for (double v : x) {
+            if (!std::isfinite(v)) throw std::invalid_argument("Environment::evaluate: state is not finite");
+        }
+        RigidBody::renormalize(x.data());
+        out.q_true = {x[0], x[1], x[2], x[3]};
+        out.omega_body = {x[4], x[5], x[6]};
+        A = attitude_matrix(out.q_true);
     }
-    RigidBody::renormalize(x.data());
-    out.q_true = {x[0], x[1], x[2], x[3]};
-    out.omega_body = {x[4], x[5], x[6]};
-    A = attitude_matrix(out.q_true);
-  }
-  out.sun_body = to_array(A * s);
+    out.sun_body = to_array(A * s);
 
-  // Geomagnetic field: evaluated Earth-fixed, rotated back to ECI (precession + GMST, earth_rotation.hpp).
-  const Eigen::Matrix3d to_ecef = ecef_from_eci(out.julian_date);
-  const GaussCoefficients c = igrf_coefficients(decimal_year(out.julian_date));
-  const Eigen::Vector3d r_ecef = to_ecef * r;
-  const Eigen::Vector3d b_ecef = (params_.field_model == FieldModel::dipole)
-                                     ? dipole_field(c, r_ecef)
-                                     : spherical_harmonic_field(c, params_.igrf_max_degree, r_ecef);
-  const Eigen::Vector3d b_eci = to_ecef.transpose() * b_ecef;
-  out.mag_eci = to_array(b_eci);
-  out.mag_body = to_array(A * b_eci);
+    // Geomagnetic field: evaluated Earth-fixed, rotated back to ECI (precession + GMST, earth_rotation.hpp).
+    const Eigen::Matrix3d to_ecef = ecef_from_eci(out.julian_date);
+    const GaussCoefficients c = igrf_coefficients(decimal_year(out.julian_date));
+    const Eigen::Vector3d r_ecef = to_ecef * r;
+    const Eigen::Vector3d b_ecef = (params_.field_model == FieldModel::dipole)
+                                       ? dipole_field(c, r_ecef)
+                                       : spherical_harmonic_field(c, params_.igrf_max_degree, r_ecef);
+    const Eigen::Vector3d b_eci = to_ecef.transpose() * b_ecef;
+    out.mag_eci = to_array(b_eci);
+    out.mag_body = to_array(A * b_eci);
 
-  // Albedo: irradiance at the Earth (not reduced by the satellite's own eclipse).
-  const double d_earth_sun = r_sun.norm();
-  const double e_earth = params_.solar_constant * (kAstronomicalUnit / d_earth_sun) * (kAstronomicalUnit / d_earth_sun);
-  out.albedo_face = earth_albedo(params_.albedo, r, r_sun / d_earth_sun, e_earth, A);
-  return out;
+    // Albedo: irradiance at the Earth (not reduced by the satellite's own eclipse).
+    const double d_earth_sun = r_sun.norm();
+    const double e_earth =
+        params_.solar_constant * (kAstronomicalUnit / d_earth_sun) * (kAstronomicalUnit / d_earth_sun);
+    out.albedo_face = earth_albedo(params_.albedo, r, r_sun / d_earth_sun, e_earth, A);
+    return out;
 }
 
 }  // namespace environment

@@ -24,94 +24,94 @@ namespace environment {
 
 // Every variable of the block. Defaults: the core's (seed scenario, environment/README.md).
 struct EnvironmentData {
-  // --- parameters: attitude motion
-  fmu::FixedString<16> attitude_mode = "spin";  // spin | rigid_body
-  double spin_phi0 = 0.0;                       // rad
-  double spin_theta0 = 0.0;                     // rad
-  double spin_phi_dot = 1.26;                   // rad/s, seed 000 section 4
-  double spin_theta_dot = 6.28;                 // rad/s, seed 000 section 4
-  std::array<double, 9> inertia = RigidBodyParams{}.inertia;  // kg m^2, row-major
-  std::array<double, 4> q0 = RigidBodyParams{}.q0;            // [x, y, z, w], normalised on use
-  std::array<double, 3> omega0 = RigidBodyParams{}.omega0;    // rad/s, body
-  double quaternion_norm_gain = 0.01;                         // 1/s, k above (see its description)
-  // --- parameters: orbit
-  double orbit_altitude = OrbitParams{}.altitude;        // m
-  double orbit_inclination = OrbitParams{}.inclination;  // rad
-  double orbit_raan = 0.0;                               // rad
-  double orbit_argument_of_latitude0 = 0.0;              // rad
-  // --- parameters: epoch (UTC at t = 0)
-  std::int32_t epoch_year = UtcDate{}.year;
-  std::int32_t epoch_month = UtcDate{}.month;
-  std::int32_t epoch_day = UtcDate{}.day;
-  std::int32_t epoch_hour = UtcDate{}.hour;
-  std::int32_t epoch_minute = UtcDate{}.minute;
-  double epoch_second = UtcDate{}.second;  // s
-  // --- parameters: sun
-  fmu::FixedString<16> sun_model = "almanac";  // almanac | seed002
-  std::int32_t equinox_year = EnvironmentParams{}.vernal_equinox.year;
-  std::int32_t equinox_month = EnvironmentParams{}.vernal_equinox.month;
-  std::int32_t equinox_day = EnvironmentParams{}.vernal_equinox.day;
-  std::int32_t equinox_hour = EnvironmentParams{}.vernal_equinox.hour;
-  std::int32_t equinox_minute = EnvironmentParams{}.vernal_equinox.minute;
-  double equinox_second = EnvironmentParams{}.vernal_equinox.second;                 // s
-  double seed002_elevation_amplitude = EnvironmentParams{}.seed002_elevation_amplitude;  // rad
-  double solar_constant = EnvironmentParams{}.solar_constant;                         // W/m^2
-  bool eclipse_enabled = true;
-  // --- parameters: field
-  fmu::FixedString<16> field_model = "igrf14";  // igrf14 | dipole
-  std::int32_t igrf_max_degree = EnvironmentParams{}.igrf_max_degree;
-  // --- parameters: albedo
-  bool albedo_enabled = true;
-  double albedo_reflectivity = AlbedoParams{}.reflectivity;  // 1
-  std::int32_t albedo_rings = AlbedoParams{}.rings;
-  std::int32_t albedo_sectors = AlbedoParams{}.sectors;
-  fmu::FixedString<8> albedo_response = "cosine";  // cosine | kelly: the faces' angular response to albedo
-  // --- calculated parameter
-  double orbit_period = 0.0;  // s
-  // --- continuous states and derivatives
-  std::array<double, 4> q = {0.0, 0.0, 0.0, 1.0};
-  std::array<double, 4> der_q{};
-  std::array<double, 3> omega{};
-  std::array<double, 3> der_omega{};
-  // --- outputs
-  std::array<double, 3> sun_body{};
-  std::array<double, 3> sun_eci{};
-  double irradiance = 0.0;
-  std::array<double, 6> albedo_face{};
-  std::array<double, 3> mag_body{};
-  std::array<double, 3> mag_eci{};
-  std::array<double, 4> q_true = {0.0, 0.0, 0.0, 1.0};
-  std::array<double, 3> omega_body{};
-  std::array<double, 3> r_eci{};
-  // --- locals
-  double sunlight_fraction = 1.0;
-  double sun_distance = 0.0;  // m
+    // --- parameters: attitude motion
+    fmu::FixedString<16> attitude_mode = "spin";                // spin | rigid_body
+    double spin_phi0 = 0.0;                                     // rad
+    double spin_theta0 = 0.0;                                   // rad
+    double spin_phi_dot = 1.26;                                 // rad/s, seed 000 section 4
+    double spin_theta_dot = 6.28;                               // rad/s, seed 000 section 4
+    std::array<double, 9> inertia = RigidBodyParams{}.inertia;  // kg m^2, row-major
+    std::array<double, 4> q0 = RigidBodyParams{}.q0;            // [x, y, z, w], normalised on use
+    std::array<double, 3> omega0 = RigidBodyParams{}.omega0;    // rad/s, body
+    double quaternion_norm_gain = 0.01;                         // 1/s, k above (see its description)
+    // --- parameters: orbit
+    double orbit_altitude = OrbitParams{}.altitude;        // m
+    double orbit_inclination = OrbitParams{}.inclination;  // rad
+    double orbit_raan = 0.0;                               // rad
+    double orbit_argument_of_latitude0 = 0.0;              // rad
+    // --- parameters: epoch (UTC at t = 0)
+    std::int32_t epoch_year = UtcDate{}.year;
+    std::int32_t epoch_month = UtcDate{}.month;
+    std::int32_t epoch_day = UtcDate{}.day;
+    std::int32_t epoch_hour = UtcDate{}.hour;
+    std::int32_t epoch_minute = UtcDate{}.minute;
+    double epoch_second = UtcDate{}.second;  // s
+    // --- parameters: sun
+    fmu::FixedString<16> sun_model = "almanac";  // almanac | seed002
+    std::int32_t equinox_year = EnvironmentParams{}.vernal_equinox.year;
+    std::int32_t equinox_month = EnvironmentParams{}.vernal_equinox.month;
+    std::int32_t equinox_day = EnvironmentParams{}.vernal_equinox.day;
+    std::int32_t equinox_hour = EnvironmentParams{}.vernal_equinox.hour;
+    std::int32_t equinox_minute = EnvironmentParams{}.vernal_equinox.minute;
+    double equinox_second = EnvironmentParams{}.vernal_equinox.second;                     // s
+    double seed002_elevation_amplitude = EnvironmentParams{}.seed002_elevation_amplitude;  // rad
+    double solar_constant = EnvironmentParams{}.solar_constant;                            // W/m^2
+    bool eclipse_enabled = true;
+    // --- parameters: field
+    fmu::FixedString<16> field_model = "igrf14";  // igrf14 | dipole
+    std::int32_t igrf_max_degree = EnvironmentParams{}.igrf_max_degree;
+    // --- parameters: albedo
+    bool albedo_enabled = true;
+    double albedo_reflectivity = AlbedoParams{}.reflectivity;  // 1
+    std::int32_t albedo_rings = AlbedoParams{}.rings;
+    std::int32_t albedo_sectors = AlbedoParams{}.sectors;
+    fmu::FixedString<8> albedo_response = "cosine";  // cosine | kelly: the faces' angular response to albedo
+    // --- calculated parameter
+    double orbit_period = 0.0;  // s
+    // --- continuous states and derivatives
+    std::array<double, 4> q = {0.0, 0.0, 0.0, 1.0};
+    std::array<double, 4> der_q{};
+    std::array<double, 3> omega{};
+    std::array<double, 3> der_omega{};
+    // --- outputs
+    std::array<double, 3> sun_body{};
+    std::array<double, 3> sun_eci{};
+    double irradiance = 0.0;
+    std::array<double, 6> albedo_face{};
+    std::array<double, 3> mag_body{};
+    std::array<double, 3> mag_eci{};
+    std::array<double, 4> q_true = {0.0, 0.0, 0.0, 1.0};
+    std::array<double, 3> omega_body{};
+    std::array<double, 3> r_eci{};
+    // --- locals
+    double sunlight_fraction = 1.0;
+    double sun_distance = 0.0;  // m
 };
 
 /// The core's parameters as set in the block's data (throws fmu::Error for an unknown selection).
 EnvironmentParams environment_params(const EnvironmentData& d);
 
 class EnvironmentBlock : public fmu::Block<EnvironmentBlock, EnvironmentData> {
- public:
-  static void declare(fmu::Table<EnvironmentData>& t);
-  static fmu::ModelInfo describe();
+public:
+    static void declare(fmu::Table<EnvironmentData>& t);
+    static fmu::ModelInfo describe();
 
-  void initialize(double t) override;
-  void evaluate(double t) override;
-  // The rigid-body derivatives alone (no sun, field or albedo): what a solver's Jacobian needs.
-  void evaluate_derivatives(double t) override;
-  void validate() const override;
+    void initialize(double t) override;
+    void evaluate(double t) override;
+    // The rigid-body derivatives alone (no sun, field or albedo): what a solver's Jacobian needs.
+    void evaluate_derivatives(double t) override;
+    void validate() const override;
 
- private:
-  // The core object for the current parameters. Rebuilt when any parameter's bytes differ from those
-  // it was built from, so FMU-state restores, resets and tunable changes are seen; a plain copyable
-  // member, so clone() copies it along.
-  const Environment& core() const;
-  bool parameters_match_cache() const;
-  void remember_parameters() const;
+private:
+    // The core object for the current parameters. Rebuilt when any parameter's bytes differ from those
+    // it was built from, so FMU-state restores, resets and tunable changes are seen; a plain copyable
+    // member, so clone() copies it along.
+    const Environment& core() const;
+    bool parameters_match_cache() const;
+    void remember_parameters() const;
 
-  mutable std::optional<Environment> core_;
-  mutable std::vector<std::byte> core_key_;
+    mutable std::optional<Environment> core_;
+    mutable std::vector<std::byte> core_key_;
 };
 
 }  // namespace environment

@@ -56,5 +56,7 @@ private:
 
 }  // namespace fmu
 
-#define FMU_BLOCK(ClassName) \
-    std::unique_ptr<::fmu::Model> fmu::make_model() { return std::make_unique<ClassName>(); }
+#define FMU_BLOCK(ClassName)                          \
+    std::unique_ptr<::fmu::Model> fmu::make_model() { \
+        return std::make_unique<ClassName>();         \
+    }

@@ -25,7 +25,7 @@ struct DefaultExperiment {
 struct ModelInfo {
     std::string model_identifier;  // folder, CMake target, .so and .fmu name: "magnetometer"
     std::string model_name;
-    std::string description;       // one line, for the model description
+    std::string description;         // one line, for the model description
     std::string documentation_html;  // the block's page in documentation/index.html (body fragment)
     std::string author = "pv_attitude_fmi contributors";
     std::string version = "0.1.0";

@@ -40,7 +40,9 @@ inline void require_finite(std::span<const double> xs, std::string_view name) {
 inline void require_bool(const bool& flag, std::string_view name) {
     unsigned char byte = 0;
     std::memcpy(&byte, &flag, 1);
-    if (byte > 1) throw Error("restored FMU state: " + std::string(name) + " is not a boolean (byte " + std::to_string(byte) + ")");
+    if (byte > 1)
+        throw Error("restored FMU state: " + std::string(name) + " is not a boolean (byte " + std::to_string(byte) +
+                    ")");
 }
 inline void require_range(std::int64_t value, std::int64_t lo, std::int64_t hi, std::string_view name) {
     if (value < lo || value > hi)

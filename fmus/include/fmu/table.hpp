@@ -143,8 +143,8 @@ public:
     Handle state(std::string_view name, F Data::*field, F Data::*derivative, std::string_view unit,
                  std::string_view description) {
         static_assert(std::is_same_v<typename detail::FieldTraits<F>::Scalar, double>, "states are Real");
-        Handle states = declare(name, field, unit, description, Causality::local, Variability::continuous,
-                                Initial::exact);
+        Handle states =
+            declare(name, field, unit, description, Causality::local, Variability::continuous, Initial::exact);
         const std::size_t first_state = variables_.size() - count_of<F>();
         const std::string der_name = "der(" + std::string(name) + ")";
         declare(der_name, derivative, derivative_unit(unit), "Time derivative of " + std::string(name),

@@ -17,25 +17,25 @@ enum class Variability { constant, fixed, tunable, discrete, continuous };
 enum class Initial { none, exact, approx, calculated };
 
 std::string_view to_string(ValueType v);
-std::string_view to_string(Causality c);   // the standard's spelling, e.g. "calculatedParameter"
+std::string_view to_string(Causality c);  // the standard's spelling, e.g. "calculatedParameter"
 std::string_view to_string(Variability v);
 std::string_view to_string(Initial i);
 
 struct Variable {
-    std::string name;         // structured name: "mag_body[2]", "der(b_filt[1])"
-    std::string base_name;    // the declared name: "mag_body"
+    std::string name;       // structured name: "mag_body[2]", "der(b_filt[1])"
+    std::string base_name;  // the declared name: "mag_body"
     std::string description;
-    std::string unit;         // empty: dimensionless without a unit
+    std::string unit;  // empty: dimensionless without a unit
     ValueType type = ValueType::Real;
     Causality causality = Causality::local;
     Variability variability = Variability::continuous;
     Initial initial = Initial::none;
     std::uint32_t value_reference = 0;
     std::optional<double> min, max, nominal;
-    std::vector<std::string> allowed_values;  // a String parameter that names one of a fixed set
-    std::size_t offset = 0;                   // byte offset of the value in the block's data struct
-    std::size_t string_capacity = 0;          // String only
-    std::optional<std::size_t> derivative_of; // index of the state this is the derivative of
+    std::vector<std::string> allowed_values;   // a String parameter that names one of a fixed set
+    std::size_t offset = 0;                    // byte offset of the value in the block's data struct
+    std::size_t string_capacity = 0;           // String only
+    std::optional<std::size_t> derivative_of;  // index of the state this is the derivative of
     // Outputs and derivatives: indices of the inputs and states this value depends on directly
     // (empty optional: not declared, meaning "may depend on every known").
     std::optional<std::vector<std::size_t>> dependencies;

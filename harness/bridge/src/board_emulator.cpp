@@ -23,19 +23,30 @@ std::vector<const fmu::Variable*> by_causality(const fmu::TableBase& table, fmu:
 // Every value on the wire is an f64: Integers travel exactly up to 2^53, Booleans as 0 or 1.
 void write_value(std::span<std::byte> data, const fmu::Variable& v, double x) {
     switch (v.type) {
-        case fmu::ValueType::Real: fmu::write_real(data, v, x); break;
-        case fmu::ValueType::Integer: fmu::write_integer(data, v, static_cast<std::int32_t>(std::lround(x))); break;
-        case fmu::ValueType::Boolean: fmu::write_boolean(data, v, x != 0.0); break;
-        case fmu::ValueType::String: throw fmu::Error(v.name + ": String variables cannot cross the link");
+        case fmu::ValueType::Real:
+            fmu::write_real(data, v, x);
+            break;
+        case fmu::ValueType::Integer:
+            fmu::write_integer(data, v, static_cast<std::int32_t>(std::lround(x)));
+            break;
+        case fmu::ValueType::Boolean:
+            fmu::write_boolean(data, v, x != 0.0);
+            break;
+        case fmu::ValueType::String:
+            throw fmu::Error(v.name + ": String variables cannot cross the link");
     }
 }
 
 double read_value(std::span<const std::byte> data, const fmu::Variable& v) {
     switch (v.type) {
-        case fmu::ValueType::Real: return fmu::read_real(data, v);
-        case fmu::ValueType::Integer: return fmu::read_integer(data, v);
-        case fmu::ValueType::Boolean: return fmu::read_boolean(data, v) ? 1.0 : 0.0;
-        case fmu::ValueType::String: break;
+        case fmu::ValueType::Real:
+            return fmu::read_real(data, v);
+        case fmu::ValueType::Integer:
+            return fmu::read_integer(data, v);
+        case fmu::ValueType::Boolean:
+            return fmu::read_boolean(data, v) ? 1.0 : 0.0;
+        case fmu::ValueType::String:
+            break;
     }
     throw fmu::Error(v.name + ": String variables cannot cross the link");
 }
@@ -47,7 +58,8 @@ BoardEmulator::BoardEmulator(std::unique_ptr<fmu::Model> model, const std::vecto
     inputs_ = by_causality(runner_.table(), fmu::Causality::input);
     outputs_ = by_causality(runner_.table(), fmu::Causality::output);
     if (inputs_.size() > max_values || outputs_.size() > max_values)
-        throw FrameError("the block has more inputs or outputs than a frame carries (" + std::to_string(max_values) + ")");
+        throw FrameError("the block has more inputs or outputs than a frame carries (" + std::to_string(max_values) +
+                         ")");
     apply_settings();
 }
 

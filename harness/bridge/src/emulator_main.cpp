@@ -35,16 +35,15 @@ int main(int argc, char** argv) {
         } else {
             const auto colon = udp.rfind(':');
             int port = -1;
-            if (colon != std::string::npos)
-                std::from_chars(udp.data() + colon + 1, udp.data() + udp.size(), port);
+            if (colon != std::string::npos) std::from_chars(udp.data() + colon + 1, udp.data() + udp.size(), port);
             if (port < 0 || port > 65535) throw std::runtime_error("--udp expects HOST:PORT, got '" + udp + "'");
             auto socket = bridge::UdpLink::bind(udp.substr(0, colon), static_cast<std::uint16_t>(port));
             std::cout << "udp " << udp.substr(0, colon) << ":" << socket->port() << std::endl;
             link = std::move(socket);
         }
         const auto s = bridge::serve(board, *link, options);
-        std::cerr << "board: " << s.requests << " requests, " << s.replies << " replies, " << s.dropped
-                  << " dropped, " << s.rejected << " rejected\n";
+        std::cerr << "board: " << s.requests << " requests, " << s.replies << " replies, " << s.dropped << " dropped, "
+                  << s.rejected << " rejected\n";
         return 0;
     } catch (const std::exception& e) {
         std::cerr << "board: " << e.what() << "\n";

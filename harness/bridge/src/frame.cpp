@@ -39,8 +39,7 @@ std::uint16_t crc16_ccitt(std::span<const std::uint8_t> bytes) {
     std::uint16_t crc = 0xFFFF;
     for (const std::uint8_t b : bytes) {
         crc = static_cast<std::uint16_t>(crc ^ (b << 8));
-        for (int i = 0; i < 8; ++i)
-            crc = static_cast<std::uint16_t>((crc & 0x8000) ? (crc << 1) ^ 0x1021 : crc << 1);
+        for (int i = 0; i < 8; ++i) crc = static_cast<std::uint16_t>((crc & 0x8000) ? (crc << 1) ^ 0x1021 : crc << 1);
     }
     return crc;
 }
@@ -75,7 +74,8 @@ Frame decode(std::span<const std::uint8_t> bytes) {
     if (bytes[2] != frame_version)
         throw FrameError("unsupported frame version " + std::to_string(bytes[2]) + " (expected " +
                          std::to_string(frame_version) + ")");
-    if (bytes[3] != static_cast<std::uint8_t>(FrameType::request) && bytes[3] != static_cast<std::uint8_t>(FrameType::reply))
+    if (bytes[3] != static_cast<std::uint8_t>(FrameType::request) &&
+        bytes[3] != static_cast<std::uint8_t>(FrameType::reply))
         throw FrameError("unknown frame type " + std::to_string(bytes[3]));
     const std::size_t n = get_u16(bytes, 16);
     if (n > max_values)

@@ -18,7 +18,9 @@ namespace bridge {
 
 namespace {
 
-[[noreturn]] void fail(const std::string& what) { throw LinkError(what + ": " + std::strerror(errno)); }
+[[noreturn]] void fail(const std::string& what) {
+    throw LinkError(what + ": " + std::strerror(errno));
+}
 
 sockaddr_in address(const std::string& host, std::uint16_t port) {
     sockaddr_in a{};
@@ -49,15 +51,24 @@ bool wait_readable(int fd, Clock::time_point deadline) {
 
 speed_t baud_constant(int baud) {
     switch (baud) {
-        case 9600: return B9600;
-        case 19200: return B19200;
-        case 38400: return B38400;
-        case 57600: return B57600;
-        case 115200: return B115200;
-        case 230400: return B230400;
-        case 460800: return B460800;
-        case 921600: return B921600;
-        default: throw LinkError("unsupported baud rate " + std::to_string(baud));
+        case 9600:
+            return B9600;
+        case 19200:
+            return B19200;
+        case 38400:
+            return B38400;
+        case 57600:
+            return B57600;
+        case 115200:
+            return B115200;
+        case 230400:
+            return B230400;
+        case 460800:
+            return B460800;
+        case 921600:
+            return B921600;
+        default:
+            throw LinkError("unsupported baud rate " + std::to_string(baud));
     }
 }
 
@@ -111,12 +122,15 @@ std::optional<std::vector<std::uint8_t>> UdpLink::receive(Clock::time_point dead
     while (wait_readable(fd_.get(), deadline)) {
         sockaddr_storage from{};
         socklen_t len = sizeof from;
-        const ssize_t r = ::recvfrom(fd_.get(), buffer.data(), buffer.size(), MSG_TRUNC, reinterpret_cast<sockaddr*>(&from), &len);
+        const ssize_t r =
+            ::recvfrom(fd_.get(), buffer.data(), buffer.size(), MSG_TRUNC, reinterpret_cast<sockaddr*>(&from), &len);
         if (r < 0) {
             if (errno == EINTR || errno == ECONNREFUSED || errno == EAGAIN) continue;
             fail("udp receive");
         }
-        if (!connected_) peer_.assign(reinterpret_cast<const std::uint8_t*>(&from), reinterpret_cast<const std::uint8_t*>(&from) + len);
+        if (!connected_)
+            peer_.assign(reinterpret_cast<const std::uint8_t*>(&from),
+                         reinterpret_cast<const std::uint8_t*>(&from) + len);
         // MSG_TRUNC gives the datagram's real length: an oversized one keeps it, so the codec refuses it.
         buffer.resize(static_cast<std::size_t>(r), 0);
         return buffer;

@@ -33,8 +33,10 @@ std::optional<std::vector<std::uint8_t>> SlipDecoder::feed(std::uint8_t byte) {
     if (discarding_) return std::nullopt;
     if (escaped_) {
         escaped_ = false;
-        if (byte == slip_esc_end) byte = slip_end;
-        else if (byte == slip_esc_esc) byte = slip_esc;
+        if (byte == slip_esc_end)
+            byte = slip_end;
+        else if (byte == slip_esc_esc)
+            byte = slip_esc;
         else {
             error_ = "bad SLIP escape";
             ++dropped_;

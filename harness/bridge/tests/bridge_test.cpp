@@ -118,11 +118,14 @@ struct Board {
     }
 };
 
-std::unique_ptr<bridge::UdpLink> free_udp() { return bridge::UdpLink::bind("127.0.0.1", 0); }
+std::unique_ptr<bridge::UdpLink> free_udp() {
+    return bridge::UdpLink::bind("127.0.0.1", 0);
+}
 
 void expect_identical(const Recorder& a, const Recorder& b) {
     ASSERT_EQ(a.rows.size(), b.rows.size());
-    for (std::size_t i = 0; i < a.rows.size(); ++i) EXPECT_EQ(a.rows[i], b.rows[i]) << "row " << i << " t = " << a.rows[i][0];
+    for (std::size_t i = 0; i < a.rows.size(); ++i)
+        EXPECT_EQ(a.rows[i], b.rows[i]) << "row " << i << " t = " << a.rows[i][0];
 }
 
 // Hand calculation: gain.y = k u = 2 * 1 (its defaults: k = 2, u starts at 1); int.y = 1 + 2 t / tau
@@ -246,8 +249,10 @@ TEST(Udp, MalformedRepliesAreRejected) {
             reply.type = bridge::FrameType::reply;
             reply.values.assign(3, 0.0);
             auto bytes = bridge::encode(reply);
-            if (i == 0) bytes[bridge::header_size] ^= 0x01;
-            else bytes.resize(bridge::max_frame_size + 100, 0x42);
+            if (i == 0)
+                bytes[bridge::header_size] ^= 0x01;
+            else
+                bytes.resize(bridge::max_frame_size + 100, 0x42);
             board->send(bytes);
         }
     });
@@ -339,7 +344,8 @@ TEST(Emulator, RejectsMalformedRequestsAndGoesOn) {
 
 TEST(Ssd, BridgeAnnotationIsReadAndChecked) {
     {
-        SsdFile ssd(annotation(R"(transport="serial" device="/dev/ttyUSB0" baud="57600" timeout_ms="50" max_misses="7" policy="stop")"));
+        SsdFile ssd(annotation(
+            R"(transport="serial" device="/dev/ttyUSB0" baud="57600" timeout_ms="50" max_misses="7" policy="stop")"));
         const auto d = read_system_description(ssd.path);
         ASSERT_TRUE(d.components[2].bridge);
         EXPECT_EQ(d.components[2].bridge->transport, "serial");

@@ -36,7 +36,9 @@ std::string rejection(std::span<const std::uint8_t> bytes) {
 
 // The catalogue check value of CRC-16/CCITT-FALSE over the ASCII digits "123456789" is 0x29B1
 // (Greg Cook's CRC catalogue, "CRC-16/IBM-3740", formerly CCITT-FALSE).
-TEST(Codec, CrcCheckValue) { EXPECT_EQ(crc16_ccitt(bytes_of("123456789")), 0x29B1); }
+TEST(Codec, CrcCheckValue) {
+    EXPECT_EQ(crc16_ccitt(bytes_of("123456789")), 0x29B1);
+}
 
 TEST(Codec, RoundTripKeepsEveryBit) {
     const Frame f = sample_frame();
@@ -171,7 +173,8 @@ TEST(Slip, EscapesEndAndEscBytes) {
     const std::vector<std::uint8_t> raw = {1, slip_end, 2, slip_esc, 3};
     const auto enc = slip_encode(raw);
     // RFC 1055: END -> ESC ESC_END, ESC -> ESC ESC_ESC, framed by END on both sides.
-    const std::vector<std::uint8_t> expected = {slip_end, 1, slip_esc, slip_esc_end, 2, slip_esc, slip_esc_esc, 3, slip_end};
+    const std::vector<std::uint8_t> expected = {slip_end,     1, slip_esc, slip_esc_end, 2, slip_esc,
+                                                slip_esc_esc, 3, slip_end};
     EXPECT_EQ(enc, expected);
     SlipDecoder d(max_frame_size);
     const auto frames = feed_all(d, enc);

@@ -44,7 +44,8 @@ struct EmulatorProcess {
         posix_spawn_file_actions_adddup2(&actions, out[1], STDOUT_FILENO);
         posix_spawn_file_actions_addclose(&actions, out[0]);
         const std::string exe = emulator.string();
-        std::vector<std::string> args = {exe, "--udp", "127.0.0.1:0", "--set", "solver=qmethod", "--idle-timeout", "20"};
+        std::vector<std::string> args = {exe, "--udp", "127.0.0.1:0", "--set", "solver=qmethod", "--idle-timeout",
+                                         "20"};
         std::vector<char*> argv;
         for (auto& a : args) argv.push_back(a.data());
         argv.push_back(nullptr);
@@ -99,7 +100,8 @@ std::filesystem::path system_file(const std::string& ssd, bool with_plant) {
     std::istringstream lines(text);
     std::string out, line;
     while (std::getline(lines, line))
-        if (line.find("<ssd:Connection ") == std::string::npos || line.find("\"plant\"") == std::string::npos) out += line + "\n";
+        if (line.find("<ssd:Connection ") == std::string::npos || line.find("\"plant\"") == std::string::npos)
+            out += line + "\n";
     const auto path = std::filesystem::temp_directory_path() / ("no_plant_" + std::to_string(::getpid()) + "_" + ssd);
     std::ofstream(path) << out;
     return path;

@@ -32,7 +32,8 @@ CampaignSetup setup_from(const CampaignOptions& options) {
 
 int replay(const CampaignSetup& setup, long index, std::ostream& out) {
     if (index < 0 || index >= setup.spec.runs)
-        throw CampaignError("--run " + std::to_string(index) + ": the campaign has runs 0 to " + std::to_string(setup.spec.runs - 1));
+        throw CampaignError("--run " + std::to_string(index) + ": the campaign has runs 0 to " +
+                            std::to_string(setup.spec.runs - 1));
     std::filesystem::create_directories(setup.spec.output);
     const auto csv = setup.spec.output / ("run_" + std::to_string(index) + ".csv");
     const auto row_file = setup.spec.output / ("run_" + std::to_string(index) + ".row.csv");
@@ -42,7 +43,8 @@ int replay(const CampaignSetup& setup, long index, std::ostream& out) {
     out << "run " << index << ": " << r.status << (r.message.empty() ? "" : ": " + r.message) << "\n";
     const auto header = table_header(setup.spec);
     const auto cells = split_csv_line(format_row(r));
-    for (std::size_t i = 1; i + trailing_columns < header.size(); ++i) out << "  " << header[i] << " = " << cells[i] << "\n";
+    for (std::size_t i = 1; i + trailing_columns < header.size(); ++i)
+        out << "  " << header[i] << " = " << cells[i] << "\n";
     out << "full CSV: " << csv.string() << "\nits row: " << row_file.string() << "\n";
     return 0;
 }
@@ -55,22 +57,28 @@ int campaign_on_rank0(const CampaignSetup& setup, const CampaignOptions& options
     std::map<long, std::string> rows;
     const bool append = options.resume && std::filesystem::exists(table_file);
     if (!append && std::filesystem::exists(table_file))
-        throw CampaignError(table_file.string() + " exists: give --resume to continue that campaign, or another --output");
+        throw CampaignError(table_file.string() +
+                            " exists: give --resume to continue that campaign, or another --output");
     record_identity(spec.output, campaign_identity(setup), append);
     if (append) rows = read_results(table_file, header, spec.runs);
     ResultsWriter writer(table_file, header, append);
     std::vector<long> to_do;
     for (long i = 0; i < spec.runs; ++i)
         if (!rows.contains(i)) to_do.push_back(i);
-    if (append) out << "resuming: " << rows.size() << " runs in " << table_file.string() << ", " << to_do.size() << " to do\n";
+    if (append)
+        out << "resuming: " << rows.size() << " runs in " << table_file.string() << ", " << to_do.size() << " to do\n";
 
     Progress progress = Progress::none;
-    if (options.progress && isatty(fileno(stderr))) progress = Progress::terminal;
-    else if (options.progress && options.progress_lines) progress = Progress::log;
+    if (options.progress && isatty(fileno(stderr)))
+        progress = Progress::terminal;
+    else if (options.progress && options.progress_lines)
+        progress = Progress::log;
     Collector collector(writer, rows, static_cast<long>(to_do.size()), ranks, progress);
 #ifdef PVATT_MPI
-    if (ranks > 1) run_distributed(setup, to_do, collector, ranks);
-    else run_sequential(setup, to_do, collector);
+    if (ranks > 1)
+        run_distributed(setup, to_do, collector, ranks);
+    else
+        run_sequential(setup, to_do, collector);
 #else
     run_sequential(setup, to_do, collector);
 #endif

@@ -39,7 +39,8 @@ std::string campaign_identity(const CampaignSetup& s) {
     }
     for (const auto& m : s.spec.metrics)
         id << "metric " << m.name << " kind " << static_cast<int>(m.kind) << " a " << m.a << " b " << m.b << " valid "
-           << m.valid << " when " << m.when << " after " << format_real(m.after) << " stats [" << join(m.stats) << "]\n";
+           << m.valid << " when " << m.when << " after " << format_real(m.after) << " stats [" << join(m.stats)
+           << "]\n";
     return id.str();
 }
 
@@ -53,10 +54,9 @@ void record_identity(const std::filesystem::path& dir, const std::string& identi
         if (text.str() == identity) return;
         std::istringstream was(text.str()), is(identity);
         std::string a, b;
-        while (std::getline(was, a) && std::getline(is, b) && a == b) {
-        }
-        throw CampaignError("--resume: the campaign in " + dir.string() + " was run with other settings (" + file.string() +
-                            " has '" + a + "', this invocation '" + b + "'): use another --output");
+        while (std::getline(was, a) && std::getline(is, b) && a == b) {}
+        throw CampaignError("--resume: the campaign in " + dir.string() + " was run with other settings (" +
+                            file.string() + " has '" + a + "', this invocation '" + b + "'): use another --output");
     }
     const auto temporary = std::filesystem::path(file.string() + ".writing");
     {

@@ -24,7 +24,9 @@ struct InterruptCheck : cosim::Observer {
 };
 
 // The variable a "component.variable=value" setting names.
-std::string setting_variable(const std::string& setting) { return setting.substr(0, setting.find('=')); }
+std::string setting_variable(const std::string& setting) {
+    return setting.substr(0, setting.find('='));
+}
 
 void check_variable(const cosim::System& system, const std::string& name, const std::string& what) {
     const auto dot = name.find('.');
@@ -50,7 +52,8 @@ CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path
         for (const auto& d : spec.draws)
             for (const auto& v : drawn_variables(d))
                 if (setting_variable(setting) == v)
-                    throw CampaignError("--set " + setting + ": '" + v + "' is drawn by the spec; remove the draw or the --set");
+                    throw CampaignError("--set " + setting + ": '" + v +
+                                        "' is drawn by the spec; remove the draw or the --set");
         s.options.settings.push_back(setting);
     }
     s.options.tolerance = spec.tolerance;
@@ -63,15 +66,17 @@ CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path
 
     s.start_time = s.description.start_time.value_or(0.0);
     const auto stop = spec.stop_time ? spec.stop_time : s.description.stop_time;
-    if (!stop) throw CampaignError(spec.system.string() + " has no DefaultExperiment stopTime: give stop_time in the spec");
+    if (!stop)
+        throw CampaignError(spec.system.string() + " has no DefaultExperiment stopTime: give stop_time in the spec");
     s.stop_time = *stop;
     if (!(s.stop_time > s.start_time)) throw CampaignError("the stop time must be after the start time");
     const cosim::RunDefaults defaults = cosim::run_defaults(system, s.start_time, s.stop_time);  // as `cosim run`
     const double span = s.stop_time - s.start_time;
     s.output_interval = spec.output_interval.value_or(defaults.output_interval);
-    if (!(s.output_interval > 0.0) || !std::isfinite(s.output_interval) || span / s.output_interval > cosim::max_run_points)
-        throw CampaignError("the output interval must be positive and give at most " + std::to_string(cosim::max_run_points) +
-                            " output points per run (max_run_points)");
+    if (!(s.output_interval > 0.0) || !std::isfinite(s.output_interval) ||
+        span / s.output_interval > cosim::max_run_points)
+        throw CampaignError("the output interval must be positive and give at most " +
+                            std::to_string(cosim::max_run_points) + " output points per run (max_run_points)");
     s.tolerance = spec.tolerance.value_or(defaults.tolerance);
     s.spec = std::move(spec);
     return s;

@@ -34,6 +34,7 @@ CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path
 
 // `full_csv`: also write every output at every output point there (the replay of --run). A signal
 // (cosim::install_interrupt_handlers) throws cosim::Interrupted out of it: that is not a failed run.
-RunResult run_one(const CampaignSetup& setup, long index, const std::optional<std::filesystem::path>& full_csv = std::nullopt);
+RunResult run_one(const CampaignSetup& setup, long index,
+                  const std::optional<std::filesystem::path>& full_csv = std::nullopt);
 
 }  // namespace campaign

@@ -27,7 +27,8 @@ struct Context {
     [[noreturn]] void fail(const std::string& what) const { throw CampaignError(file + ": " + what); }
 };
 
-void only_keys(const Context& cx, const toml::table& t, const std::string& where, const std::set<std::string>& allowed) {
+void only_keys(const Context& cx, const toml::table& t, const std::string& where,
+               const std::set<std::string>& allowed) {
     for (const auto& [key, node] : t)
         if (!allowed.contains(std::string(key.str())))
             cx.fail(node, where + ": unknown key '" + std::string(key.str()) + "'");
@@ -96,7 +97,8 @@ double epoch_seconds(const Context& cx, const toml::node& n, const std::string& 
 // "env.q0": a component and a variable (prefix), both non-empty.
 void check_target(const Context& cx, const toml::node& at, const std::string& target, const std::string& what) {
     const auto dot = target.find('.');
-    if (dot == std::string::npos || dot == 0 || dot + 1 == target.size() || target.find_first_of("=,\"\n") != std::string::npos)
+    if (dot == std::string::npos || dot == 0 || dot + 1 == target.size() ||
+        target.find_first_of("=,\"\n") != std::string::npos)
         cx.fail(at, what + ": '" + target + "' is not component.variable");
 }
 
@@ -153,7 +155,8 @@ Draw read_draw(const Context& cx, const toml::table& t, std::size_t index) {
         d.values = value_list(cx, t, where);
         if (const auto* w = t.get("weights")) {
             const auto* arr = w->as_array();
-            if (!arr || arr->size() != d.values.size()) cx.fail(*w, where + ": 'weights' must be an array as long as 'values'");
+            if (!arr || arr->size() != d.values.size())
+                cx.fail(*w, where + ": 'weights' must be an array as long as 'values'");
             for (const auto& x : *arr) {
                 d.weights.push_back(number(cx, x, where + ": each weight"));
                 if (d.weights.back() < 0.0) cx.fail(x, where + ": weights must not be negative");
@@ -179,7 +182,8 @@ Draw read_draw(const Context& cx, const toml::table& t, std::size_t index) {
         d.kind = DrawKind::epoch;
         d.epoch_from = epoch_seconds(cx, required(cx, t, "from", where), where + ": 'from'");
         d.epoch_to = epoch_seconds(cx, required(cx, t, "to", where), where + ": 'to'");
-        if (d.epoch_to - d.epoch_from < 1e-3) cx.fail(t, where + ": 'to' must be after 'from' (epochs are drawn to the millisecond)");
+        if (d.epoch_to - d.epoch_from < 1e-3)
+            cx.fail(t, where + ": 'to' must be after 'from' (epochs are drawn to the millisecond)");
     } else {
         cx.fail(t, where + ": unknown kind '" + kind +
                        "' (uniform, normal, integer, choice, grid, list, quaternion, tumble, epoch)");
@@ -238,8 +242,9 @@ Metric read_metric(const Context& cx, const toml::table& t, std::size_t index) {
         for (const auto& x : *arr) {
             m.stats.push_back(string(cx, x, where + ": each of 'stats'"));
             if (!valid_stat(m.stats.back()))
-                cx.fail(x, where + ": unknown statistic '" + m.stats.back() +
-                               "' (mean, rms, min, max, final, count, or a percentile p0 to p100 such as p95 or p99.9)");
+                cx.fail(x,
+                        where + ": unknown statistic '" + m.stats.back() +
+                            "' (mean, rms, min, max, final, count, or a percentile p0 to p100 such as p95 or p99.9)");
         }
     }
     for (std::size_t i = 0; i < m.stats.size(); ++i)
@@ -269,7 +274,8 @@ CampaignSpec parse_spec(const std::string& text, const std::filesystem::path& fi
     try {
         root = toml::parse(text, file.string());
     } catch (const toml::parse_error& e) {
-        throw CampaignError(file.string() + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()));
+        throw CampaignError(file.string() + ":" + std::to_string(e.source().begin.line) + ": " +
+                            std::string(e.description()));
     }
     only_keys(cx, root, "campaign",
               {"system", "stop_time", "output_interval", "tolerance", "runs", "seed", "paired", "fmu_dirs", "output",
@@ -303,8 +309,10 @@ CampaignSpec parse_spec(const std::string& text, const std::filesystem::path& fi
         if (!arr) cx.fail(*n, "'fmu_dirs' must be an array of strings");
         for (const auto& d : *arr) spec.fmu_dirs.push_back(relative_to(base, string(cx, d, "each of 'fmu_dirs'")));
     }
-    if (const auto* n = root.get("output")) spec.output = string(cx, *n, "'output'");
-    else spec.output = file.stem().string() + "_results";
+    if (const auto* n = root.get("output"))
+        spec.output = string(cx, *n, "'output'");
+    else
+        spec.output = file.stem().string() + "_results";
 
     if (const auto* n = root.get("set")) {
         const auto* t = n->as_table();
@@ -323,7 +331,8 @@ CampaignSpec parse_spec(const std::string& text, const std::filesystem::path& fi
     if (const auto* n = root.get("metric")) {
         const auto* arr = n->as_array();
         if (!arr || !arr->is_array_of_tables()) cx.fail(*n, "metrics are written [[metric]]");
-        for (std::size_t i = 0; i < arr->size(); ++i) spec.metrics.push_back(read_metric(cx, *arr->get(i)->as_table(), i));
+        for (std::size_t i = 0; i < arr->size(); ++i)
+            spec.metrics.push_back(read_metric(cx, *arr->get(i)->as_table(), i));
     }
     std::set<std::string> targets, names;
     for (const auto& d : spec.draws)

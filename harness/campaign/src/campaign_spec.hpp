@@ -23,14 +23,14 @@ struct SpecValue {
 
 struct Draw {
     DrawKind kind = DrawKind::uniform;
-    std::string target;  // "component.variable" or, for quaternion/tumble/epoch, the variable prefix
-    double min = 0.0, max = 0.0;           // uniform, integer (inclusive), tumble rate; normal truncation
-    double mean = 0.0, sd = 0.0;           // normal
+    std::string target;           // "component.variable" or, for quaternion/tumble/epoch, the variable prefix
+    double min = 0.0, max = 0.0;  // uniform, integer (inclusive), tumble rate; normal truncation
+    double mean = 0.0, sd = 0.0;  // normal
     bool truncated_below = false, truncated_above = false;  // normal
-    std::vector<SpecValue> values;         // choice, grid
-    std::vector<double> weights;           // choice (empty: equal)
-    double epoch_from = 0.0, epoch_to = 0.0;  // epoch: seconds since 1970-01-01T00:00:00 UTC
-    bool figure = true;                    // draw the metrics against it (false for a noise seed)
+    std::vector<SpecValue> values;                          // choice, grid
+    std::vector<double> weights;                            // choice (empty: equal)
+    double epoch_from = 0.0, epoch_to = 0.0;                // epoch: seconds since 1970-01-01T00:00:00 UTC
+    bool figure = true;                                     // draw the metrics against it (false for a noise seed)
 };
 
 enum class MetricKind { quaternion_angle, vector_angle, column };
@@ -38,22 +38,22 @@ enum class MetricKind { quaternion_angle, vector_angle, column };
 struct Metric {
     std::string name;
     MetricKind kind = MetricKind::column;
-    std::string a, b;         // angle metrics: the two column groups' prefixes; column: a is the column
-    std::string valid;        // sample only while this column is true / nonzero ("" = always)
-    std::string when;         // sample only where this column changed since the last output point
-    double after = 0.0;       // ignore output points before this time (s)
+    std::string a, b;                // angle metrics: the two column groups' prefixes; column: a is the column
+    std::string valid;               // sample only while this column is true / nonzero ("" = always)
+    std::string when;                // sample only where this column changed since the last output point
+    double after = 0.0;              // ignore output points before this time (s)
     std::vector<std::string> stats;  // mean, rms, min, max, final, count, pNN
-    std::string figure_stat;  // the per-run value plotted against the drawn quantities
+    std::string figure_stat;         // the per-run value plotted against the drawn quantities
 };
 
 struct CampaignSpec {
     std::filesystem::path file;
-    std::filesystem::path system;       // .ssd, resolved against the spec's folder
-    std::optional<double> stop_time;    // default: the .ssd's DefaultExperiment stopTime
+    std::filesystem::path system;     // .ssd, resolved against the spec's folder
+    std::optional<double> stop_time;  // default: the .ssd's DefaultExperiment stopTime
     std::optional<double> output_interval, tolerance;
     long runs = 0;
     std::uint64_t seed = 0;
-    bool paired = false;                // random draws per scene: every grid combination sees the same scenes
+    bool paired = false;  // random draws per scene: every grid combination sees the same scenes
     std::vector<std::filesystem::path> fmu_dirs;
     std::filesystem::path output;       // default: "<spec name>_results" in the working directory
     std::vector<std::string> settings;  // "component.variable=value", before the draws

@@ -23,9 +23,13 @@ std::uint64_t splitmix(std::uint64_t x) {
 }
 
 // Uniform in [0, 1) from the top 53 bits.
-double unit(fmu::Random& rng) { return static_cast<double>(rng.next() >> 11) * 0x1.0p-53; }
+double unit(fmu::Random& rng) {
+    return static_cast<double>(rng.next() >> 11) * 0x1.0p-53;
+}
 
-std::string element(const std::string& prefix, int i) { return prefix + "[" + std::to_string(i) + "]"; }
+std::string element(const std::string& prefix, int i) {
+    return prefix + "[" + std::to_string(i) + "]";
+}
 
 // "env.epoch" -> "env.epoch_year" ...
 const char* const epoch_fields[] = {"_year", "_month", "_day", "_hour", "_minute", "_second"};
@@ -44,7 +48,7 @@ void add_epoch(const Draw& d, fmu::Random& rng, RunDraws& out) {
     const int day = static_cast<int>(static_cast<unsigned>(ymd.day()));
     const int hour = static_cast<int>(ms / 3'600'000), minute = static_cast<int>(ms / 60'000 % 60);
     const double second = static_cast<double>(ms % 60'000) / 1000.0;
-    const std::string values[] = {std::to_string(year), std::to_string(month), std::to_string(day),
+    const std::string values[] = {std::to_string(year), std::to_string(month),  std::to_string(day),
                                   std::to_string(hour), std::to_string(minute), format_real(second)};
     for (int i = 0; i < 6; ++i) out.settings.push_back(d.target + epoch_fields[i] + "=" + values[i]);
     char iso[64];
@@ -76,7 +80,8 @@ std::vector<DrawColumn> draw_columns(const CampaignSpec& spec) {
                 out.push_back({d.target, false});
                 out.push_back({d.target + ".days", d.figure});
                 break;
-            default: out.push_back({d.target, d.figure});
+            default:
+                out.push_back({d.target, d.figure});
         }
     }
     return out;
@@ -117,12 +122,15 @@ RunDraws draw_run(const CampaignSpec& spec, long index) {
             out.cells.push_back(text);
         };
         switch (d.kind) {
-            case DrawKind::uniform: set(d.target, format_real(d.min + (d.max - d.min) * unit(rng))); break;
+            case DrawKind::uniform:
+                set(d.target, format_real(d.min + (d.max - d.min) * unit(rng)));
+                break;
             case DrawKind::normal: {
                 // Rejection keeps the exact truncated distribution; the spec guarantees at least
                 // min_truncated_normal_mass acceptance, so this bound is never the limit in practice.
                 for (long tries = 0;; ++tries) {
-                    if (tries == 100'000'000) throw CampaignError(d.target + ": truncated normal draw did not land in its interval");
+                    if (tries == 100'000'000)
+                        throw CampaignError(d.target + ": truncated normal draw did not land in its interval");
                     const double x = d.mean + d.sd * rng.normal();
                     if (x >= d.min && x <= d.max) {
                         set(d.target, format_real(x));
@@ -140,7 +148,8 @@ RunDraws draw_run(const CampaignSpec& spec, long index) {
             case DrawKind::choice: {
                 std::size_t pick = 0;
                 if (d.weights.empty()) {
-                    pick = std::min(static_cast<std::size_t>(unit(rng) * static_cast<double>(d.values.size())), d.values.size() - 1);
+                    pick = std::min(static_cast<std::size_t>(unit(rng) * static_cast<double>(d.values.size())),
+                                    d.values.size() - 1);
                 } else {
                     double total = 0.0;
                     for (double w : d.weights) total += w;
@@ -168,7 +177,8 @@ RunDraws draw_run(const CampaignSpec& spec, long index) {
                 // Shoemake (1992), "Uniform random rotations", Graphics Gems III: uniform on SO(3).
                 const double u1 = unit(rng), u2 = unit(rng), u3 = unit(rng);
                 const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1), tau = 2.0 * std::numbers::pi;
-                const double q[4] = {a * std::sin(tau * u2), a * std::cos(tau * u2), b * std::sin(tau * u3), b * std::cos(tau * u3)};
+                const double q[4] = {a * std::sin(tau * u2), a * std::cos(tau * u2), b * std::sin(tau * u3),
+                                     b * std::cos(tau * u3)};
                 for (int i = 0; i < 4; ++i) set(element(d.target, i + 1), format_real(q[i]));
                 break;
             }
@@ -181,7 +191,9 @@ RunDraws draw_run(const CampaignSpec& spec, long index) {
                 out.cells.push_back(format_real(rate));
                 break;
             }
-            case DrawKind::epoch: add_epoch(d, rng, out); break;
+            case DrawKind::epoch:
+                add_epoch(d, rng, out);
+                break;
         }
     }
     return out;

@@ -35,25 +35,31 @@ std::vector<std::string> metric_columns(const CampaignSpec& spec) {
     return out;
 }
 
-MetricObserver::Column MetricObserver::resolve(const cosim::System& system, const std::string& name, const std::string& metric) {
+MetricObserver::Column MetricObserver::resolve(const cosim::System& system, const std::string& name,
+                                               const std::string& metric) {
     const auto dot = name.find('.');
     const auto& components = system.components();
     std::size_t index = components.size();
     for (std::size_t i = 0; i < components.size(); ++i)
         if (components[i].name == name.substr(0, dot)) index = i;
-    if (index == components.size()) throw CampaignError("metric " + metric + ": no component named '" + name.substr(0, dot) + "'");
+    if (index == components.size())
+        throw CampaignError("metric " + metric + ": no component named '" + name.substr(0, dot) + "'");
     const auto* v = components[index].description().find_variable(name.substr(dot + 1));
     if (!v) throw CampaignError("metric " + metric + ": no variable '" + name + "'");
-    if (v->type == fmi_loader::VariableType::string) throw CampaignError("metric " + metric + ": '" + name + "' is a String");
+    if (v->type == fmi_loader::VariableType::string)
+        throw CampaignError("metric " + metric + ": '" + name + "' is a String");
     return {index, v};
 }
 
 double MetricObserver::read(cosim::System& system, const Column& c) {
     auto& instance = *system.components()[c.component].instance;
     switch (c.variable->type) {
-        case fmi_loader::VariableType::real: return instance.get_real(c.variable->value_reference);
-        case fmi_loader::VariableType::boolean: return instance.get_boolean(c.variable->value_reference) ? 1.0 : 0.0;
-        default: return static_cast<double>(instance.get_integer(c.variable->value_reference));
+        case fmi_loader::VariableType::real:
+            return instance.get_real(c.variable->value_reference);
+        case fmi_loader::VariableType::boolean:
+            return instance.get_boolean(c.variable->value_reference) ? 1.0 : 0.0;
+        default:
+            return static_cast<double>(instance.get_integer(c.variable->value_reference));
     }
 }
 
@@ -95,7 +101,8 @@ void MetricObserver::sample(double t, cosim::System& system) {
                 a[i] = read(system, k.a[i]);
                 b[i] = read(system, k.b[i]);
             }
-            value = m.kind == MetricKind::quaternion_angle ? cosim::attitude_error_degrees(a, b) : vector_angle_degrees(a, b);
+            value = m.kind == MetricKind::quaternion_angle ? cosim::attitude_error_degrees(a, b)
+                                                           : vector_angle_degrees(a, b);
         }
         if (!std::isfinite(value)) continue;  // a zero vector or quaternion has no angle
         if (k.values.size() == max_metric_samples)

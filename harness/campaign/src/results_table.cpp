@@ -23,9 +23,12 @@ std::string csv_cell(const std::string& text) {
     if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
     std::string out = "\"";
     for (char c : text) {
-        if (c == '"') out += "\"\"";
-        else if (c == '\n' || c == '\r') out += ' ';
-        else out += c;
+        if (c == '"')
+            out += "\"\"";
+        else if (c == '\n' || c == '\r')
+            out += ' ';
+        else
+            out += c;
     }
     return out + "\"";
 }
@@ -91,9 +94,12 @@ void ResultsWriter::write(const std::string& text) {
         throw CampaignError("cannot write " + file_.string() + ": " + std::strerror(errno));
 }
 
-void ResultsWriter::append(const std::string& row) { write(row + "\n"); }
+void ResultsWriter::append(const std::string& row) {
+    write(row + "\n");
+}
 
-std::map<long, std::string> read_results(const std::filesystem::path& file, const std::vector<std::string>& header, long runs) {
+std::map<long, std::string> read_results(const std::filesystem::path& file, const std::vector<std::string>& header,
+                                         long runs) {
     std::ifstream in(file, std::ios::binary);
     if (!in) throw CampaignError("--resume: cannot read " + file.string());
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -116,12 +122,14 @@ std::map<long, std::string> read_results(const std::filesystem::path& file, cons
         const std::string where = file.string() + ":" + std::to_string(line_number) + ": ";
         if (line_number == 1) {
             if (cells != header)
-                throw CampaignError(where + "the header differs from what this spec writes (another spec or version): "
-                                            "use another --output");
+                throw CampaignError(where +
+                                    "the header differs from what this spec writes (another spec or version): "
+                                    "use another --output");
             continue;
         }
-        if (cells.size() != header.size()) throw CampaignError(where + "a row of " + std::to_string(cells.size()) +
-                                                               " cells where the header has " + std::to_string(header.size()));
+        if (cells.size() != header.size())
+            throw CampaignError(where + "a row of " + std::to_string(cells.size()) + " cells where the header has " +
+                                std::to_string(header.size()));
         long index = -1;
         try {
             index = static_cast<long>(cosim::parse_integer(cells[run_column], "run index"));
@@ -130,14 +138,16 @@ std::map<long, std::string> read_results(const std::filesystem::path& file, cons
         }
         if (index < 0) throw CampaignError(where + "negative run index");
         if (index >= runs)
-            throw CampaignError(where + "run " + std::to_string(index) + " is beyond this campaign's " + std::to_string(runs) +
-                                " runs (--runs smaller than when it was written?)");
-        if (!rows.emplace(index, line).second) throw CampaignError(where + "run " + std::to_string(index) + " appears twice");
+            throw CampaignError(where + "run " + std::to_string(index) + " is beyond this campaign's " +
+                                std::to_string(runs) + " runs (--runs smaller than when it was written?)");
+        if (!rows.emplace(index, line).second)
+            throw CampaignError(where + "run " + std::to_string(index) + " appears twice");
     }
     return rows;
 }
 
-void write_sorted(const std::filesystem::path& file, const std::vector<std::string>& header, const std::map<long, std::string>& rows) {
+void write_sorted(const std::filesystem::path& file, const std::vector<std::string>& header,
+                  const std::map<long, std::string>& rows) {
     const auto temporary = std::filesystem::path(file.string() + ".sorting");
     {
         std::FILE* out = std::fopen(temporary.c_str(), "w");
@@ -145,7 +155,8 @@ void write_sorted(const std::filesystem::path& file, const std::vector<std::stri
         std::string text = join(header) + "\n";
         for (const auto& [index, row] : rows) text += row + "\n";
         const bool ok = std::fwrite(text.data(), 1, text.size(), out) == text.size();
-        if (std::fclose(out) != 0 || !ok) throw CampaignError("cannot write " + temporary.string() + ": " + std::strerror(errno));
+        if (std::fclose(out) != 0 || !ok)
+            throw CampaignError("cannot write " + temporary.string() + ": " + std::strerror(errno));
     }
     std::filesystem::rename(temporary, file);
 }

@@ -51,9 +51,11 @@ private:
 
 // Rows of an existing table by run index, checked against the header this spec writes. A last line
 // without its line end (the row being written when the campaign was killed) is cut off the file.
-std::map<long, std::string> read_results(const std::filesystem::path& file, const std::vector<std::string>& header, long runs);
+std::map<long, std::string> read_results(const std::filesystem::path& file, const std::vector<std::string>& header,
+                                         long runs);
 
 // The whole table in run order, through a temporary file renamed over it.
-void write_sorted(const std::filesystem::path& file, const std::vector<std::string>& header, const std::map<long, std::string>& rows);
+void write_sorted(const std::filesystem::path& file, const std::vector<std::string>& header,
+                  const std::map<long, std::string>& rows);
 
 }  // namespace campaign

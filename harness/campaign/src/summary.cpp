@@ -67,7 +67,8 @@ std::string file_name(const std::string& text) {
 void run_gnuplot(const std::string& script, const std::filesystem::path& png) {
     const auto log = std::filesystem::path(png.string() + ".gnuplot.log");
     const std::string command = "gnuplot > '" + log.string() + "' 2>&1";
-    if (log.string().find('\'') != std::string::npos) throw CampaignError("a quote in the output folder's name: " + log.string());
+    if (log.string().find('\'') != std::string::npos)
+        throw CampaignError("a quote in the output folder's name: " + log.string());
     FILE* gp = popen(command.c_str(), "w");
     if (!gp) throw CampaignError("cannot start gnuplot (install the Debian package gnuplot-nox)");
     std::fputs(script.c_str(), gp);
@@ -86,8 +87,8 @@ void run_gnuplot(const std::string& script, const std::filesystem::path& png) {
 std::string preamble(const std::filesystem::path& png, const std::string& title, const std::string& xlabel,
                      const std::string& ylabel) {
     return "set terminal pngcairo noenhanced size 1000,650 font 'sans,11'\nset output " + gp_string(png.string()) +
-           "\nset title " + gp_string(title) + "\nset xlabel " + gp_string(xlabel) + "\nset ylabel " + gp_string(ylabel) +
-           "\nset grid\nset key bottom right\n";
+           "\nset title " + gp_string(title) + "\nset xlabel " + gp_string(xlabel) + "\nset ylabel " +
+           gp_string(ylabel) + "\nset grid\nset key bottom right\n";
 }
 
 // The data files of the figures: removed when the figures are drawn, or when drawing fails.
@@ -126,7 +127,8 @@ std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir
             std::sort(values.begin(), values.end());
             std::ostringstream text;
             for (std::size_t i = 0; i < values.size(); ++i)
-                text << cosim::format_real(values[i]) << ' ' << static_cast<double>(i + 1) / static_cast<double>(values.size()) << '\n';
+                text << cosim::format_real(values[i]) << ' '
+                     << static_cast<double>(i + 1) / static_cast<double>(values.size()) << '\n';
             data_files.push_back(dir / ("cdf_" + file_name(m.name) + "_" + file_name(s) + ".dat"));
             temporary.files.push_back(data_files.back());
             write_data(data_files.back(), text.str());
@@ -146,7 +148,8 @@ std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir
                                            [](const Draw& d) { return d.kind == DrawKind::grid; });
             grid != spec.draws.end()) {
             const std::string stat_column = m.name + "." + m.figure_stat;
-            const std::size_t g = table.column(grid->target), y = table.column(stat_column), status = table.header.size() - 2;
+            const std::size_t g = table.column(grid->target), y = table.column(stat_column),
+                              status = table.header.size() - 2;
             const auto by = dir / ("cdf_" + file_name(m.name) + "_by_" + file_name(grid->target) + ".png");
             std::string lines;
             std::vector<std::filesystem::path> files;
@@ -159,7 +162,8 @@ std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir
                 std::sort(values.begin(), values.end());
                 std::ostringstream text;
                 for (std::size_t i = 0; i < values.size(); ++i)
-                    text << cosim::format_real(values[i]) << ' ' << static_cast<double>(i + 1) / static_cast<double>(values.size()) << '\n';
+                    text << cosim::format_real(values[i]) << ' '
+                         << static_cast<double>(i + 1) / static_cast<double>(values.size()) << '\n';
                 files.push_back(dir / ("cdf_by_" + file_name(m.name) + "_" + file_name(value.text) + ".dat"));
                 temporary.files.push_back(files.back());
                 write_data(files.back(), text.str());
@@ -195,9 +199,10 @@ std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir
             for (const auto& row : table.rows) {
                 const auto value = number_in(row[y]);
                 if (row[status] == "failed" || !value) continue;
-                const double xv = numeric ? *number_in(row[x])
-                                          : static_cast<double>(std::find(categories.begin(), categories.end(), row[x]) -
-                                                                categories.begin());
+                const double xv = numeric
+                                      ? *number_in(row[x])
+                                      : static_cast<double>(std::find(categories.begin(), categories.end(), row[x]) -
+                                                            categories.begin());
                 text << cosim::format_real(xv) << ' ' << cosim::format_real(*value) << '\n';
                 ++points;
             }
@@ -206,7 +211,8 @@ std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir
             const auto scatter = dir / (file_name(m.name) + "_vs_" + file_name(c.name) + ".png");
             temporary.files.push_back(data);
             write_data(data, text.str());
-            std::string script = preamble(scatter, y_name + " against " + c.name, c.name, y_name + " (degrees)") + "set key off\n";
+            std::string script =
+                preamble(scatter, y_name + " against " + c.name, c.name, y_name + " (degrees)") + "set key off\n";
             if (!numeric) {
                 script += "set xrange [-0.5:" + std::to_string(categories.size() - 0.5) + "]\nset xtics (";
                 for (std::size_t i = 0; i < categories.size(); ++i)
@@ -229,9 +235,12 @@ void write_summary(const std::filesystem::path& file, const CampaignSetup& setup
     const std::size_t status = table.header.size() - 2, message = table.header.size() - 1;
     long ok = 0, stopped = 0, failed = 0;
     for (const auto& row : table.rows) {
-        if (row[status] == "ok") ++ok;
-        else if (row[status] == "stopped") ++stopped;
-        else ++failed;
+        if (row[status] == "ok")
+            ++ok;
+        else if (row[status] == "stopped")
+            ++stopped;
+        else
+            ++failed;
     }
     std::ostringstream md;
     md << std::setprecision(4);
@@ -249,16 +258,18 @@ void write_summary(const std::filesystem::path& file, const CampaignSetup& setup
            << (stats.wall_time > 0 ? 100.0 * stats.ranks[i].busy / stats.wall_time : 0.0) << " %\n";
 
     md << "\n## Metrics across runs\n\nPercentiles over the runs that finished (ok or stopped early) with a value; "
-          "angles in degrees.\n\n| column | runs | mean | min | p5 | p50 | p95 | max |\n|---|---|---|---|---|---|---|---|\n";
+          "angles in degrees.\n\n| column | runs | mean | min | p5 | p50 | p95 | max "
+          "|\n|---|---|---|---|---|---|---|---|\n";
     for (const auto& name : metric_columns(spec)) {
         auto v = table.finished_values(name);
         std::sort(v.begin(), v.end());
         md << "| " << name << " | " << v.size();
-        for (const char* s : {"mean", "min", "p5", "p50", "p95", "max"}) md << " | " << (v.empty() ? std::string("–") : [&] {
-            std::ostringstream cell;
-            cell << std::setprecision(4) << statistic(s, v);
-            return cell.str();
-        }());
+        for (const char* s : {"mean", "min", "p5", "p50", "p95", "max"})
+            md << " | " << (v.empty() ? std::string("–") : [&] {
+                std::ostringstream cell;
+                cell << std::setprecision(4) << statistic(s, v);
+                return cell.str();
+            }());
         md << " |\n";
     }
     if (failed > 0) {

@@ -29,7 +29,8 @@ ResultRows split_rows(const std::vector<std::string>& header, const std::map<lon
 std::optional<double> number_in(const std::string& cell);
 
 // Returns the files written; throws when gnuplot is missing or fails.
-std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir, const CampaignSpec& spec, const ResultRows& table);
+std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir, const CampaignSpec& spec,
+                                                const ResultRows& table);
 
 void write_summary(const std::filesystem::path& file, const CampaignSetup& setup, const ResultRows& table,
                    const CampaignStatistics& stats, const std::vector<std::filesystem::path>& figures,

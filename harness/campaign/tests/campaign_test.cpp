@@ -19,7 +19,8 @@ using namespace campaign;
 namespace {
 
 std::filesystem::path fresh_dir(const std::string& name) {
-    const auto dir = std::filesystem::temp_directory_path() / ("campaign_test_" + name + "_" + std::to_string(::getpid()));
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("campaign_test_" + name + "_" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
     return dir;
 }
@@ -79,14 +80,17 @@ TEST(Campaign, ReplayIsBitIdenticalAndItsCsvGivesTheSameMetrics) {
         const bool changed = !(samples[r] == last);
         last = samples[r];
         if (!changed || valid[r] == 0.0) continue;
-        const double a[4] = {col("env.q_true[1]")[r], col("env.q_true[2]")[r], col("env.q_true[3]")[r], col("env.q_true[4]")[r]};
-        const double b[4] = {col("est.q_est[1]")[r], col("est.q_est[2]")[r], col("est.q_est[3]")[r], col("est.q_est[4]")[r]};
+        const double a[4] = {col("env.q_true[1]")[r], col("env.q_true[2]")[r], col("env.q_true[3]")[r],
+                             col("env.q_true[4]")[r]};
+        const double b[4] = {col("est.q_est[1]")[r], col("est.q_est[2]")[r], col("est.q_est[3]")[r],
+                             col("est.q_est[4]")[r]};
         // conj(a) * b, scalar-last: vector part aw bv - bw av - av x bv, scalar part aw bw + av . bv.
         const double v[3] = {a[3] * b[0] - b[3] * a[0] - (a[1] * b[2] - a[2] * b[1]),
                              a[3] * b[1] - b[3] * a[1] - (a[2] * b[0] - a[0] * b[2]),
                              a[3] * b[2] - b[3] * a[2] - (a[0] * b[1] - a[1] * b[0])};
         const double w = a[3] * b[3] + a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-        errors.push_back(2.0 * std::atan2(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), std::abs(w)) * 180.0 / M_PI);
+        errors.push_back(2.0 * std::atan2(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), std::abs(w)) * 180.0 /
+                         M_PI);
     }
     ASSERT_GT(errors.size(), 20u);
     double mean = 0.0, max = 0.0;
@@ -96,7 +100,9 @@ TEST(Campaign, ReplayIsBitIdenticalAndItsCsvGivesTheSameMetrics) {
     }
     const auto header = split_csv_line(table[0]);
     const auto row = split_csv_line(table[4]);
-    auto cell = [&](const std::string& n) { return std::stod(row.at(std::find(header.begin(), header.end(), n) - header.begin())); };
+    auto cell = [&](const std::string& n) {
+        return std::stod(row.at(std::find(header.begin(), header.end(), n) - header.begin()));
+    };
     EXPECT_EQ(cell("attitude_error.count"), static_cast<double>(errors.size()));
     EXPECT_NEAR(cell("attitude_error.mean"), mean, 1e-9);
     EXPECT_NEAR(cell("attitude_error.max"), max, 1e-9);

@@ -49,7 +49,9 @@ double ks_distance(std::vector<double> x, const std::function<double(double)>& c
 
 TEST(Draws, ReproducibleAndIndependentOfOtherDraws) {
     const auto one = spec_of("[[draw]]\nkind = \"uniform\"\ntarget = \"a.x\"\nmin = 0\nmax = 1\n");
-    const auto two = spec_of("[[draw]]\nkind = \"quaternion\"\ntarget = \"a.q\"\n[[draw]]\nkind = \"uniform\"\ntarget = \"a.x\"\nmin = 0\nmax = 1\n");
+    const auto two = spec_of(
+        "[[draw]]\nkind = \"quaternion\"\ntarget = \"a.q\"\n[[draw]]\nkind = \"uniform\"\ntarget = \"a.x\"\nmin = "
+        "0\nmax = 1\n");
     EXPECT_EQ(draw_run(one, 17).cells, draw_run(one, 17).cells);
     EXPECT_NE(draw_run(one, 17).cells, draw_run(one, 18).cells);
     // Adding a draw before it changes nothing of a.x.
@@ -65,7 +67,8 @@ TEST(Draws, ReproducibleAndIndependentOfOtherDraws) {
 // are, and `figure = false` leaves a drawn quantity out of the figures.
 TEST(Draws, ColumnsAndWhichArePlotted) {
     const auto spec = spec_of(
-        "[[draw]]\nkind = \"quaternion\"\ntarget = \"e.q0\"\n[[draw]]\nkind = \"tumble\"\ntarget = \"e.w0\"\nmin = 0\nmax = 1\n"
+        "[[draw]]\nkind = \"quaternion\"\ntarget = \"e.q0\"\n[[draw]]\nkind = \"tumble\"\ntarget = \"e.w0\"\nmin = "
+        "0\nmax = 1\n"
         "[[draw]]\nkind = \"epoch\"\ntarget = \"e.epoch\"\nfrom = 2026-01-01\nto = 2026-02-01\n"
         "[[draw]]\nkind = \"integer\"\ntarget = \"m.seed\"\nmin = 1\nmax = 9\nfigure = false\n");
     std::string names, plotted;
@@ -104,7 +107,8 @@ TEST(Draws, TruncatedNormalFollowsItsDistribution) {
         ASSERT_GE(x.back(), 0.0);
         ASSERT_LE(x.back(), 6.0);
     }
-    EXPECT_LT(ks_distance(x, [&](double v) { return (phi((v - 1.0) / 2.0) - phi(-0.5)) / (phi(2.5) - phi(-0.5)); }), ks_limit);
+    EXPECT_LT(ks_distance(x, [&](double v) { return (phi((v - 1.0) / 2.0) - phi(-0.5)) / (phi(2.5) - phi(-0.5)); }),
+              ks_limit);
 }
 
 TEST(Draws, IntegerAndChoiceFrequencies) {
@@ -118,7 +122,8 @@ TEST(Draws, IntegerAndChoiceFrequencies) {
         ++c[cells[1]];
     }
     ASSERT_EQ(n.size(), 3u);  // 3, 4 and 5, nothing else
-    for (const char* k : {"3", "4", "5"}) EXPECT_NEAR(n[k] / double(samples), 1.0 / 3.0, 5.0 * std::sqrt(2.0 / 9.0 / samples)) << k;
+    for (const char* k : {"3", "4", "5"})
+        EXPECT_NEAR(n[k] / double(samples), 1.0 / 3.0, 5.0 * std::sqrt(2.0 / 9.0 / samples)) << k;
     EXPECT_EQ(c.count("y"), 0u);  // weight 0: never
     EXPECT_NEAR(c["z"] / double(samples), 0.75, 5.0 * std::sqrt(0.75 * 0.25 / samples));
 }
@@ -185,7 +190,8 @@ TEST(Draws, TumbleRatesHaveUniformDirections) {
 // Epochs over the 48 h from 2024-02-28T12:00Z (a leap year: 29 February lies inside): the calendar
 // fields follow from the offset in days alone, worked out here without the code's calendar.
 TEST(Draws, EpochsAreCalendarDatesInTheirRange) {
-    const auto spec = spec_of("[[draw]]\nkind = \"epoch\"\ntarget = \"env.epoch\"\nfrom = 2024-02-28T12:00:00Z\nto = 2024-03-01T12:00:00Z\n");
+    const auto spec = spec_of(
+        "[[draw]]\nkind = \"epoch\"\ntarget = \"env.epoch\"\nfrom = 2024-02-28T12:00:00Z\nto = 2024-03-01T12:00:00Z\n");
     std::vector<double> days;
     for (long i = 0; i < 2000; ++i) {
         const auto d = draw_run(spec, i);

@@ -13,7 +13,8 @@ using namespace campaign;
 namespace {
 
 std::filesystem::path fresh_dir(const std::string& name) {
-    const auto dir = std::filesystem::temp_directory_path() / ("campaign_table_test_" + name + "_" + std::to_string(::getpid()));
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("campaign_table_test_" + name + "_" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;
@@ -72,7 +73,8 @@ TEST(ResultsTable, ResumeReadsFinishedRowsAndDropsACutRow) {
     }
     auto all = read_results(file, header, 5);
     write_sorted(file, header, all);
-    EXPECT_EQ(slurp(file), "run,x,m.mean,wall_time,status,message\n0,0.1,5,1.5,ok,\n1,0.2,6,1.5,ok,\n2,0.3,7,1.5,ok,\n");
+    EXPECT_EQ(slurp(file),
+              "run,x,m.mean,wall_time,status,message\n0,0.1,5,1.5,ok,\n1,0.2,6,1.5,ok,\n2,0.3,7,1.5,ok,\n");
     std::filesystem::remove_all(dir);
 }
 
@@ -84,7 +86,7 @@ TEST(ResultsTable, ResumeRefusesAnotherCampaignsTable) {
     EXPECT_THROW(read_results(file, {"run", "y", "wall_time", "status", "message"}, 5), CampaignError);
     EXPECT_THROW(read_results(file, header, 0), CampaignError);  // run 0 beyond a campaign of 0 runs
     { std::ofstream(file, std::ios::app) << "0,2,1,ok,\n"; }
-    EXPECT_THROW(read_results(file, header, 5), CampaignError);  // run 0 twice
+    EXPECT_THROW(read_results(file, header, 5), CampaignError);       // run 0 twice
     EXPECT_THROW(ResultsWriter(file, header, false), CampaignError);  // never replaced silently
     std::filesystem::remove_all(dir);
 }

@@ -79,7 +79,8 @@ stats = ["p99.9", "mean"]
     EXPECT_EQ(*spec.stop_time, 60.0);
     EXPECT_TRUE(spec.paired);
     // A TOML table has no order: [set] comes out sorted by name (no variable can appear twice in it).
-    EXPECT_EQ(spec.settings, (std::vector<std::string>{"env.albedo_enabled=false", "est.sample_period=1", "plant.fidelity=averaged"}));
+    EXPECT_EQ(spec.settings,
+              (std::vector<std::string>{"env.albedo_enabled=false", "est.sample_period=1", "plant.fidelity=averaged"}));
     ASSERT_EQ(spec.draws.size(), 7u);
     EXPECT_EQ(spec.draws[0].min, -1.5);
     EXPECT_FALSE(spec.draws[1].truncated_below);
@@ -98,21 +99,33 @@ stats = ["p99.9", "mean"]
 TEST(Spec, MistakesAreErrorsWithTheirPlace) {
     EXPECT_NE(error_of(head + "sed = 3\n").find("unknown key 'sed'"), std::string::npos);
     // The line of the [[draw]] at fault.
-    EXPECT_NE(error_of(head + "[[draw]]\nkind = \"uniform\"\ntarget = \"a.x\"\nmin = 1\nmax = 0\n").find("test.toml:4: draw 1: 'max' must be above 'min'"),
+    EXPECT_NE(error_of(head + "[[draw]]\nkind = \"uniform\"\ntarget = \"a.x\"\nmin = 1\nmax = 0\n")
+                  .find("test.toml:4: draw 1: 'max' must be above 'min'"),
               std::string::npos);
-    EXPECT_NE(error_of(head + "[[draw]]\nkind = \"gauss\"\ntarget = \"a.x\"\n").find("unknown kind 'gauss'"), std::string::npos);
-    EXPECT_NE(error_of(head + "[[draw]]\nkind = \"uniform\"\ntarget = \"x\"\nmin = 0\nmax = 1\n").find("not component.variable"),
+    EXPECT_NE(error_of(head + "[[draw]]\nkind = \"gauss\"\ntarget = \"a.x\"\n").find("unknown kind 'gauss'"),
+              std::string::npos);
+    EXPECT_NE(error_of(head + "[[draw]]\nkind = \"uniform\"\ntarget = \"x\"\nmin = 0\nmax = 1\n")
+                  .find("not component.variable"),
               std::string::npos);
     // [4, 5] sd 1 around 0: Phi(5) - Phi(4) = 3.2e-5, below the 1e-3 limit.
-    EXPECT_NE(error_of(head + "[[draw]]\nkind = \"normal\"\ntarget = \"a.x\"\nmean = 0\nsd = 1\nmin = 4\nmax = 5\n").find("truncation interval"),
+    EXPECT_NE(error_of(head + "[[draw]]\nkind = \"normal\"\ntarget = \"a.x\"\nmean = 0\nsd = 1\nmin = 4\nmax = 5\n")
+                  .find("truncation interval"),
               std::string::npos);
-    EXPECT_NE(error_of(head + "[[draw]]\nkind = \"quaternion\"\ntarget = \"a.q\"\n[[draw]]\nkind = \"quaternion\"\ntarget = \"a.q\"\n").find("drawn twice"),
+    EXPECT_NE(
+        error_of(
+            head +
+            "[[draw]]\nkind = \"quaternion\"\ntarget = \"a.q\"\n[[draw]]\nkind = \"quaternion\"\ntarget = \"a.q\"\n")
+            .find("drawn twice"),
+        std::string::npos);
+    EXPECT_NE(error_of(head + "[[metric]]\nname = \"e\"\nkind = \"column\"\ncolumn = \"a.x\"\nstats = [\"p200\"]\n")
+                  .find("unknown statistic 'p200'"),
               std::string::npos);
-    EXPECT_NE(error_of(head + "[[metric]]\nname = \"e\"\nkind = \"column\"\ncolumn = \"a.x\"\nstats = [\"p200\"]\n").find("unknown statistic 'p200'"),
+    EXPECT_NE(error_of("system = \"s.ssd\"\nruns = 0\nseed = 1\n").find("'runs' must be an integer"),
               std::string::npos);
-    EXPECT_NE(error_of("system = \"s.ssd\"\nruns = 0\nseed = 1\n").find("'runs' must be an integer"), std::string::npos);
     EXPECT_NE(error_of("runs = 3\nseed = 1\n").find("'system' is missing"), std::string::npos);
-    EXPECT_NE(error_of(head + "[[draw]]\nkind = \"epoch\"\ntarget = \"env.epoch\"\nfrom = 2026-01-02\nto = 2026-01-01\n").find("'to' must be after"),
-              std::string::npos);
+    EXPECT_NE(
+        error_of(head + "[[draw]]\nkind = \"epoch\"\ntarget = \"env.epoch\"\nfrom = 2026-01-02\nto = 2026-01-01\n")
+            .find("'to' must be after"),
+        std::string::npos);
     EXPECT_NE(error_of(head + "x = [").find("test.toml:4"), std::string::npos);  // a TOML syntax error, with its line
 }

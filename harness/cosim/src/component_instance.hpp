@@ -9,18 +9,18 @@
 #include <string>
 #include <string_view>
 
-#include "fmi_loader/model_description.hpp"
 #include "fmi2/fmi2FunctionTypes.h"
+#include "fmi_loader/model_description.hpp"
 
 namespace cosim {
 
 // How the link to a hardware block fared over a run (latency of answered frames in seconds).
 struct LinkStatistics {
-    long exchanges = 0;   // request frames sent
-    long answered = 0;    // answered in time with a valid reply
-    long misses = 0;      // no valid reply before the timeout
-    long late = 0;        // replies that arrived after their frame had been given up
-    long malformed = 0;   // received frames rejected by the codec
+    long exchanges = 0;  // request frames sent
+    long answered = 0;   // answered in time with a valid reply
+    long misses = 0;     // no valid reply before the timeout
+    long late = 0;       // replies that arrived after their frame had been given up
+    long malformed = 0;  // received frames rejected by the codec
     double latency_min = 0, latency_median = 0, latency_p95 = 0, latency_max = 0;
 };
 
@@ -30,7 +30,8 @@ public:
 
     virtual const std::string& name() const = 0;
 
-    virtual void setup_experiment(double start_time, std::optional<double> stop_time, std::optional<double> tolerance) = 0;
+    virtual void setup_experiment(double start_time, std::optional<double> stop_time,
+                                  std::optional<double> tolerance) = 0;
     virtual void enter_initialization_mode() = 0;
     virtual void exit_initialization_mode() = 0;
     virtual void terminate() = 0;

@@ -39,9 +39,12 @@ std::vector<std::string> split_fields(const std::string& line, const std::filesy
     for (std::size_t i = 0; i < line.size(); ++i) {
         const char c = line[i];
         if (quoted) {
-            if (c != '"') field += c;
-            else if (i + 1 < line.size() && line[i + 1] == '"') field += line[++i];
-            else quoted = false;
+            if (c != '"')
+                field += c;
+            else if (i + 1 < line.size() && line[i + 1] == '"')
+                field += line[++i];
+            else
+                quoted = false;
         } else if (c == '"' && field.empty() && !was_quoted) {
             quoted = was_quoted = true;
         } else if (c == ',') {
@@ -75,7 +78,8 @@ CsvTable read_csv(const std::filesystem::path& file) {
         const auto cells = split_fields(line, file, row);
         if (cells.size() > table.columns.size())
             throw CosimError(file.string() + ": row " + std::to_string(row) + " has too many cells");
-        if (cells.size() < table.columns.size()) throw CosimError(file.string() + ": row " + std::to_string(row) + " is short");
+        if (cells.size() < table.columns.size())
+            throw CosimError(file.string() + ": row " + std::to_string(row) + " is short");
         for (std::size_t i = 0; i < cells.size(); ++i) {
             double x = std::numeric_limits<double>::quiet_NaN();
             std::from_chars(cells[i].data(), cells[i].data() + cells[i].size(), x);

@@ -25,7 +25,8 @@ bool reached(double t, double event_time) {
 
 // The wall-clock time at which `elapsed` seconds of simulated time are due (--realtime).
 std::chrono::steady_clock::time_point wall_due(std::chrono::steady_clock::time_point wall_start, double elapsed) {
-    return wall_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(elapsed));
+    return wall_start +
+           std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(elapsed));
 }
 
 }  // namespace
@@ -51,7 +52,8 @@ struct Execution::Impl {
     std::vector<Stepping> stepping;  // per component (used for Co-Simulation ones)
     std::vector<char> in_event;      // per component: in event mode at this instant
 
-    Impl(System& s, const ExecutionOptions& o, std::vector<Observer*> obs) : system(s), options(o), observers(std::move(obs)) {
+    Impl(System& s, const ExecutionOptions& o, std::vector<Observer*> obs)
+        : system(s), options(o), observers(std::move(obs)) {
         auto& comps = system.components();
         for (std::size_t i = 0; i < comps.size(); ++i) {
             auto& c = comps[i];
@@ -81,9 +83,13 @@ struct Execution::Impl {
         system.propagate(pass);
     }
     // Between events: only the components whose derivatives or indicators are asked for.
-    void set_integrating(double time, std::span<const double> states) { set_continuous(consumers, Pass::integrating, time, states); }
+    void set_integrating(double time, std::span<const double> states) {
+        set_continuous(consumers, Pass::integrating, time, states);
+    }
     // At an instant the master stops at: every component, every continuous input, so that any output can be read.
-    void set_everywhere(double time, std::span<const double> states) { set_continuous(me, Pass::continuous, time, states); }
+    void set_everywhere(double time, std::span<const double> states) {
+        set_continuous(me, Pass::continuous, time, states);
+    }
 
     void rhs(double time, std::span<const double> states, std::span<double> dx) {
         set_integrating(time, states);
@@ -175,7 +181,8 @@ struct Execution::Impl {
         for (auto i : me) {
             auto& c = comp(i);
             if (c.state_count) c.instance->get_derivatives(out.data() + c.state_offset, c.state_count);
-            if (c.indicator_count) c.instance->get_event_indicators(out.data() + n + c.indicator_offset, c.indicator_count);
+            if (c.indicator_count)
+                c.instance->get_event_indicators(out.data() + n + c.indicator_offset, c.indicator_count);
         }
     }
     bool integrator_sees_a_change() {
@@ -282,7 +289,8 @@ struct Execution::Impl {
         if (!(stop > start) || !(h_out > 0.0))
             throw CosimError("the stop time must exceed the start time, and the output interval be positive");
         for (auto i : cs) {
-            stepping[i].step = comp(i).communication_step.value_or(h_out);  // without a step of its own: the output interval
+            stepping[i].step =
+                comp(i).communication_step.value_or(h_out);  // without a step of its own: the output interval
             stepping[i].last = start;
             if (!(stepping[i].step > 0.0)) throw CosimError(comp(i).name + ": the communication step must be positive");
         }
@@ -291,7 +299,9 @@ struct Execution::Impl {
         if (options.realtime) {
             // Components that talk to hardware act at their instants' wall time, not only at output points.
             for (auto& c : system.components())
-                c.instance->set_pacer([wall_start, start](double time) { std::this_thread::sleep_until(wall_due(wall_start, time - start)); });
+                c.instance->set_pacer([wall_start, start](double time) {
+                    std::this_thread::sleep_until(wall_due(wall_start, time - start));
+                });
         }
 
         system.initialize(start, stop);

@@ -34,9 +34,10 @@ struct ExecutionOptions {
     double output_interval = 0.01;
     double relative_tolerance = 1e-6;
     std::optional<double> max_step;  // the longest step of the Model Exchange integrator (default: the .ssd's)
-    bool realtime = false;   // pace simulated time to the wall clock
-    double realtime_tolerance = 1e-3;  // s: how far behind its wall time an output point may be before it counts as late
-    bool event_rows = false; // also sample just before and just after each event
+    bool realtime = false;           // pace simulated time to the wall clock
+    double realtime_tolerance =
+        1e-3;                 // s: how far behind its wall time an output point may be before it counts as late
+    bool event_rows = false;  // also sample just before and just after each event
     // Today's reference execution (before the speed work): every Model Exchange component goes
     // through every event, CVODE restarts after each, and every output point is a stop time.
     bool reference = false;
@@ -46,8 +47,8 @@ struct ExecutionOptions {
 struct ComponentStatistics {
     std::string name;
     long rhs_evaluations = 0;
-    long events = 0;  // Model Exchange: times it went through event mode
-    long steps = 0;   // Co-Simulation steps
+    long events = 0;                     // Model Exchange: times it went through event mode
+    long steps = 0;                      // Co-Simulation steps
     std::optional<LinkStatistics> link;  // hardware-bridged components
 };
 

@@ -29,12 +29,18 @@ void logger(fmi2ComponentEnvironment env, fmi2String, fmi2Status status, fmi2Str
 
 const char* status_name(fmi2Status s) {
     switch (s) {
-        case fmi2OK: return "OK";
-        case fmi2Warning: return "Warning";
-        case fmi2Discard: return "Discard";
-        case fmi2Error: return "Error";
-        case fmi2Fatal: return "Fatal";
-        case fmi2Pending: return "Pending";
+        case fmi2OK:
+            return "OK";
+        case fmi2Warning:
+            return "Warning";
+        case fmi2Discard:
+            return "Discard";
+        case fmi2Error:
+            return "Error";
+        case fmi2Fatal:
+            return "Fatal";
+        case fmi2Pending:
+            return "Pending";
     }
     return "?";
 }
@@ -47,10 +53,10 @@ Fmi2Instance::Fmi2Instance(fmi_loader::Fmu& fmu, fmi_loader::FmuKind kind, std::
       name_(std::move(instance_name)),
       callbacks_{logger, std::calloc, std::free, nullptr, this} {
     const auto& md = fmu_.description();
-    component_ = lib_->fmi2Instantiate(name_.c_str(),
-                                       kind == fmi_loader::FmuKind::model_exchange ? fmi2ModelExchange : fmi2CoSimulation,
-                                       md.guid.c_str(), fmu_.archive().resource_uri().c_str(), &callbacks_, fmi2False,
-                                       logging_on ? fmi2True : fmi2False);
+    component_ = lib_->fmi2Instantiate(
+        name_.c_str(), kind == fmi_loader::FmuKind::model_exchange ? fmi2ModelExchange : fmi2CoSimulation,
+        md.guid.c_str(), fmu_.archive().resource_uri().c_str(), &callbacks_, fmi2False,
+        logging_on ? fmi2True : fmi2False);
     if (!component_) {
         std::string why = messages_.empty() ? "no message from the FMU" : messages_.back().second;
         throw CosimError(name_ + ": fmi2Instantiate failed: " + why);
@@ -72,7 +78,8 @@ void Fmi2Instance::check(fmi2Status status, const char* function) {
     throw CosimError(name_ + ": " + function + " returned " + status_name(status) + ": " + why);
 }
 
-void Fmi2Instance::setup_experiment(double start_time, std::optional<double> stop_time, std::optional<double> tolerance) {
+void Fmi2Instance::setup_experiment(double start_time, std::optional<double> stop_time,
+                                    std::optional<double> tolerance) {
     check(lib_->fmi2SetupExperiment(component_, tolerance ? fmi2True : fmi2False, tolerance.value_or(0.0), start_time,
                                     stop_time ? fmi2True : fmi2False, stop_time.value_or(0.0)),
           "fmi2SetupExperiment");
@@ -84,7 +91,9 @@ void Fmi2Instance::enter_initialization_mode() {
 void Fmi2Instance::exit_initialization_mode() {
     check(lib_->fmi2ExitInitializationMode(component_), "fmi2ExitInitializationMode");
 }
-void Fmi2Instance::terminate() { check(lib_->fmi2Terminate(component_), "fmi2Terminate"); }
+void Fmi2Instance::terminate() {
+    check(lib_->fmi2Terminate(component_), "fmi2Terminate");
+}
 
 void Fmi2Instance::set_from_text(std::string_view name, std::string_view text) {
     const auto* v = description().find_variable(name);
@@ -126,7 +135,8 @@ double Fmi2Instance::get_real(fmi2ValueReference vr) {
 std::string Fmi2Instance::get_as_text(const fmi_loader::ScalarVariable& v) {
     const fmi2ValueReference vr = v.value_reference;
     switch (v.type) {
-        case fmi_loader::VariableType::real: return format_real(get_real(vr));
+        case fmi_loader::VariableType::real:
+            return format_real(get_real(vr));
         case fmi_loader::VariableType::integer:
         case fmi_loader::VariableType::enumeration: {
             fmi2Integer x = 0;
@@ -201,7 +211,9 @@ void Fmi2Instance::set_string(fmi2ValueReference vr, const std::string& x) {
     check(lib_->fmi2SetString(component_, &vr, 1, &s), "fmi2SetString");
 }
 
-void Fmi2Instance::set_time(double t) { check(lib_->fmi2SetTime(component_, t), "fmi2SetTime"); }
+void Fmi2Instance::set_time(double t) {
+    check(lib_->fmi2SetTime(component_, t), "fmi2SetTime");
+}
 
 void Fmi2Instance::set_states(const double* x, std::size_t n) {
     check(lib_->fmi2SetContinuousStates(component_, x, n), "fmi2SetContinuousStates");
@@ -223,7 +235,9 @@ void Fmi2Instance::get_event_indicators(double* z, std::size_t n) {
     check(lib_->fmi2GetEventIndicators(component_, z, n), "fmi2GetEventIndicators");
 }
 
-void Fmi2Instance::enter_event_mode() { check(lib_->fmi2EnterEventMode(component_), "fmi2EnterEventMode"); }
+void Fmi2Instance::enter_event_mode() {
+    check(lib_->fmi2EnterEventMode(component_), "fmi2EnterEventMode");
+}
 
 fmi2EventInfo Fmi2Instance::new_discrete_states() {
     fmi2EventInfo info{};

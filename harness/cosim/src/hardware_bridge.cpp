@@ -19,7 +19,9 @@ using fmi_loader::VariableType;
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
 // The same tolerance as the execution's: an instant within rounding of the sample time is it.
-bool reached(double t, double event_time) { return t >= event_time - 1e-12 * std::max(1.0, std::abs(event_time)); }
+bool reached(double t, double event_time) {
+    return t >= event_time - 1e-12 * std::max(1.0, std::abs(event_time));
+}
 
 // Nearest-rank percentile of sorted values.
 double percentile(const std::vector<double>& sorted, double p) {
@@ -36,11 +38,19 @@ HardwareBridge::HardwareBridge(const fmi_loader::ModelDescription& description, 
     for (const auto& v : description_.model_variables) {
         Kind kind = Kind::real;
         switch (v.type) {
-            case VariableType::real: kind = Kind::real; break;
+            case VariableType::real:
+                kind = Kind::real;
+                break;
             case VariableType::integer:
-            case VariableType::enumeration: kind = Kind::integer; break;
-            case VariableType::boolean: kind = Kind::boolean; break;
-            case VariableType::string: kind = Kind::string; break;
+            case VariableType::enumeration:
+                kind = Kind::integer;
+                break;
+            case VariableType::boolean:
+                kind = Kind::boolean;
+                break;
+            case VariableType::string:
+                kind = Kind::string;
+                break;
         }
         if (kind == Kind::string) {
             if (v.causality == Causality::input || v.causality == Causality::output)
@@ -52,8 +62,10 @@ HardwareBridge::HardwareBridge(const fmi_loader::ModelDescription& description, 
         const std::size_t index = values_.size();
         slots_[{kind, v.value_reference}] = index;
         double start = 0.0;
-        if (kind == Kind::boolean) start = v.start_as_boolean().value_or(false) ? 1.0 : 0.0;
-        else start = v.start_as_real().value_or(0.0);
+        if (kind == Kind::boolean)
+            start = v.start_as_boolean().value_or(false) ? 1.0 : 0.0;
+        else
+            start = v.start_as_real().value_or(0.0);
         values_.push_back(start);
         if (v.causality == Causality::input) ins.emplace_back(v.value_reference, index);
         if (v.causality == Causality::output) outs.emplace_back(v.value_reference, index);
@@ -65,16 +77,19 @@ HardwareBridge::HardwareBridge(const fmi_loader::ModelDescription& description, 
     for (const auto& [vr, i] : ins) inputs_.push_back(i);
     for (const auto& [vr, i] : outs) outputs_.push_back(i);
     if (!period_slot_)
-        throw CosimError(name_ + ": a hardware-bridged block needs a Real parameter 'sample_period' (its sampling instants)");
+        throw CosimError(name_ +
+                         ": a hardware-bridged block needs a Real parameter 'sample_period' (its sampling instants)");
     if (inputs_.size() > bridge::max_values || outputs_.size() > bridge::max_values)
-        throw CosimError(name_ + ": more inputs or outputs than one frame carries (" + std::to_string(bridge::max_values) + ")");
+        throw CosimError(name_ + ": more inputs or outputs than one frame carries (" +
+                         std::to_string(bridge::max_values) + ")");
 }
 
 HardwareBridge::~HardwareBridge() = default;
 
 std::size_t HardwareBridge::slot(Kind kind, fmi2ValueReference vr) const {
     const auto it = slots_.find({kind, vr});
-    if (it == slots_.end()) throw CosimError(name_ + ": no variable of that type with value reference " + std::to_string(vr));
+    if (it == slots_.end())
+        throw CosimError(name_ + ": no variable of that type with value reference " + std::to_string(vr));
     return it->second;
 }
 
@@ -100,42 +115,70 @@ void HardwareBridge::exit_initialization_mode() {
         throw CosimError(name_ + ": sample_period must be positive, got " + format_real(period_));
 }
 
-void HardwareBridge::terminate() { link_.reset(); }
+void HardwareBridge::terminate() {
+    link_.reset();
+}
 
 void HardwareBridge::set_from_text(std::string_view name, std::string_view text) {
     const auto* v = description_.find_variable(name);
     if (!v) throw CosimError(name_ + ": no variable named '" + std::string(name) + "'");
     const std::string where = name_ + "." + std::string(name);
     switch (v->type) {
-        case VariableType::real: set_real(v->value_reference, parse_real(text, where)); break;
+        case VariableType::real:
+            set_real(v->value_reference, parse_real(text, where));
+            break;
         case VariableType::integer:
-        case VariableType::enumeration: set_integer(v->value_reference, parse_integer(text, where)); break;
-        case VariableType::boolean: set_boolean(v->value_reference, parse_boolean(text, where)); break;
-        case VariableType::string: set_string(v->value_reference, std::string(text)); break;
+        case VariableType::enumeration:
+            set_integer(v->value_reference, parse_integer(text, where));
+            break;
+        case VariableType::boolean:
+            set_boolean(v->value_reference, parse_boolean(text, where));
+            break;
+        case VariableType::string:
+            set_string(v->value_reference, std::string(text));
+            break;
     }
 }
 
 std::string HardwareBridge::get_as_text(const fmi_loader::ScalarVariable& v) {
     switch (v.type) {
-        case VariableType::real: return format_real(get_real(v.value_reference));
+        case VariableType::real:
+            return format_real(get_real(v.value_reference));
         case VariableType::integer:
-        case VariableType::enumeration: return std::to_string(get_integer(v.value_reference));
-        case VariableType::boolean: return get_boolean(v.value_reference) ? "1" : "0";
-        case VariableType::string: return get_string(v.value_reference);
+        case VariableType::enumeration:
+            return std::to_string(get_integer(v.value_reference));
+        case VariableType::boolean:
+            return get_boolean(v.value_reference) ? "1" : "0";
+        case VariableType::string:
+            return get_string(v.value_reference);
     }
     return {};
 }
 
-double HardwareBridge::get_real(fmi2ValueReference vr) { return values_[slot(Kind::real, vr)]; }
-void HardwareBridge::set_real(fmi2ValueReference vr, double x) { values_[slot(Kind::real, vr)] = x; }
+double HardwareBridge::get_real(fmi2ValueReference vr) {
+    return values_[slot(Kind::real, vr)];
+}
+void HardwareBridge::set_real(fmi2ValueReference vr, double x) {
+    values_[slot(Kind::real, vr)] = x;
+}
 fmi2Integer HardwareBridge::get_integer(fmi2ValueReference vr) {
     return static_cast<fmi2Integer>(std::lround(values_[slot(Kind::integer, vr)]));
 }
-void HardwareBridge::set_integer(fmi2ValueReference vr, fmi2Integer x) { values_[slot(Kind::integer, vr)] = x; }
-bool HardwareBridge::get_boolean(fmi2ValueReference vr) { return values_[slot(Kind::boolean, vr)] != 0.0; }
-void HardwareBridge::set_boolean(fmi2ValueReference vr, bool x) { values_[slot(Kind::boolean, vr)] = x ? 1.0 : 0.0; }
-std::string HardwareBridge::get_string(fmi2ValueReference vr) { return strings_[slot(Kind::string, vr)]; }
-void HardwareBridge::set_string(fmi2ValueReference vr, const std::string& x) { strings_[slot(Kind::string, vr)] = x; }
+void HardwareBridge::set_integer(fmi2ValueReference vr, fmi2Integer x) {
+    values_[slot(Kind::integer, vr)] = x;
+}
+bool HardwareBridge::get_boolean(fmi2ValueReference vr) {
+    return values_[slot(Kind::boolean, vr)] != 0.0;
+}
+void HardwareBridge::set_boolean(fmi2ValueReference vr, bool x) {
+    values_[slot(Kind::boolean, vr)] = x ? 1.0 : 0.0;
+}
+std::string HardwareBridge::get_string(fmi2ValueReference vr) {
+    return strings_[slot(Kind::string, vr)];
+}
+void HardwareBridge::set_string(fmi2ValueReference vr, const std::string& x) {
+    strings_[slot(Kind::string, vr)] = x;
+}
 
 void HardwareBridge::do_step(double, double) {
     throw CosimError(name_ + ": a hardware bridge runs as a Model Exchange component only");
@@ -230,8 +273,8 @@ void HardwareBridge::exchange() {
                              " s got no valid answer within " + std::to_string(settings_.timeout_ms) + " ms" +
                              (last_error_.empty() ? "" : " (last error: " + last_error_ + ")");
     if (settings_.policy == "stop" && consecutive_misses_ >= settings_.max_misses)
-        throw CosimError(name_ + ": " + std::to_string(consecutive_misses_) + " consecutive misses, stopping (policy stop): " +
-                         what);
+        throw CosimError(name_ + ": " + std::to_string(consecutive_misses_) +
+                         " consecutive misses, stopping (policy stop): " + what);
     if (stats_.misses == 1) std::cerr << name_ << ": " << what << "; holding the last outputs\n";
 }
 

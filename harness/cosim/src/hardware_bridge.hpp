@@ -69,8 +69,8 @@ private:
     std::string name_;
     BridgeDescription settings_;
     std::map<std::pair<Kind, fmi2ValueReference>, std::size_t> slots_;  // -> index into values_
-    std::vector<double> values_;         // every non-String variable, as the wire carries it (f64)
-    std::vector<std::string> strings_;   // String variables (stay on this side of the link)
+    std::vector<double> values_;                 // every non-String variable, as the wire carries it (f64)
+    std::vector<std::string> strings_;           // String variables (stay on this side of the link)
     std::vector<std::size_t> inputs_, outputs_;  // value-reference order
     std::size_t period_slot_ = 0;
     double start_time_ = 0.0, time_ = 0.0, period_ = 0.0;

@@ -18,9 +18,8 @@ void print_info(const std::filesystem::path& fmu_path, std::ostream& out) {
         << md.number_of_event_indicators << "\n";
     if (md.default_experiment) {
         const auto& ex = *md.default_experiment;
-        out << "default experiment: start " << ex.start_time.value_or(0.0) << " s, stop "
-            << ex.stop_time.value_or(0.0) << " s, step " << ex.step_size.value_or(0.0) << " s, tolerance "
-            << ex.tolerance.value_or(0.0) << "\n";
+        out << "default experiment: start " << ex.start_time.value_or(0.0) << " s, stop " << ex.stop_time.value_or(0.0)
+            << " s, step " << ex.step_size.value_or(0.0) << " s, tolerance " << ex.tolerance.value_or(0.0) << "\n";
     }
     // Columns as wide as their longest entry, so long names and start values never run together.
     std::size_t w_name = 8, w_causality = 9, w_type = 4, w_unit = 4, w_start = 5;
@@ -33,9 +32,10 @@ void print_info(const std::filesystem::path& fmu_path, std::ostream& out) {
     }
     auto row = [&](std::string_view name, std::string_view causality, std::string_view type, std::string_view unit,
                    std::string_view start, std::string_view description) {
-        out << std::left << std::setw(static_cast<int>(w_name + 2)) << name << std::setw(static_cast<int>(w_causality + 2))
-            << causality << std::setw(static_cast<int>(w_type + 9)) << type << std::setw(static_cast<int>(w_unit + 2)) << unit
-            << std::setw(static_cast<int>(w_start + 2)) << start << description << "\n";
+        out << std::left << std::setw(static_cast<int>(w_name + 2)) << name
+            << std::setw(static_cast<int>(w_causality + 2)) << causality << std::setw(static_cast<int>(w_type + 9))
+            << type << std::setw(static_cast<int>(w_unit + 2)) << unit << std::setw(static_cast<int>(w_start + 2))
+            << start << description << "\n";
     };
     out << "\n";
     row("variable", "causality", "type", "unit", "start", "description");

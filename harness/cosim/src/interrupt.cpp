@@ -23,7 +23,9 @@ extern "C" void on_signal(int signal) {
 }  // namespace
 
 Interrupted::Interrupted(int signal)
-    : std::runtime_error(std::string("interrupted by ") + (signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal")),
+    : std::runtime_error(std::string("interrupted by ") + (signal == SIGINT    ? "SIGINT"
+                                                           : signal == SIGTERM ? "SIGTERM"
+                                                                               : "a signal")),
       signal_(signal) {}
 
 void install_interrupt_handlers() {
@@ -36,7 +38,9 @@ void install_interrupt_handlers() {
     sigaction(SIGTERM, &action, nullptr);
 }
 
-int interrupt_signal() noexcept { return received.load(std::memory_order_relaxed); }
+int interrupt_signal() noexcept {
+    return received.load(std::memory_order_relaxed);
+}
 
 void throw_if_interrupted() {
     if (const int s = interrupt_signal()) throw Interrupted(s);

@@ -43,12 +43,15 @@ int main(int argc, char** argv) {
     run->add_option("--output-interval", run_options.output_interval,
                     "Output interval in s (default: the .ssd's, else the FMUs' smallest DefaultExperiment stepSize "
                     "but no finer than a thousandth of the run)");
-    run->add_option("--step", run_options.communication_step,
-                    "Communication step of every Co-Simulation component (default: the .ssd's, else the output interval)");
-    run->add_option("--max-step", run_options.max_step, "Longest step of the Model Exchange integrator in s (default: the .ssd's, else none)")
+    run->add_option(
+        "--step", run_options.communication_step,
+        "Communication step of every Co-Simulation component (default: the .ssd's, else the output interval)");
+    run->add_option("--max-step", run_options.max_step,
+                    "Longest step of the Model Exchange integrator in s (default: the .ssd's, else none)")
         ->check(CLI::PositiveNumber);
     run->add_option("--tolerance", run_options.tolerance, "Relative tolerance (default: the FMUs' smallest)");
-    run->add_option("--set", run_options.system.settings, "component.variable=value before initialization (repeatable)");
+    run->add_option("--set", run_options.system.settings,
+                    "component.variable=value before initialization (repeatable)");
     run->add_option("--cs", run_options.system.co_simulation, "Run this component through its Co-Simulation interface");
     run->add_option("--fmu-dir", fmu_dirs, "Where to look for FMUs not found beside the .ssd")
         ->default_val(std::vector<std::string>{PVATT_DEFAULT_FMU_DIR});
@@ -66,8 +69,9 @@ int main(int argc, char** argv) {
     run->add_flag("--reference", run_options.reference,
                   "The reference execution: every component as Model Exchange, every event through every component "
                   "with an integrator restart, every output point a stop (slow; to check the fast path against)");
-    run->add_flag("--force", run_options.force,
-                  "Run even with more than 1e8 output or communication points, or a CSV larger than the free disk space");
+    run->add_flag(
+        "--force", run_options.force,
+        "Run even with more than 1e8 output or communication points, or a CSV larger than the free disk space");
 
     std::string plot_csv, plot_dir = "figures";
     auto* plot = app.add_subcommand("plot", "Draw the standard figures of a results CSV as PNG files (gnuplot)");
@@ -77,7 +81,8 @@ int main(int argc, char** argv) {
     campaign::CampaignOptions campaign_options;
     std::string spec_path, campaign_output;
     std::vector<std::string> campaign_fmu_dirs;
-    auto* campaign = app.add_subcommand("campaign", "Run a Monte-Carlo campaign of a system (harness/campaign/README.md)");
+    auto* campaign =
+        app.add_subcommand("campaign", "Run a Monte-Carlo campaign of a system (harness/campaign/README.md)");
     campaign->add_option("spec", spec_path, "The campaign spec (TOML)")->required();
     campaign->add_option("--runs", campaign_options.runs, "Number of runs (replaces the spec's)");
     campaign->add_option("--stop-time", campaign_options.stop_time, "Stop time in s (replaces the spec's)");
@@ -86,7 +91,8 @@ int main(int argc, char** argv) {
         ->default_val(std::vector<std::string>{PVATT_DEFAULT_FMU_DIR});
     campaign->add_option("--set", campaign_options.settings, "component.variable=value for every run (repeatable)");
     campaign->add_option("--run", campaign_options.replay, "Replay this run alone, writing its full CSV");
-    campaign->add_flag("--resume", campaign_options.resume, "Continue the campaign of the results table in the output folder");
+    campaign->add_flag("--resume", campaign_options.resume,
+                       "Continue the campaign of the results table in the output folder");
     campaign->add_flag("!--no-figures", campaign_options.figures, "Skip the PNG figures");
     campaign->add_flag("--progress", campaign_options.progress_lines,
                        "Progress as log lines every 10 s when stderr is not a terminal (mpirun, batch jobs)");
@@ -108,7 +114,8 @@ int main(int argc, char** argv) {
             cosim::run_system(run_options, std::cout);
         }
         if (*plot) {
-            for (const auto& png : cosim::plot_results(plot_csv, plot_dir, std::cerr)) std::cout << png.string() << "\n";
+            for (const auto& png : cosim::plot_results(plot_csv, plot_dir, std::cerr))
+                std::cout << png.string() << "\n";
         }
         if (*simulate) {
             sim.fmu = fmu_path;

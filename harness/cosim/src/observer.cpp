@@ -9,7 +9,9 @@
 
 namespace cosim {
 
-std::string io_reason() { return errno != 0 ? std::strerror(errno) : "input/output error"; }
+std::string io_reason() {
+    return errno != 0 ? std::strerror(errno) : "input/output error";
+}
 
 CsvWriter::CsvWriter(const std::filesystem::path& file, const System& system, const std::vector<std::string>& columns)
     : path_(file), out_(file) {

@@ -33,7 +33,8 @@ struct Series {
 
 // One figure: writes the data and a gnuplot script, runs gnuplot, returns the PNG.
 std::filesystem::path draw(const std::filesystem::path& out_dir, const std::string& name, const std::string& title,
-                           const std::string& ylabel, const std::vector<double>& time, const std::vector<Series>& series) {
+                           const std::string& ylabel, const std::vector<double>& time,
+                           const std::vector<Series>& series) {
     const auto data = out_dir / (name + ".dat");
     {
         std::ofstream d(data);
@@ -82,11 +83,16 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
         if (const auto* real = column("sun_body[" + k + "]")) sun.push_back({"real s" + k, *real});
         if (const auto* meas = column("sun_meas[" + k + "]")) sun.push_back({"acquired s" + k, *meas});
     }
-    if (!sun.empty()) written.push_back(draw(out_dir, "sun_vector", "Sun vector in body axes: real and acquired", "component", time, sun));
-    else notes << "no sun_body / sun_meas columns: sun vector figure skipped\n";
+    if (!sun.empty())
+        written.push_back(
+            draw(out_dir, "sun_vector", "Sun vector in body axes: real and acquired", "component", time, sun));
+    else
+        notes << "no sun_body / sun_meas columns: sun vector figure skipped\n";
 
-    if (const auto* v = column("v_bus")) written.push_back(draw(out_dir, "bus_voltage", "Bus voltage", "V", time, {{"v_bus", *v}}));
-    else notes << "no v_bus column: bus voltage figure skipped\n";
+    if (const auto* v = column("v_bus"))
+        written.push_back(draw(out_dir, "bus_voltage", "Bus voltage", "V", time, {{"v_bus", *v}}));
+    else
+        notes << "no v_bus column: bus voltage figure skipped\n";
 
     const std::vector<double>* q_true[4];
     const std::vector<double>* q_est[4];
@@ -106,13 +112,16 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
             }
             error[r] = attitude_error_degrees(a, b);
         }
-        written.push_back(draw(out_dir, "attitude_error", "Attitude error of the estimate", "degrees", time, {{"error", error}}));
+        written.push_back(
+            draw(out_dir, "attitude_error", "Attitude error of the estimate", "degrees", time, {{"error", error}}));
     } else {
         notes << "no q_true / q_est columns: attitude error figure skipped\n";
     }
 
-    if (const auto* soc = column("soc")) written.push_back(draw(out_dir, "battery_soc", "Battery state of charge", "1", time, {{"soc", *soc}}));
-    else notes << "no soc column: battery figure skipped\n";
+    if (const auto* soc = column("soc"))
+        written.push_back(draw(out_dir, "battery_soc", "Battery state of charge", "1", time, {{"soc", *soc}}));
+    else
+        notes << "no soc column: battery figure skipped\n";
     return written;
 }
 

@@ -6,11 +6,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
-#include <memory>
 #include <cstdio>
 #include <iomanip>
 #include <iostream>
+#include <limits>
+#include <memory>
 
 #include "cosim_error.hpp"
 #include "interrupt.hpp"
@@ -44,10 +44,11 @@ void check_intervals(const ExecutionOptions& ex, std::optional<double> communica
         throw CosimError("--stop-time " + format_real(ex.stop_time) + " s is not after the start time " +
                          format_real(ex.start_time) + " s: nothing to simulate");
     auto check_interval = [&](const char* what, double h) {
-        if (!std::isfinite(h) || !(h > 0.0)) throw CosimError(std::string(what) + " must be positive and finite, got " + format_real(h));
+        if (!std::isfinite(h) || !(h > 0.0))
+            throw CosimError(std::string(what) + " must be positive and finite, got " + format_real(h));
         if (h > span)
-            throw CosimError(std::string(what) + " " + format_real(h) + " s is longer than the run (" + format_real(span) +
-                             " s): no point after the start");
+            throw CosimError(std::string(what) + " " + format_real(h) + " s is longer than the run (" +
+                             format_real(span) + " s): no point after the start");
         const double points = span / h;
         if (points > max_run_points && !force)
             throw CosimError(std::string(what) + " " + format_real(h) + " s over " + format_real(span) + " s makes " +
@@ -78,10 +79,14 @@ void check_output_size(const ExecutionOptions& ex, const CsvWriter& csv, bool fo
 }
 
 // The statistics of a run cut short: what was computed and written before the signal.
-void report_interrupted(const Interrupted& e, double last_time, const CsvWriter* csv, double wall, std::ostream& report) {
+void report_interrupted(const Interrupted& e, double last_time, const CsvWriter* csv, double wall,
+                        std::ostream& report) {
     report << "interrupted (" << e.what() << ") after " << format_real(wall) << " s wall";
-    if (csv) report << "; " << csv->rows() << " rows up to t = " << format_real(last_time) << " s written to " << csv->path().string();
-    else report << " at t = " << format_real(last_time) << " s";
+    if (csv)
+        report << "; " << csv->rows() << " rows up to t = " << format_real(last_time) << " s written to "
+               << csv->path().string();
+    else
+        report << " at t = " << format_real(last_time) << " s";
     report << "\n";
 }
 
@@ -107,8 +112,10 @@ RunDefaults run_defaults(const System& system, double start, double stop) {
     // The .ssd's own output interval, else no finer than a thousandth of the run: an orbit at the FMUs'
     // 1 ms default would write millions of rows.
     const double span = stop - start;
-    if (system.description().output_interval) d.output_interval = *system.description().output_interval;
-    else if (!std::isfinite(d.output_interval) || d.output_interval < span / 1000.0) d.output_interval = span / 1000.0;
+    if (system.description().output_interval)
+        d.output_interval = *system.description().output_interval;
+    else if (!std::isfinite(d.output_interval) || d.output_interval < span / 1000.0)
+        d.output_interval = span / 1000.0;
     return d;
 }
 
@@ -120,7 +127,8 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
     if (options.tolerance) system_options.tolerance = options.tolerance;
     if (options.communication_step) system_options.communication_step = options.communication_step;
     if (options.reference) {
-        if (!system_options.co_simulation.empty()) throw CosimError("--reference runs every component as Model Exchange: drop --cs");
+        if (!system_options.co_simulation.empty())
+            throw CosimError("--reference runs every component as Model Exchange: drop --cs");
         system_options.model_exchange_only = true;
     }
     const auto stop = options.stop_time ? options.stop_time : description.stop_time;
@@ -191,20 +199,22 @@ void print_statistics(const RunStatistics& s, std::ostream& out) {
         << s.time_events << ", state events " << s.state_events << ", step events " << s.step_events
         << ", communication points " << s.communication_points << ", integrator restarts " << s.restarts << "\n";
     if (s.realtime_max_behind != 0.0 || s.late_realtime_points)
-        out << "real-time: " << s.late_realtime_points << " output points late by more than " << s.realtime_tolerance * 1e3
-            << " ms; at most "
-            << s.realtime_max_behind * 1e3 << " ms behind the wall clock\n";
+        out << "real-time: " << s.late_realtime_points << " output points late by more than "
+            << s.realtime_tolerance * 1e3 << " ms; at most " << s.realtime_max_behind * 1e3
+            << " ms behind the wall clock\n";
     for (const auto& c : s.components) {
         out << "  " << std::left << std::setw(20) << c.name << std::right;
-        if (c.steps) out << " co-simulation steps " << c.steps << "\n";
-        else out << " derivative evaluations " << c.rhs_evaluations << ", events " << c.events << "\n";
+        if (c.steps)
+            out << " co-simulation steps " << c.steps << "\n";
+        else
+            out << " derivative evaluations " << c.rhs_evaluations << ", events " << c.events << "\n";
         if (c.link) {
             const auto& l = *c.link;
             out << "    hardware link: " << l.exchanges << " frames, " << l.answered << " answered, " << l.misses
                 << " missed, " << l.late << " late, " << l.malformed << " malformed\n";
             if (l.answered)
-                out << "    latency ms: min " << l.latency_min * 1e3 << ", median " << l.latency_median * 1e3 << ", p95 "
-                    << l.latency_p95 * 1e3 << ", max " << l.latency_max * 1e3 << "\n";
+                out << "    latency ms: min " << l.latency_min * 1e3 << ", median " << l.latency_median * 1e3
+                    << ", p95 " << l.latency_p95 * 1e3 << ", max " << l.latency_max * 1e3 << "\n";
         }
     }
 }

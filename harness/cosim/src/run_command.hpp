@@ -22,8 +22,8 @@ struct RunOptions {
     double realtime_tolerance = 1e-3;  // s
     bool event_rows = false;
     bool reference = false;  // the reference execution (every component Model Exchange, every event everywhere)
-    bool progress = true;  // a progress bar when stderr is a terminal and the run is long
-    bool force = false;    // run even past max_run_points or a CSV larger than the free disk space
+    bool progress = true;    // a progress bar when stderr is a terminal and the run is long
+    bool force = false;      // run even past max_run_points or a CSV larger than the free disk space
 };
 
 // Output or communication points a run may have without --force: 1e8 points is hours of run and

@@ -7,8 +7,8 @@
 
 #include "cosim_error.hpp"
 #include "csv_table.hpp"
-#include "interrupt.hpp"
 #include "fmi2_instance.hpp"
+#include "interrupt.hpp"
 #include "value_text.hpp"
 
 namespace cosim {
@@ -22,9 +22,11 @@ void simulate(const SimulateOptions& options, std::ostream& out) {
     const double stop = options.stop_time.value_or(ex.stop_time.value_or(start + 1.0));
     const double h = options.output_interval.value_or(ex.step_size.value_or((stop - start) / 500.0));
     if (!std::isfinite(start) || !std::isfinite(stop) || !(stop > start) || !std::isfinite(h) || !(h > 0.0))
-        throw CosimError("the stop time must be finite and exceed the start time, and the interval be positive and finite");
+        throw CosimError(
+            "the stop time must be finite and exceed the start time, and the interval be positive and finite");
     if (h > stop - start)
-        throw CosimError("--output-interval " + format_real(h) + " s is longer than the run (" + format_real(stop - start) + " s)");
+        throw CosimError("--output-interval " + format_real(h) + " s is longer than the run (" +
+                         format_real(stop - start) + " s)");
     if ((stop - start) / h > 1e8)
         throw CosimError("--output-interval " + format_real(h) + " s makes more than the limit of 1e8 rows");
 
@@ -67,7 +69,9 @@ void simulate(const SimulateOptions& options, std::ostream& out) {
             for (std::size_t i = 0; i < columns.size(); ++i) sink << std::setw(width) << cell(i);
         }
         sink << "\n";
-        if (!sink) throw CosimError("writing " + (as_csv ? options.csv->string() : std::string("standard output")) + " failed: " + io_reason());
+        if (!sink)
+            throw CosimError("writing " + (as_csv ? options.csv->string() : std::string("standard output")) +
+                             " failed: " + io_reason());
         throw_if_interrupted();
     };
     row("time", [&](std::size_t i) { return columns[i]->name; });

@@ -17,23 +17,34 @@ using fmi_loader::VariableType;
 
 std::string kind_name(ConnectorKind k) {
     switch (k) {
-        case ConnectorKind::input: return "input";
-        case ConnectorKind::output: return "output";
-        case ConnectorKind::parameter: return "parameter";
-        case ConnectorKind::calculated_parameter: return "calculatedParameter";
-        case ConnectorKind::inout: return "inout";
-        case ConnectorKind::unspecified: return "unspecified";
+        case ConnectorKind::input:
+            return "input";
+        case ConnectorKind::output:
+            return "output";
+        case ConnectorKind::parameter:
+            return "parameter";
+        case ConnectorKind::calculated_parameter:
+            return "calculatedParameter";
+        case ConnectorKind::inout:
+            return "inout";
+        case ConnectorKind::unspecified:
+            return "unspecified";
     }
     return "?";
 }
 
 bool kind_matches(ConnectorKind k, Causality c) {
     switch (k) {
-        case ConnectorKind::input: return c == Causality::input;
-        case ConnectorKind::output: return c == Causality::output;
-        case ConnectorKind::parameter: return c == Causality::parameter;
-        case ConnectorKind::calculated_parameter: return c == Causality::calculated_parameter;
-        default: return true;
+        case ConnectorKind::input:
+            return c == Causality::input;
+        case ConnectorKind::output:
+            return c == Causality::output;
+        case ConnectorKind::parameter:
+            return c == Causality::parameter;
+        case ConnectorKind::calculated_parameter:
+            return c == Causality::calculated_parameter;
+        default:
+            return true;
     }
 }
 
@@ -101,7 +112,8 @@ void System::load_components(const SystemOptions& options) {
     std::size_t states = 0, indicators = 0;
     for (const auto& cd : description_.components) {
         for (const auto& other : components_)
-            if (other.name == cd.name) throw CosimError(description_.file.string() + ": two components named '" + cd.name + "'");
+            if (other.name == cd.name)
+                throw CosimError(description_.file.string() + ": two components named '" + cd.name + "'");
         Component c;
         c.name = cd.name;
         c.fmu = std::make_unique<fmi_loader::Fmu>(resolve_source(cd.source, options));
@@ -125,10 +137,11 @@ void System::load_components(const SystemOptions& options) {
             if (!md.co_simulation) throw CosimError(cd.name + ": the FMU offers no Co-Simulation interface");
             c.interface = Interface::co_simulation;
         }
-        c.instance = std::make_unique<Fmi2Instance>(
-            *c.fmu, c.interface == Interface::model_exchange ? fmi_loader::FmuKind::model_exchange
-                                                             : fmi_loader::FmuKind::co_simulation,
-            cd.name);
+        c.instance = std::make_unique<Fmi2Instance>(*c.fmu,
+                                                    c.interface == Interface::model_exchange
+                                                        ? fmi_loader::FmuKind::model_exchange
+                                                        : fmi_loader::FmuKind::co_simulation,
+                                                    cd.name);
         if (c.interface == Interface::co_simulation) {
             c.communication_step = options.communication_step;
             if (!c.communication_step && annotated_cs) c.communication_step = cd.execution->communication_step;
@@ -155,15 +168,16 @@ void System::check_connectors() {
             const auto* v = md.find_variable(k.name);
             if (!v) throw CosimError(components_[i].name + ": connector '" + k.name + "' is not a variable of its FMU");
             if (!kind_matches(k.kind, v->causality))
-                throw CosimError(components_[i].name + "." + k.name + ": declared " + kind_name(k.kind) + " in the .ssd but " +
-                                 std::string(fmi_loader::to_string(v->causality)) + " in the FMU");
+                throw CosimError(components_[i].name + "." + k.name + ": declared " + kind_name(k.kind) +
+                                 " in the .ssd but " + std::string(fmi_loader::to_string(v->causality)) +
+                                 " in the FMU");
             if (!k.type.empty() && k.type != fmi_loader::to_string(v->type) &&
                 !(k.type == "Integer" && v->type == VariableType::enumeration))
                 throw CosimError(components_[i].name + "." + k.name + ": declared " + k.type + " in the .ssd but " +
                                  std::string(fmi_loader::to_string(v->type)) + " in the FMU");
             if (!k.unit.empty() && !v->unit.empty() && k.unit != v->unit)
-                throw CosimError(components_[i].name + "." + k.name + ": unit " + k.unit + " in the .ssd but " + v->unit +
-                                 " in the FMU");
+                throw CosimError(components_[i].name + "." + k.name + ": unit " + k.unit + " in the .ssd but " +
+                                 v->unit + " in the FMU");
         }
     }
 }
@@ -172,9 +186,10 @@ void System::connect() {
     auto endpoint = [&](const std::string& comp, const std::string& conn) {
         const std::size_t i = component_index(comp);
         const auto& declared = description_.components[i].connectors;
-        if (!declared.empty() &&
-            std::none_of(declared.begin(), declared.end(), [&](const ConnectorDescription& d) { return d.name == conn; }))
-            throw CosimError(description_.file.string() + ": component '" + comp + "' declares no connector '" + conn + "'");
+        if (!declared.empty() && std::none_of(declared.begin(), declared.end(),
+                                              [&](const ConnectorDescription& d) { return d.name == conn; }))
+            throw CosimError(description_.file.string() + ": component '" + comp + "' declares no connector '" + conn +
+                             "'");
         const auto* v = components_[i].description().find_variable(conn);
         if (!v) throw CosimError(description_.file.string() + ": '" + comp + "' has no variable '" + conn + "'");
         return std::pair{i, v};
@@ -182,7 +197,8 @@ void System::connect() {
     for (const auto& cd : description_.connections) {
         const auto [from, source] = endpoint(cd.start_element, cd.start_connector);
         const auto [to, target] = endpoint(cd.end_element, cd.end_connector);
-        const std::string label = cd.start_element + "." + cd.start_connector + " -> " + cd.end_element + "." + cd.end_connector;
+        const std::string label =
+            cd.start_element + "." + cd.start_connector + " -> " + cd.end_element + "." + cd.end_connector;
         if (source->causality != Causality::output && source->causality != Causality::calculated_parameter)
             throw CosimError(label + ": the start of a connection must be an output");
         if (target->causality != Causality::input)
@@ -258,7 +274,8 @@ void System::check_open_inputs() const {
                 return s.first == i && s.second.substr(0, s.second.find('=')) == v.name;
             });
             if (!connected && !set)
-                throw CosimError(components_[i].name + "." + v.name + ": input is not connected and has no start value");
+                throw CosimError(components_[i].name + "." + v.name +
+                                 ": input is not connected and has no start value");
         }
     }
 }
@@ -272,7 +289,8 @@ void System::group_transfers() {
         const bool continuous = real && c.target->variability == fmi_loader::Variability::continuous;
         if (!groups_.empty()) {
             auto& g = groups_.back();
-            if (real && g.type == VariableType::real && g.from == c.from && g.to == c.to && g.continuous_target == continuous) {
+            if (real && g.type == VariableType::real && g.from == c.from && g.to == c.to &&
+                g.continuous_target == continuous) {
                 g.source_vrs.push_back(c.source->value_reference);
                 g.target_vrs.push_back(c.target->value_reference);
                 continue;
@@ -311,7 +329,9 @@ void System::mark_continuous_consumers() {
 
 namespace {
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same_bits(double a, double b) {
+    return std::memcmp(&a, &b, sizeof a) == 0;
+}
 
 }  // namespace
 
@@ -321,10 +341,16 @@ bool System::read_sources(TransferGroup& g, std::string& text) {
     auto& from = *components_[g.from].instance;
     bool changed = !g.given;
     switch (g.type) {
-        case VariableType::real: from.get_reals(g.source_vrs, g.values); break;
+        case VariableType::real:
+            from.get_reals(g.source_vrs, g.values);
+            break;
         case VariableType::integer:
-        case VariableType::enumeration: g.values[0] = from.get_integer(g.source_vrs[0]); break;
-        case VariableType::boolean: g.values[0] = from.get_boolean(g.source_vrs[0]) ? 1.0 : 0.0; break;
+        case VariableType::enumeration:
+            g.values[0] = from.get_integer(g.source_vrs[0]);
+            break;
+        case VariableType::boolean:
+            g.values[0] = from.get_boolean(g.source_vrs[0]) ? 1.0 : 0.0;
+            break;
         case VariableType::string:
             text = from.get_string(g.source_vrs[0]);
             changed = changed || text != g.last_string;
@@ -344,11 +370,19 @@ void System::accept(TransferGroup& g, std::string& text) {
 void System::write_targets(const TransferGroup& g, std::span<const double> values, const std::string& text) {
     auto& to = *components_[g.to].instance;
     switch (g.type) {
-        case VariableType::real: to.set_reals(g.target_vrs, values); break;
+        case VariableType::real:
+            to.set_reals(g.target_vrs, values);
+            break;
         case VariableType::integer:
-        case VariableType::enumeration: to.set_integer(g.target_vrs[0], static_cast<fmi2Integer>(values[0])); break;
-        case VariableType::boolean: to.set_boolean(g.target_vrs[0], values[0] != 0.0); break;
-        case VariableType::string: to.set_string(g.target_vrs[0], text); break;
+        case VariableType::enumeration:
+            to.set_integer(g.target_vrs[0], static_cast<fmi2Integer>(values[0]));
+            break;
+        case VariableType::boolean:
+            to.set_boolean(g.target_vrs[0], values[0] != 0.0);
+            break;
+        case VariableType::string:
+            to.set_string(g.target_vrs[0], text);
+            break;
     }
 }
 
@@ -397,7 +431,7 @@ void System::step_co_simulation(std::size_t c, double t, double h) {
     for (auto& g : groups_) {
         if (g.to != c) continue;
         std::string text;
-        if (read_sources(g, text)) accept(g, text);  // the sources' values now, at the end of the step: g.last
+        if (read_sources(g, text)) accept(g, text);           // the sources' values now, at the end of the step: g.last
         write_targets(g, g.step_start, g.step_start_string);  // the step starts from the values at its start
         const bool interpolate = components_[c].interpolates_inputs && g.continuous_target && h > 0.0 &&
                                  components_[g.from].interface == Interface::model_exchange;

@@ -20,18 +20,18 @@ enum class Interface { model_exchange, co_simulation };
 
 struct Component {
     std::string name;
-    std::unique_ptr<fmi_loader::Fmu> fmu;  // its modelDescription; its binary too unless bridged
+    std::unique_ptr<fmi_loader::Fmu> fmu;         // its modelDescription; its binary too unless bridged
     std::unique_ptr<ComponentInstance> instance;  // Fmi2Instance, or HardwareBridge when bridged
     Interface interface = Interface::model_exchange;
     std::size_t state_offset = 0, state_count = 0;          // slice of the ME state vector
     std::size_t indicator_offset = 0, indicator_count = 0;  // slice of the root functions
-    std::optional<double> communication_step;  // Co-Simulation: its own step (.ssd annotation or --step)
-    bool interpolates_inputs = false;          // Co-Simulation: canInterpolateInputs
-    bool completed_step_needed = false;        // Model Exchange: wants fmi2CompletedIntegratorStep
+    std::optional<double> communication_step;               // Co-Simulation: its own step (.ssd annotation or --step)
+    bool interpolates_inputs = false;                       // Co-Simulation: canInterpolateInputs
+    bool completed_step_needed = false;                     // Model Exchange: wants fmi2CompletedIntegratorStep
     // Model Exchange components whose inputs matter between events: those with states or event
     // indicators, and those whose outputs feed them. The others see their inputs at events only.
     bool continuous_consumer = false;
-    double next_time_event = 0.0;                           // +inf when none
+    double next_time_event = 0.0;  // +inf when none
     long rhs_evaluations = 0;
     long events = 0;
     bool has_dynamics() const { return state_count > 0 || indicator_count > 0; }
@@ -51,7 +51,7 @@ struct SystemOptions {
     std::optional<double> communication_step;     // of every Co-Simulation component (replaces the .ssd's)
     bool model_exchange_only = false;             // ignore the .ssd's execution annotations (reference runs)
     std::optional<double> tolerance;
-    std::optional<int> bridge_port;               // replaces the port of every UDP hardware bridge
+    std::optional<int> bridge_port;  // replaces the port of every UDP hardware bridge
 };
 
 // Consecutive connections (in flow order) between the same two components, copied in one get and
@@ -64,7 +64,7 @@ struct TransferGroup {
     std::vector<fmi2ValueReference> source_vrs, target_vrs;
     std::vector<double> values, last;  // Reals (and Integer/Boolean as exact doubles)
     std::string last_string;
-    bool given = false;                // a value was transferred at least once
+    bool given = false;  // a value was transferred at least once
     // Co-Simulation targets: the values at the last communication point, the start of the next step.
     std::vector<double> step_start;
     std::string step_start_string;
@@ -126,7 +126,7 @@ private:
     SystemDescription description_;
     std::vector<Component> components_;
     std::vector<Connection> connections_;
-    std::vector<TransferGroup> groups_;  // connections_ in order, batched by (source, target) component
+    std::vector<TransferGroup> groups_;             // connections_ in order, batched by (source, target) component
     std::vector<char> changed_, discrete_changed_;  // per component, since clear_changes()
     std::vector<double> slopes_;                    // step_co_simulation's input derivatives
     std::vector<std::pair<std::size_t, std::string>> settings_;  // component, "variable=value"

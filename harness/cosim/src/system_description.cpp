@@ -31,10 +31,12 @@ Doc parse_file(const std::filesystem::path& path) {
     Doc doc(xmlReadFile(path.c_str(), nullptr, XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING));
     if (!doc) {
         const xmlError* e = xmlGetLastError();
-        throw CosimError(path.string() + ": not well-formed XML" +
-                         (e && e->message ? std::string(" (line ") + std::to_string(e->line) + ": " + e->message + ")" : ""));
+        throw CosimError(
+            path.string() + ": not well-formed XML" +
+            (e && e->message ? std::string(" (line ") + std::to_string(e->line) + ": " + e->message + ")" : ""));
     }
-    if (doc->intSubset || doc->extSubset) throw CosimError(path.string() + ": DOCTYPE declarations are not allowed in an .ssd");
+    if (doc->intSubset || doc->extSubset)
+        throw CosimError(path.string() + ": DOCTYPE declarations are not allowed in an .ssd");
     return doc;
 }
 
@@ -52,8 +54,9 @@ std::optional<std::string> attribute(const xmlNode* n, const char* name) {
 
 std::string required(const xmlNode* n, const char* name, const std::filesystem::path& file) {
     auto v = attribute(n, name);
-    if (!v) throw CosimError(file.string() + ":" + std::to_string(n->line) + ": <" +
-                             reinterpret_cast<const char*>(n->name) + "> lacks the attribute '" + name + "'");
+    if (!v)
+        throw CosimError(file.string() + ":" + std::to_string(n->line) + ": <" +
+                         reinterpret_cast<const char*>(n->name) + "> lacks the attribute '" + name + "'");
     return *v;
 }
 
@@ -96,14 +99,17 @@ void read_parameter_set(const xmlNode* set, const std::filesystem::path& file, s
 void read_bindings(const xmlNode* component, const std::filesystem::path& file, std::vector<ParameterValue>& out) {
     for_children(first_child(component, "ParameterBindings"), "ParameterBinding", [&](const xmlNode* binding) {
         if (auto prefix = attribute(binding, "prefix"); prefix && !prefix->empty())
-            throw CosimError(file.string() + ":" + std::to_string(binding->line) + ": parameter prefixes are not supported");
+            throw CosimError(file.string() + ":" + std::to_string(binding->line) +
+                             ": parameter prefixes are not supported");
         if (const xmlNode* inline_values = first_child(binding, "ParameterValues")) {
-            for_children(inline_values, "ParameterSet", [&](const xmlNode* set) { read_parameter_set(set, file, out); });
+            for_children(inline_values, "ParameterSet",
+                         [&](const xmlNode* set) { read_parameter_set(set, file, out); });
         } else if (auto source = attribute(binding, "source")) {
             const auto ssv = file.parent_path() / *source;
             const Doc doc = parse_file(ssv);
             const xmlNode* root = xmlDocGetRootElement(doc.get());
-            if (!is(root, "ParameterSet")) throw CosimError(ssv.string() + ": the root element is not ssv:ParameterSet");
+            if (!is(root, "ParameterSet"))
+                throw CosimError(ssv.string() + ": the root element is not ssv:ParameterSet");
             read_parameter_set(root, ssv, out);
         }
     });
@@ -137,7 +143,8 @@ std::optional<BridgeDescription> read_bridge(const xmlNode* component, const std
         d.max_misses = int_attribute(b, "max_misses", d.max_misses, 1, 1000000, file);
         if (d.transport != "udp" && d.transport != "serial")
             throw CosimError(where + ": bridge transport '" + d.transport + "' is neither udp nor serial");
-        if (d.transport == "serial" && d.device.empty()) throw CosimError(where + ": a serial bridge needs device=\"...\"");
+        if (d.transport == "serial" && d.device.empty())
+            throw CosimError(where + ": a serial bridge needs device=\"...\"");
         if (d.policy != "hold" && d.policy != "stop")
             throw CosimError(where + ": bridge policy '" + d.policy + "' is neither hold nor stop");
         out = d;
@@ -188,10 +195,12 @@ SystemDescription read_system_description(const std::filesystem::path& ssd) {
     SystemDescription out;
     out.file = ssd;
     out.name = required(system, "name", ssd);
-    for (const xmlNode* e = first_child(system, "Elements") ? first_child(system, "Elements")->children : nullptr; e; e = e->next) {
+    for (const xmlNode* e = first_child(system, "Elements") ? first_child(system, "Elements")->children : nullptr; e;
+         e = e->next) {
         if (e->type != XML_ELEMENT_NODE) continue;
         if (!is(e, "Component"))
-            throw CosimError(ssd.string() + ":" + std::to_string(e->line) + ": <" + reinterpret_cast<const char*>(e->name) +
+            throw CosimError(ssd.string() + ":" + std::to_string(e->line) + ": <" +
+                             reinterpret_cast<const char*>(e->name) +
                              "> elements are not supported (only flat systems of components)");
         ComponentDescription c;
         c.name = required(e, "name", ssd);

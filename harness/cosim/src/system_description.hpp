@@ -15,7 +15,6 @@ namespace cosim {
 // The largest .ssd read (16 MiB: the bundled systems are a few kB).
 inline constexpr std::uintmax_t max_ssd_bytes = std::uintmax_t{16} << 20;
 
-
 enum class ConnectorKind { input, output, parameter, calculated_parameter, inout, unspecified };
 
 struct ConnectorDescription {
@@ -39,11 +38,11 @@ struct BridgeDescription {
     std::string transport = "udp";  // "udp" or "serial"
     std::string host = "127.0.0.1";
     int port = 50505;
-    std::string device;             // serial only
-    int baud = 115200;              // serial only
-    int timeout_ms = 200;           // how long to wait for each answer
-    int max_misses = 5;             // consecutive misses before policy "stop" gives up
-    std::string policy = "hold";    // "hold" (keep the last outputs) or "stop" (error)
+    std::string device;           // serial only
+    int baud = 115200;            // serial only
+    int timeout_ms = 200;         // how long to wait for each answer
+    int max_misses = 5;           // consecutive misses before policy "stop" gives up
+    std::string policy = "hold";  // "hold" (keep the last outputs) or "stop" (error)
 };
 
 // How the master runs a component and what it writes by default, when the .ssd says
@@ -51,8 +50,8 @@ struct BridgeDescription {
 inline constexpr const char* execution_annotation = "org.pvatt.execution";
 
 struct ExecutionHint {
-    bool co_simulation = false;               // interface="CoSimulation": its own solver, its own step
-    std::optional<double> communication_step; // communicationStep="0.001"
+    bool co_simulation = false;                // interface="CoSimulation": its own solver, its own step
+    std::optional<double> communication_step;  // communicationStep="0.001"
 };
 
 struct ComponentDescription {

@@ -46,7 +46,8 @@ struct Scratch {
         std::ofstream(path) << R"(<?xml version="1.0" encoding="UTF-8"?>
 <ssd:SystemStructureDescription xmlns:ssd="http://ssp-standard.org/SSP1/SystemStructureDescription"
     xmlns:ssc="http://ssp-standard.org/SSP1/SystemStructureCommon" version="1.0" name="test">
-  <ssd:System name="test"><ssd:Elements>)" << elements << R"(</ssd:Elements></ssd:System>
+  <ssd:System name="test"><ssd:Elements>)"
+                            << elements << R"(</ssd:Elements></ssd:System>
   <ssd:DefaultExperiment startTime="0" stopTime="1"/>
 </ssd:SystemStructureDescription>
 )";

@@ -39,9 +39,11 @@ struct SsdFile {
 std::string component(const std::string& name, const std::string& fmu, const std::string& params = "") {
     std::string s = "<ssd:Component name=\"" + name + "\" source=\"" + fmu + ".fmu\">";
     if (!params.empty())
-        s += "<ssd:ParameterBindings><ssd:ParameterBinding><ssd:ParameterValues><ssv:ParameterSet version=\"1.0\" "
-             "name=\"p\"><ssv:Parameters>" + params +
-             "</ssv:Parameters></ssv:ParameterSet></ssd:ParameterValues></ssd:ParameterBinding></ssd:ParameterBindings>";
+        s +=
+            "<ssd:ParameterBindings><ssd:ParameterBinding><ssd:ParameterValues><ssv:ParameterSet version=\"1.0\" "
+            "name=\"p\"><ssv:Parameters>" +
+            params +
+            "</ssv:Parameters></ssv:ParameterSet></ssd:ParameterValues></ssd:ParameterBinding></ssd:ParameterBindings>";
     return s + "</ssd:Component>\n";
 }
 std::string real(const std::string& name, double value) {
@@ -63,7 +65,9 @@ struct Probe : Observer {
     Probe(System& s, const std::string& comp, const std::string& var)
         : component(s.component_index(comp)),
           vr(s.components()[component].description().find_variable(var)->value_reference) {}
-    void sample(double t, System& s) override { samples.emplace_back(t, s.components()[component].instance->get_real(vr)); }
+    void sample(double t, System& s) override {
+        samples.emplace_back(t, s.components()[component].instance->get_real(vr));
+    }
 };
 
 SystemOptions options(std::vector<std::string> cs = {}) {
@@ -109,10 +113,11 @@ TEST(CosimSystem, CoSimulationComponentInterpolatesItsInputsOverAStep) {
     // step) integrates the ramp: x = 1 + t + t^2 / 2, 2.5 at t = 1. Linear input interpolation makes
     // that exact; a zero-order hold of each step's start value would give 1 + 0.25 (1 + 1.25 + 1.5 +
     // 1.75) = 2.375.
-    const std::string acc = "<ssd:Component name=\"acc\" source=\"test_integrator.fmu\"><ssd:Annotations>"
-                            "<ssc:Annotation type=\"org.pvatt.execution\"><ex:Execution xmlns:ex=\"urn:pvatt:execution\" "
-                            "interface=\"CoSimulation\" communicationStep=\"0.25\"/></ssc:Annotation></ssd:Annotations>"
-                            "</ssd:Component>\n";
+    const std::string acc =
+        "<ssd:Component name=\"acc\" source=\"test_integrator.fmu\"><ssd:Annotations>"
+        "<ssc:Annotation type=\"org.pvatt.execution\"><ex:Execution xmlns:ex=\"urn:pvatt:execution\" "
+        "interface=\"CoSimulation\" communicationStep=\"0.25\"/></ssc:Annotation></ssd:Annotations>"
+        "</ssd:Component>\n";
     SsdFile ssd(system_body(component("ramp", "test_integrator") + acc, connect("ramp", "y", "acc", "u")));
     auto o = options();
     o.settings = {"ramp.u=1"};
@@ -196,8 +201,7 @@ TEST(CosimSystem, MalformedFilesAreRefused) {
     try {
         const auto d = read_system_description(path);
         EXPECT_EQ(d.name.find("root"), std::string::npos);
-    } catch (const CosimError&) {
-    }
+    } catch (const CosimError&) {}
     std::filesystem::remove(path);
     EXPECT_THROW(read_system_description("/nonexistent/system.ssd"), CosimError);
 }

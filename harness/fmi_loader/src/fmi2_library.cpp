@@ -26,7 +26,8 @@ void resolve(void* handle, const char* name, Fn*& slot, bool required, std::vect
 
 }  // namespace
 
-std::filesystem::path Fmi2Library::binary_path(const std::filesystem::path& fmu_root, const std::string& model_identifier) {
+std::filesystem::path Fmi2Library::binary_path(const std::filesystem::path& fmu_root,
+                                               const std::string& model_identifier) {
     return fmu_root / "binaries" / "linux64" / (model_identifier + ".so");
 }
 

@@ -63,8 +63,9 @@ std::string unsafe_reason(const std::string& name) {
 
 [[noreturn]] void fail_limit(const fs::path& fmu, const std::string& what, std::uint64_t value, std::uint64_t limit,
                              const char* unit, const char* limit_name) {
-    fail(LoaderErrc::limit, fmu, what + " " + std::to_string(value) + unit + ", more than the limit of " +
-                                     std::to_string(limit) + unit + " (" + limit_name + ")");
+    fail(LoaderErrc::limit, fmu,
+         what + " " + std::to_string(value) + unit + ", more than the limit of " + std::to_string(limit) + unit + " (" +
+             limit_name + ")");
 }
 
 void check_cancel(const fs::path& fmu) {
@@ -77,7 +78,8 @@ void check_declared(const zip_stat_t& st, const std::string& name, std::uint64_t
                     const fs::path& fmu) {
     const std::uint64_t size = (st.valid & ZIP_STAT_SIZE) ? st.size : 0;
     if (size > limits.max_entry_bytes)
-        fail_limit(fmu, "entry '" + name + "' is", size, limits.max_entry_bytes, " bytes uncompressed", "max_entry_bytes");
+        fail_limit(fmu, "entry '" + name + "' is", size, limits.max_entry_bytes, " bytes uncompressed",
+                   "max_entry_bytes");
     total += size;
     if (total > limits.max_total_bytes)
         fail_limit(fmu, "the entries up to '" + name + "' are", total, limits.max_total_bytes, " bytes uncompressed",
@@ -87,10 +89,10 @@ void check_declared(const zip_stat_t& st, const std::string& name, std::uint64_t
         const double ratio = packed > 0 ? static_cast<double>(size) / static_cast<double>(packed)
                                         : std::numeric_limits<double>::infinity();
         if (ratio > limits.max_compression_ratio)
-            fail(LoaderErrc::limit, fmu, "entry '" + name + "' expands " + std::to_string(packed) + " bytes to " +
-                                             std::to_string(size) + " (ratio " + std::to_string(ratio) +
-                                             "), more than the limit of " + std::to_string(limits.max_compression_ratio) +
-                                             " (max_compression_ratio): a zip bomb?");
+            fail(LoaderErrc::limit, fmu,
+                 "entry '" + name + "' expands " + std::to_string(packed) + " bytes to " + std::to_string(size) +
+                     " (ratio " + std::to_string(ratio) + "), more than the limit of " +
+                     std::to_string(limits.max_compression_ratio) + " (max_compression_ratio): a zip bomb?");
     }
 }
 
@@ -108,24 +110,47 @@ void extract_entry(zip_t* archive, zip_uint64_t index, const std::string& name, 
     std::string cause;
     for (;;) {
         const zip_int64_t n = zip_fread(in.get(), buffer.data(), buffer.size());
-        if (n < 0) { ok = false; cause = std::string("read error: ") + zip_file_strerror(in.get()); break; }
+        if (n < 0) {
+            ok = false;
+            cause = std::string("read error: ") + zip_file_strerror(in.get());
+            break;
+        }
         if (n == 0) break;
         total += static_cast<zip_uint64_t>(n);
-        if (total > size) { ok = false; cause = "holds more than its declared " + std::to_string(size) + " bytes"; break; }
-        if (cancel_requested()) { ok = false; cause = "extraction interrupted"; break; }
+        if (total > size) {
+            ok = false;
+            cause = "holds more than its declared " + std::to_string(size) + " bytes";
+            break;
+        }
+        if (cancel_requested()) {
+            ok = false;
+            cause = "extraction interrupted";
+            break;
+        }
         const char* p = buffer.data();
         zip_int64_t left = n;
         while (left > 0) {
             const ssize_t w = ::write(fd, p, static_cast<size_t>(left));
-            if (w < 0) { if (errno == EINTR) continue; ok = false; cause = std::string("write error: ") + std::strerror(errno); break; }
+            if (w < 0) {
+                if (errno == EINTR) continue;
+                ok = false;
+                cause = std::string("write error: ") + std::strerror(errno);
+                break;
+            }
             p += w;
             left -= w;
         }
         if (!ok) break;
     }
-    if (::close(fd) != 0 && ok) { ok = false; cause = std::string("write error: ") + std::strerror(errno); }
+    if (::close(fd) != 0 && ok) {
+        ok = false;
+        cause = std::string("write error: ") + std::strerror(errno);
+    }
     if (cancel_requested()) fail(LoaderErrc::cancelled, fmu, "extraction interrupted");
-    if (ok && total != size) { ok = false; cause = "size mismatch (" + std::to_string(total) + " of " + std::to_string(size) + " bytes)"; }
+    if (ok && total != size) {
+        ok = false;
+        cause = "size mismatch (" + std::to_string(total) + " of " + std::to_string(size) + " bytes)";
+    }
     if (!ok) fail(LoaderErrc::extract_io, fmu, "entry '" + name + "': " + cause);
 }
 
@@ -164,9 +189,11 @@ FmuArchive::FmuArchive(const fs::path& fmu_path, const Limits& limits) : fmu_pat
                 opsys == ZIP_OPSYS_UNIX) {
                 // Unix zips keep st_mode in the high 16 bits of the external attributes.
                 const auto mode = static_cast<mode_t>(attributes >> 16);
-                if (S_ISLNK(mode)) fail(LoaderErrc::unsafe_entry, fmu_path, "entry '" + name + "' refused: symbolic link");
+                if (S_ISLNK(mode))
+                    fail(LoaderErrc::unsafe_entry, fmu_path, "entry '" + name + "' refused: symbolic link");
                 if ((mode & S_IFMT) != 0 && !S_ISREG(mode) && !S_ISDIR(mode))
-                    fail(LoaderErrc::unsafe_entry, fmu_path, "entry '" + name + "' refused: not a regular file or directory");
+                    fail(LoaderErrc::unsafe_entry, fmu_path,
+                         "entry '" + name + "' refused: not a regular file or directory");
             }
 
             check_declared(st, name, total, limits, fmu_path);
@@ -175,11 +202,14 @@ FmuArchive::FmuArchive(const fs::path& fmu_path, const Limits& limits) : fmu_pat
             std::error_code ec;
             if (name.back() == '/') {
                 fs::create_directories(target, ec);
-                if (ec) fail(LoaderErrc::extract_io, fmu_path, "cannot create '" + target.string() + "': " + ec.message());
+                if (ec)
+                    fail(LoaderErrc::extract_io, fmu_path, "cannot create '" + target.string() + "': " + ec.message());
                 continue;
             }
             fs::create_directories(target.parent_path(), ec);
-            if (ec) fail(LoaderErrc::extract_io, fmu_path, "cannot create '" + target.parent_path().string() + "': " + ec.message());
+            if (ec)
+                fail(LoaderErrc::extract_io, fmu_path,
+                     "cannot create '" + target.parent_path().string() + "': " + ec.message());
             extract_entry(archive.get(), index, name, (st.valid & ZIP_STAT_SIZE) ? st.size : 0, target, fmu_path);
         }
     } catch (...) {
@@ -188,7 +218,9 @@ FmuArchive::FmuArchive(const fs::path& fmu_path, const Limits& limits) : fmu_pat
     }
 }
 
-FmuArchive::~FmuArchive() { remove_directory(); }
+FmuArchive::~FmuArchive() {
+    remove_directory();
+}
 
 FmuArchive::FmuArchive(FmuArchive&& other) noexcept
     : fmu_path_(std::move(other.fmu_path_)), directory_(std::move(other.directory_)) {

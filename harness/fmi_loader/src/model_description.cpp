@@ -18,44 +18,64 @@ namespace fmi_loader {
 
 std::string_view to_string(Causality c) noexcept {
     switch (c) {
-    case Causality::parameter: return "parameter";
-    case Causality::calculated_parameter: return "calculatedParameter";
-    case Causality::input: return "input";
-    case Causality::output: return "output";
-    case Causality::local: return "local";
-    case Causality::independent: return "independent";
+        case Causality::parameter:
+            return "parameter";
+        case Causality::calculated_parameter:
+            return "calculatedParameter";
+        case Causality::input:
+            return "input";
+        case Causality::output:
+            return "output";
+        case Causality::local:
+            return "local";
+        case Causality::independent:
+            return "independent";
     }
     return "?";
 }
 
 std::string_view to_string(Variability v) noexcept {
     switch (v) {
-    case Variability::constant: return "constant";
-    case Variability::fixed: return "fixed";
-    case Variability::tunable: return "tunable";
-    case Variability::discrete: return "discrete";
-    case Variability::continuous: return "continuous";
+        case Variability::constant:
+            return "constant";
+        case Variability::fixed:
+            return "fixed";
+        case Variability::tunable:
+            return "tunable";
+        case Variability::discrete:
+            return "discrete";
+        case Variability::continuous:
+            return "continuous";
     }
     return "?";
 }
 
 std::string_view to_string(Initial i) noexcept {
     switch (i) {
-    case Initial::none: return "none";
-    case Initial::exact: return "exact";
-    case Initial::approx: return "approx";
-    case Initial::calculated: return "calculated";
+        case Initial::none:
+            return "none";
+        case Initial::exact:
+            return "exact";
+        case Initial::approx:
+            return "approx";
+        case Initial::calculated:
+            return "calculated";
     }
     return "?";
 }
 
 std::string_view to_string(VariableType t) noexcept {
     switch (t) {
-    case VariableType::real: return "Real";
-    case VariableType::integer: return "Integer";
-    case VariableType::boolean: return "Boolean";
-    case VariableType::string: return "String";
-    case VariableType::enumeration: return "Enumeration";
+        case VariableType::real:
+            return "Real";
+        case VariableType::integer:
+            return "Integer";
+        case VariableType::boolean:
+            return "Boolean";
+        case VariableType::string:
+            return "String";
+        case VariableType::enumeration:
+            return "Enumeration";
     }
     return "?";
 }
@@ -63,12 +83,17 @@ std::string_view to_string(VariableType t) noexcept {
 bool is_valid_combination(Causality c, Variability v) noexcept {
     using enum Variability;
     switch (c) {
-    case Causality::parameter:
-    case Causality::calculated_parameter: return v == fixed || v == tunable;
-    case Causality::input: return v == discrete || v == continuous;
-    case Causality::output: return v == constant || v == discrete || v == continuous;
-    case Causality::local: return true;
-    case Causality::independent: return v == continuous;
+        case Causality::parameter:
+        case Causality::calculated_parameter:
+            return v == fixed || v == tunable;
+        case Causality::input:
+            return v == discrete || v == continuous;
+        case Causality::output:
+            return v == constant || v == discrete || v == continuous;
+        case Causality::local:
+            return true;
+        case Causality::independent:
+            return v == continuous;
     }
     return false;
 }
@@ -76,13 +101,16 @@ bool is_valid_combination(Causality c, Variability v) noexcept {
 Initial default_initial(Causality c, Variability v) noexcept {
     // Cases of the 2.2.7 table: A -> exact, B and C -> calculated, D and E -> no initial.
     switch (c) {
-    case Causality::parameter: return Initial::exact;                      // A
-    case Causality::calculated_parameter: return Initial::calculated;      // B
-    case Causality::input:
-    case Causality::independent: return Initial::none;                     // D, E
-    case Causality::output:
-    case Causality::local:
-        return v == Variability::constant ? Initial::exact : Initial::calculated;  // A; B or C
+        case Causality::parameter:
+            return Initial::exact;  // A
+        case Causality::calculated_parameter:
+            return Initial::calculated;  // B
+        case Causality::input:
+        case Causality::independent:
+            return Initial::none;  // D, E
+        case Causality::output:
+        case Causality::local:
+            return v == Variability::constant ? Initial::exact : Initial::calculated;  // A; B or C
     }
     return Initial::none;
 }
@@ -90,16 +118,19 @@ Initial default_initial(Causality c, Variability v) noexcept {
 bool is_allowed_initial(Causality c, Variability v, Initial i) noexcept {
     if (!is_valid_combination(c, v)) return false;
     switch (c) {
-    case Causality::parameter: return i == Initial::exact;                                         // A
-    case Causality::calculated_parameter: return i == Initial::calculated || i == Initial::approx;  // B
-    case Causality::input:
-    case Causality::independent: return i == Initial::none;                                        // D, E
-    case Causality::output:
-    case Causality::local:
-        if (v == Variability::constant) return i == Initial::exact;                                // A
-        if (v == Variability::fixed || v == Variability::tunable)
-            return i == Initial::calculated || i == Initial::approx;                               // B
-        return i == Initial::exact || i == Initial::approx || i == Initial::calculated;            // C
+        case Causality::parameter:
+            return i == Initial::exact;  // A
+        case Causality::calculated_parameter:
+            return i == Initial::calculated || i == Initial::approx;  // B
+        case Causality::input:
+        case Causality::independent:
+            return i == Initial::none;  // D, E
+        case Causality::output:
+        case Causality::local:
+            if (v == Variability::constant) return i == Initial::exact;  // A
+            if (v == Variability::fixed || v == Variability::tunable)
+                return i == Initial::calculated || i == Initial::approx;                     // B
+            return i == Initial::exact || i == Initial::approx || i == Initial::calculated;  // C
     }
     return false;
 }
@@ -183,7 +214,9 @@ public:
 
     std::string required(const xmlNode* n, const char* name) const {
         auto v = attr(n, name);
-        if (!v) invalid(n, std::string("<") + reinterpret_cast<const char*>(n->name) + "> lacks required attribute '" + name + "'");
+        if (!v)
+            invalid(n, std::string("<") + reinterpret_cast<const char*>(n->name) + "> lacks required attribute '" +
+                           name + "'");
         return *v;
     }
 
@@ -200,7 +233,8 @@ public:
         char* end = nullptr;
         errno = 0;
         const double value = std::strtod(v.c_str(), &end);
-        if (v.empty() || *end != '\0') invalid(n, std::string("attribute '") + name + "' is not a number: '" + shorten(v) + "'");
+        if (v.empty() || *end != '\0')
+            invalid(n, std::string("attribute '") + name + "' is not a number: '" + shorten(v) + "'");
         if (errno == ERANGE && std::abs(value) > 1.0)
             invalid(n, std::string("attribute '") + name + "': " + shorten(v) + " is out of range of a double");
         return value;  // an underflow to 0 or a subnormal is that value, as the standard's xs:double has it
@@ -286,7 +320,8 @@ public:
             char* end = nullptr;
             errno = 0;
             const long long v = std::strtoll(token.c_str(), &end, 10);
-            if (*end != '\0' || v < 1 || errno == ERANGE) invalid(n, "bad index '" + shorten(token) + "' in dependencies");
+            if (*end != '\0' || v < 1 || errno == ERANGE)
+                invalid(n, "bad index '" + shorten(token) + "' in dependencies");
             out.push_back(static_cast<std::size_t>(v));
         }
         return out;
@@ -335,7 +370,8 @@ public:
                     b.offset = real(c, "offset").value_or(0.0);
                     unit.base_unit = b;
                 } else if (is(c, "DisplayUnit")) {
-                    unit.display_units.push_back({required(c, "name"), real(c, "factor").value_or(1.0), real(c, "offset").value_or(0.0)});
+                    unit.display_units.push_back(
+                        {required(c, "name"), real(c, "factor").value_or(1.0), real(c, "offset").value_or(0.0)});
                 }
             }
             md.unit_definitions.push_back(std::move(unit));
@@ -350,7 +386,10 @@ public:
             t.description = text(n, "description");
             const xmlNode* body = nullptr;
             for (const xmlNode* c = n->children; c; c = c->next)
-                if (type_of(c)) { body = c; break; }
+                if (type_of(c)) {
+                    body = c;
+                    break;
+                }
             if (!body) invalid(n, "SimpleType '" + t.name + "' has no Real/Integer/Boolean/String/Enumeration element");
             t.type = *type_of(body);
             t.quantity = text(body, "quantity");
@@ -421,8 +460,7 @@ public:
     }
 
     ModelDescription read(const xmlNode* root) const {
-        if (!root || !is(root, "fmiModelDescription"))
-            invalid(root, "root element is not <fmiModelDescription>");
+        if (!root || !is(root, "fmiModelDescription")) invalid(root, "root element is not <fmiModelDescription>");
         ModelDescription md;
         md.fmi_version = required(root, "fmiVersion");
         if (md.fmi_version.rfind("2.", 0) != 0) invalid(root, "fmiVersion '" + md.fmi_version + "' is not 2.x");
@@ -439,14 +477,17 @@ public:
         if (nz < 0) invalid(root, "numberOfEventIndicators is negative");
         if (static_cast<unsigned long long>(nz) > limits_.max_event_indicators)
             throw LoaderError(LoaderErrc::limit, "'" + source_ + "': numberOfEventIndicators " + std::to_string(nz) +
-                                                     " is more than the limit of " + std::to_string(limits_.max_event_indicators) +
+                                                     " is more than the limit of " +
+                                                     std::to_string(limits_.max_event_indicators) +
                                                      " (max_event_indicators)");
         md.number_of_event_indicators = static_cast<std::size_t>(nz);
 
         // Types first: variables inherit from them whatever the element order in the file.
         for (const xmlNode* n = root->children; n; n = n->next) {
-            if (is(n, "UnitDefinitions")) unit_definitions(n, md);
-            else if (is(n, "TypeDefinitions")) type_definitions(n, md);
+            if (is(n, "UnitDefinitions"))
+                unit_definitions(n, md);
+            else if (is(n, "TypeDefinitions"))
+                type_definitions(n, md);
         }
         for (const xmlNode* n = root->children; n; n = n->next) {
             if (is(n, "ModelExchange")) {
@@ -466,7 +507,8 @@ public:
                 cs.model_identifier = required(n, "modelIdentifier");
                 check_model_identifier(n, cs.model_identifier);
                 cs.needs_execution_tool = boolean(n, "needsExecutionTool", false);
-                cs.can_handle_variable_communication_step_size = boolean(n, "canHandleVariableCommunicationStepSize", false);
+                cs.can_handle_variable_communication_step_size =
+                    boolean(n, "canHandleVariableCommunicationStepSize", false);
                 cs.can_interpolate_inputs = boolean(n, "canInterpolateInputs", false);
                 cs.max_output_derivative_order = static_cast<int>(integer(n, "maxOutputDerivativeOrder").value_or(0));
                 cs.can_run_asynchronuously = boolean(n, "canRunAsynchronuously", false);
@@ -493,9 +535,12 @@ public:
                 }
             } else if (is(n, "ModelStructure")) {
                 for (const xmlNode* c = n->children; c; c = c->next) {
-                    if (is(c, "Outputs")) md.model_structure.outputs = unknowns(c);
-                    else if (is(c, "Derivatives")) md.model_structure.derivatives = unknowns(c);
-                    else if (is(c, "InitialUnknowns")) md.model_structure.initial_unknowns = unknowns(c);
+                    if (is(c, "Outputs"))
+                        md.model_structure.outputs = unknowns(c);
+                    else if (is(c, "Derivatives"))
+                        md.model_structure.derivatives = unknowns(c);
+                    else if (is(c, "InitialUnknowns"))
+                        md.model_structure.initial_unknowns = unknowns(c);
                 }
             }
         }
@@ -510,10 +555,14 @@ public:
     // the shared library, so it must be a plain C identifier; anything else ("../x", "/abs/evil")
     // would make the loader open a library outside the unpacked FMU.
     void check_model_identifier(const xmlNode* n, const std::string& id) const {
-        const auto letter = [](unsigned char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
+        const auto letter = [](unsigned char c) {
+            return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+        };
         bool ok = !id.empty() && letter(static_cast<unsigned char>(id[0])) && id.size() <= 200;
         for (const unsigned char c : id) ok = ok && (letter(c) || (c >= '0' && c <= '9'));
-        if (!ok) invalid(n, "modelIdentifier '" + shorten(id) + "' is not a C identifier ([A-Za-z_][A-Za-z0-9_]*, at most 200 characters)");
+        if (!ok)
+            invalid(n, "modelIdentifier '" + shorten(id) +
+                           "' is not a C identifier ([A-Za-z_][A-Za-z0-9_]*, at most 200 characters)");
     }
 
     // Names are unique (section 2.2.7). Variables of one base type sharing a valueReference are
@@ -528,10 +577,11 @@ public:
                 invalid(root, "variable name '" + shorten(v.name) + "' is declared twice (variables " +
                                   std::to_string(it->second + 1) + " and " + std::to_string(i + 1) + ")");
             if (!v.start) continue;
-            const int base = v.type == VariableType::enumeration ? static_cast<int>(VariableType::integer) : static_cast<int>(v.type);
+            const int base = v.type == VariableType::enumeration ? static_cast<int>(VariableType::integer)
+                                                                 : static_cast<int>(v.type);
             if (const auto [it, fresh] = started.emplace(std::pair{base, v.value_reference}, i); !fresh)
-                invalid(root, "variables '" + shorten(md.model_variables[it->second].name) + "' and '" + shorten(v.name) +
-                                  "' share valueReference " + std::to_string(v.value_reference) +
+                invalid(root, "variables '" + shorten(md.model_variables[it->second].name) + "' and '" +
+                                  shorten(v.name) + "' share valueReference " + std::to_string(v.value_reference) +
                                   " and both have a start value (an alias set allows one)");
         }
     }
@@ -544,8 +594,8 @@ public:
                 invalid(root, std::string(where) + " index " + std::to_string(index) + " is beyond the " +
                                   std::to_string(count) + " variables");
         };
-        for (const auto* list : {&md.model_structure.outputs, &md.model_structure.derivatives,
-                                 &md.model_structure.initial_unknowns})
+        for (const auto* list :
+             {&md.model_structure.outputs, &md.model_structure.derivatives, &md.model_structure.initial_unknowns})
             for (const auto& u : *list) {
                 in_range(u.index, "ModelStructure");
                 if (u.dependencies)
@@ -564,9 +614,9 @@ private:
 
 ModelDescription parse_model_description(std::string_view xml, const std::string& source_name, const Limits& limits) {
     if (xml.size() > limits.max_description_bytes)
-        throw LoaderError(LoaderErrc::limit, "'" + source_name + "' is " + std::to_string(xml.size()) +
-                                                 " bytes, more than the limit of " +
-                                                 std::to_string(limits.max_description_bytes) + " bytes (max_description_bytes)");
+        throw LoaderError(LoaderErrc::limit,
+                          "'" + source_name + "' is " + std::to_string(xml.size()) + " bytes, more than the limit of " +
+                              std::to_string(limits.max_description_bytes) + " bytes (max_description_bytes)");
     std::unique_ptr<xmlParserCtxt, CtxtFree> ctxt(xmlNewParserCtxt());
     if (!ctxt) throw LoaderError(LoaderErrc::xml_parse, "'" + source_name + "': cannot create parser");
     // NONET: no network; neither DTDLOAD nor NOENT: no external subset and no entity expansion.
@@ -577,18 +627,21 @@ ModelDescription parse_model_description(std::string_view xml, const std::string
     FirstError first;
     ctxt->sax->serror = &FirstError::record;
     ctxt->_private = &first;
-    std::unique_ptr<xmlDoc, DocFree> doc(xmlCtxtReadMemory(ctxt.get(), xml.data(), static_cast<int>(xml.size()),
-                                                           nullptr, nullptr, options));
+    std::unique_ptr<xmlDoc, DocFree> doc(
+        xmlCtxtReadMemory(ctxt.get(), xml.data(), static_cast<int>(xml.size()), nullptr, nullptr, options));
     if (!doc || !ctxt->wellFormed) {
         const xmlError* last = xmlCtxtGetLastError(ctxt.get());
-        std::string cause = !first.message.empty() ? first.message : last && last->message ? last->message : "not well-formed";
+        std::string cause = !first.message.empty()  ? first.message
+                            : last && last->message ? last->message
+                                                    : "not well-formed";
         while (!cause.empty() && cause.back() == '\n') cause.pop_back();
         const int line = !first.message.empty() ? first.line : last ? last->line : 0;
         throw LoaderError(LoaderErrc::xml_parse, "'" + source_name + "' line " + std::to_string(line) + ": " + cause);
     }
     // A DOCTYPE is the only way to declare entities; FMI never uses one, so refuse it outright.
     if (doc->intSubset || doc->extSubset)
-        throw LoaderError(LoaderErrc::xml_invalid, "'" + source_name + "': DOCTYPE declarations are not allowed in modelDescription.xml");
+        throw LoaderError(LoaderErrc::xml_invalid,
+                          "'" + source_name + "': DOCTYPE declarations are not allowed in modelDescription.xml");
     return Reader(source_name, limits).read(xmlDocGetRootElement(doc.get()));
 }
 
@@ -599,14 +652,15 @@ ModelDescription read_model_description(const std::filesystem::path& file, const
     std::error_code ec;
     const auto size = std::filesystem::file_size(file, ec);
     if (!ec && size > limits.max_description_bytes)
-        throw LoaderError(LoaderErrc::limit, "'" + file.string() + "' is " + std::to_string(size) +
-                                                 " bytes, more than the limit of " +
-                                                 std::to_string(limits.max_description_bytes) + " bytes (max_description_bytes)");
+        throw LoaderError(LoaderErrc::limit,
+                          "'" + file.string() + "' is " + std::to_string(size) + " bytes, more than the limit of " +
+                              std::to_string(limits.max_description_bytes) + " bytes (max_description_bytes)");
     std::string content;
     content.resize(ec ? 0 : static_cast<std::size_t>(size));
     in.read(content.data(), static_cast<std::streamsize>(content.size()));
     if (in.gcount() != static_cast<std::streamsize>(content.size()) || ec)
-        throw LoaderError(LoaderErrc::xml_parse, "'" + file.string() + "': cannot read the file" + (ec ? ": " + ec.message() : ""));
+        throw LoaderError(LoaderErrc::xml_parse,
+                          "'" + file.string() + "': cannot read the file" + (ec ? ": " + ec.message() : ""));
     return parse_model_description(content, file.string(), limits);
 }
 

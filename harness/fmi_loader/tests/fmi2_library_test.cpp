@@ -38,10 +38,10 @@ TEST(LoaderLibrary, RequiredModelExchangeNamesMissingAreAllReported) {
     } catch (const LoaderError& e) {
         EXPECT_EQ(e.code(), LoaderErrc::missing_symbol);
         const std::string what = e.what();
-        for (const char* name : {"fmi2EnterEventMode", "fmi2NewDiscreteStates", "fmi2EnterContinuousTimeMode",
-                                 "fmi2CompletedIntegratorStep", "fmi2SetTime", "fmi2SetContinuousStates",
-                                 "fmi2GetDerivatives", "fmi2GetEventIndicators", "fmi2GetContinuousStates",
-                                 "fmi2GetNominalsOfContinuousStates"})
+        for (const char* name :
+             {"fmi2EnterEventMode", "fmi2NewDiscreteStates", "fmi2EnterContinuousTimeMode",
+              "fmi2CompletedIntegratorStep", "fmi2SetTime", "fmi2SetContinuousStates", "fmi2GetDerivatives",
+              "fmi2GetEventIndicators", "fmi2GetContinuousStates", "fmi2GetNominalsOfContinuousStates"})
             EXPECT_NE(what.find(name), std::string::npos) << name << " not named in: " << what;
         EXPECT_NE(what.find(FIXTURE_COMPLETE), std::string::npos) << what;
     }

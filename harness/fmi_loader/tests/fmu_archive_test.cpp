@@ -41,8 +41,10 @@ protected:
         setenv("TMPDIR", (root_ / "tmp").c_str(), 1);
     }
     void TearDown() override {
-        if (had_tmpdir_) setenv("TMPDIR", old_tmpdir_.c_str(), 1);
-        else unsetenv("TMPDIR");
+        if (had_tmpdir_)
+            setenv("TMPDIR", old_tmpdir_.c_str(), 1);
+        else
+            unsetenv("TMPDIR");
         fs::remove_all(root_);
     }
 

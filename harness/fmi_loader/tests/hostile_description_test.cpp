@@ -40,7 +40,8 @@ void expect_refused(const std::string& xml, LoaderErrc code, const std::string& 
     EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
 }
 
-const std::string one_real = R"(<ScalarVariable name="y" valueReference="0" causality="output"><Real/></ScalarVariable>)";
+const std::string one_real =
+    R"(<ScalarVariable name="y" valueReference="0" causality="output"><Real/></ScalarVariable>)";
 
 TEST(LoaderHostileDescription, ModelIdentifierMustBeACIdentifier) {
     for (const std::string id : {"/abs/path/evil", "../../../x/evil", "a/b", "9lives", "", "a b", "a.so"})
@@ -83,47 +84,59 @@ TEST(LoaderHostileDescription, OversizedDocumentIsRefusedBeforeParsing) {
 }
 
 TEST(LoaderHostileDescription, DuplicateNamesAreRefused) {
-    expect_refused(document("m", "",
-                            R"(<ScalarVariable name="k" valueReference="0" causality="parameter" variability="fixed"><Real start="1"/></ScalarVariable>
+    expect_refused(
+        document(
+            "m", "",
+            R"(<ScalarVariable name="k" valueReference="0" causality="parameter" variability="fixed"><Real start="1"/></ScalarVariable>
                                <ScalarVariable name="k" valueReference="1" causality="output"><Real/></ScalarVariable>)"),
-                   LoaderErrc::xml_invalid, "'k' is declared twice");
+        LoaderErrc::xml_invalid, "'k' is declared twice");
 }
 
 TEST(LoaderHostileDescription, AliasSetWithTwoStartValuesIsRefused) {
     // Two parameters on one valueReference: --set of one would change the other.
-    expect_refused(document("m", "",
-                            R"(<ScalarVariable name="a" valueReference="5" causality="parameter" variability="fixed"><Real start="1"/></ScalarVariable>
+    expect_refused(
+        document(
+            "m", "",
+            R"(<ScalarVariable name="a" valueReference="5" causality="parameter" variability="fixed"><Real start="1"/></ScalarVariable>
                                <ScalarVariable name="b" valueReference="5" causality="parameter" variability="fixed"><Real start="2"/></ScalarVariable>)"),
-                   LoaderErrc::xml_invalid, "share valueReference 5");
+        LoaderErrc::xml_invalid, "share valueReference 5");
     // A true alias (one start value) and the same number for another base type are fine.
-    EXPECT_NO_THROW(parse_model_description(document("m", "",
-                                                     R"(<ScalarVariable name="a" valueReference="5" causality="parameter" variability="fixed"><Real start="1"/></ScalarVariable>
+    EXPECT_NO_THROW(parse_model_description(document(
+        "m", "",
+        R"(<ScalarVariable name="a" valueReference="5" causality="parameter" variability="fixed"><Real start="1"/></ScalarVariable>
                                <ScalarVariable name="a_alias" valueReference="5" causality="calculatedParameter" variability="fixed"><Real/></ScalarVariable>
                                <ScalarVariable name="n" valueReference="5" causality="parameter" variability="fixed"><Integer start="3"/></ScalarVariable>)")));
 }
 
 TEST(LoaderHostileDescription, IndicesBeyondTheVariablesAreRefused) {
-    expect_refused(document("m", "", one_real, R"(<ModelStructure><Outputs><Unknown index="4000000000"/></Outputs></ModelStructure>)"),
+    expect_refused(document("m", "", one_real,
+                            R"(<ModelStructure><Outputs><Unknown index="4000000000"/></Outputs></ModelStructure>)"),
                    LoaderErrc::xml_invalid, "beyond the 1 variables");
-    expect_refused(document("m", "", one_real, R"(<ModelStructure><Outputs><Unknown index="1" dependencies="7"/></Outputs></ModelStructure>)"),
-                   LoaderErrc::xml_invalid, "beyond the 1 variables");
-    expect_refused(document("m", "", R"(<ScalarVariable name="d" valueReference="0"><Real derivative="9"/></ScalarVariable>)"),
-                   LoaderErrc::xml_invalid, "beyond the 1 variables");
+    expect_refused(
+        document("m", "", one_real,
+                 R"(<ModelStructure><Outputs><Unknown index="1" dependencies="7"/></Outputs></ModelStructure>)"),
+        LoaderErrc::xml_invalid, "beyond the 1 variables");
+    expect_refused(
+        document("m", "", R"(<ScalarVariable name="d" valueReference="0"><Real derivative="9"/></ScalarVariable>)"),
+        LoaderErrc::xml_invalid, "beyond the 1 variables");
 }
 
 TEST(LoaderHostileDescription, OutOfRangeNumbersAreCalledThat) {
-    expect_refused(document("m", "", R"(<ScalarVariable name="r" valueReference="0"><Real min="1e999"/></ScalarVariable>)"),
-                   LoaderErrc::xml_invalid, "1e999 is out of range");
-    expect_refused(document("m", "", R"(<ScalarVariable name="r" valueReference="0"><Real min="abc"/></ScalarVariable>)"),
-                   LoaderErrc::xml_invalid, "is not a number");
-    expect_refused(document("m", R"(numberOfEventIndicators="99999999999999999999")", one_real), LoaderErrc::xml_invalid,
-                   "99999999999999999999 is out of range");
+    expect_refused(
+        document("m", "", R"(<ScalarVariable name="r" valueReference="0"><Real min="1e999"/></ScalarVariable>)"),
+        LoaderErrc::xml_invalid, "1e999 is out of range");
+    expect_refused(
+        document("m", "", R"(<ScalarVariable name="r" valueReference="0"><Real min="abc"/></ScalarVariable>)"),
+        LoaderErrc::xml_invalid, "is not a number");
+    expect_refused(document("m", R"(numberOfEventIndicators="99999999999999999999")", one_real),
+                   LoaderErrc::xml_invalid, "99999999999999999999 is out of range");
 }
 
 TEST(LoaderHostileDescription, HugeAttributeGetsTheParsersFirstComplaint) {
     // 12 MB in one attribute is past libxml2's 10 MB limit for a value without XML_PARSE_HUGE; the
     // message must be that complaint, not the later "Extra content at the end of the document".
-    const std::string xml = document("m", R"(description=")" + std::string(std::size_t{12} << 20, 'x') + R"(")", one_real);
+    const std::string xml =
+        document("m", R"(description=")" + std::string(std::size_t{12} << 20, 'x') + R"(")", one_real);
     const LoaderError e = error_of(xml);
     EXPECT_EQ(e.code(), LoaderErrc::xml_parse) << e.what();
     EXPECT_EQ(std::string(e.what()).find("Extra content"), std::string::npos) << e.what();

@@ -121,14 +121,14 @@ TEST(LoaderModelDescription, AppliesStandardDefaults) {
     EXPECT_EQ(var("x").variability, Variability::continuous);
     EXPECT_EQ(var("x").initial, Initial::calculated);
     EXPECT_FALSE(var("x").initial_given);
-    EXPECT_EQ(var("k").initial, Initial::exact);              // parameter fixed: case A
-    EXPECT_EQ(var("u").initial, Initial::none);               // input: case D, no initial
-    EXPECT_EQ(var("y").initial, Initial::calculated);         // output continuous: case C
-    EXPECT_EQ(var("c").initial, Initial::exact);              // output constant: case A
-    EXPECT_EQ(var("p").initial, Initial::calculated);         // calculatedParameter: case B
-    EXPECT_EQ(var("l").initial, Initial::calculated);         // local tunable: case B
-    EXPECT_EQ(var("t").initial, Initial::none);               // independent: case E
-    EXPECT_EQ(var("b").initial, Initial::exact);              // explicit
+    EXPECT_EQ(var("k").initial, Initial::exact);       // parameter fixed: case A
+    EXPECT_EQ(var("u").initial, Initial::none);        // input: case D, no initial
+    EXPECT_EQ(var("y").initial, Initial::calculated);  // output continuous: case C
+    EXPECT_EQ(var("c").initial, Initial::exact);       // output constant: case A
+    EXPECT_EQ(var("p").initial, Initial::calculated);  // calculatedParameter: case B
+    EXPECT_EQ(var("l").initial, Initial::calculated);  // local tunable: case B
+    EXPECT_EQ(var("t").initial, Initial::none);        // independent: case E
+    EXPECT_EQ(var("b").initial, Initial::exact);       // explicit
     EXPECT_TRUE(var("b").initial_given);
 }
 
@@ -215,18 +215,34 @@ TEST(LoaderModelDescription, SchemaViolationsAreRefused) {
         }
         return LoaderErrc::archive_open;  // marks "no exception"
     };
-    const std::string head = R"(<fmiModelDescription fmiVersion="2.0" modelName="m" guid="g"><CoSimulation modelIdentifier="m"/>)";
-    EXPECT_EQ(code_of(R"(<fmiModelDescription fmiVersion="2.0" modelName="m"><CoSimulation modelIdentifier="m"/></fmiModelDescription>)"),
-              LoaderErrc::xml_invalid);  // no guid
-    EXPECT_EQ(code_of(R"(<fmiModelDescription fmiVersion="3.0" modelName="m" guid="g"><CoSimulation modelIdentifier="m"/></fmiModelDescription>)"),
-              LoaderErrc::xml_invalid);
+    const std::string head =
+        R"(<fmiModelDescription fmiVersion="2.0" modelName="m" guid="g"><CoSimulation modelIdentifier="m"/>)";
+    EXPECT_EQ(
+        code_of(
+            R"(<fmiModelDescription fmiVersion="2.0" modelName="m"><CoSimulation modelIdentifier="m"/></fmiModelDescription>)"),
+        LoaderErrc::xml_invalid);  // no guid
+    EXPECT_EQ(
+        code_of(
+            R"(<fmiModelDescription fmiVersion="3.0" modelName="m" guid="g"><CoSimulation modelIdentifier="m"/></fmiModelDescription>)"),
+        LoaderErrc::xml_invalid);
     EXPECT_EQ(code_of(R"(<fmiModelDescription fmiVersion="2.0" modelName="m" guid="g"/>)"), LoaderErrc::xml_invalid);
-    EXPECT_EQ(code_of(head + R"(<ModelVariables><ScalarVariable name="a" valueReference="1" causality="sideways"><Real/></ScalarVariable></ModelVariables></fmiModelDescription>)"),
-              LoaderErrc::xml_invalid);
-    EXPECT_EQ(code_of(head + R"(<ModelVariables><ScalarVariable name="a" valueReference="1"/></ModelVariables></fmiModelDescription>)"),
-              LoaderErrc::xml_invalid);  // no type element
-    EXPECT_EQ(code_of(head + R"(<ModelVariables><ScalarVariable name="a" valueReference="1"><Real declaredType="Nope"/></ScalarVariable></ModelVariables></fmiModelDescription>)"),
-              LoaderErrc::xml_invalid);
-    EXPECT_EQ(code_of(head + R"(<ModelStructure><Outputs><Unknown index="0"/></Outputs></ModelStructure></fmiModelDescription>)"),
-              LoaderErrc::xml_invalid);
+    EXPECT_EQ(
+        code_of(
+            head +
+            R"(<ModelVariables><ScalarVariable name="a" valueReference="1" causality="sideways"><Real/></ScalarVariable></ModelVariables></fmiModelDescription>)"),
+        LoaderErrc::xml_invalid);
+    EXPECT_EQ(
+        code_of(
+            head +
+            R"(<ModelVariables><ScalarVariable name="a" valueReference="1"/></ModelVariables></fmiModelDescription>)"),
+        LoaderErrc::xml_invalid);  // no type element
+    EXPECT_EQ(
+        code_of(
+            head +
+            R"(<ModelVariables><ScalarVariable name="a" valueReference="1"><Real declaredType="Nope"/></ScalarVariable></ModelVariables></fmiModelDescription>)"),
+        LoaderErrc::xml_invalid);
+    EXPECT_EQ(
+        code_of(head +
+                R"(<ModelStructure><Outputs><Unknown index="0"/></Outputs></ModelStructure></fmiModelDescription>)"),
+        LoaderErrc::xml_invalid);
 }

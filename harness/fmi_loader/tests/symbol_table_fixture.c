@@ -4,10 +4,17 @@
 #include "fmi2/fmi2FunctionTypes.h"
 
 #define EXPORT __attribute__((visibility("default")))
-#define PRESENT(name) EXPORT int name(void) { return fmi2Error; }
+#define PRESENT(name)       \
+    EXPORT int name(void) { \
+        return fmi2Error;   \
+    }
 
-EXPORT const char* fmi2GetVersion(void) { return "2.0"; }
-EXPORT const char* fmi2GetTypesPlatform(void) { return "default"; }
+EXPORT const char* fmi2GetVersion(void) {
+    return "2.0";
+}
+EXPORT const char* fmi2GetTypesPlatform(void) {
+    return "default";
+}
 PRESENT(fmi2SetDebugLogging)
 PRESENT(fmi2Instantiate)
 PRESENT(fmi2FreeInstance)

@@ -20,7 +20,7 @@ inline constexpr std::int64_t no_noise_index = std::numeric_limits<std::int64_t>
 // one (Honeywell, "HMC2003 Three-axis magnetic sensor hybrid"); the others are marked as assumptions.
 struct MagnetometerData {
     // inputs
-    Vec3 mag_body{};  // T
+    Vec3 mag_body{};                // T
     bool set_reset_command = true;  // the strap driver's last pulse (true: set, false: reset), source "input"
     // parameters
     double sensitivity = 1.0 / tesla_per_gauss;  // V/T: datasheet 1 V/gauss
@@ -30,17 +30,17 @@ struct MagnetometerData {
     // flight: seed 000 fig. 10 drives the strap from MOSFETs), "timer" (the sensor alternates set and
     // reset by itself every set_reset_period: a stand-alone run) or "none" (set once at power-up).
     fmu::FixedString<8> set_reset_source = "input";
-    double set_reset_period = 1.0;    // s: source "timer" only; assumed, the seed says "occasionally"
-    double cross_axis = 0.003;        // 1: assumed 0.3 % cross-field pick-up
-    Vec3 misalignment{};              // rad
-    double bandwidth = 1000.0;        // Hz: datasheet 1 kHz
+    double set_reset_period = 1.0;               // s: source "timer" only; assumed, the seed says "occasionally"
+    double cross_axis = 0.003;                   // 1: assumed 0.3 % cross-field pick-up
+    Vec3 misalignment{};                         // rad
+    double bandwidth = 1000.0;                   // Hz: datasheet 1 kHz
     double noise_rms = 40e-6 * tesla_per_gauss;  // T: datasheet resolution 40 µgauss
     double noise_sample_period = 0.01;           // s: noise held for this long (band-limits it to 50 Hz)
     std::int32_t noise_seed = 1;
-    double temperature = 25.0;             // degC
-    double sensitivity_tempco = -600e-6;   // 1/K: datasheet −600 ppm/°C
-    double v_rail_low = 0.0;               // V
-    double v_rail_high = 5.0;              // V
+    double temperature = 25.0;            // degC
+    double sensitivity_tempco = -600e-6;  // 1/K: datasheet −600 ppm/°C
+    double v_rail_low = 0.0;              // V
+    double v_rail_high = 5.0;             // V
     // continuous states and derivatives
     Vec3 b_filt{};
     Vec3 der_b_filt{};
@@ -50,9 +50,9 @@ struct MagnetometerData {
     bool set_polarity = true;  // true after a set pulse, false after a reset pulse
     // discrete state (locals)
     double next_set_reset = 0.0;
-    double noise_start = 0.0;         // s: start of hold interval 0 (the initialization time)
+    double noise_start = 0.0;                   // s: start of hold interval 0 (the initialization time)
     std::int64_t noise_index = no_noise_index;  // hold interval whose samples `noise` holds (a cache)
-    Vec3 noise{};                     // T
+    Vec3 noise{};                               // T
 };
 
 class MagnetometerBlock : public fmu::Block<MagnetometerBlock, MagnetometerData> {

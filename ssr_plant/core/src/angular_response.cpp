@@ -10,9 +10,13 @@ constexpr panel_response::Response<double> kKelly = panel_response::kelly<double
 
 }  // namespace
 
-double cosine_response(double cos_beta) { return panel_response::response_from_cos(kCosine, cos_beta); }
+double cosine_response(double cos_beta) {
+    return panel_response::response_from_cos(kCosine, cos_beta);
+}
 
-double kelly_response(double beta) { return panel_response::response_from_angle(kKelly, beta); }
+double kelly_response(double beta) {
+    return panel_response::response_from_angle(kKelly, beta);
+}
 
 double angular_response(AngularResponse law, double cos_beta) {
     return panel_response::response_from_cos(law == AngularResponse::cosine ? kCosine : kKelly, cos_beta);

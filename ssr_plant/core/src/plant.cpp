@@ -15,11 +15,17 @@ void require(bool ok, const char* what) {
     if (!ok) throw ParameterError(std::string("ssr_plant parameters: ") + what);
 }
 
-bool positive(double v) { return std::isfinite(v) && v > 0.0; }
-bool non_negative(double v) { return std::isfinite(v) && v >= 0.0; }
+bool positive(double v) {
+    return std::isfinite(v) && v > 0.0;
+}
+bool non_negative(double v) {
+    return std::isfinite(v) && v >= 0.0;
+}
 
 // Time tolerance for "this PWM edge is due now": far below any edge spacing, above rounding of t.
-double edge_tolerance(const Model& m, double t) { return 1e-9 * m.pwm_period + 1e-15 * std::abs(t); }
+double edge_tolerance(const Model& m, double t) {
+    return 1e-9 * m.pwm_period + 1e-15 * std::abs(t);
+}
 
 // Pulses shorter than this are no pulse at all (no zero-length gate events).
 double effective_duty(const Model& m, double duty) {
@@ -82,8 +88,7 @@ void start_period(const Model& m, DiscreteState& d, std::int64_t k, double v_bus
     d.duty = effective_duty(m, controller_duty(m.parameters, v_bus));
     d.gate = d.duty > 0.0;
     d.off_edge_pending = m.parameters.modulation == Modulation::regular && d.duty > 0.0 && d.duty < 1.0;
-    d.next_event_time = d.off_edge_pending ? period_start(d, m, k) + d.duty * m.pwm_period
-                                           : period_start(d, m, k + 1);
+    d.next_event_time = d.off_edge_pending ? period_start(d, m, k) + d.duty * m.pwm_period : period_start(d, m, k + 1);
 }
 
 // The latched_natural comparator: live controller output minus the carrier of the period in progress.
@@ -310,7 +315,8 @@ EventResult event_update(const Model& m, const Illumination& l, const DiscreteSt
         if (t >= d.next_event_time + m.pwm_period) {
             const double k = std::floor((t - d.period_origin) / m.pwm_period);
             if (!(k < max_period_index))
-                throw std::invalid_argument("ssr_plant: t = " + std::to_string(t) + " s is more than 1e11 PWM periods "
+                throw std::invalid_argument("ssr_plant: t = " + std::to_string(t) +
+                                            " s is more than 1e11 PWM periods "
                                             "after the start (the limit of the period count)");
             if (k > static_cast<double>(d.period_index)) {
                 const bool gate_before = d.gate, off_edge_before = d.off_edge_pending;

@@ -8,7 +8,7 @@
 namespace ssr_plant {
 namespace {
 
-constexpr double boltzmann = 1.380649e-23;         // J/K (SI, exact)
+constexpr double boltzmann = 1.380649e-23;             // J/K (SI, exact)
 constexpr double elementary_charge = 1.602176634e-19;  // C (SI, exact)
 
 // For a trial (a, R_s), I_ph and I_D follow linearly from the short-circuit and open-circuit points
@@ -68,8 +68,9 @@ DiodeModel fit_diode_model(const PanelDatasheet& s) {
                         std::isfinite(s.cell_temperature);
     if (!finite || s.rated_irradiance <= 0 || s.cells_in_series < 1 || s.cell_temperature <= 0 ||
         s.shunt_resistance <= 0)
-        throw ParameterError("panel datasheet: values must be finite, irradiance, cell count, temperature and "
-                             "shunt resistance positive");
+        throw ParameterError(
+            "panel datasheet: values must be finite, irradiance, cell count, temperature and "
+            "shunt resistance positive");
     if (!(0 < s.max_power_current && s.max_power_current < s.short_circuit_current && 0 < s.max_power_voltage &&
           s.max_power_voltage < s.open_circuit_voltage))
         throw ParameterError("panel datasheet: need 0 < Imp < Isc and 0 < Vmp < Voc");
@@ -126,8 +127,9 @@ DiodeModel fit_diode_model(const PanelDatasheet& s) {
         }
     }
     if (rs_root < 0)
-        throw ParameterError("panel datasheet: no single-diode fit (R_s >= 0, ideality 0.3..10) passes through "
-                             "Isc, Voc and the maximum-power point with the given shunt resistance");
+        throw ParameterError(
+            "panel datasheet: no single-diode fit (R_s >= 0, ideality 0.3..10) passes through "
+            "Isc, Voc and the maximum-power point with the given shunt resistance");
     const double a = *fit_a(rs_root);
     const Trial t(s, a, rs_root);
     DiodeModel m;
@@ -169,8 +171,11 @@ double panel_current(const DiodeModel& m, double iph, double v, double extra_ser
         const double gx = iph - i0 * em1 - x * g_sh - (x - v) * g_s;
         if (gx == 0.0) break;
         const double g_diode = i0 * (em1 + 1.0) * inv_a;  // the diode's conductance I_D e^{x/a} / a
-        const double dgx = -g_diode - g_sh - g_s;          // g' < 0; g'' = −g_diode / a; g''' = g'' / a
-        if (gx > 0) lo = x; else hi = x;
+        const double dgx = -g_diode - g_sh - g_s;         // g' < 0; g'' = −g_diode / a; g''' = g'' / a
+        if (gx > 0)
+            lo = x;
+        else
+            hi = x;
         const double tol = 1e-14 * std::max(1.0, std::abs(x));
         // Halley's step δ = δ_N / (1 − g g'' / (2 g'²)), Newton's δ_N = −g / g': the exponential that
         // gives g' gives g'' too, and the cubic convergence saves one exponential on a bright panel at the

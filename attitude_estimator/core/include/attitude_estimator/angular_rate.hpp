@@ -37,22 +37,22 @@ enum class RateMeasure { attitude_angle, vector_angle, direction_angles, angle_t
 
 template <class T>
 struct MeanAngularRateConfig {
-  RateMeasure measure = RateMeasure::attitude_angle;
-  std::size_t window = 1;  // increments averaged, 1 … kMaxRateWindow (clamped); 1 = eq. 4
-  // Decimation: a sample closer than min_interval (s) to the last used one is ignored, so 20 Hz estimates
-  // can feed increments of e.g. 2 s or 60 s (004: "no less than once in two seconds"; telemetry: 1 min).
-  T min_interval = T(0);
-  // A sample more than max_interval (s) after the last used one starts a new chain (no increment across
-  // a long gap, where the rotation could exceed π and alias).
-  T max_interval = std::numeric_limits<T>::infinity();
+    RateMeasure measure = RateMeasure::attitude_angle;
+    std::size_t window = 1;  // increments averaged, 1 … kMaxRateWindow (clamped); 1 = eq. 4
+    // Decimation: a sample closer than min_interval (s) to the last used one is ignored, so 20 Hz estimates
+    // can feed increments of e.g. 2 s or 60 s (004: "no less than once in two seconds"; telemetry: 1 min).
+    T min_interval = T(0);
+    // A sample more than max_interval (s) after the last used one starts a new chain (no increment across
+    // a long gap, where the rotation could exceed π and alias).
+    T max_interval = std::numeric_limits<T>::infinity();
 };
 
 template <class T>
 struct MeanRate {
-  T rate = T(0);            // rad/s, mean |ω| over the window (0 when no increment yet)
-  T window_seconds = T(0);  // s, Σ Δt_i of the increments averaged
-  std::size_t increments = 0;  // increments averaged (≤ window)
-  bool valid = false;       // window full (increments == window)
+    T rate = T(0);               // rad/s, mean |ω| over the window (0 when no increment yet)
+    T window_seconds = T(0);     // s, Σ Δt_i of the increments averaged
+    std::size_t increments = 0;  // increments averaged (≤ window)
+    bool valid = false;          // window full (increments == window)
 };
 
 // Rotation angle (rad, 0 … π) between two attitudes; the quaternions need not be exactly unit length.
@@ -75,35 +75,35 @@ T angle_triple_distance(const Vec3<T>& a, const Vec3<T>& b) noexcept;
 
 template <class T>
 class MeanAngularRate {
- public:
-  explicit MeanAngularRate(const MeanAngularRateConfig<T>& config = {}) noexcept;
+public:
+    explicit MeanAngularRate(const MeanAngularRateConfig<T>& config = {}) noexcept;
 
-  // One estimate at time t (s). A sample with valid == false or not finite breaks the chain (the next
-  // valid sample starts a new pair; increments already taken stay in the window). A time not after the
-  // last used sample is ignored. Returns true when the sample completed an increment.
-  // push(q) needs measure == attitude_angle; push(v) one of the others (a vector, or an angle triple for
-  // angle_triple); the wrong kind is ignored (returns false).
-  bool push(T t, const Quaternion<T>& q, bool valid = true) noexcept;
-  bool push(T t, const Vec3<T>& v, bool valid = true) noexcept;
+    // One estimate at time t (s). A sample with valid == false or not finite breaks the chain (the next
+    // valid sample starts a new pair; increments already taken stay in the window). A time not after the
+    // last used sample is ignored. Returns true when the sample completed an increment.
+    // push(q) needs measure == attitude_angle; push(v) one of the others (a vector, or an angle triple for
+    // angle_triple); the wrong kind is ignored (returns false).
+    bool push(T t, const Quaternion<T>& q, bool valid = true) noexcept;
+    bool push(T t, const Vec3<T>& v, bool valid = true) noexcept;
 
-  MeanRate<T> result() const noexcept;
-  void reset() noexcept;
-  // What the constructor and push() guarantee, for a copy that came in as bytes (an FMU state):
-  // window and ring indices in range, a known measure, a 0/1 flag, no NaN in the rings.
-  bool consistent() const noexcept;
-  const MeanAngularRateConfig<T>& config() const noexcept { return config_; }
+    MeanRate<T> result() const noexcept;
+    void reset() noexcept;
+    // What the constructor and push() guarantee, for a copy that came in as bytes (an FMU state):
+    // window and ring indices in range, a known measure, a 0/1 flag, no NaN in the rings.
+    bool consistent() const noexcept;
+    const MeanAngularRateConfig<T>& config() const noexcept { return config_; }
 
- private:
-  bool accept(T t, const std::array<T, 4>& x, bool valid) noexcept;
+private:
+    bool accept(T t, const std::array<T, 4>& x, bool valid) noexcept;
 
-  MeanAngularRateConfig<T> config_;
-  std::array<T, kMaxRateWindow> rate_{};  // ring of increment rates angle_i / Δt_i
-  std::array<T, kMaxRateWindow> dt_{};    // ring of Δt_i
-  std::size_t head_ = 0;
-  std::size_t count_ = 0;
-  bool have_last_ = false;
-  T last_t_ = T(0);
-  std::array<T, 4> last_{};  // quaternion x, y, z, w or vector x, y, z, 0
+    MeanAngularRateConfig<T> config_;
+    std::array<T, kMaxRateWindow> rate_{};  // ring of increment rates angle_i / Δt_i
+    std::array<T, kMaxRateWindow> dt_{};    // ring of Δt_i
+    std::size_t head_ = 0;
+    std::size_t count_ = 0;
+    bool have_last_ = false;
+    T last_t_ = T(0);
+    std::array<T, 4> last_{};  // quaternion x, y, z, w or vector x, y, z, 0
 };
 
 extern template float relative_rotation_angle(const Quaternion<float>&, const Quaternion<float>&) noexcept;

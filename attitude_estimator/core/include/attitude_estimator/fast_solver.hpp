@@ -21,9 +21,7 @@ namespace attitude_estimator {
 template <class T>
 WahbaSolution<T> solve_fast(const ObservationSet<T>& set, const WahbaOptions<T>& options = {}) noexcept;
 
-extern template WahbaSolution<float> solve_fast(const ObservationSet<float>&,
-                                                const WahbaOptions<float>&) noexcept;
-extern template WahbaSolution<double> solve_fast(const ObservationSet<double>&,
-                                                 const WahbaOptions<double>&) noexcept;
+extern template WahbaSolution<float> solve_fast(const ObservationSet<float>&, const WahbaOptions<float>&) noexcept;
+extern template WahbaSolution<double> solve_fast(const ObservationSet<double>&, const WahbaOptions<double>&) noexcept;
 
 }  // namespace attitude_estimator

@@ -8,10 +8,10 @@ namespace attitude_estimator {
 
 template <class T>
 struct FieldMeasurement {
-  Vec3<T> field{};  // B in tesla, body axes
-  Vec3<T> unit{};   // B/|B| (zero when invalid)
-  bool at_rail = false;  // some channel within the rail margin of its range end: saturated sensor
-  bool valid = false;
+    Vec3<T> field{};       // B in tesla, body axes
+    Vec3<T> unit{};        // B/|B| (zero when invalid)
+    bool at_rail = false;  // some channel within the rail margin of its range end: saturated sensor
+    bool valid = false;
 };
 
 // HMC2003 sensitivity: 1 V/gauss = 1e4 V/T.
@@ -50,11 +50,10 @@ extern template FieldMeasurement<float> field_vector_from_set_reset(const Vec3<f
 extern template FieldMeasurement<double> field_vector_from_set_reset(const Vec3<double>&, double, double, double,
                                                                      const Vec3<double>&, const Vec3<double>&,
                                                                      const Vec3<double>&, double, double) noexcept;
-extern template FieldMeasurement<float> field_vector_from_voltages(const Vec3<float>&, float, float,
-                                                                   const Vec3<float>&, const Vec3<float>&,
-                                                                   float, float) noexcept;
+extern template FieldMeasurement<float> field_vector_from_voltages(const Vec3<float>&, float, float, const Vec3<float>&,
+                                                                   const Vec3<float>&, float, float) noexcept;
 extern template FieldMeasurement<double> field_vector_from_voltages(const Vec3<double>&, double, double,
-                                                                    const Vec3<double>&, const Vec3<double>&,
-                                                                    double, double) noexcept;
+                                                                    const Vec3<double>&, const Vec3<double>&, double,
+                                                                    double) noexcept;
 
 }  // namespace attitude_estimator

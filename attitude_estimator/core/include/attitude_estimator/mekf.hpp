@@ -26,58 +26,58 @@ inline constexpr int kMekfScale = 9;
 
 template <class T>
 struct MekfConfig {
-  // --- process noise (spectral densities of white noises driving random walks)
-  T attitude_noise = T(1e-6);  // rad/√s: unmodelled attitude motion beyond the rate state
-  T rate_noise = T(2e-5);      // rad/s/√s: rate random walk (disturbance torques, inertia error)
-  T offset_noise = T(1e-11);   // T/√s: magnetometer offset drift (temperature)
-  T scale_noise = T(1e-6);     // 1/√s: panel scale drift (temperature, degradation)
-  // --- measurement noise (1σ per axis; each includes the model error of its sensor chain)
-  T sun_sigma = T(0.02);       // rad: sun unit vector
-  T mag_sigma = T(0.3e-6);     // T: field vector (noise, quantization, field-model error)
-  T face_sigma = T(0.01);      // relative response of one face (face update for the panel scale)
-  // --- initial uncertainty (at the Q-method initialisation)
-  T init_attitude_sigma = T(0.05);  // rad, per axis
-  T init_rate_sigma = T(0.02);      // rad/s, per axis, after the two-sample rate
-  T init_offset_sigma = T(3e-6);    // T, per axis
-  T init_scale_sigma = T(0.05);     // 1
-  // --- optional states (a state not estimated keeps its value and zero covariance)
-  bool estimate_offset = true;
-  bool estimate_scale = false;
-  // --- rate propagation. Inertia (kg m², row-major, body axes): all zero = kinematic (the rate is a
-  // random walk); otherwise Euler's torque-free equations J ω̇ = −ω × J ω propagate the rate.
-  std::array<T, 9> inertia{};
-  // --- innovation test and divergence reset
-  T gate = T(16.27);    // chi² with 3 degrees of freedom at 0.999: a vector update beyond it is refused
-  T face_gate = T(10.83);  // chi² with 1 degree of freedom at 0.999: a face update beyond it is refused
-  int reset_after = 40;    // consecutive samples with every offered update refused → reset to the Q-method
-  T valid_bound = T(0.17453293);  // rad: filter_valid while the 3σ attitude bound is below this (10°)
-  // Two single-frame attitudes further apart than this cannot give the initial rate (it could alias).
-  T max_init_gap = T(0.5);  // s
+    // --- process noise (spectral densities of white noises driving random walks)
+    T attitude_noise = T(1e-6);  // rad/√s: unmodelled attitude motion beyond the rate state
+    T rate_noise = T(2e-5);      // rad/s/√s: rate random walk (disturbance torques, inertia error)
+    T offset_noise = T(1e-11);   // T/√s: magnetometer offset drift (temperature)
+    T scale_noise = T(1e-6);     // 1/√s: panel scale drift (temperature, degradation)
+    // --- measurement noise (1σ per axis; each includes the model error of its sensor chain)
+    T sun_sigma = T(0.02);    // rad: sun unit vector
+    T mag_sigma = T(0.3e-6);  // T: field vector (noise, quantization, field-model error)
+    T face_sigma = T(0.01);   // relative response of one face (face update for the panel scale)
+    // --- initial uncertainty (at the Q-method initialisation)
+    T init_attitude_sigma = T(0.05);  // rad, per axis
+    T init_rate_sigma = T(0.02);      // rad/s, per axis, after the two-sample rate
+    T init_offset_sigma = T(3e-6);    // T, per axis
+    T init_scale_sigma = T(0.05);     // 1
+    // --- optional states (a state not estimated keeps its value and zero covariance)
+    bool estimate_offset = true;
+    bool estimate_scale = false;
+    // --- rate propagation. Inertia (kg m², row-major, body axes): all zero = kinematic (the rate is a
+    // random walk); otherwise Euler's torque-free equations J ω̇ = −ω × J ω propagate the rate.
+    std::array<T, 9> inertia{};
+    // --- innovation test and divergence reset
+    T gate = T(16.27);              // chi² with 3 degrees of freedom at 0.999: a vector update beyond it is refused
+    T face_gate = T(10.83);         // chi² with 1 degree of freedom at 0.999: a face update beyond it is refused
+    int reset_after = 40;           // consecutive samples with every offered update refused → reset to the Q-method
+    T valid_bound = T(0.17453293);  // rad: filter_valid while the 3σ attitude bound is below this (10°)
+    // Two single-frame attitudes further apart than this cannot give the initial rate (it could alias).
+    T max_init_gap = T(0.5);  // s
 };
 
 // Everything the filter remembers between samples (trivially copyable, no pointers).
 template <class T>
 struct MekfState {
-  Quaternion<T> q{};          // attitude estimate, scalar-last, A(q) maps inertial to body
-  Vec3<T> omega{};            // rad/s, body rate
-  Vec3<T> mag_offset{};       // T: after polarity p a reading is A B_ref + p·mag_offset
-  T panel_scale = T(0);       // ε: face currents are (1 + ε) × the nominal normalization
-  std::array<T, kMekfStates * kMekfStates> p{};  // error covariance, row-major
-  // 0: nothing yet; 1: one single-frame attitude held (q_first at t_first), waiting for a second one
-  // to difference into the initial rate; 2: running.
-  std::int32_t stage = 0;
-  Quaternion<T> q_first{};
-  T t_first = T(0);
-  T t_last = T(0);            // time of the last propagation
-  std::int32_t refused_in_row = 0;  // consecutive samples whose every update was refused
-  std::int32_t resets = 0;          // divergence resets so far
+    Quaternion<T> q{};                             // attitude estimate, scalar-last, A(q) maps inertial to body
+    Vec3<T> omega{};                               // rad/s, body rate
+    Vec3<T> mag_offset{};                          // T: after polarity p a reading is A B_ref + p·mag_offset
+    T panel_scale = T(0);                          // ε: face currents are (1 + ε) × the nominal normalization
+    std::array<T, kMekfStates * kMekfStates> p{};  // error covariance, row-major
+    // 0: nothing yet; 1: one single-frame attitude held (q_first at t_first), waiting for a second one
+    // to difference into the initial rate; 2: running.
+    std::int32_t stage = 0;
+    Quaternion<T> q_first{};
+    T t_first = T(0);
+    T t_last = T(0);                  // time of the last propagation
+    std::int32_t refused_in_row = 0;  // consecutive samples whose every update was refused
+    std::int32_t resets = 0;          // divergence resets so far
 };
 
 // The outcome of one measurement update.
 template <class T>
 struct MekfUpdate {
-  bool accepted = false;
-  T nis = T(0);  // normalized innovation squared νᵀ S⁻¹ ν
+    bool accepted = false;
+    T nis = T(0);  // normalized innovation squared νᵀ S⁻¹ ν
 };
 
 // Starts the filter at attitude q with rate omega, offsets and scale as given, covariance from config.
@@ -117,30 +117,30 @@ T mekf_attitude_bound(const MekfState<T>& s) noexcept;
 
 template <class T>
 struct MekfSampleInputs {
-  T t = T(0);                 // s, sample time
-  bool attitude_valid = false;  // the single-frame (Q-method) attitude of this sample
-  Quaternion<T> q_single{};
-  bool sun_valid = false;
-  Vec3<T> sun_ref{};          // any length
-  Vec3<T> sun_body{};         // unit
-  bool mag_valid = false;
-  Vec3<T> mag_ref{};          // T
-  Vec3<T> mag_body{};         // T
-  T polarity = T(1);          // set/reset sign of this field reading
-  // Face update (only with config.estimate_scale): relative responses and the faces to use.
-  std::array<T, 6> face_r{};
-  std::uint8_t face_use = 0;
-  const panel_response::Response<T>* response = nullptr;
+    T t = T(0);                   // s, sample time
+    bool attitude_valid = false;  // the single-frame (Q-method) attitude of this sample
+    Quaternion<T> q_single{};
+    bool sun_valid = false;
+    Vec3<T> sun_ref{};   // any length
+    Vec3<T> sun_body{};  // unit
+    bool mag_valid = false;
+    Vec3<T> mag_ref{};   // T
+    Vec3<T> mag_body{};  // T
+    T polarity = T(1);   // set/reset sign of this field reading
+    // Face update (only with config.estimate_scale): relative responses and the faces to use.
+    std::array<T, 6> face_r{};
+    std::uint8_t face_use = 0;
+    const panel_response::Response<T>* response = nullptr;
 };
 
 template <class T>
 struct MekfSampleResult {
-  bool valid = false;     // running and the 3σ bound below config.valid_bound
-  bool reset = false;     // this sample reset the filter to the single-frame attitude
-  T bound = T(0);         // 3σ attitude bound (rad), 0 when not running
-  MekfUpdate<T> sun{};
-  MekfUpdate<T> mag{};
-  int faces_accepted = 0;
+    bool valid = false;  // running and the 3σ bound below config.valid_bound
+    bool reset = false;  // this sample reset the filter to the single-frame attitude
+    T bound = T(0);      // 3σ attitude bound (rad), 0 when not running
+    MekfUpdate<T> sun{};
+    MekfUpdate<T> mag{};
+    int faces_accepted = 0;
 };
 
 // Initialise from the single-frame attitude (first valid sample: attitude; second within max_init_gap:
@@ -149,19 +149,19 @@ struct MekfSampleResult {
 template <class T>
 MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, const MekfConfig<T>& config) noexcept;
 
-#define ATTITUDE_ESTIMATOR_MEKF_EXTERN(T)                                                                      \
-  extern template void mekf_start(MekfState<T>&, const Quaternion<T>&, const Vec3<T>&, T,                     \
-                                  const MekfConfig<T>&) noexcept;                                             \
-  extern template void mekf_propagate(MekfState<T>&, T, const MekfConfig<T>&) noexcept;                       \
-  extern template MekfUpdate<T> mekf_update_sun(MekfState<T>&, const Vec3<T>&, const Vec3<T>&,                \
-                                                const MekfConfig<T>&) noexcept;                               \
-  extern template MekfUpdate<T> mekf_update_field(MekfState<T>&, const Vec3<T>&, const Vec3<T>&, T,           \
-                                                  const MekfConfig<T>&) noexcept;                             \
-  extern template int mekf_update_faces(MekfState<T>&, const Vec3<T>&, const std::array<T, 6>&, std::uint8_t, \
-                                        const panel_response::Response<T>&, const MekfConfig<T>&) noexcept;   \
-  extern template T mekf_attitude_bound(const MekfState<T>&) noexcept;                                        \
-  extern template MekfSampleResult<T> mekf_sample(MekfState<T>&, const MekfSampleInputs<T>&,                  \
-                                                  const MekfConfig<T>&) noexcept;
+#define ATTITUDE_ESTIMATOR_MEKF_EXTERN(T)                                                                       \
+    extern template void mekf_start(MekfState<T>&, const Quaternion<T>&, const Vec3<T>&, T,                     \
+                                    const MekfConfig<T>&) noexcept;                                             \
+    extern template void mekf_propagate(MekfState<T>&, T, const MekfConfig<T>&) noexcept;                       \
+    extern template MekfUpdate<T> mekf_update_sun(MekfState<T>&, const Vec3<T>&, const Vec3<T>&,                \
+                                                  const MekfConfig<T>&) noexcept;                               \
+    extern template MekfUpdate<T> mekf_update_field(MekfState<T>&, const Vec3<T>&, const Vec3<T>&, T,           \
+                                                    const MekfConfig<T>&) noexcept;                             \
+    extern template int mekf_update_faces(MekfState<T>&, const Vec3<T>&, const std::array<T, 6>&, std::uint8_t, \
+                                          const panel_response::Response<T>&, const MekfConfig<T>&) noexcept;   \
+    extern template T mekf_attitude_bound(const MekfState<T>&) noexcept;                                        \
+    extern template MekfSampleResult<T> mekf_sample(MekfState<T>&, const MekfSampleInputs<T>&,                  \
+                                                    const MekfConfig<T>&) noexcept;
 ATTITUDE_ESTIMATOR_MEKF_EXTERN(float)
 ATTITUDE_ESTIMATOR_MEKF_EXTERN(double)
 #undef ATTITUDE_ESTIMATOR_MEKF_EXTERN

@@ -10,8 +10,7 @@ namespace attitude_estimator {
 template <class T>
 WahbaSolution<T> solve_q_method(const ObservationSet<T>& set, const WahbaOptions<T>& options = {}) noexcept;
 
-extern template WahbaSolution<float> solve_q_method(const ObservationSet<float>&,
-                                                    const WahbaOptions<float>&) noexcept;
+extern template WahbaSolution<float> solve_q_method(const ObservationSet<float>&, const WahbaOptions<float>&) noexcept;
 extern template WahbaSolution<double> solve_q_method(const ObservationSet<double>&,
                                                      const WahbaOptions<double>&) noexcept;
 

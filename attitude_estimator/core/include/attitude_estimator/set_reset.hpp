@@ -27,23 +27,23 @@
 namespace attitude_estimator {
 
 struct SetResetConfig {
-  std::int32_t period_samples = 1;  // samples between pulses; 0: no pulses (the offset stays in the field)
-  std::int32_t offset_window = 20;  // offset estimates (one per set/reset pair) in the running mean (≥ 1)
+    std::int32_t period_samples = 1;  // samples between pulses; 0: no pulses (the offset stays in the field)
+    std::int32_t offset_window = 20;  // offset estimates (one per set/reset pair) in the running mean (≥ 1)
 };
 
 // Trivially copyable: it travels in an FMU state as bytes.
 template <class T>
 struct SetResetState {
-  // The polarity the sensor is in: the last pulse commanded (+1 set, −1 reset). The next reading is taken
-  // in it; pass it to estimate_sample as SampleInputs::mag_polarity. The sensor is set at power-up.
-  T polarity = T(1);
-  Vec3<T> offset{};            // V, the running mean of the offset estimates (see applied_offset)
-  Vec3<T> last_reading{};      // V, the previous usable reading v − v_ref
-  T last_polarity = T(0);      // its polarity; 0 when there is none (start, or after an unusable one)
-  Vec3<T> earlier_reading{};   // V, the usable reading before that
-  T earlier_polarity = T(0);   // its polarity; 0 when there is none
-  std::int32_t pairs = 0;      // estimates in the running mean so far (stops growing at offset_window)
-  std::int32_t since_pulse = 0;  // samples since the last pulse
+    // The polarity the sensor is in: the last pulse commanded (+1 set, −1 reset). The next reading is taken
+    // in it; pass it to estimate_sample as SampleInputs::mag_polarity. The sensor is set at power-up.
+    T polarity = T(1);
+    Vec3<T> offset{};              // V, the running mean of the offset estimates (see applied_offset)
+    Vec3<T> last_reading{};        // V, the previous usable reading v − v_ref
+    T last_polarity = T(0);        // its polarity; 0 when there is none (start, or after an unusable one)
+    Vec3<T> earlier_reading{};     // V, the usable reading before that
+    T earlier_polarity = T(0);     // its polarity; 0 when there is none
+    std::int32_t pairs = 0;        // estimates in the running mean so far (stops growing at offset_window)
+    std::int32_t since_pulse = 0;  // samples since the last pulse
 };
 
 // After each sample: `reading` is that sample's digitized v − v_ref per axis, taken at state.polarity;
@@ -58,7 +58,7 @@ bool set_reset_after_sample(SetResetState<T>& state, const Vec3<T>& reading, boo
 // offset_window estimates, zero before (and with no pulses).
 template <class T>
 Vec3<T> applied_offset(const SetResetState<T>& state, const SetResetConfig& config) noexcept {
-  return config.period_samples > 0 && state.pairs >= config.offset_window ? state.offset : Vec3<T>{};
+    return config.period_samples > 0 && state.pairs >= config.offset_window ? state.offset : Vec3<T>{};
 }
 
 extern template bool set_reset_after_sample(SetResetState<float>&, const Vec3<float>&, bool,

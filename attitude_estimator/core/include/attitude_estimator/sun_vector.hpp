@@ -8,9 +8,9 @@ namespace attitude_estimator {
 
 template <class T>
 struct SunMeasurement {
-  Vec3<T> unit{};   // normalized sun direction in body axes (zero when invalid)
-  T norm = T(0);    // |s| before normalization: 1 in full sun with ideal cosine panels
-  bool valid = false;
+    Vec3<T> unit{};  // normalized sun direction in body axes (zero when invalid)
+    T norm = T(0);   // |s| before normalization: 1 in full sun with ideal cosine panels
+    bool valid = false;
 };
 
 // Default validity threshold on |s|. With the cosine law every lit attitude gives |s| = 1 (the
@@ -28,8 +28,7 @@ template <class T>
 SunMeasurement<T> sun_vector_from_currents(const Vec3<T>& i_sh, const Vec3<T>& i_sc_norm,
                                            T min_norm = kDefaultMinSunNorm<T>) noexcept;
 
-extern template SunMeasurement<float> sun_vector_from_currents(const Vec3<float>&, const Vec3<float>&,
-                                                               float) noexcept;
+extern template SunMeasurement<float> sun_vector_from_currents(const Vec3<float>&, const Vec3<float>&, float) noexcept;
 extern template SunMeasurement<double> sun_vector_from_currents(const Vec3<double>&, const Vec3<double>&,
                                                                 double) noexcept;
 

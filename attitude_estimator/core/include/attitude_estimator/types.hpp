@@ -19,10 +19,10 @@ using Vec3 = std::array<T, 3>;
 // The estimator returns the sign with w >= 0 (q and -q are the same attitude).
 template <class T>
 struct Quaternion {
-  T x{0};
-  T y{0};
-  T z{0};
-  T w{1};
+    T x{0};
+    T y{0};
+    T z{0};
+    T w{1};
 };
 
 // A 3x3 matrix stored row-major: element (row r, column c) is m[3 * r + c].

@@ -28,11 +28,11 @@ namespace environment {
 enum class AlbedoResponse { cosine, kelly };
 
 struct AlbedoParams {
-  bool enabled = true;
-  double reflectivity = 0.3;  // Earth's mean Bond albedo, about 0.3
-  AlbedoResponse response = AlbedoResponse::cosine;
-  int rings = 16;             // Gauss-Legendre points in gamma
-  int sectors = 36;           // midpoint points in psi
+    bool enabled = true;
+    double reflectivity = 0.3;  // Earth's mean Bond albedo, about 0.3
+    AlbedoResponse response = AlbedoResponse::cosine;
+    int rings = 16;    // Gauss-Legendre points in gamma
+    int sectors = 36;  // midpoint points in psi
 };
 
 /// Irradiance (W/m^2) on the faces +x, -x, +y, -y, +z, -z. r_sat, sun_direction: ECI (m, unit);

@@ -24,66 +24,66 @@ enum class SunModel { almanac = 0, seed002 = 1 };
 enum class FieldModel { igrf14 = 0, dipole = 1 };
 
 struct EnvironmentParams {
-  AttitudeMode attitude_mode = AttitudeMode::spin;
-  SpinParams spin;
-  RigidBodyParams rigid_body;
-  OrbitParams orbit;
-  UtcDate epoch;  // UTC at t = 0; default 2026-03-20 00:00:00 (inside IGRF-14's 2025-2030)
-  SunModel sun_model = SunModel::almanac;
-  /// seed002 model only: the vernal equinox it counts days from (UTC), and the elevation amplitude (rad).
-  UtcDate vernal_equinox{2026, 3, 20, 14, 46, 0.0};
-  double seed002_elevation_amplitude = 23.439 * 3.14159265358979323846 / 180.0;
-  double solar_constant = 1367.0;  // W/m^2 at 1 AU (seed 000 section 4)
-  bool eclipse_enabled = true;
-  FieldModel field_model = FieldModel::igrf14;
-  int igrf_max_degree = 13;
-  AlbedoParams albedo;
+    AttitudeMode attitude_mode = AttitudeMode::spin;
+    SpinParams spin;
+    RigidBodyParams rigid_body;
+    OrbitParams orbit;
+    UtcDate epoch;  // UTC at t = 0; default 2026-03-20 00:00:00 (inside IGRF-14's 2025-2030)
+    SunModel sun_model = SunModel::almanac;
+    /// seed002 model only: the vernal equinox it counts days from (UTC), and the elevation amplitude (rad).
+    UtcDate vernal_equinox{2026, 3, 20, 14, 46, 0.0};
+    double seed002_elevation_amplitude = 23.439 * 3.14159265358979323846 / 180.0;
+    double solar_constant = 1367.0;  // W/m^2 at 1 AU (seed 000 section 4)
+    bool eclipse_enabled = true;
+    FieldModel field_model = FieldModel::igrf14;
+    int igrf_max_degree = 13;
+    AlbedoParams albedo;
 };
 
 struct EnvironmentOutputs {
-  double time = 0.0;                       // s since epoch
-  double julian_date = 0.0;                // UTC
-  double gmst = 0.0;                       // rad
-  std::array<double, 4> q_true{};          // [x, y, z, w], ECI -> body
-  std::array<double, 3> omega_body{};      // rad/s
-  std::array<double, 3> r_eci{};           // m
-  std::array<double, 3> sun_eci{};         // unit, satellite -> sun
-  std::array<double, 3> sun_body{};        // unit
-  double sun_distance = 0.0;               // m, satellite -> sun
-  double sunlight_fraction = 1.0;          // 1 lit, 0 umbra
-  double irradiance = 0.0;                 // W/m^2 at the satellite, after eclipse
-  std::array<double, 3> mag_eci{};         // T
-  std::array<double, 3> mag_body{};        // T
-  std::array<double, 6> albedo_face{};     // W/m^2 on +x, -x, +y, -y, +z, -z
+    double time = 0.0;                    // s since epoch
+    double julian_date = 0.0;             // UTC
+    double gmst = 0.0;                    // rad
+    std::array<double, 4> q_true{};       // [x, y, z, w], ECI -> body
+    std::array<double, 3> omega_body{};   // rad/s
+    std::array<double, 3> r_eci{};        // m
+    std::array<double, 3> sun_eci{};      // unit, satellite -> sun
+    std::array<double, 3> sun_body{};     // unit
+    double sun_distance = 0.0;            // m, satellite -> sun
+    double sunlight_fraction = 1.0;       // 1 lit, 0 umbra
+    double irradiance = 0.0;              // W/m^2 at the satellite, after eclipse
+    std::array<double, 3> mag_eci{};      // T
+    std::array<double, 3> mag_body{};     // T
+    std::array<double, 6> albedo_face{};  // W/m^2 on +x, -x, +y, -y, +z, -z
 };
 
 class Environment {
- public:
-  explicit Environment(const EnvironmentParams& params);
+public:
+    explicit Environment(const EnvironmentParams& params);
 
-  /// All outputs at t (s since epoch). In rigid_body mode `state` is required (the integrator's x);
-  /// in spin mode it is ignored. Throws std::invalid_argument / std::domain_error on bad input
-  /// (missing state, NaN, date outside IGRF-14's validity).
-  EnvironmentOutputs evaluate(double t, const RigidBodyState* state = nullptr) const;
+    /// All outputs at t (s since epoch). In rigid_body mode `state` is required (the integrator's x);
+    /// in spin mode it is ignored. Throws std::invalid_argument / std::domain_error on bad input
+    /// (missing state, NaN, date outside IGRF-14's validity).
+    EnvironmentOutputs evaluate(double t, const RigidBodyState* state = nullptr) const;
 
-  /// Rigid body mode: the continuous states and their derivative (see rigid_body.hpp).
-  RigidBodyState initial_state() const { return rigid_body_.initial_state(); }
-  void derivative(const double* x, double* dx) const { rigid_body_.derivative(x, dx); }
+    /// Rigid body mode: the continuous states and their derivative (see rigid_body.hpp).
+    RigidBodyState initial_state() const { return rigid_body_.initial_state(); }
+    void derivative(const double* x, double* dx) const { rigid_body_.derivative(x, dx); }
 
-  const EnvironmentParams& params() const { return params_; }
-  double epoch_julian_date() const { return jd0_; }
-  const CircularOrbit& orbit() const { return orbit_; }
-  const SpinAttitude& spin() const { return spin_; }
+    const EnvironmentParams& params() const { return params_; }
+    double epoch_julian_date() const { return jd0_; }
+    const CircularOrbit& orbit() const { return orbit_; }
+    const SpinAttitude& spin() const { return spin_; }
 
- private:
-  Eigen::Vector3d sun_position_eci(double julian_date) const;  // m, Earth centre -> Sun
+private:
+    Eigen::Vector3d sun_position_eci(double julian_date) const;  // m, Earth centre -> Sun
 
-  EnvironmentParams params_;
-  double jd0_;
-  double jd_equinox_;
-  CircularOrbit orbit_;
-  RigidBody rigid_body_;
-  SpinAttitude spin_;
+    EnvironmentParams params_;
+    double jd0_;
+    double jd_equinox_;
+    CircularOrbit orbit_;
+    RigidBody rigid_body_;
+    SpinAttitude spin_;
 };
 
 }  // namespace environment

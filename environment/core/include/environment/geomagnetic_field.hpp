@@ -10,8 +10,8 @@ namespace environment {
 
 /// Gauss coefficients g_n^m, h_n^m (nT) of IGRF-14 at one instant, index [n][m].
 struct GaussCoefficients {
-  std::array<std::array<double, 14>, 14> g{};
-  std::array<std::array<double, 14>, 14> h{};
+    std::array<std::array<double, 14>, 14> g{};
+    std::array<std::array<double, 14>, 14> h{};
 };
 
 /// IGRF-14 coefficients at a decimal year in [2025, 2030]: linear between the 2025.0 main field and its

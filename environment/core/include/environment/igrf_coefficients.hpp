@@ -7,11 +7,11 @@
 namespace environment {
 
 struct IgrfCoefficient {
-  int n;           // degree 1..13
-  int m;           // order 0..n
-  int is_h;        // 0: g_n^m, 1: h_n^m
-  double at_2025;  // nT
-  double at_2030;  // nT
+    int n;           // degree 1..13
+    int m;           // order 0..n
+    int is_h;        // 0: g_n^m, 1: h_n^m
+    double at_2025;  // nT
+    double at_2030;  // nT
 };
 
 inline constexpr std::size_t kIgrfCoefficientCount = 195;

@@ -22,36 +22,34 @@ namespace environment {
 using RigidBodyState = std::array<double, 7>;
 
 struct RigidBodyParams {
-  /// Inertia matrix about the centre of mass in body axes [kg m^2], row-major, symmetric positive definite.
-  /// Default: a 53 kg box of about 0.6 x 0.6 x 0.5 m (the size class of "Aist", seed 004 section 5),
-  /// slightly asymmetric so that the motion is a true tumble.
-  std::array<double, 9> inertia = {3.2, 0.05, -0.02,
-                                   0.05, 2.9, 0.03,
-                                   -0.02, 0.03, 3.6};
-  /// Initial attitude [x, y, z, w] (normalised on use).
-  std::array<double, 4> q0 = {0.1, -0.2, 0.3, 0.927361849549570};
-  /// Initial body rate [rad/s]: |w0| = 0.94 deg/s, within the 0.3-1.3 deg/s of seed 004 fig. 4.
-  std::array<double, 3> omega0 = {0.0100759, -0.0080607, 0.0100759};
+    /// Inertia matrix about the centre of mass in body axes [kg m^2], row-major, symmetric positive definite.
+    /// Default: a 53 kg box of about 0.6 x 0.6 x 0.5 m (the size class of "Aist", seed 004 section 5),
+    /// slightly asymmetric so that the motion is a true tumble.
+    std::array<double, 9> inertia = {3.2, 0.05, -0.02, 0.05, 2.9, 0.03, -0.02, 0.03, 3.6};
+    /// Initial attitude [x, y, z, w] (normalised on use).
+    std::array<double, 4> q0 = {0.1, -0.2, 0.3, 0.927361849549570};
+    /// Initial body rate [rad/s]: |w0| = 0.94 deg/s, within the 0.3-1.3 deg/s of seed 004 fig. 4.
+    std::array<double, 3> omega0 = {0.0100759, -0.0080607, 0.0100759};
 };
 
 class RigidBody {
- public:
-  /// Throws std::invalid_argument when the inertia is not symmetric positive definite or q0 is zero.
-  explicit RigidBody(const RigidBodyParams& params);
+public:
+    /// Throws std::invalid_argument when the inertia is not symmetric positive definite or q0 is zero.
+    explicit RigidBody(const RigidBodyParams& params);
 
-  RigidBodyState initial_state() const;
-  /// dx/dt = f(x); x and dx may not alias.
-  void derivative(const double* x, double* dx) const;
-  static void renormalize(double* x);
+    RigidBodyState initial_state() const;
+    /// dx/dt = f(x); x and dx may not alias.
+    void derivative(const double* x, double* dx) const;
+    static void renormalize(double* x);
 
-  double kinetic_energy(const double* x) const;              // 1/2 w^T J w   [J]
-  Eigen::Vector3d angular_momentum_body(const double* x) const;  // J w       [N m s]
-  const Eigen::Matrix3d& inertia() const { return j_; }
+    double kinetic_energy(const double* x) const;                  // 1/2 w^T J w   [J]
+    Eigen::Vector3d angular_momentum_body(const double* x) const;  // J w       [N m s]
+    const Eigen::Matrix3d& inertia() const { return j_; }
 
- private:
-  RigidBodyParams params_;
-  Eigen::Matrix3d j_;
-  Eigen::Matrix3d j_inv_;
+private:
+    RigidBodyParams params_;
+    Eigen::Matrix3d j_;
+    Eigen::Matrix3d j_inv_;
 };
 
 }  // namespace environment

@@ -21,27 +21,27 @@
 namespace environment {
 
 struct SpinParams {
-  double phi0 = 0.0;          // rad
-  double theta0 = 0.0;        // rad
-  double phi_dot = 1.26;      // rad/s, seed 000 section 4
-  double theta_dot = 6.28;    // rad/s, seed 000 section 4
+    double phi0 = 0.0;        // rad
+    double theta0 = 0.0;      // rad
+    double phi_dot = 1.26;    // rad/s, seed 000 section 4
+    double theta_dot = 6.28;  // rad/s, seed 000 section 4
 };
 
 class SpinAttitude {
- public:
-  /// sun_eci_at_epoch: the fixed inertial sun direction (need not be unit, must be non-zero).
-  SpinAttitude(const SpinParams& params, const Eigen::Vector3d& sun_eci_at_epoch);
+public:
+    /// sun_eci_at_epoch: the fixed inertial sun direction (need not be unit, must be non-zero).
+    SpinAttitude(const SpinParams& params, const Eigen::Vector3d& sun_eci_at_epoch);
 
-  Eigen::Matrix3d attitude_matrix(double t) const;
-  Quaternion quaternion(double t) const;
-  Eigen::Vector3d angular_velocity_body(double t) const;
-  /// The seed formula itself (eq. 5 direction), for tests and for users who want it directly.
-  Eigen::Vector3d seed_sun_body(double t) const;
-  const Eigen::Matrix3d& sun_frame() const { return a0_; }
+    Eigen::Matrix3d attitude_matrix(double t) const;
+    Quaternion quaternion(double t) const;
+    Eigen::Vector3d angular_velocity_body(double t) const;
+    /// The seed formula itself (eq. 5 direction), for tests and for users who want it directly.
+    Eigen::Vector3d seed_sun_body(double t) const;
+    const Eigen::Matrix3d& sun_frame() const { return a0_; }
 
- private:
-  SpinParams params_;
-  Eigen::Matrix3d a0_;
+private:
+    SpinParams params_;
+    Eigen::Matrix3d a0_;
 };
 
 }  // namespace environment

@@ -9,8 +9,8 @@
 namespace environment {
 
 struct SunPosition {
-  Eigen::Vector3d direction_eci;  // unit vector, Earth centre -> Sun
-  double distance = 0.0;          // m, Earth centre -> Sun
+    Eigen::Vector3d direction_eci;  // unit vector, Earth centre -> Sun
+    double distance = 0.0;          // m, Earth centre -> Sun
 };
 
 /// Low-precision formula of the Astronomical Almanac (section C, "Low precision formulas for the Sun";

@@ -5,12 +5,12 @@ namespace environment {
 
 /// A UTC calendar instant (Gregorian calendar).
 struct UtcDate {
-  int year = 2026;
-  int month = 3;
-  int day = 20;
-  int hour = 0;
-  int minute = 0;
-  double second = 0.0;
+    int year = 2026;
+    int month = 3;
+    int day = 20;
+    int hour = 0;
+    int minute = 0;
+    double second = 0.0;
 };
 
 /// Julian date of a Gregorian calendar instant (Meeus, Astronomical Algorithms, ch. 7).

@@ -38,12 +38,12 @@ private:
 };
 
 struct ServeOptions {
-    long drop_every = 0;           // leave every N-th request unanswered (0: none)
-    int delay_ms = 0;              // wait this long before each reply
-    long max_frames = 0;           // return after this many requests (0: no limit)
-    double idle_timeout_s = 0.0;   // return when no frame arrives for this long (0: never)
+    long drop_every = 0;                      // leave every N-th request unanswered (0: none)
+    int delay_ms = 0;                         // wait this long before each reply
+    long max_frames = 0;                      // return after this many requests (0: no limit)
+    double idle_timeout_s = 0.0;              // return when no frame arrives for this long (0: never)
     const std::atomic<bool>* stop = nullptr;  // return when it becomes true (checked every 50 ms)
-    std::ostream* log = nullptr;   // one line per rejected frame
+    std::ostream* log = nullptr;              // one line per rejected frame
 };
 
 struct ServeStatistics {

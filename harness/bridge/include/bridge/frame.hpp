@@ -19,7 +19,7 @@ public:
 
 inline constexpr std::uint16_t frame_magic = 0x5650;  // bytes 'P' 'V' on the wire
 inline constexpr std::uint8_t frame_version = 1;
-inline constexpr std::size_t header_size = 24;         // values start 8-byte aligned
+inline constexpr std::size_t header_size = 24;  // values start 8-byte aligned
 inline constexpr std::size_t crc_size = 2;
 inline constexpr std::size_t max_values = 64;
 inline constexpr std::size_t max_frame_size = header_size + 8 * max_values + crc_size;  // 538 bytes
@@ -29,8 +29,8 @@ enum class FrameType : std::uint8_t { request = 1, reply = 2 };
 struct Frame {
     FrameType type = FrameType::request;
     std::uint32_t sequence = 0;
-    double time = 0.0;            // simulation time of the sample instant, s
-    std::vector<double> values;   // inputs (request) or outputs (reply) in value-reference order
+    double time = 0.0;           // simulation time of the sample instant, s
+    std::vector<double> values;  // inputs (request) or outputs (reply) in value-reference order
 };
 
 // CRC-16/CCITT-FALSE: polynomial 0x1021, initial value 0xFFFF, no reflection, no final xor.

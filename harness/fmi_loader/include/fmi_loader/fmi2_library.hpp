@@ -78,7 +78,8 @@ public:
     const std::filesystem::path& path() const noexcept { return path_; }
 
     // binaries/linux64/<modelIdentifier>.so below an unpacked FMU (the platform tuple of section 2.3).
-    static std::filesystem::path binary_path(const std::filesystem::path& fmu_root, const std::string& model_identifier);
+    static std::filesystem::path binary_path(const std::filesystem::path& fmu_root,
+                                             const std::string& model_identifier);
 
 private:
     std::filesystem::path path_;

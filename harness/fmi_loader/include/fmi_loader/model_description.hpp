@@ -74,28 +74,28 @@ struct ScalarVariable {
     std::string name;
     std::uint32_t value_reference = 0;
     std::string description;
-    Causality causality = Causality::local;          // default per section 2.2.7
+    Causality causality = Causality::local;  // default per section 2.2.7
     Variability variability = Variability::continuous;
-    Initial initial = Initial::none;                 // explicit value or the table's default
-    bool initial_given = false;                      // whether the XML stated `initial`
+    Initial initial = Initial::none;  // explicit value or the table's default
+    bool initial_given = false;       // whether the XML stated `initial`
     bool can_handle_multiple_set_per_time_instant = true;
     VariableType type = VariableType::real;
     std::string declared_type;
-    std::optional<std::string> start;                // raw attribute text; typed via start_as_*
+    std::optional<std::string> start;  // raw attribute text; typed via start_as_*
     // Own attributes, completed from the declaredType's SimpleType when the variable omits them.
     std::string quantity, unit, display_unit;
     std::optional<double> min, max, nominal;
-    std::optional<std::size_t> derivative;           // 1-based index of the state this is the derivative of
+    std::optional<std::size_t> derivative;  // 1-based index of the state this is the derivative of
     bool reinit = false;
     bool relative_quantity = false;
 
-    std::optional<double> start_as_real() const;     // Real, Integer, Enumeration
-    std::optional<bool> start_as_boolean() const;    // "true"/"false"/"1"/"0"
+    std::optional<double> start_as_real() const;   // Real, Integer, Enumeration
+    std::optional<bool> start_as_boolean() const;  // "true"/"false"/"1"/"0"
 };
 
 struct Unknown {
-    std::size_t index = 0;                                   // 1-based into model_variables
-    std::optional<std::vector<std::size_t>> dependencies;    // absent: depends on all knowns
+    std::size_t index = 0;                                 // 1-based into model_variables
+    std::optional<std::vector<std::size_t>> dependencies;  // absent: depends on all knowns
     std::vector<std::string> dependencies_kind;
 };
 

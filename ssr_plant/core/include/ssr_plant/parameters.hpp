@@ -27,17 +27,17 @@ enum class AngularResponse : std::int32_t {
 // Assumed values of a common 36-cell 10 Wp silicon module: Pmp = 17.5 V · 0.5714 A = 10.0 W, fill
 // factor 0.750. Its open-circuit voltage (21.5 V) leaves room for a 15 V bus plus an OR diode.
 struct PanelDatasheet {
-    double rated_irradiance = 1000.0;         // W/m², seed: 10 Wp at 1000 W/m²
-    double short_circuit_current = 0.62;      // A, Isc (assumed)
-    double open_circuit_voltage = 21.5;       // V, Voc (assumed)
-    double max_power_current = 0.5714;        // A, Imp (assumed)
-    double max_power_voltage = 17.5;          // V, Vmp (assumed); Vmp·Imp = 10.0 W (seed: 10 Wp)
-    std::int32_t cells_in_series = 36;        // (assumed)
+    double rated_irradiance = 1000.0;     // W/m², seed: 10 Wp at 1000 W/m²
+    double short_circuit_current = 0.62;  // A, Isc (assumed)
+    double open_circuit_voltage = 21.5;   // V, Voc (assumed)
+    double max_power_current = 0.5714;    // A, Imp (assumed)
+    double max_power_voltage = 17.5;      // V, Vmp (assumed); Vmp·Imp = 10.0 W (seed: 10 Wp)
+    std::int32_t cells_in_series = 36;    // (assumed)
     // Ω, R_sh of fig. 2 for the whole panel (assumed; the datasheet points fix the other four unknowns).
     // 2000 Ω gives the fit n ≈ 1.28, R_s ≈ 1.34 Ω (37 mΩ per cell); a much lower R_sh cannot reach this
     // fill factor with a physical ideality (500 Ω would need n ≈ 0.42).
     double shunt_resistance = 2000.0;
-    double cell_temperature = 298.15;         // K, thermal voltage V_T = k T / q of eq. 2
+    double cell_temperature = 298.15;  // K, thermal voltage V_T = k T / q of eq. 2
 };
 
 // What the battery's hysteresis charge controller watches (seed 000 §2: it "connects the battery to the
@@ -58,13 +58,13 @@ struct BatteryParameters {
     double capacity = 7200.0;  // C (= 2 Ah, assumed)
     std::array<double, 11> open_circuit_voltage = {11.30, 11.51, 11.66, 11.81, 11.96, 12.10,
                                                    12.24, 12.37, 12.50, 12.62, 12.73};  // V
-    double internal_resistance = 0.05;   // Ω (assumed)
+    double internal_resistance = 0.05;                                                  // Ω (assumed)
     // Charge path bus → charge MOSFET → current-limiting resistor → battery. Without a limit the
     // 15 V bus against a 12.5 V battery would draw tens of amperes; 5 Ω gives about C/4 (assumed).
     double charge_path_resistance = 5.0;  // Ω
     // Discharge path battery → series diode → bus (fig. 5): carries the load in eclipse.
-    double diode_forward_voltage = 0.6;   // V (assumed)
-    double diode_resistance = 0.05;       // Ω, forward slope of the piecewise-linear diode (assumed)
+    double diode_forward_voltage = 0.6;  // V (assumed)
+    double diode_resistance = 0.05;      // Ω, forward slope of the piecewise-linear diode (assumed)
     // Hysteresis charge control (seed 000 §2): connect for charging when soc falls to the low
     // threshold, disconnect when it reaches full charge. The band makes the switching count finite.
     double soc_connect = 0.80;     // (assumed)
@@ -72,8 +72,8 @@ struct BatteryParameters {
     ChargeControl charge_control = ChargeControl::voltage;
     // Voltage control (assumed values): connect at 12.50 V, the table's rested voltage at soc 0.8 (the soc
     // controller's threshold); disconnect when the charge current tapers to C/20 = 0.1 A of a 2 Ah battery.
-    double v_connect = 12.50;           // V
-    double charge_end_current = 0.1;    // A
+    double v_connect = 12.50;         // V
+    double charge_end_current = 0.1;  // A
     // Charge model. The charger holds the terminal voltage at most at charge_voltage (constant-voltage
     // phase; 2.40 V per cell, a common lead-acid absorption voltage; 0 = no limit), and charging sees a
     // polarization resistance that grows as the battery fills, R_p = K soc / (1 − soc + 0.01), the form of
@@ -82,8 +82,8 @@ struct BatteryParameters {
     // through the 5 Ω path tapers from 0.55 A at soc 0.5 to 0.36 A at 0.9 and 0.15 A at 0.99; the 14.4 V
     // limit takes over above soc 0.996 and the controller disconnects at 0.1 A (soc 0.998). K = 0: no
     // overpotential (a constant ~0.5 A up to full, the earlier model). Discharge does not see it.
-    double charge_voltage = 14.4;       // V
-    double charge_polarization = 0.2;   // Ω (K)
+    double charge_voltage = 14.4;      // V
+    double charge_polarization = 0.2;  // Ω (K)
 };
 
 // How the switching plant's PWM turns the controller output into gate pulses (switching fidelity only).
@@ -110,17 +110,17 @@ struct Parameters {
     double shunt_switch_resistance = 0.05;  // Ω, R_DS(on) of each shunt MOSFET (assumed)
 
     // Sequential Shunt Regulator (fig. 5 / fig. 7).
-    double pwm_frequency = 5000.0;       // Hz (seed)
-    double bus_capacitance = 1500e-6;    // F (seed)
-    double load_resistance = 90.0;       // Ω (seed)
-    double bus_voltage_reference = 15.0; // V (seed)
+    double pwm_frequency = 5000.0;        // Hz (seed)
+    double bus_capacitance = 1500e-6;     // F (seed)
+    double load_resistance = 90.0;        // Ω (seed)
+    double bus_voltage_reference = 15.0;  // V (seed)
     // Proportional controller, seed gain 300 (000 §4: "a proportional controller, which gain is adjusted to
     // 300", with "null error"), per volt of bus error:
     //   D = clamp(controller_gain · (v_bus − v_ref), 0, 1)   (D = fraction of the period shunted).
     // At 300 /V the steady-state offset of the P controller is D/K ≈ 0.85/300 = 2.8 mV: the seed's "null
     // error". The averaged plant and the latched_natural modulator are stable there; the regular one is
     // not (see Modulation). 3 /V with the regular modulator is this model's earlier reading (300 %/V).
-    double controller_gain = 300.0;      // 1/V (seed)
+    double controller_gain = 300.0;  // 1/V (seed)
 
     BatteryParameters battery;
 };

@@ -59,14 +59,14 @@ struct Inputs {
 
 // Everything that changes only at events. Trivially copyable.
 struct DiscreteState {
-    double period_origin = 0.0;       // s, start of PWM period 0 (the start time)
-    std::int64_t period_index = 0;    // PWM period in progress: it starts at origin + index · T
-    double duty = 0.0;                // duty sampled at the start of this period (switching);
-                                      // (averaged: the value at initialization, unused)
-    bool gate = false;                // shunt MOSFETs on (switching); averaged: duty > 0
-    bool off_edge_pending = false;    // the gate turns off at origin + (index + duty) · T
-    bool charge_connected = false;    // battery charge MOSFET on
-    double next_event_time = no_time_event;                  // s, next PWM edge (switching)
+    double period_origin = 0.0;              // s, start of PWM period 0 (the start time)
+    std::int64_t period_index = 0;           // PWM period in progress: it starts at origin + index · T
+    double duty = 0.0;                       // duty sampled at the start of this period (switching);
+                                             // (averaged: the value at initialization, unused)
+    bool gate = false;                       // shunt MOSFETs on (switching); averaged: duty > 0
+    bool off_edge_pending = false;           // the gate turns off at origin + (index + duty) · T
+    bool charge_connected = false;           // battery charge MOSFET on
+    double next_event_time = no_time_event;  // s, next PWM edge (switching)
     // A, S/H value of each face's shunt current, updated when the gate opens. The per-axis S/H is their
     // difference (one hold instant for both, so i_sh = i_face_sh[+] − i_face_sh[−] exactly).
     std::array<double, face_count> held_face_current = {};
@@ -74,18 +74,18 @@ struct DiscreteState {
 };
 
 struct Outputs {
-    std::array<double, axis_count> i_sh = {};        // A, S/H of I(+axis) − I(−axis)
-    std::array<double, face_count> i_face_sh = {};   // A, S/H of each face's shunt current (i_sh per face)
-    std::array<double, face_count> i_sc = {};        // A, each panel's true short-circuit current (V = 0)
-    std::array<double, face_count> i_panel = {};     // A, each panel's current into the bus (period
-                                                     // average in averaged mode)
-    double v_bus = 0.0;    // V
-    double v_batt = 0.0;   // V, battery terminal voltage
-    double i_batt = 0.0;   // A, into the battery (+ charging)
-    double soc = 0.0;      // 1
-    double duty = 0.0;     // 1, shunt duty cycle
-    bool gate = false;     // shunt MOSFETs on
-    double i_load = 0.0;   // A, through the load resistor
+    std::array<double, axis_count> i_sh = {};       // A, S/H of I(+axis) − I(−axis)
+    std::array<double, face_count> i_face_sh = {};  // A, S/H of each face's shunt current (i_sh per face)
+    std::array<double, face_count> i_sc = {};       // A, each panel's true short-circuit current (V = 0)
+    std::array<double, face_count> i_panel = {};    // A, each panel's current into the bus (period
+                                                    // average in averaged mode)
+    double v_bus = 0.0;                             // V
+    double v_batt = 0.0;                            // V, battery terminal voltage
+    double i_batt = 0.0;                            // A, into the battery (+ charging)
+    double soc = 0.0;                               // 1
+    double duty = 0.0;                              // 1, shunt duty cycle
+    bool gate = false;                              // shunt MOSFETs on
+    double i_load = 0.0;                            // A, through the load resistor
 };
 
 // Parameters plus what is derived from them once (the fitted panel circuit). Trivially copyable.

@@ -15,13 +15,13 @@ public:
 
 // The circuit parameters of one panel, derived from its datasheet.
 struct DiodeModel {
-    double photocurrent_rated = 0.0;   // A, I_ph at the rated irradiance and normal incidence
-    double saturation_current = 0.0;   // A, I_D of eq. 2
-    double ideality_voltage = 0.0;     // V, a = n · N_s · V_T
-    double ideality = 0.0;             // n (per cell)
-    double series_resistance = 0.0;    // Ω, R_s
-    double shunt_resistance = 0.0;     // Ω, R_sh
-    double rated_irradiance = 0.0;     // W/m²
+    double photocurrent_rated = 0.0;  // A, I_ph at the rated irradiance and normal incidence
+    double saturation_current = 0.0;  // A, I_D of eq. 2
+    double ideality_voltage = 0.0;    // V, a = n · N_s · V_T
+    double ideality = 0.0;            // n (per cell)
+    double series_resistance = 0.0;   // Ω, R_s
+    double shunt_resistance = 0.0;    // Ω, R_sh
+    double rated_irradiance = 0.0;    // W/m²
 };
 
 // Fits I_ph, I_D, n and R_s (R_sh given) so that the curve passes exactly through the datasheet's
