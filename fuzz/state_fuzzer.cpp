@@ -49,6 +49,7 @@ struct Block {
                     reals.push_back(v.value_reference);
                     break;
                 case fmu::ValueType::Integer:
+                case fmu::ValueType::Enumeration:
                     integers.push_back(v.value_reference);
                     break;
                 case fmu::ValueType::Boolean:

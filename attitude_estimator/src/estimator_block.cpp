@@ -14,10 +14,7 @@ namespace attitude_estimator {
 
 namespace {
 
-constexpr const char* kSolverNames[] = {"qmethod", "fast"};  // SolverKind, in the core's spelling
 constexpr double kEarthMeanRadius = 6371e3;  // m: the albedo model's sphere (the core's 570 km default uses it)
-constexpr SunMethod kSunMethods[] = {SunMethod::difference, SunMethod::inverse_response, SunMethod::cones,
-                                     SunMethod::three_faces};
 
 // The rates' state must travel with the FMU state as bytes.
 static_assert(std::is_trivially_copyable_v<MeanAngularRate<double>> &&
@@ -30,7 +27,7 @@ static_assert(std::is_trivially_copyable_v<MeanAngularRate<double>> &&
 constexpr double kScaleFaceMinResponse = 0.7;
 
 panel_response::Response<double> response_from(const EstimatorData& d) {
-    if (d.angular_response == "cosine") return panel_response::cosine<double>();
+    if (d.angular_response == AngularResponse::cosine) return panel_response::cosine<double>();
     std::array<panel_response::Knot<double>, 6> knots{};
     for (std::size_t i = 0; i < knots.size(); ++i) knots[i] = {d.kelly_angle[i], d.kelly_value[i]};
     return panel_response::table<double>(knots);
@@ -57,19 +54,6 @@ AdcConfig<double> adc(std::int32_t bits, double min, double max) {
 
 }  // namespace
 
-SolverKind solver_from(std::string_view name) {
-    if (name == kSolverNames[0]) return SolverKind::qmethod;
-    if (name == kSolverNames[1]) return SolverKind::fast;
-    throw fmu::Error("solver = '" + std::string(name) + "' is not one of: qmethod, fast");
-}
-
-SunMethod sun_method_from(std::string_view name) {
-    for (SunMethod m : kSunMethods)
-        if (name == sun_method_name(m)) return m;
-    throw fmu::Error("sun_method = '" + std::string(name) +
-                     "' is not one of: difference, inverse_response, cones, three_faces");
-}
-
 MekfConfig<double> filter_config_from(const EstimatorData& d) {
     MekfConfig<double> c;
     c.sun_sigma = d.filter_sun_sigma;
@@ -88,11 +72,7 @@ MekfConfig<double> filter_config_from(const EstimatorData& d) {
 
 EstimatorConfig<double> config_from(const EstimatorData& d) {
     EstimatorConfig<double> c;
-    // The panels' currents scale with the irradiance, (1 AU / distance)² of the 1 AU normalization
-    // (±3.4 % over a year): the cones method's albedo fit needs the absolute scale.
-    const double au_ratio = kAstronomicalUnit / d.sun_distance;
-    const double scale = au_ratio * au_ratio;
-    for (std::size_t k = 0; k < 3; ++k) c.i_sc_norm[k] = d.i_sc_norm[k] * scale;
+    c.i_sc_norm = d.i_sc_norm;  // at 1 AU; at_sun_distance() scales them to the sample's distance
     c.mag_sensitivity = d.mag_sensitivity;
     c.sun_weight = d.weight_sun;
     c.mag_weight = d.weight_mag;
@@ -101,13 +81,13 @@ EstimatorConfig<double> config_from(const EstimatorData& d) {
     c.sun_adc = {current, current, current};
     c.mag_adc = {voltage, voltage, voltage};
     c.mag_ref_adc = voltage;  // the zero-field reference goes through a channel of the same kind
-    c.solver = solver_from(d.solver.view());
+    c.solver = d.solver;
     c.min_sun_norm = d.min_sun_norm;
     c.mag_rail_margin = d.mag_rail_margin;
     c.min_field = d.min_field;
     c.min_separation_sin = d.min_separation_sin;
-    c.sun.method = sun_method_from(d.sun_method.view());
-    for (std::size_t k = 0; k < 6; ++k) c.sun.i_face_norm[k] = d.i_face_norm[k] * scale;
+    c.sun.method = d.sun_method;
+    c.sun.i_face_norm = d.i_face_norm;
     c.sun.response = response_from(d);
     c.sun.dark_threshold = d.face_dark_threshold;
     c.sun.min_sun_norm = d.min_sun_norm;
@@ -117,6 +97,16 @@ EstimatorConfig<double> config_from(const EstimatorData& d) {
     c.sun.cone_fit_tolerance = d.cone_fit_tolerance;
     c.sun.cone_albedo_max = d.cone_albedo_max;
     c.face_adc.fill(adc(d.adc_bits, 0.0, d.i_face_adc_max));
+    return c;
+}
+
+EstimatorConfig<double> at_sun_distance(EstimatorConfig<double> c, double sun_distance) {
+    // The panels' currents scale with the irradiance, (1 AU / distance)² of the 1 AU normalization
+    // (±3.4 % over a year): the cones method's albedo fit needs the absolute scale.
+    const double au_ratio = kAstronomicalUnit / sun_distance;
+    const double scale = au_ratio * au_ratio;
+    for (auto& v : c.i_sc_norm) v *= scale;
+    for (auto& v : c.sun.i_face_norm) v *= scale;
     return c;
 }
 
@@ -173,10 +163,9 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
                 "Lower end of the voltage channels' full-scale range; also the magnetometer's lower rail");
     t.parameter("v_adc_max", &D::v_adc_max, "V",
                 "Upper end of the voltage channels' full-scale range; also the magnetometer's upper rail");
-    t.parameter("solver", &D::solver, "",
-                "Wahba solver: qmethod (default; largest eigenpair of K, 000 eq. 15) or fast (closed form for "
-                "two observations)")
-        .one_of({kSolverNames[0], kSolverNames[1]});
+    t.choice("solver", &D::solver, {{"qmethod", SolverKind::qmethod}, {"fast", SolverKind::fast}},
+             "Wahba solver: qmethod (default; largest eigenpair of K, 000 eq. 15) or fast (closed form for "
+             "two observations)");
     t.parameter("min_sun_norm", &D::min_sun_norm, "1",
                 "The sun vector is invalid (eclipse, albedo only) when |s| is below this")
         .min(0.0);
@@ -188,15 +177,18 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
                 "The attitude is invalid unless sun and field are more than asin(this) from (anti)parallel")
         .range(0.0, 1.0);
 
-    t.parameter("sun_method", &D::sun_method, "",
-                "Sun vector from the panel currents: difference (000 eq. 5 on i_sh, the seed), inverse_response "
-                "(per-face incidence from the inverted angular response), cones (002: cone pairs with albedo "
-                "rejection and the panel cube), three_faces (004 eq. 2-3)")
-        .one_of({"difference", "inverse_response", "cones", "three_faces"});
-    t.parameter("angular_response", &D::angular_response, "",
-                "The panels' angular response the face-based methods invert: cosine (000 eq. 1) or kelly "
-                "(the table kelly_angle/kelly_value); must match ssr_plant's angular_response")
-        .one_of({"cosine", "kelly"});
+    t.choice("sun_method", &D::sun_method,
+             {{"difference", SunMethod::difference},
+              {"inverse_response", SunMethod::inverse_response},
+              {"cones", SunMethod::cones},
+              {"three_faces", SunMethod::three_faces}},
+             "Sun vector from the panel currents: difference (000 eq. 5 on i_sh, the seed), inverse_response "
+             "(per-face incidence from the inverted angular response), cones (002: cone pairs with albedo "
+             "rejection and the panel cube), three_faces (004 eq. 2-3)");
+    t.choice("angular_response", &D::angular_response,
+             {{"cosine", AngularResponse::cosine}, {"kelly", AngularResponse::kelly}},
+             "The panels' angular response the face-based methods invert: cosine (000 eq. 1) or kelly "
+             "(the table kelly_angle/kelly_value); must match ssr_plant's angular_response");
     t.parameter("kelly_angle", &D::kelly_angle, "deg",
                 "Kelly table: incidence angles, increasing, the first 0, the second where the cosine ends, all "
                 "below 90 (default ssr_plant's, 000 fig. 4)")
@@ -240,10 +232,9 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.parameter("rate_window", &D::rate_window, "", "Mean-rate increments averaged (1 = 004 eq. 4 alone), 1 to 64")
         .range(1.0, static_cast<double>(kMaxRateWindow));
 
-    t.parameter("filter", &D::filter, "",
-                "Recursive attitude filter beside the single-frame estimate: none, or mekf (multiplicative "
-                "extended Kalman filter with rate, magnetometer-offset and panel-scale states; docs/filter.md)")
-        .one_of({"none", "mekf"});
+    t.choice("filter", &D::filter, {{"none", FilterKind::none}, {"mekf", FilterKind::mekf}},
+             "Recursive attitude filter beside the single-frame estimate: none, or mekf (multiplicative "
+             "extended Kalman filter with rate, magnetometer-offset and panel-scale states; docs/filter.md)");
     t.parameter("filter_sun_sigma", &D::filter_sun_sigma, "rad",
                 "mekf: 1-sigma error of one sun vector per axis (noise and the sun method's model error)")
         .range(1e-6, 1.0);
@@ -436,14 +427,12 @@ fmu::ModelInfo EstimatorBlock::describe() {
 
 void EstimatorBlock::validate() const {
     const auto& d = data();
-    solver_from(d.solver.view());
     if (!(d.i_adc_max > d.i_adc_min)) throw fmu::Error("i_adc_max must be above i_adc_min");
     if (!(d.v_adc_max - d.v_adc_min > 2.0 * d.mag_rail_margin))
         throw fmu::Error("v_adc_max - v_adc_min must exceed twice mag_rail_margin (else every field reads saturated)");
     if (!(d.weight_sun + d.weight_mag > 0.0)) throw fmu::Error("weight_sun + weight_mag must be positive");
     if (!(d.sample_period > 0.0)) throw fmu::Error("sample_period must be positive");
-    sun_method_from(d.sun_method.view());
-    if (d.angular_response == "kelly") {
+    if (d.angular_response == AngularResponse::kelly) {
         if (d.kelly_angle[0] != 0.0 || d.kelly_value[0] != 1.0)
             throw fmu::Error("kelly_angle[1], kelly_value[1] must be 0 deg, 1 (normal incidence)");
         for (std::size_t i = 1; i < d.kelly_angle.size(); ++i) {
@@ -454,7 +443,6 @@ void EstimatorBlock::validate() const {
         }
     }
     if (d.spin_window != 0 && d.spin_window < 16) throw fmu::Error("spin_window must be 0 (off) or 16 to 2048");
-    if (d.filter != "none" && d.filter != "mekf") throw fmu::Error("filter must be none or mekf");
     bool has_inertia = false;
     for (double v : d.inertia) has_inertia = has_inertia || v != 0.0;
     if (has_inertia) {
@@ -469,9 +457,9 @@ void EstimatorBlock::validate() const {
 
 void EstimatorBlock::take_sample(double t) {
     auto& d = data();
-    const EstimatorConfig<double> nominal = config_from(d);
+    const EstimatorConfig<double> nominal = at_sun_distance(config_, d.sun_distance);
     EstimatorConfig<double> config = nominal;
-    if (d.filter == "mekf" && d.filter_scale && d.filter_state.stage == 2) {
+    if (d.filter == FilterKind::mekf && d.filter_scale && d.filter_state.stage == 2) {
         // The filter's panel-scale estimate corrects the normalization the sun method divides by.
         const double gain = 1.0 + d.filter_state.panel_scale;
         for (auto& v : config.sun.i_face_norm) v *= gain;
@@ -498,13 +486,13 @@ void EstimatorBlock::take_sample(double t) {
     d.mag_set_reset = d.set_reset.polarity > 0.0;
     d.mag_offset = applied_offset(d.set_reset, set_reset_config_from(d));
     update_rates(t);
-    if (d.filter == "mekf") update_filter(t, r, nominal, reading_polarity);
+    if (d.filter == FilterKind::mekf) update_filter(t, r, nominal, reading_polarity);
 }
 
 void EstimatorBlock::update_filter(double t, const SampleResult<double>& r, const EstimatorConfig<double>& nominal,
                                    double polarity) {
     auto& d = data();
-    const MekfConfig<double> config = filter_config_from(d);
+    const MekfConfig<double>& config = filter_config_;
     MekfSampleInputs<double> in;
     in.t = t;
     in.attitude_valid = r.valid;
@@ -571,7 +559,8 @@ void EstimatorBlock::update_rates(double t) {
         d.rate_step_turn >= kStepNoise && d.rate_step_turn / d.sample_period * d.rate_interval >= kHalfPi;
     const auto& f = d.filter_state;
     const double filter_rate = std::sqrt(f.omega[0] * f.omega[0] + f.omega[1] * f.omega[1] + f.omega[2] * f.omega[2]);
-    const bool filter_aliases = d.filter == "mekf" && f.stage == 2 && filter_rate * d.rate_interval >= kHalfPi;
+    const bool filter_aliases =
+        d.filter == FilterKind::mekf && f.stage == 2 && filter_rate * d.rate_interval >= kHalfPi;
     d.rate_valid = mean.valid && !step_aliases && !filter_aliases;
 
     // Spin rates (000 §4): the history of valid sun vectors; an invalid one empties the window (the FFT
@@ -609,6 +598,11 @@ SpinSpectrum& SpinWorkspace::get(double sample_period, std::int32_t window) {
         spectrum_->window() != static_cast<std::size_t>(window))
         spectrum_ = std::make_unique<SpinSpectrum>(sample_period, static_cast<std::size_t>(window));
     return *spectrum_;
+}
+
+void EstimatorBlock::configure() {
+    config_ = config_from(data());
+    filter_config_ = filter_config_from(data());
 }
 
 void EstimatorBlock::initialize(double t) {

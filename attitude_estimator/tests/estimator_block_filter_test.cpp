@@ -58,10 +58,9 @@ double error_of(const std::array<double, 4>& q, const Eigen::Matrix3d& a) {
 
 TEST(EstimatorFmuFilter, DefaultIsNoneAndTheChoiceIsChecked) {
     Simulation sim;
-    EXPECT_EQ(sim.data().filter.view(), "none");
-    sim.data().filter = "ukf";
-    EXPECT_THROW(sim.runner.model().validate(), fmu::Error);
-    sim.data().filter = "mekf";
+    EXPECT_EQ(sim.data().filter, FilterKind::none);
+    EXPECT_THROW(sim.set_choice("filter", "ukf"), fmu::Error);
+    sim.set_choice("filter", "mekf");
     sim.data().inertia = {1, 0, 0, 0, 1, 0, 0, 0, -1};  // not positive definite
     EXPECT_THROW(sim.runner.model().validate(), fmu::Error);
     sim.data().inertia = {3.2, 0.05, 0, 0.04, 2.9, 0, 0, 0, 3.6};  // not symmetric
@@ -91,7 +90,7 @@ TEST(EstimatorFmuFilter, TracksATumbleBetterThanTheSingleFrameEstimate) {
     Truth truth;
     Simulation sim;
     auto& d = sim.data();
-    d.filter = "mekf";
+    sim.set_choice("filter", "mekf");
     // 12-bit converters: single-frame errors of a few 0.01 deg (the block test's quantization bound).
     d.filter_sun_sigma = 0.002;
     d.filter_mag_sigma = 0.1e-6;
@@ -129,9 +128,9 @@ TEST(EstimatorFmuFilter, SavedAndRestoredStateReplaysBitIdentically) {
     Truth truth;
     Simulation a;
     auto& d = a.data();
-    d.filter = "mekf";
+    a.set_choice("filter", "mekf");
     d.filter_scale = true;
-    d.sun_method = "inverse_response";
+    a.set_choice("sun_method", "inverse_response");
     d.inertia = {3.2, 0.05, -0.02, 0.05, 2.9, 0.03, -0.02, 0.03, 3.6};
     feed(d, truth, 0.0);
     a.start();
@@ -197,7 +196,7 @@ TEST(EstimatorFmuFilter, RateValidFalseWhereTheIntervalAliases) {
         truth.omega = 2.0 * std::numbers::pi * Eigen::Vector3d(0.2, -0.3, 0.93).normalized();
         Simulation sim;
         auto& d = sim.data();
-        d.filter = std::string_view(filter);
+        sim.set_choice("filter", filter);
         d.rate_interval = 2.0;
         d.rate_window = 2;
         d.filter_rate_noise = 0.01;
@@ -216,7 +215,7 @@ TEST(EstimatorFmuFilter, RateValidFalseWhereTheIntervalAliases) {
         }
         EXPECT_TRUE(mean_ready);
         EXPECT_LT(d.rate_mean, 0.1) << "the aliased increments read (almost) no turn";
-        if (d.filter == "mekf") {
+        if (d.filter == FilterKind::mekf) {
             const Eigen::Vector3d w(d.omega_filt[0], d.omega_filt[1], d.omega_filt[2]);
             EXPECT_LT((w - truth.omega).norm(), 0.01 * truth.omega.norm());
         }

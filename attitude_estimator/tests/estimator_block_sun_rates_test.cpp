@@ -40,7 +40,7 @@ TEST(EstimatorFmuSun, FaceMethodsRecoverTheSunFromPerFaceCurrents) {
     const Eigen::Vector3d s = Eigen::Vector3d(0.5, -0.6, 0.62).normalized();  // faces +x, −y, +z lit
     for (const char* method : {"difference", "inverse_response", "cones", "three_faces"}) {
         Simulation sim;
-        sim.data().sun_method.assign(method);
+        sim.set_choice("sun_method", method);
         sim.data().adc_bits = 0;
         feed_sun(sim.data(), s);
         sim.start();
@@ -75,11 +75,11 @@ TEST(EstimatorFmuSun, KellyTableIsInvertedOnlyWhenSelected) {
     Simulation kelly, cosine;
     for (Simulation* sim : {&kelly, &cosine}) {
         auto& d = sim->data();
-        d.sun_method = "inverse_response";
+        sim->set_choice("sun_method", "inverse_response");
         d.adc_bits = 0;
         d.i_face = {kIsc0 * 0.450, 0.0, 0.0, 0.0, kIsc0 * std::cos(30 * deg), 0.0};
     }
-    kelly.data().angular_response = "kelly";
+    kelly.set_choice("angular_response", "kelly");
     kelly.start();
     cosine.start();
     ASSERT_TRUE(kelly.data().sun_valid);
@@ -95,7 +95,7 @@ TEST(EstimatorFmuSun, SunDistanceScalesTheExpectedCurrents) {
     const Eigen::Vector3d s = Eigen::Vector3d(0.5, -0.6, 0.62).normalized();
     const double au = 1.495978707e11, d_sun = 0.9833 * au, gain = std::pow(au / d_sun, 2);
     Simulation sim;
-    sim.data().sun_method.assign("cones");
+    sim.set_choice("sun_method", "cones");
     sim.data().adc_bits = 0;
     sim.data().sun_distance = d_sun;
     feed_sun(sim.data(), s);
@@ -108,10 +108,9 @@ TEST(EstimatorFmuSun, SunDistanceScalesTheExpectedCurrents) {
 
 TEST(EstimatorFmuSun, BadSunMethodAndKellyTableAreRefused) {
     EstimatorBlock b;
-    b.data().sun_method = "average";
-    EXPECT_THROW(b.validate(), fmu::Error);
-    b.data().sun_method = "cones";
-    b.data().angular_response = "kelly";
+    EXPECT_THROW(Simulation().set_choice("sun_method", "average"), fmu::Error);
+    b.data().sun_method = SunMethod::cones;
+    b.data().angular_response = AngularResponse::kelly;
     b.data().kelly_angle[3] = 45.0;  // below the previous knot's 50°
     EXPECT_THROW(b.validate(), fmu::Error);
     b.data().kelly_angle[3] = 60.0;

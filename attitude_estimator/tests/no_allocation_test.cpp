@@ -39,9 +39,9 @@ TYPED_TEST(EstimatorCoreNoAllocation, SolversSunMethodsWholeSampleAndFilterNever
     in.v_mag = {T(2.8), T(2.4), T(2.6)};
     in.sun_ref = {T(1), T(0), T(0)};
     in.mag_ref = {T(0), T(1), T(0)};
-    const EstimatorConfig<T> fast_config;
-    EstimatorConfig<T> q_config;
-    q_config.solver = SolverKind::qmethod;
+    EstimatorConfig<T> fast_config;
+    fast_config.solver = SolverKind::fast;
+    const EstimatorConfig<T> q_config;  // the default: the Q-method
     // Every face-based sun method, with the Kelly table (the inverse response iterates), on three lit faces
     // and an albedo-lit fourth.
     in.i_face = {T(0.5), T(0.1), T(0.0), T(0.3), T(0.6), T(0.0)};

@@ -12,14 +12,13 @@
 
 namespace {
 
-void run_block(benchmark::State& state, const char* mode, bool albedo) {
+void run_block(benchmark::State& state, environment::AttitudeMode mode, bool albedo) {
     fmu::ModelRunner runner{std::make_unique<environment::EnvironmentBlock>()};
     auto& d = static_cast<environment::EnvironmentBlock&>(runner.model()).data();
-    d.attitude_mode = std::string_view(mode);
+    d.attitude_mode = mode;
     d.albedo_enabled = albedo;
-    runner.set_initializing(true);
-    runner.ensure_evaluated();
-    runner.set_initializing(false);
+    runner.enter_initialization();
+    runner.exit_initialization();
     std::vector<double> x(runner.state_count()), dx(x.size());
     runner.get_states(x);
     double t = 100.0;
@@ -32,16 +31,16 @@ void run_block(benchmark::State& state, const char* mode, bool albedo) {
 }
 
 void BM_BlockSpinWithAlbedo(benchmark::State& state) {
-    run_block(state, "spin", true);
+    run_block(state, environment::AttitudeMode::spin, true);
 }
 void BM_BlockSpinNoAlbedo(benchmark::State& state) {
-    run_block(state, "spin", false);
+    run_block(state, environment::AttitudeMode::spin, false);
 }
 void BM_BlockRigidBodyWithAlbedo(benchmark::State& state) {
-    run_block(state, "rigid_body", true);
+    run_block(state, environment::AttitudeMode::rigid_body, true);
 }
 void BM_BlockRigidBodyNoAlbedo(benchmark::State& state) {
-    run_block(state, "rigid_body", false);
+    run_block(state, environment::AttitudeMode::rigid_body, false);
 }
 BENCHMARK(BM_BlockSpinWithAlbedo);
 BENCHMARK(BM_BlockSpinNoAlbedo);

@@ -17,35 +17,6 @@ namespace {
 
 constexpr double kTwoPi = 2.0 * kPi;
 
-// (offset, size) in EnvironmentData of every parameter's value, from the variable table: the bytes
-// the cached core was built from. Field by field, so struct padding never enters the comparison.
-const std::vector<std::pair<std::size_t, std::size_t>>& parameter_bytes() {
-    static const std::vector<std::pair<std::size_t, std::size_t>> spans = [] {
-        std::vector<std::pair<std::size_t, std::size_t>> s;
-        for (const fmu::Variable& v : EnvironmentBlock::static_table().variables()) {
-            if (v.causality != fmu::Causality::parameter) continue;
-            std::size_t size = 0;
-            switch (v.type) {
-                case fmu::ValueType::Real:
-                    size = sizeof(double);
-                    break;
-                case fmu::ValueType::Integer:
-                    size = sizeof(std::int32_t);
-                    break;
-                case fmu::ValueType::Boolean:
-                    size = sizeof(bool);
-                    break;
-                case fmu::ValueType::String:
-                    size = v.string_capacity + 1;
-                    break;
-            }
-            s.emplace_back(v.offset, size);
-        }
-        return s;
-    }();
-    return spans;
-}
-
 UtcDate utc_date(std::int32_t year, std::int32_t month, std::int32_t day, std::int32_t hour, std::int32_t minute,
                  double second) {
     return UtcDate{.year = year, .month = month, .day = day, .hour = hour, .minute = minute, .second = second};
@@ -67,13 +38,7 @@ void check_calendar_day(const char* what, std::int32_t year, std::int32_t month,
 
 EnvironmentParams environment_params(const EnvironmentData& d) {
     EnvironmentParams p;
-    if (d.attitude_mode == "spin") {
-        p.attitude_mode = AttitudeMode::spin;
-    } else if (d.attitude_mode == "rigid_body") {
-        p.attitude_mode = AttitudeMode::rigid_body;
-    } else {
-        throw fmu::Error("attitude_mode must be spin or rigid_body, not '" + std::string(d.attitude_mode.view()) + "'");
-    }
+    p.attitude_mode = d.attitude_mode;
     p.spin = SpinParams{
         .phi0 = d.spin_phi0, .theta0 = d.spin_theta0, .phi_dot = d.spin_phi_dot, .theta_dot = d.spin_theta_dot};
     p.rigid_body = RigidBodyParams{.inertia = d.inertia, .q0 = d.q0, .omega0 = d.omega0};
@@ -82,44 +47,29 @@ EnvironmentParams environment_params(const EnvironmentData& d) {
                           .raan = d.orbit_raan,
                           .argument_of_latitude0 = d.orbit_argument_of_latitude0};
     p.epoch = utc_date(d.epoch_year, d.epoch_month, d.epoch_day, d.epoch_hour, d.epoch_minute, d.epoch_second);
-    if (d.sun_model == "almanac") {
-        p.sun_model = SunModel::almanac;
-    } else if (d.sun_model == "seed002") {
-        p.sun_model = SunModel::seed002;
-    } else {
-        throw fmu::Error("sun_model must be almanac or seed002, not '" + std::string(d.sun_model.view()) + "'");
-    }
+    p.sun_model = d.sun_model;
     p.vernal_equinox =
         utc_date(d.equinox_year, d.equinox_month, d.equinox_day, d.equinox_hour, d.equinox_minute, d.equinox_second);
     p.seed002_elevation_amplitude = d.seed002_elevation_amplitude;
     p.solar_constant = d.solar_constant;
     p.eclipse_enabled = d.eclipse_enabled;
-    if (d.field_model == "igrf14") {
-        p.field_model = FieldModel::igrf14;
-    } else if (d.field_model == "dipole") {
-        p.field_model = FieldModel::dipole;
-    } else {
-        throw fmu::Error("field_model must be igrf14 or dipole, not '" + std::string(d.field_model.view()) + "'");
-    }
+    p.field_model = d.field_model;
     p.igrf_max_degree = d.igrf_max_degree;
     p.albedo = AlbedoParams{.enabled = d.albedo_enabled,
                             .reflectivity = d.albedo_reflectivity,
                             .rings = d.albedo_rings,
                             .sectors = d.albedo_sectors};
-    if (d.albedo_response == "kelly")
-        p.albedo.response = AlbedoResponse::kelly;
-    else if (d.albedo_response != "cosine")
-        throw fmu::Error("albedo_response must be cosine or kelly");
+    p.albedo.response = d.albedo_response;
     return p;
 }
 
 void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
     using D = EnvironmentData;
     // Attitude motion.
-    t.parameter("attitude_mode", &D::attitude_mode, "",
-                "Attitude motion: spin (seed 000 section 4, a pure function of time) or rigid_body (torque-free "
-                "Euler equations, states q and omega)")
-        .one_of({"spin", "rigid_body"});
+    t.choice("attitude_mode", &D::attitude_mode,
+             {{"spin", AttitudeMode::spin}, {"rigid_body", AttitudeMode::rigid_body}},
+             "Attitude motion: spin (seed 000 section 4, a pure function of time) or rigid_body (torque-free "
+             "Euler equations, states q and omega)");
     t.parameter("spin_phi0", &D::spin_phi0, "rad",
                 "Spin mode: phi at t = 0 in s_body = (sin phi sin theta, cos phi "
                 "sin theta, cos theta)");
@@ -159,10 +109,9 @@ void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
     t.parameter("epoch_minute", &D::epoch_minute, "", "Epoch (UTC at t = 0): minute 0..59").range(0, 59);
     t.parameter("epoch_second", &D::epoch_second, "s", "Epoch (UTC at t = 0): second of the minute").range(0.0, 61.0);
     // Sun.
-    t.parameter("sun_model", &D::sun_model, "",
-                "Sun position: almanac (Astronomical Almanac low-precision formula, about 0.01 deg) or seed002 "
-                "(seed 002 eq. 21-23, 1 AU)")
-        .one_of({"almanac", "seed002"});
+    t.choice("sun_model", &D::sun_model, {{"almanac", SunModel::almanac}, {"seed002", SunModel::seed002}},
+             "Sun position: almanac (Astronomical Almanac low-precision formula, about 0.01 deg) or seed002 "
+             "(seed 002 eq. 21-23, 1 AU)");
     t.parameter("equinox_year", &D::equinox_year, "",
                 "seed002 sun: vernal equinox the days are counted from (UTC), year")
         .range(1900, 2100);
@@ -183,10 +132,9 @@ void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
                 "Earth shadow: conical umbra and smooth penumbra (false: always lit)")
         .tunable();
     // Field.
-    t.parameter("field_model", &D::field_model, "",
-                "Geomagnetic field: igrf14 (IGRF-14 spherical harmonics) or dipole (tilted centred dipole from "
-                "IGRF-14's degree-1 terms)")
-        .one_of({"igrf14", "dipole"});
+    t.choice("field_model", &D::field_model, {{"igrf14", FieldModel::igrf14}, {"dipole", FieldModel::dipole}},
+             "Geomagnetic field: igrf14 (IGRF-14 spherical harmonics) or dipole (tilted centred dipole from "
+             "IGRF-14's degree-1 terms)");
     t.parameter("igrf_max_degree", &D::igrf_max_degree, "", "igrf14 field: highest degree of the synthesis (1..13)")
         .range(1, 13);
     // Albedo.
@@ -201,10 +149,10 @@ void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
         .range(1, 1000);
     t.parameter("albedo_sectors", &D::albedo_sectors, "", "Albedo quadrature: midpoint points in azimuth")
         .range(3, 4000);
-    t.parameter("albedo_response", &D::albedo_response, "",
-                "Angular response the faces weigh albedo with: cosine (ideal) or kelly (seed 000 fig. 4, set it as the "
-                "plant's angular_response: albedo_face is then the equivalent normal-incidence irradiance)")
-        .one_of({"cosine", "kelly"});
+    t.choice("albedo_response", &D::albedo_response,
+             {{"cosine", AlbedoResponse::cosine}, {"kelly", AlbedoResponse::kelly}},
+             "Angular response the faces weigh albedo with: cosine (ideal) or kelly (seed 000 fig. 4, set it as the "
+             "plant's angular_response: albedo_face is then the equivalent normal-incidence irradiance)");
     t.calculated_parameter("orbit_period", &D::orbit_period, "s", "Period of the circular orbit, 2 pi sqrt(a^3/mu)");
 
     // States: used in rigid_body mode only (derivatives 0 in spin mode).
@@ -284,46 +232,28 @@ fmu::ModelInfo EnvironmentBlock::describe() {
     return info;
 }
 
-bool EnvironmentBlock::parameters_match_cache() const {
-    if (!core_) return false;
-    const auto* bytes = reinterpret_cast<const std::byte*>(&data());
-    std::size_t pos = 0;
-    for (const auto& [offset, size] : parameter_bytes()) {
-        if (std::memcmp(bytes + offset, core_key_.data() + pos, size) != 0) return false;
-        pos += size;
+void EnvironmentBlock::configure() {
+    core_.reset();
+    try {
+        core_.emplace(environment_params(data()));
+    } catch (const fmu::Error&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw fmu::Error(std::string("environment: ") + e.what());
     }
-    return true;
-}
-
-void EnvironmentBlock::remember_parameters() const {
-    const auto* bytes = reinterpret_cast<const std::byte*>(&data());
-    core_key_.clear();
-    for (const auto& [offset, size] : parameter_bytes())
-        core_key_.insert(core_key_.end(), bytes + offset, bytes + offset + size);
 }
 
 const Environment& EnvironmentBlock::core() const {
-    if (!parameters_match_cache()) {
-        core_.reset();
-        try {
-            core_.emplace(environment_params(data()));
-        } catch (const fmu::Error&) {
-            throw;
-        } catch (const std::exception& e) {
-            throw fmu::Error(std::string("environment: ") + e.what());
-        }
-        remember_parameters();
-    }
+    if (!core_) throw fmu::Error("environment: used before configure()");  // the runtime configures first
     return *core_;
 }
 
 void EnvironmentBlock::validate() const {
-    // Everything the core checks (inertia, q0, dates, IGRF validity at the epoch, albedo grid), at exit of
-    // initialization with a message, rather than at the first step.
+    // The calendar; everything else the core checks (inertia, q0, IGRF validity at the epoch, albedo
+    // grid) is refused by configure(), which the runtime calls right after, at exit of initialization.
     const auto& d = data();
     check_calendar_day("epoch", d.epoch_year, d.epoch_month, d.epoch_day);
     check_calendar_day("equinox", d.equinox_year, d.equinox_month, d.equinox_day);
-    (void)core();
 }
 
 void EnvironmentBlock::initialize(double) {

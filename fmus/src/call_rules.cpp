@@ -114,7 +114,9 @@ std::uint32_t allowed_modes(Call call) {
         // Which variables may be set in which mode is checked per variable (Instance::check_settable).
         case Call::set_values:
             return M::instantiated | M::initialization | M::event | M::continuous_time | M::step_complete;
+        // A state taken in the error mode could not be restored to continue (FMI 2.0 section 2.1.3).
         case Call::get_fmu_state:
+            return any & ~static_cast<std::uint32_t>(M::error);
         case Call::set_fmu_state:
         case Call::free_fmu_state:
         case Call::serialize_fmu_state:

@@ -21,6 +21,7 @@ std::string start_text(const Variable& v, std::span<const std::byte> defaults) {
         case ValueType::Real:
             return format_real(read_real(defaults, v));
         case ValueType::Integer:
+        case ValueType::Enumeration:
             return std::to_string(read_integer(defaults, v));
         case ValueType::Boolean:
             return read_boolean(defaults, v) ? "true" : "false";
@@ -65,7 +66,11 @@ std::string description_fingerprint(const Model& model) {
         field(v.derivative_of ? std::to_string(*v.derivative_of) : "-");
         if (v.dependencies)
             for (auto d : *v.dependencies) field(std::to_string(d));
-        for (const auto& a : v.allowed_values) field(a);
+        field(v.declared_type);
+        for (const auto& item : v.items) {
+            field(item.name);
+            field(std::to_string(item.value));
+        }
         text += '\x1e';
     }
     return text;

@@ -1,6 +1,8 @@
 // The FMI 2.0 C API, implemented once for every block. Each entry point checks its handle, then runs
 // its body inside one guard that enforces the call-sequence table and turns exceptions into an
 // fmi2Status plus a message through the host's logger. Nothing thrown inside crosses this file.
+// The error contract: fmu::Discard -> fmi2Discard, the instance stays in its mode; any other
+// exception -> fmi2Error (fmi2Fatal for a non-standard one) and the instance enters the error mode.
 #include <mutex>
 #include <new>
 #include <type_traits>
@@ -59,6 +61,12 @@ fmi2Status guarded(fmi2Component c, Call call, Body&& body) noexcept {
         self.log(fmi2Error, "logStatusError", std::string(fmu::to_string(call)) + ": out of memory");
         return fmi2Error;
     } catch (const std::exception& e) {
+        // FMI 2.0 section 2.1.3: after fmi2Error the simulation cannot continue with this instance
+        // until the host restores a state it saved (fmi2SetFMUstate) or resets it; until then only
+        // the calls call_rules.cpp allows in the error mode (reads for diagnosis, state restore,
+        // reset, free, logging) are accepted. Values a host sets are checked before any is
+        // written, so an instance never continues from a half-applied call either.
+        self.enter_error_mode();
         self.log(fmi2Error, "logStatusError", e.what());
         return fmi2Error;
     } catch (...) {

@@ -113,14 +113,12 @@ void Instance::setup_experiment(bool tolerance_defined, double tolerance, double
 }
 
 void Instance::enter_initialization_mode() {
-    runner_.set_initializing(true);
+    runner_.enter_initialization();
     mode_ = Mode::initialization;
 }
 
 void Instance::exit_initialization_mode() {
-    runner_.model().validate();
-    runner_.ensure_evaluated();  // runs initialize() once more with the final parameters
-    runner_.set_initializing(false);
+    runner_.exit_initialization();
     if (kind_ == Kind::model_exchange) {
         mode_ = Mode::event;
         return;
@@ -146,9 +144,7 @@ void Instance::terminate() {
 
 void Instance::reset() {
     cs_solver_.reset();
-    runner_.model().reset_to_defaults();
-    runner_.set_initializing(false);
-    runner_.set_time(runner_.model().info().default_experiment.start_time);
+    runner_.reset(runner_.model().info().default_experiment.start_time);
     start_time_ = runner_.time();
     tolerance_ = runner_.model().info().default_experiment.tolerance;
     last_successful_time_ = 0.0;
@@ -160,7 +156,9 @@ const Variable& Instance::variable(fmi2ValueReference vr, ValueType type) const 
     const auto& vars = runner_.table().variables();
     if (vr >= vars.size()) throw Error("unknown value reference " + std::to_string(vr));
     const Variable& v = vars[vr];
-    if (v.type != type)
+    // An Enumeration is read and written through the Integer functions (FMI 2.0 section 2.1.7).
+    const bool integer_access = type == ValueType::Integer && v.type == ValueType::Enumeration;
+    if (v.type != type && !integer_access)
         throw Error("value reference " + std::to_string(vr) + " (" + v.name + ") is of type " +
                     std::string(to_string(v.type)) + ", not " + std::string(to_string(type)));
     return v;
@@ -260,12 +258,17 @@ void Instance::set_values(std::span<const fmi2ValueReference> vr, const T* value
         before.assign(b.begin(), b.end());
     }
     for (std::size_t i = 0; i < vr.size(); ++i) write(variable(vr[i], type), values[i]);
-    runner_.mark_changed();
+    if (parameter_changed)
+        runner_.parameters_changed();
+    else
+        runner_.mark_changed();
     if (initialized && parameter_changed) {
         try {
             runner_.model().validate();
+            runner_.ensure_configured();
         } catch (...) {
             std::copy(before.begin(), before.end(), runner_.model().bytes().begin());
+            runner_.parameters_changed();
             throw;
         }
     }
@@ -307,7 +310,13 @@ void Instance::set_real_input_derivatives(std::span<const fmi2ValueReference> vr
 
 void Instance::set_integer(std::span<const fmi2ValueReference> vr, const fmi2Integer* values) {
     set_values(
-        vr, values, ValueType::Integer, [](const Variable& v, fmi2Integer x) { check_range(v, x); },
+        vr, values, ValueType::Integer,
+        [](const Variable& v, fmi2Integer x) {
+            if (v.type == ValueType::Enumeration && !v.item_valued(x))
+                throw Error(v.name + " = " + std::to_string(x) + " is not an item of " + v.declared_type + " (" +
+                            v.item_names() + ")");
+            check_range(v, x);
+        },
         [&](const Variable& v, fmi2Integer x) { write_integer(runner_.model().bytes(), v, x); });
 }
 
@@ -325,12 +334,6 @@ void Instance::set_string(std::span<const fmi2ValueReference> vr, const fmi2Stri
             const std::string_view text(x);
             if (text.size() > v.string_capacity)
                 throw Error(v.name + " is limited to " + std::to_string(v.string_capacity) + " characters");
-            if (!v.allowed_values.empty() &&
-                std::find(v.allowed_values.begin(), v.allowed_values.end(), text) == v.allowed_values.end()) {
-                std::string allowed;
-                for (const auto& a : v.allowed_values) allowed += (allowed.empty() ? "" : ", ") + a;
-                throw Error(v.name + " = '" + std::string(text) + "' is not one of: " + allowed);
-            }
         },
         [&](const Variable& v, fmi2String x) { write_string(runner_.model().bytes(), v, x); });
 }
@@ -350,6 +353,7 @@ Snapshot* Instance::get_state(Snapshot* reuse) {
     }
     s->model = runner_.model().clone();
     s->time = runner_.time();
+    s->mode = mode_;
     s->last_successful_time = last_successful_time_;
     s->terminate_requested = terminate_requested_;
     return s;
@@ -360,6 +364,11 @@ void Instance::set_state(const Snapshot* state) {
     runner_.restore(*state->model, state->time);
     last_successful_time_ = state->last_successful_time;
     terminate_requested_ = state->terminate_requested;
+    // A restore is the one way out of the error mode besides reset (FMI 2.0 section 2.1.3): the
+    // instance continues in the mode the state was taken in (a deserialized state: after
+    // initialization, in event mode or with a completed step).
+    if (mode_ == Mode::error)
+        mode_ = state->mode ? *state->mode : (kind_ == Kind::model_exchange ? Mode::event : Mode::step_complete);
     if (cs_solver_) cs_solver_->invalidate();
 }
 
@@ -519,22 +528,19 @@ fmi2Status Instance::do_step(double current_time, double step_size) {
     if (std::abs(current_time - now) > 1e-9 * std::max(1.0, std::abs(now)))
         throw Error("fmi2DoStep: communication point " + format_time(current_time) + " is not the FMU's current time " +
                     format_time(now));
-    try {
-        runner_.set_time(current_time);
-        cs_solver_->invalidate();  // inputs may have jumped at the communication point
-        const auto outcome = cs_solver_->advance(current_time + step_size);
-        runner_.clear_input_slopes();  // given for this step; the inputs stay at their values at its end
-        last_successful_time_ = runner_.time();
-        if (outcome == CsSolver::Outcome::terminated) {
-            terminate_requested_ = true;
-            log(fmi2Discard, "logStatusDiscard", "the block asked to terminate at t = " + format_time(runner_.time()));
-            return fmi2Discard;
-        }
-        return fmi2OK;
-    } catch (...) {
-        mode_ = Mode::step_failed;
-        throw;
+    // A step that throws leaves the instance in the error mode (fmi2_api.cpp's guard): the host may
+    // restore a saved state and retry, or reset.
+    runner_.set_time(current_time);
+    cs_solver_->invalidate();  // inputs may have jumped at the communication point
+    const auto outcome = cs_solver_->advance(current_time + step_size);
+    runner_.clear_input_slopes();  // given for this step; the inputs stay at their values at its end
+    last_successful_time_ = runner_.time();
+    if (outcome == CsSolver::Outcome::terminated) {
+        terminate_requested_ = true;
+        log(fmi2Discard, "logStatusDiscard", "the block asked to terminate at t = " + format_time(runner_.time()));
+        return fmi2Discard;
     }
+    return fmi2OK;
 }
 
 fmi2Status Instance::get_status(fmi2StatusKind kind, fmi2Status* value) const {

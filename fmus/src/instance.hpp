@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <set>
 #include <span>
 #include <string>
@@ -33,6 +34,7 @@ enum class Kind { model_exchange, co_simulation };
 struct Snapshot {
     std::unique_ptr<Model> model;
     double time = 0.0;
+    std::optional<Mode> mode;  // the mode it was taken in; none when it came from bytes
     double last_successful_time = 0.0;
     bool terminate_requested = false;
 };

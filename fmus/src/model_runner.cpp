@@ -51,8 +51,32 @@ void ModelRunner::apply_input_slopes() {
     }
 }
 
+void ModelRunner::ensure_configured() {
+    if (configured_) return;
+    model_->configure();
+    configured_ = true;
+}
+
+void ModelRunner::exit_initialization() {
+    model_->validate();
+    configured_ = false;
+    ensure_configured();
+    mark_changed();
+    ensure_evaluated();  // initialize() once more, with the final parameters and inputs
+    set_initializing(false);
+}
+
+void ModelRunner::reset(double start_time) {
+    model_->reset_to_defaults();
+    input_slopes_.clear();
+    configured_ = false;
+    set_initializing(false);
+    set_time(start_time);
+}
+
 void ModelRunner::ensure_evaluated() {
     if (!stale_) return;
+    ensure_configured();
     if (initializing_) model_->initialize(time_);
     model_->evaluate(time_);
     stale_ = derivatives_stale_ = false;
@@ -61,6 +85,7 @@ void ModelRunner::ensure_evaluated() {
 void ModelRunner::ensure_derivatives() {
     if (!derivatives_stale_) return;
     if (initializing_) return ensure_evaluated();
+    ensure_configured();
     model_->evaluate_derivatives(time_);
     derivatives_stale_ = false;
 }
@@ -99,8 +124,8 @@ void ModelRunner::get_indicators(std::span<double> z) {
     model_->event_indicators(time_, z);
 }
 
-bool ModelRunner::time_event_due() const {
-    const double next = model_->next_time_event();
+bool ModelRunner::time_event_due() {
+    const double next = next_time_event();
     return std::isfinite(next) && reached(time_, next);
 }
 
@@ -127,6 +152,7 @@ void ModelRunner::restore(const Model& saved, double time) {
     auto src = saved.bytes();
     std::copy(src.begin(), src.end(), model_->bytes().begin());
     time_ = time;
+    configured_ = false;  // the restored parameters may differ from the current ones
     mark_changed();
     input_slopes_.clear();
 }

@@ -46,10 +46,12 @@ void check_variable(const Variable& v, std::span<const std::byte> bytes) {
             const std::size_t length = strnlen(text, v.string_capacity + 1);
             if (length > v.string_capacity)
                 refuse(v, "is not terminated within its " + std::to_string(v.string_capacity) + " characters");
-            const std::string_view value(text, length);
-            if (!v.allowed_values.empty() &&
-                std::find(v.allowed_values.begin(), v.allowed_values.end(), value) == v.allowed_values.end())
-                refuse(v, "'" + std::string(value) + "' is not one of its allowed values");
+            break;
+        }
+        case ValueType::Enumeration: {
+            std::int32_t x = 0;
+            std::memcpy(&x, at, sizeof x);
+            if (!v.item_valued(x)) refuse(v, "= " + std::to_string(x) + " is not an item of " + v.declared_type);
             break;
         }
     }

@@ -2,6 +2,7 @@
 #include "fmu/table.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include "fmu/units.hpp"
@@ -24,6 +25,38 @@ std::size_t TableBase::add(Variable v) {
     v.value_reference = static_cast<std::uint32_t>(variables_.size());
     variables_.push_back(std::move(v));
     return variables_.size() - 1;
+}
+
+namespace {
+// "sun_method" -> "SunMethod": the name of a choice's type definition.
+std::string camel_case(std::string_view name) {
+    std::string out;
+    bool upper = true;
+    for (char c : name) {
+        if (c == '_') {
+            upper = true;
+            continue;
+        }
+        out += upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : c;
+        upper = false;
+    }
+    return out;
+}
+}  // namespace
+
+void TableBase::set_items(std::vector<EnumerationItem> items) {
+    auto& v = variables_.back();
+    if (items.empty()) throw Error("choice " + v.name + " has no items");
+    for (std::size_t i = 0; i < items.size(); ++i)
+        for (std::size_t k = 0; k < i; ++k)
+            if (items[i].name == items[k].name || items[i].value == items[k].value)
+                throw Error("choice " + v.name + ": items '" + items[k].name + "' and '" + items[i].name +
+                            "' repeat a name or a value");
+    v.items = std::move(items);
+    v.declared_type = camel_case(v.base_name);
+    for (const auto& other : variables_)
+        if (&other != &v && other.declared_type == v.declared_type)
+            throw Error("choices " + other.name + " and " + v.name + " would share the type name " + v.declared_type);
 }
 
 void TableBase::mark_state(std::size_t state, std::size_t derivative) {
@@ -78,15 +111,6 @@ TableBase::Handle& TableBase::Handle::calculated_start() {
         auto& v = table_.variables_[i];
         if (!v.is_state_) throw Error("calculated_start applies to states: " + v.name);
         v.initial = Initial::calculated;
-    }
-    return *this;
-}
-
-TableBase::Handle& TableBase::Handle::one_of(std::initializer_list<std::string_view> values) {
-    for (auto i = first_; i < last_; ++i) {
-        auto& v = table_.variables_[i];
-        if (v.type != ValueType::String) throw Error("one_of applies to String variables: " + v.name);
-        v.allowed_values.assign(values.begin(), values.end());
     }
     return *this;
 }

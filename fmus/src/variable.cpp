@@ -13,6 +13,8 @@ std::string_view to_string(ValueType v) {
             return "Boolean";
         case ValueType::String:
             return "String";
+        case ValueType::Enumeration:
+            return "Enumeration";
     }
     return "?";
 }
@@ -63,6 +65,24 @@ std::string_view to_string(Initial i) {
             return "calculated";
     }
     return "?";
+}
+
+const EnumerationItem* Variable::item_named(std::string_view item) const {
+    for (const auto& i : items)
+        if (i.name == item) return &i;
+    return nullptr;
+}
+
+const EnumerationItem* Variable::item_valued(std::int32_t value) const {
+    for (const auto& i : items)
+        if (i.value == value) return &i;
+    return nullptr;
+}
+
+std::string Variable::item_names() const {
+    std::string names;
+    for (const auto& i : items) names += (names.empty() ? "" : ", ") + i.name;
+    return names;
 }
 
 }  // namespace fmu

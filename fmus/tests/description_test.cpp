@@ -35,6 +35,19 @@ TEST(Description, ParsedXmlMatchesTheTable) {
     }
     EXPECT_EQ(*md.find_variable("g")->start_as_real(), 9.81);
     EXPECT_EQ(*md.find_variable("label")->start, "ball");
+    // A choice is an Enumeration with its items in a type definition (FMI 2.0 section 2.2.3).
+    const auto* material = md.find_variable("material");
+    ASSERT_NE(material, nullptr);
+    EXPECT_EQ(material->type, fmi_loader::VariableType::enumeration);
+    EXPECT_EQ(material->declared_type, "Material");
+    EXPECT_EQ(*material->start, "1");
+    const auto* type = md.find_type("Material");
+    ASSERT_NE(type, nullptr);
+    ASSERT_EQ(type->items.size(), 2u);
+    EXPECT_EQ(type->items[0].name, "rubber");
+    EXPECT_EQ(type->items[0].value, 1);
+    EXPECT_EQ(type->items[1].name, "steel");
+    EXPECT_EQ(type->items[1].value, 2);
     // States h, v in declaration order; der(h) depends on v only (1-based indices).
     ASSERT_EQ(md.model_structure.derivatives.size(), 2u);
     const auto& der_h = md.model_structure.derivatives[0];

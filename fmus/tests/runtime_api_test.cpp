@@ -56,6 +56,17 @@ protected:
         EXPECT_TRUE(logged_error());
         log.messages.clear();
     }
+    // Reset the instance (leaving the error mode a refusal put it in) and bring it to `stage`.
+    enum class Stage { instantiated, initialization, initialized };
+    void back_to(fmi2Component c, Stage stage, bool reset = true) {
+        if (reset) {
+            ASSERT_EQ(fmi2Reset(c), fmi2OK);
+        }
+        if (stage == Stage::instantiated) return;
+        ASSERT_EQ(fmi2EnterInitializationMode(c), fmi2OK);
+        if (stage == Stage::initialization) return;
+        ASSERT_EQ(fmi2ExitInitializationMode(c), fmi2OK);
+    }
 };
 
 TEST_F(Api, WrongGuidOrEmptyNameIsRefusedWithAMessage) {
@@ -77,43 +88,92 @@ TEST_F(Api, NullAndFreedHandlesGiveErrors) {
 }
 
 TEST_F(Api, CallsInTheWrongModeAreRefused) {
+    // Each refusal leaves the instance in the error mode (ErrorModeHoldsUntilResetOrRestore); a reset
+    // brings it back to the mode the next check needs.
     fmi2Component c = make(fmi2CoSimulation);
     expect_refused(fmi2DoStep(c, 0.0, 0.1, fmi2True));  // before initialization
+    back_to(c, Stage::instantiated);
     fmi2Real x[2];
     expect_refused(fmi2GetContinuousStates(c, x, 2));  // a Model Exchange function
-    ASSERT_EQ(fmi2EnterInitializationMode(c), fmi2OK);
+    back_to(c, Stage::initialization);
     expect_refused(fmi2SetupExperiment(c, 0, 0, 0, 0, 0));
-    ASSERT_EQ(fmi2ExitInitializationMode(c), fmi2OK);
+    back_to(c, Stage::initialized);
     const fmi2ValueReference g = vr("g");
     const fmi2Real value = 1.0;
     expect_refused(fmi2SetReal(c, &g, 1, &value));  // fixed parameter after initialization
+    back_to(c, Stage::initialized);
     expect_refused(fmi2CancelStep(c));
     fmi2FreeInstance(c);
 }
 
 TEST_F(Api, BadArgumentsAreRefused) {
     fmi2Component c = make(fmi2CoSimulation);
-    const fmi2ValueReference unknown = 100000, g = vr("g"), e = vr("e"), label = vr("label");
+    const fmi2ValueReference unknown = 100000, g = vr("g"), e = vr("e"), label = vr("label"), material = vr("material");
     fmi2Real r = 0;
     expect_refused(fmi2GetReal(c, &g, 1, &r));  // reading before initialization mode
-    ASSERT_EQ(fmi2EnterInitializationMode(c), fmi2OK);
+    back_to(c, Stage::initialization);
     expect_refused(fmi2GetReal(c, &unknown, 1, &r));
+    back_to(c, Stage::initialization);
     expect_refused(fmi2GetReal(c, nullptr, 1, &r));
+    back_to(c, Stage::initialization);
     expect_refused(fmi2GetReal(c, &g, 1, nullptr));
+    back_to(c, Stage::initialization);
     fmi2Integer i = 0;
     expect_refused(fmi2GetInteger(c, &g, 1, &i));  // g is a Real
+    back_to(c, Stage::initialization);
     const fmi2Real nan = std::numeric_limits<double>::quiet_NaN(), too_big = 2.0;
     expect_refused(fmi2SetReal(c, &g, 1, &nan));
+    back_to(c, Stage::initialization);
     expect_refused(fmi2SetReal(c, &e, 1, &too_big));
-    const fmi2String bad_label = "feather";
-    expect_refused(fmi2SetString(c, &label, 1, &bad_label));
-    const fmi2String null_label = nullptr;
-    expect_refused(fmi2SetString(c, &label, 1, &null_label));
-    const fmi2String categories[] = {"noSuchCategory"};
-    expect_refused(fmi2SetDebugLogging(c, fmi2True, 1, categories));
-    // Nothing was written by the refused calls.
+    // Nothing was written by the refused call (values stay readable in the error mode, for diagnosis).
     ASSERT_EQ(fmi2GetReal(c, &e, 1, &r), fmi2OK);
     EXPECT_DOUBLE_EQ(r, 0.8);
+    back_to(c, Stage::initialization);
+    const fmi2String null_label = nullptr;
+    expect_refused(fmi2SetString(c, &label, 1, &null_label));
+    back_to(c, Stage::initialization);
+    const fmi2Integer no_such_item = 7;
+    expect_refused(fmi2SetInteger(c, &material, 1, &no_such_item));
+    back_to(c, Stage::initialization);
+    const fmi2String categories[] = {"noSuchCategory"};
+    expect_refused(fmi2SetDebugLogging(c, fmi2True, 1, categories));
+    fmi2FreeInstance(c);
+}
+
+TEST_F(Api, ChoiceIsAnEnumerationSetByItemValue) {
+    fmi2Component c = make(fmi2CoSimulation);
+    const fmi2ValueReference material = vr("material");
+    const fmi2Integer steel = 2;  // BallMaterial::steel (test_blocks.hpp)
+    ASSERT_EQ(fmi2SetInteger(c, &material, 1, &steel), fmi2OK);
+    back_to(c, Stage::initialized, false);
+    fmi2Integer read = 0;
+    ASSERT_EQ(fmi2GetInteger(c, &material, 1, &read), fmi2OK);
+    EXPECT_EQ(read, 2);
+    fmi2FreeInstance(c);
+}
+
+TEST_F(Api, ErrorModeHoldsUntilResetOrRestore) {
+    fmi2Component c = make(fmi2CoSimulation);
+    back_to(c, Stage::initialized, false);
+    ASSERT_EQ(fmi2DoStep(c, 0.0, 0.1, fmi2True), fmi2OK);
+    fmi2FMUstate saved = nullptr;
+    ASSERT_EQ(fmi2GetFMUstate(c, &saved), fmi2OK);
+    const fmi2ValueReference g = vr("g"), h = vr("h");
+    const fmi2Real value = 1.0;
+    expect_refused(fmi2SetReal(c, &g, 1, &value));  // an error: the instance is now in the error mode
+    expect_refused(fmi2DoStep(c, 0.1, 0.1, fmi2True));
+    fmi2FMUstate in_error = nullptr;
+    expect_refused(fmi2GetFMUstate(c, &in_error));  // a state taken now could not be continued from
+    fmi2Real height = 0.0;
+    EXPECT_EQ(fmi2GetReal(c, &h, 1, &height), fmi2OK);  // reads stay possible, for diagnosis
+    // Restoring a state saved before the error continues from it, in its mode.
+    ASSERT_EQ(fmi2SetFMUstate(c, saved), fmi2OK);
+    EXPECT_EQ(fmi2DoStep(c, 0.1, 0.1, fmi2True), fmi2OK);
+    ASSERT_EQ(fmi2FreeFMUstate(c, &saved), fmi2OK);
+    // So does a reset, from the start.
+    expect_refused(fmi2SetReal(c, &g, 1, &value));
+    back_to(c, Stage::initialized);
+    EXPECT_EQ(fmi2DoStep(c, 0.0, 0.1, fmi2True), fmi2OK);
     fmi2FreeInstance(c);
 }
 
@@ -221,7 +281,11 @@ TEST_F(Api, ModelExchangeSequenceWithEventsAndLogging) {
     }
     ASSERT_EQ(fmi2GetEventIndicators(c, z, 1), fmi2OK);
     EXPECT_GT(z[0], 0.0);
-    expect_refused(fmi2GetEventIndicators(c, z, 2));  // wrong count
+    fmi2FMUstate before = nullptr;
+    ASSERT_EQ(fmi2GetFMUstate(c, &before), fmi2OK);
+    expect_refused(fmi2GetEventIndicators(c, z, 2));  // wrong count: the instance enters the error mode
+    ASSERT_EQ(fmi2SetFMUstate(c, before), fmi2OK);    // and continues from the state saved before it
+    ASSERT_EQ(fmi2FreeFMUstate(c, &before), fmi2OK);
     ASSERT_EQ(fmi2SetTime(c, 0.25), fmi2OK);
     ASSERT_EQ(fmi2EnterEventMode(c), fmi2OK);
     ASSERT_EQ(fmi2NewDiscreteStates(c, &info), fmi2OK);

@@ -5,6 +5,7 @@
 
 #include "fmu/cs_solver.hpp"
 #include "fmu/model_runner.hpp"
+#include "fmu/testing/block_driver.hpp"
 #include "test_blocks.hpp"
 
 namespace {
@@ -12,17 +13,9 @@ namespace {
 using fmu_test::Ball;
 using fmu_test::BallData;
 
-struct BallRun {
-    fmu::ModelRunner runner{std::make_unique<Ball>()};
-    std::unique_ptr<fmu::CsSolver> solver;
-    BallData& data() { return static_cast<Ball&>(runner.model()).data(); }
-    void start(double tol = 1e-10) {
-        runner.set_initializing(true);
-        runner.ensure_evaluated();
-        runner.set_initializing(false);
-        solver = std::make_unique<fmu::CsSolver>(runner, tol);
-        runner.event_iteration();
-    }
+// The shared driver at the tolerance the closed forms below are checked to.
+struct BallRun : fmu::testing::BlockDriver<Ball> {
+    BallRun() : BlockDriver(1e-10) {}
 };
 
 TEST(RuntimeSolver, StateEventFoundAtTheClosedFormImpactTime) {
@@ -73,7 +66,7 @@ TEST(RuntimeSolver, IndicatorsWithoutStatesAreLocatedByBisection) {
 TEST(RuntimeSolver, InitializeRunsOnReadsDuringInitialization) {
     BallRun run;
     run.data().h0 = 2.5;
-    run.runner.set_initializing(true);
+    run.enter_initialization();
     run.runner.ensure_evaluated();
     EXPECT_DOUBLE_EQ(run.data().h, 2.5);  // the calculated start follows the parameter
 }

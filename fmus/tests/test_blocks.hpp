@@ -9,6 +9,9 @@ namespace fmu_test {
 
 // A ball dropped from h0 under gravity g, bouncing with restitution e: a state event at h = 0.
 // Closed form: first impact at t1 = sqrt(2 h0 / g) with speed g t1; after it the speed is e g t1.
+// A choice (an FMI Enumeration): what the ball is made of; values as the model description gives them.
+enum class BallMaterial : std::int32_t { rubber = 1, steel = 2 };
+
 struct BallData {
     double g = 9.81;
     double e = 0.8;
@@ -17,6 +20,7 @@ struct BallData {
     std::int32_t max_bounces = 1000;
     bool enabled = true;
     fmu::FixedString<15> label = "ball";
+    BallMaterial material = BallMaterial::rubber;
     double u = 0.0;  // an input the output passes through
     double h = 1.0, v = 0.0;
     double der_h = 0.0, der_v = 0.0;
@@ -35,7 +39,9 @@ public:
         t.parameter("drag", &BallData::drag, "1/s", "Linear drag").range(0.0, 10.0).tunable();
         t.parameter("max_bounces", &BallData::max_bounces, "", "Stop after this many").range(1, 1000000);
         t.parameter("enabled", &BallData::enabled, "", "Gravity on");
-        t.parameter("label", &BallData::label, "", "A name").one_of({"ball", "stone"});
+        t.parameter("label", &BallData::label, "", "A name");
+        t.choice("material", &BallData::material, {{"rubber", BallMaterial::rubber}, {"steel", BallMaterial::steel}},
+                 "What the ball is made of");
         t.input("u", &BallData::u, "1", "Pass-through input");
         auto h = t.state("h", &BallData::h, &BallData::der_h, "m", "Height").calculated_start();
         t.state("v", &BallData::v, &BallData::der_v, "m/s", "Velocity").derivative_depends_on({"v"});

@@ -52,13 +52,6 @@ private:
     std::unique_ptr<xmlTextWriter, WriterDeleter> writer_;
 };
 
-std::string description_with_choices(const Variable& v) {
-    if (v.allowed_values.empty()) return v.description;
-    std::string text = v.description + " (one of:";
-    for (std::size_t i = 0; i < v.allowed_values.size(); ++i) text += (i ? ", " : " ") + v.allowed_values[i];
-    return text + ")";
-}
-
 void write_unit(Writer& w, const UnitDefinition& u) {
     w.start("Unit");
     w.attribute("name", std::string(u.name));
@@ -146,6 +139,28 @@ std::string model_description_xml(const Model& model) {
         w.end();
     }
 
+    // Each choice's items, as a type its Enumeration variable declares (FMI 2.0 section 2.2.3).
+    bool any_choice = false;
+    for (const auto& v : vars) any_choice = any_choice || v.type == ValueType::Enumeration;
+    if (any_choice) {
+        w.start("TypeDefinitions");
+        for (const auto& v : vars) {
+            if (v.type != ValueType::Enumeration) continue;
+            w.start("SimpleType");
+            w.attribute("name", v.declared_type);
+            w.start("Enumeration");
+            for (const auto& item : v.items) {
+                w.start("Item");
+                w.attribute("name", item.name);
+                w.attribute("value", item.value);
+                w.end();
+            }
+            w.end();
+            w.end();
+        }
+        w.end();
+    }
+
     w.start("LogCategories");
     for (std::size_t i = 0; i < std::size(log_categories); ++i) {
         w.start("Category");
@@ -169,11 +184,12 @@ std::string model_description_xml(const Model& model) {
         w.start("ScalarVariable");
         w.attribute("name", v.name);
         w.attribute("valueReference", std::to_string(v.value_reference));
-        w.attribute("description", description_with_choices(v));
+        w.attribute("description", v.description);
         w.attribute("causality", std::string(to_string(v.causality)));
         w.attribute("variability", std::string(to_string(v.variability)));
         if (v.initial != Initial::none) w.attribute("initial", std::string(to_string(v.initial)));
         w.start(std::string(to_string(v.type)).c_str());
+        if (v.type == ValueType::Enumeration) w.attribute("declaredType", v.declared_type);
         if (v.type == ValueType::Real && !v.unit.empty()) w.attribute("unit", v.unit);
         if (v.has_start()) w.attribute("start", start_text(v, default_bytes));
         if (v.type == ValueType::Real || v.type == ValueType::Integer) {

@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "fmu/description.hpp"
+#include "fmu/value_access.hpp"
 
 namespace fmu {
 
@@ -32,14 +33,17 @@ std::string escape(std::string_view text) {
 }
 
 std::string range_text(const Variable& v) {
-    if (!v.allowed_values.empty()) {
-        std::string s;
-        for (const auto& a : v.allowed_values) s += (s.empty() ? "" : ", ") + a;
-        return s;
-    }
+    if (v.type == ValueType::Enumeration) return v.item_names();
     if (!v.min && !v.max) return "";
     return "[" + (v.min ? format_real(*v.min) : std::string("−∞")) + ", " +
            (v.max ? format_real(*v.max) : std::string("∞")) + "]";
+}
+
+// A choice's start by item name (the model description gives its integer).
+std::string shown_start(const Variable& v, std::span<const std::byte> bytes) {
+    if (v.type == ValueType::Enumeration)
+        if (const auto* item = v.item_valued(read_integer(bytes, v))) return item->name;
+    return start_text(v, bytes);
 }
 
 }  // namespace
@@ -73,7 +77,7 @@ std::string documentation_html(const Model& model) {
         for (const auto& v : model.table().variables()) {
             if (v.causality != causality) continue;
             rows += "<tr><td><code>" + escape(v.name) + "</code></td><td>" + std::string(to_string(v.type)) +
-                    "</td><td>" + escape(v.unit) + "</td><td>" + (v.has_start() ? escape(start_text(v, bytes)) : "") +
+                    "</td><td>" + escape(v.unit) + "</td><td>" + (v.has_start() ? escape(shown_start(v, bytes)) : "") +
                     "</td><td>" + escape(range_text(v)) + "</td><td>" + std::string(to_string(v.variability)) +
                     "</td><td>" + escape(v.description) + "</td></tr>\n";
         }

@@ -23,10 +23,10 @@ void MagnetometerBlock::declare(fmu::Table<MagnetometerData>& t) {
                 "Bridge and amplifier offset referred to the output; unchanged by set/reset pulses (the pulses "
                 "flip the field term)")
         .range(-1.0, 1.0);
-    t.parameter("set_reset_source", &D::set_reset_source, "",
-                "Who pulses the set/reset strap: input (set_reset_command, the on-board computer), timer (the "
-                "sensor alternates set and reset every set_reset_period by itself) or none (set at power-up only)")
-        .one_of({"input", "timer", "none"});
+    t.choice("set_reset_source", &D::set_reset_source,
+             {{"input", SetResetSource::input}, {"timer", SetResetSource::timer}, {"none", SetResetSource::none}},
+             "Who pulses the set/reset strap: input (set_reset_command, the on-board computer), timer (the "
+             "sensor alternates set and reset every set_reset_period by itself) or none (set at power-up only)");
     t.parameter("set_reset_period", &D::set_reset_period, "s",
                 "Time between set/reset pulses when set_reset_source = timer")
         .min(1e-4);
@@ -130,7 +130,7 @@ void MagnetometerBlock::initialize(double t) {
     // The sensor has been powered long before the simulation starts: its filter is in steady state.
     d.b_filt = multiply(sensor_matrix(d.cross_axis, d.misalignment), d.mag_body);
     d.set_polarity = true;  // the first pulse at power-up is a set pulse
-    d.next_set_reset = d.set_reset_source == "timer" ? t + d.set_reset_period : fmu::no_time_event;
+    d.next_set_reset = d.set_reset_source == SetResetSource::timer ? t + d.set_reset_period : fmu::no_time_event;
     d.noise_start = t;
     d.noise_index = no_noise_index;  // interval 0 is drawn by the first evaluate
 }
@@ -145,7 +145,7 @@ void MagnetometerBlock::evaluate(double t) {
                             .offset = d.bridge_offset,
                             .v_low = d.v_rail_low,
                             .v_high = d.v_rail_high};
-    if (d.set_reset_source == "input") d.set_polarity = d.set_reset_command;
+    if (d.set_reset_source == SetResetSource::input) d.set_polarity = d.set_reset_command;
     const double polarity = d.set_polarity ? 1.0 : -1.0;
     for (int i = 0; i < 3; ++i) d.v_out[i] = output_voltage(stage, d.b_filt[i], d.noise[i], polarity);
     d.v_ref = std::clamp(d.v_null, d.v_rail_low, d.v_rail_high);

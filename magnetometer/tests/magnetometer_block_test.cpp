@@ -10,6 +10,7 @@
 #include "fmu/cs_solver.hpp"
 #include "fmu/errors.hpp"
 #include "fmu/model_runner.hpp"
+#include "fmu/testing/block_driver.hpp"
 #include "magnetometer/magnetometer_block.hpp"
 
 namespace magnetometer {
@@ -17,24 +18,7 @@ namespace {
 
 constexpr double gauss = tesla_per_gauss;
 
-struct Simulation {
-    fmu::ModelRunner runner{std::make_unique<MagnetometerBlock>()};
-    std::unique_ptr<fmu::CsSolver> solver;
-
-    MagnetometerData& data() { return static_cast<MagnetometerBlock&>(runner.model()).data(); }
-    void start() {  // what exiting initialization mode does
-        runner.set_initializing(true);
-        runner.ensure_evaluated();
-        runner.set_initializing(false);
-        solver = std::make_unique<fmu::CsSolver>(runner, 1e-8);
-        runner.event_iteration();
-    }
-    void advance_to(double t) {
-        solver->invalidate();
-        solver->advance(t);
-        runner.ensure_evaluated();
-    }
-};
+using Simulation = fmu::testing::BlockDriver<MagnetometerBlock>;
 
 TEST(MagnetometerBlock, ZeroFieldGivesTwoAndAHalfVoltsOnEveryAxis) {
     Simulation sim;
@@ -69,7 +53,7 @@ TEST(MagnetometerBlock, TimerSetResetFlipsTheFieldTermAndTheOffsetStays) {
     d.noise_rms = 0.0;
     d.cross_axis = 0.0;
     d.bridge_offset = 0.02;
-    d.set_reset_source = "timer";
+    d.set_reset_source = SetResetSource::timer;
     d.set_reset_period = 0.5;
     d.mag_body = {0.3 * gauss, -0.2 * gauss, 0.1 * gauss};
     sim.start();
@@ -117,7 +101,7 @@ TEST(MagnetometerBlock, CommandedSetResetFollowsTheInputWithoutTimeEvents) {
 
 TEST(MagnetometerBlock, NoSetResetKeepsThePolarity) {
     Simulation sim;
-    sim.data().set_reset_source = "none";
+    sim.data().set_reset_source = SetResetSource::none;
     sim.data().noise_rms = 0.0;
     sim.start();
     EXPECT_EQ(sim.runner.next_time_event(), fmu::no_time_event);
@@ -128,7 +112,7 @@ TEST(MagnetometerBlock, NoSetResetKeepsThePolarity) {
 std::vector<double> noise_trace(std::int32_t seed, int samples) {
     Simulation sim;
     sim.data().noise_seed = seed;
-    sim.data().set_reset_source = "none";
+    sim.data().set_reset_source = SetResetSource::none;
     sim.data().bridge_offset = 0.0;
     sim.start();
     std::vector<double> trace;
@@ -155,7 +139,7 @@ TEST(MagnetometerBlock, NoiseIsSeededAndHasTheDatasheetRms) {
 TEST(MagnetometerBlock, HeldNoiseNeedsNoTimeEventsAndIsAFunctionOfTheInterval) {
     Simulation sim;
     auto& d = sim.data();
-    d.set_reset_source = "none";
+    d.set_reset_source = SetResetSource::none;
     d.bridge_offset = 0.0;
     d.noise_seed = 1;
     sim.start();
@@ -176,7 +160,7 @@ TEST(MagnetometerBlock, HeldNoiseNeedsNoTimeEventsAndIsAFunctionOfTheInterval) {
 
 TEST(MagnetometerBlock, TimeBeyondTheNoiseIndexLimitIsAnErrorNotAnOverflow) {
     Simulation sim;
-    sim.data().set_reset_source = "none";
+    sim.data().set_reset_source = SetResetSource::none;
     sim.start();
     sim.runner.set_time(1e300);
     EXPECT_THROW(sim.runner.ensure_evaluated(), fmu::Error);

@@ -17,6 +17,7 @@
 
 #include "fmu/cs_solver.hpp"
 #include "fmu/model_runner.hpp"
+#include "fmu/testing/block_driver.hpp"
 #include "ssr_plant/ssr_plant_block.hpp"
 
 namespace {
@@ -34,16 +35,14 @@ struct Run {
 
 Run run_once(const char* fidelity, double duration, double h, bool held) {
     const auto start = std::chrono::steady_clock::now();
-    fmu::ModelRunner runner{std::make_unique<ssr_plant::SsrPlantBlock>()};
-    auto& d = static_cast<ssr_plant::SsrPlantBlock&>(runner.model()).data();
-    d.fidelity.assign(fidelity);
-    d.angular_response = "cosine";
+    fmu::testing::BlockDriver<ssr_plant::SsrPlantBlock> plant(1e-6);
+    auto& d = plant.data();
+    plant.set_choice("fidelity", fidelity);
+    plant.set_choice("angular_response", "cosine");
     d.sun_body = seed_sun(held ? 0.3 : 0.0);
-    runner.set_initializing(true);
-    runner.ensure_evaluated();
-    runner.set_initializing(false);
-    fmu::CsSolver solver(runner, 1e-6);
-    runner.event_iteration();
+    plant.start();
+    auto& runner = plant.runner;
+    auto& solver = *plant.solver;
     Run r;
     r.communication_steps = std::lround(duration / h);
     for (long k = 1; k <= r.communication_steps; ++k) {

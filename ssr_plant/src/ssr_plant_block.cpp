@@ -1,7 +1,6 @@
 #include "ssr_plant/ssr_plant_block.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -17,19 +16,18 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
     t.input("albedo_face", &D::albedo_face, "W/m2", "Earth albedo irradiance on each face (+x, -x, +y, -y, +z, -z)")
         .min(0.0);
 
-    t.parameter("fidelity", &D::fidelity, "",
-                "switching: every PWM edge a time event, S/H tracks while the gate is on; averaged: state-space "
-                "average over a PWM period, no PWM events, S/H replaced by the continuous differential current")
-        .one_of({"switching", "averaged"});
-    t.parameter("angular_response", &D::angular_response, "",
-                "Panel response to the incidence angle: cosine law (seed 000 eq. 1) or Kelly cosine (fig. 4)")
-        .one_of({"cosine", "kelly"});
-    t.parameter("modulation", &D::modulation, "",
-                "PWM modulator (switching fidelity): latched_natural (default: gate on at each period start, off "
-                "when the live controller output falls to the carrier, a state event; seed scenario 15.04 V) or "
-                "regular (controller sampled once per period, pulse of D*T; a 0/1 limit cycle at 300 per volt, "
-                "15.28 V at 3 per volt)")
-        .one_of({"latched_natural", "regular"});
+    t.choice("fidelity", &D::fidelity, {{"switching", Fidelity::switching}, {"averaged", Fidelity::averaged}},
+             "switching: every PWM edge a time event, S/H tracks while the gate is on; averaged: state-space "
+             "average over a PWM period, no PWM events, S/H replaced by the continuous differential current");
+    t.choice("angular_response", &D::angular_response,
+             {{"cosine", AngularResponse::cosine}, {"kelly", AngularResponse::kelly}},
+             "Panel response to the incidence angle: cosine law (seed 000 eq. 1) or Kelly cosine (fig. 4)");
+    t.choice("modulation", &D::modulation,
+             {{"latched_natural", Modulation::latched_natural}, {"regular", Modulation::regular}},
+             "PWM modulator (switching fidelity): latched_natural (default: gate on at each period start, off "
+             "when the live controller output falls to the carrier, a state event; seed scenario 15.04 V) or "
+             "regular (controller sampled once per period, pulse of D*T; a 0/1 limit cycle at 300 per volt, "
+             "15.28 V at 3 per volt)");
     t.parameter("rated_irradiance", &D::rated_irradiance, "W/m2",
                 "Irradiance of the datasheet ratings (seed: 10 Wp at 1000 W/m2)")
         .min(1.0);
@@ -88,11 +86,11 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
         .range(0.0, 1.0);
     t.parameter("soc_disconnect", &D::soc_disconnect, "1", "Hysteresis: disconnect at this state of charge (full)")
         .range(0.0, 1.0);
-    t.parameter("charge_control", &D::charge_control, "",
-                "What the charge hysteresis watches: voltage (default: connect when the battery's terminal voltage "
-                "falls to v_connect and the bus can charge it, disconnect when the charge current tapers to "
-                "charge_end_current) or state_of_charge (soc_connect, soc_disconnect)")
-        .one_of({"voltage", "state_of_charge"});
+    t.choice("charge_control", &D::charge_control,
+             {{"voltage", ChargeControl::voltage}, {"state_of_charge", ChargeControl::state_of_charge}},
+             "What the charge hysteresis watches: voltage (default: connect when the battery's terminal voltage "
+             "falls to v_connect and the bus can charge it, disconnect when the charge current tapers to "
+             "charge_end_current) or state_of_charge (soc_connect, soc_disconnect)");
     t.parameter("v_connect", &D::v_connect, "V",
                 "Battery terminal voltage at which the charge switch connects (assumed 12.5 V: rested soc 0.8)")
         .range(1.0, 100.0);
@@ -175,24 +173,9 @@ fmu::ModelInfo SsrPlantBlock::describe() {
 Parameters SsrPlantBlock::parameters() const {
     const auto& d = data();
     Parameters p{};
-    if (d.fidelity == "switching")
-        p.fidelity = Fidelity::switching;
-    else if (d.fidelity == "averaged")
-        p.fidelity = Fidelity::averaged;
-    else
-        throw fmu::Error("fidelity must be switching or averaged");
-    if (d.angular_response == "cosine")
-        p.angular_response = AngularResponse::cosine;
-    else if (d.angular_response == "kelly")
-        p.angular_response = AngularResponse::kelly;
-    else
-        throw fmu::Error("angular_response must be cosine or kelly");
-    if (d.modulation == "latched_natural")
-        p.modulation = Modulation::latched_natural;
-    else if (d.modulation == "regular")
-        p.modulation = Modulation::regular;
-    else
-        throw fmu::Error("modulation must be latched_natural or regular");
+    p.fidelity = d.fidelity;
+    p.angular_response = d.angular_response;
+    p.modulation = d.modulation;
     p.panel.rated_irradiance = d.rated_irradiance;
     p.panel.short_circuit_current = d.panel_isc;
     p.panel.open_circuit_voltage = d.panel_voc;
@@ -217,12 +200,7 @@ Parameters SsrPlantBlock::parameters() const {
     p.battery.diode_resistance = d.battery_diode_resistance;
     p.battery.soc_connect = d.soc_connect;
     p.battery.soc_disconnect = d.soc_disconnect;
-    if (d.charge_control == "voltage")
-        p.battery.charge_control = ChargeControl::voltage;
-    else if (d.charge_control == "state_of_charge")
-        p.battery.charge_control = ChargeControl::state_of_charge;
-    else
-        throw fmu::Error("charge_control must be voltage or state_of_charge");
+    p.battery.charge_control = d.charge_control;
     p.battery.v_connect = d.v_connect;
     p.battery.charge_end_current = d.charge_end_current;
     p.battery.charge_voltage = d.charge_voltage;
@@ -241,20 +219,20 @@ ssr_plant::Model fitted(const Parameters& p) {
 }
 }  // namespace
 
+void SsrPlantBlock::configure() {
+    model_ = fitted(parameters());  // throws fmu::Error with the core's reason
+    illumination_.reset();
+    bus_side_memo_.clear();
+}
+
 const ssr_plant::Model& SsrPlantBlock::plant() const {
-    const std::byte* now = reinterpret_cast<const std::byte*>(&data()) + parameter_bytes_begin;
-    if (!model_ || std::memcmp(now, model_key_.data(), model_key_.size()) != 0) {
-        model_ = make_model(parameters());
-        std::memcpy(model_key_.data(), now, model_key_.size());
-        illumination_.reset();
-    }
+    if (!model_) throw fmu::Error("ssr_plant: used before configure()");  // the runtime configures first
     return *model_;
 }
 
 const Illumination& SsrPlantBlock::illumination(const ssr_plant::Model& m) const {
     const Inputs u = inputs();  // checked on every use: a bad input is reported where it is used
-    // Inputs{} fields are all doubles (no padding): equal bytes are equal values.
-    if (!illumination_ || std::memcmp(&u, &illumination_inputs_, sizeof u) != 0) {
+    if (!illumination_ || !(u == illumination_inputs_)) {
         illumination_ = illuminate(m, u);
         illumination_inputs_ = u;
         bus_side_memo_.clear();
@@ -305,7 +283,7 @@ void SsrPlantBlock::check_state() const {
 }
 
 void SsrPlantBlock::validate() const {
-    fitted(parameters());  // throws fmu::Error with the core's reason
+    // The core's own checks run in configure(), right after, at exit of initialization.
     if (!(data().soc_connect < data().soc_disconnect)) throw fmu::Error("soc_connect must be below soc_disconnect");
 }
 

@@ -14,42 +14,27 @@
 #include "fmu/cs_solver.hpp"
 #include "fmu/errors.hpp"
 #include "fmu/model_runner.hpp"
+#include "fmu/testing/block_driver.hpp"
 #include "ssr_plant/angular_response.hpp"
 #include "ssr_plant/ssr_plant_block.hpp"
 
 namespace ssr_plant {
 namespace {
 
-struct PlantRun {
-    fmu::ModelRunner runner{std::make_unique<SsrPlantBlock>()};
-    std::unique_ptr<fmu::CsSolver> solver;
-    SsrPlantData& data() { return static_cast<SsrPlantBlock&>(runner.model()).data(); }
+struct PlantRun : fmu::testing::BlockDriver<SsrPlantBlock> {
     // The hand bounds of the tests in this file are derived for the regular modulator at 3 per volt (the
     // model's earlier reading of the seed's "300" as 300 %/V) and the battery controlled on its state of
     // charge without charge polarization; the seed's 300 per volt with the latched_natural modulator is
     // tested below (SsrFmuModulation), the voltage-controlled charge in the core tests.
-    explicit PlantRun(bool earlier_reading = true) {
+    explicit PlantRun(bool earlier_reading = true) : BlockDriver(1e-6) {
         if (!earlier_reading) return;
         data().controller_gain = 3.0;
-        data().modulation = "regular";
-        data().charge_control = "state_of_charge";  // and the earlier battery (see earlier_reading.hpp)
+        set_choice("modulation", "regular");
+        set_choice("charge_control", "state_of_charge");  // and the earlier battery (see earlier_reading.hpp)
         data().charge_voltage = 0.0;
         data().charge_polarization = 0.0;
     }
-    void start() {
-        runner.set_initializing(true);
-        runner.ensure_evaluated();
-        runner.set_initializing(false);
-        runner.model().validate();
-        solver = std::make_unique<fmu::CsSolver>(runner, 1e-6);
-        runner.event_iteration();
-    }
-    void step_to(double t) {
-        runner.mark_changed();
-        solver->invalidate();  // inputs changed at the communication point
-        solver->advance(t);
-        runner.ensure_evaluated();
-    }
+    void step_to(double t) { advance_to(t); }
 };
 
 // Seed 000 §4: s = (sin φ sin θ, cos φ sin θ, cos θ), φ̇ = 1.26 rad/s, θ̇ = 6.28 rad/s.
@@ -62,7 +47,7 @@ std::array<double, 3> seed_sun(double t) {
 // calibration a satellite would do on the ground (eq. 5 divides by it).
 double normal_incidence_isc() {
     PlantRun run;
-    run.data().angular_response = "cosine";
+    run.set_choice("angular_response", "cosine");
     run.data().sun_body = {1.0, 0.0, 0.0};
     run.start();
     return run.data().i_sc[0];
@@ -95,8 +80,8 @@ SeedResult run_seed(const char* fidelity) {
     SeedResult r;
     r.isc0 = normal_incidence_isc();
     PlantRun run;
-    run.data().fidelity.assign(fidelity);
-    run.data().angular_response = "cosine";  // eq. 5 assumes the cosine law
+    run.set_choice("fidelity", fidelity);
+    run.set_choice("angular_response", "cosine");  // eq. 5 assumes the cosine law
     run.data().sun_body = seed_sun(0.0);
     run.start();
     const double soc_start = run.data().soc;
@@ -241,8 +226,8 @@ struct FineResult {
 FineResult fine_sun_error(const char* fidelity, double duration) {
     const double isc0 = normal_incidence_isc();
     PlantRun run;
-    run.data().fidelity.assign(fidelity);
-    run.data().angular_response = "cosine";
+    run.set_choice("fidelity", fidelity);
+    run.set_choice("angular_response", "cosine");
     run.data().sun_body = seed_sun(0.0);
     run.start();
     const double h = 10e-6;
@@ -291,8 +276,8 @@ TEST(SsrFmu, SampleHoldErrorIsBoundedByTheOffTime) {
 std::array<double, 6> face_currents(const char* fidelity, const char* law, std::array<double, 3> sun, double irr,
                                     std::array<double, 6> albedo) {
     PlantRun run;
-    run.data().fidelity.assign(fidelity);
-    run.data().angular_response.assign(law);
+    run.set_choice("fidelity", fidelity);
+    run.set_choice("angular_response", law);
     run.data().sun_body = sun;
     run.data().irradiance = irr;
     run.data().albedo_face = albedo;
@@ -330,8 +315,8 @@ TEST(SsrFmu, FaceSampleHoldTracksWhileTheGateIsOnAndHoldsWhileItIsOff) {
         const bool switching = std::string_view(fidelity) == "switching";
         PlantRun run;
         auto& d = run.data();
-        d.fidelity.assign(fidelity);
-        d.angular_response = "cosine";
+        run.set_choice("fidelity", fidelity);
+        run.set_choice("angular_response", "cosine");
         d.sun_body = {0.0, 0.0, 1.0};
         run.start();
         const double t0 = 0.1, T = 1.0 / d.pwm_frequency;
@@ -372,7 +357,7 @@ TEST(SsrFmu, FaceSampleHoldTracksWhileTheGateIsOnAndHoldsWhileItIsOff) {
 // every 2 µs over 5 periods after the loop has settled.
 TEST(SsrFmu, SwitchingRippleIsTheLoadChargeOfOneOnTime) {
     PlantRun run;
-    run.data().angular_response = "cosine";
+    run.set_choice("angular_response", "cosine");
     run.data().sun_body = seed_sun(0.3);
     run.start();
     run.step_to(0.1);
@@ -445,7 +430,7 @@ TEST(SsrFmu, EclipseBatteryThroughItsDiodeCarriesTheLoadAtThePredictedRate) {
 void expect_charge_cycle(const char* fidelity) {
     PlantRun run;
     auto& d = run.data();
-    d.fidelity.assign(fidelity);
+    run.set_choice("fidelity", fidelity);
     d.sun_body = {0.0, 0.0, 1.0};
     d.battery_capacity = 7.2;
     d.soc_state = 0.79;
@@ -468,17 +453,25 @@ TEST(SsrFmu, ChargeSwitchOpensOnceAtFullCharge) {
     expect_charge_cycle("switching");
 }
 
-// The fitted model is keyed on the bytes [parameter_bytes_begin, parameter_bytes_end) of the data: every
-// parameter must lie inside (or a change of it would go unnoticed), and nothing else (or every input or
-// state change would refit the panel).
-TEST(SsrFmu, ModelKeyCoversExactlyTheParameters) {
-    int parameters = 0;
-    for (const auto& v : SsrPlantBlock::static_table().variables()) {
-        const bool inside = v.offset >= parameter_bytes_begin && v.offset < parameter_bytes_end;
-        EXPECT_EQ(inside, v.causality == fmu::Causality::parameter) << v.name;
-        parameters += v.causality == fmu::Causality::parameter;
-    }
-    EXPECT_GE(parameters, 30);
+// Every parameter's default is the core's (written once, in parameters.hpp), but for angular_response,
+// which the FMU sets to the measured Kelly response on purpose.
+TEST(SsrFmu, ParameterDefaultsAreTheCores) {
+    const SsrPlantData d{};
+    const Parameters core{};
+    EXPECT_EQ(d.fidelity, core.fidelity);
+    EXPECT_EQ(d.modulation, core.modulation);
+    EXPECT_EQ(d.angular_response, AngularResponse::kelly);
+    EXPECT_EQ(d.panel_isc, core.panel.short_circuit_current);
+    EXPECT_EQ(d.panel_voc, core.panel.open_circuit_voltage);
+    EXPECT_EQ(d.cell_temperature, core.panel.cell_temperature);
+    EXPECT_EQ(d.controller_gain, core.controller_gain);
+    EXPECT_EQ(d.pwm_frequency, core.pwm_frequency);
+    EXPECT_EQ(d.battery_ocv, core.battery.open_circuit_voltage);
+    EXPECT_EQ(d.charge_control, core.battery.charge_control);
+    EXPECT_EQ(d.charge_polarization, core.battery.charge_polarization);
+    // The block's parameters() hands every field to the core unchanged: a default-constructed block
+    // describes the core's default plant but for the angular response.
+    EXPECT_EQ(Inputs{}.irradiance, d.irradiance);
 }
 
 // A load step mid-run (load_resistance is tunable): the cached model must follow. Averaged fidelity, the
@@ -486,13 +479,14 @@ TEST(SsrFmu, ModelKeyCoversExactlyTheParameters) {
 // battery idle) and the duty is the P law 3 (V − 15).
 TEST(SsrFmu, LoadStepRefitsTheCachedModel) {
     PlantRun run;
-    run.data().fidelity = "averaged";
+    run.set_choice("fidelity", "averaged");
     run.data().sun_body = {0.0, 0.0, 1.0};
     run.start();
     run.step_to(0.2);
     const double v90 = run.data().v_bus;
     EXPECT_NEAR(run.data().i_load, v90 / 90.0, 1e-12);
     run.data().load_resistance = 45.0;
+    run.parameters_changed();  // what fmi2SetReal of a tunable parameter does
     run.step_to(0.4);
     const auto& d = run.data();
     EXPECT_NEAR(d.i_load, d.v_bus / 45.0, 1e-12);
@@ -504,7 +498,7 @@ TEST(SsrFmu, LoadStepRefitsTheCachedModel) {
 }
 
 // An FMU-state restore across a parameter change: the restored bytes bring back their parameters, and
-// the model cached for the changed ones must not survive. The run after the restore equals, bit for bit,
+// the block is configured for them again. The run after the restore equals, bit for bit,
 // a run continued from a copy of the saved block.
 TEST(SsrFmu, RestoreAcrossAParameterChangeUsesTheRestoredParameters) {
     PlantRun run;
@@ -514,6 +508,7 @@ TEST(SsrFmu, RestoreAcrossAParameterChangeUsesTheRestoredParameters) {
     const auto saved = run.runner.model().clone();
     const double t_saved = run.runner.time();
     run.data().bus_voltage_reference = 14.0;  // as if set between save and restore (a reset, another run)
+    run.parameters_changed();
     run.step_to(0.02);
     EXPECT_LT(run.data().v_bus, 14.5);  // the change took effect: regulated near 14 + D/3
     run.runner.restore(*saved, t_saved);
@@ -536,10 +531,10 @@ TEST(SsrFmu, InputsAreCheckedAndParametersValidated) {
     PlantRun bad;
     bad.data().soc_connect = 0.95;
     bad.data().soc_disconnect = 0.9;
-    EXPECT_THROW(bad.runner.model().validate(), fmu::Error);
+    EXPECT_THROW(bad.start(), fmu::Error);
     PlantRun inconsistent;
-    inconsistent.data().panel_imp = 0.7;  // above the short-circuit current: no single-diode fit
-    EXPECT_THROW(inconsistent.runner.model().validate(), fmu::Error);
+    inconsistent.data().panel_imp = 0.7;             // above the short-circuit current: no single-diode fit
+    EXPECT_THROW(inconsistent.start(), fmu::Error);  // configure() at exit of initialization
 }
 
 // The seed's 300 per volt (000 §4) with the default latched_natural modulator and in averaged fidelity:
@@ -549,8 +544,8 @@ struct BusFigures {
 };
 BusFigures seed_bus_at_300_per_volt(const char* fidelity) {
     PlantRun run(false);  // the block's defaults: 300 per volt, latched_natural
-    run.data().fidelity.assign(fidelity);
-    run.data().angular_response = "cosine";
+    run.set_choice("fidelity", fidelity);
+    run.set_choice("angular_response", "cosine");
     run.data().sun_body = seed_sun(0.0);
     run.start();
     BusFigures b;

@@ -26,23 +26,29 @@ inline constexpr std::int32_t kMaxSpinWindow = 2048;
 // The distance at which i_sc_norm and i_face_norm hold (1367 W/m², seed 000 §4): 1 AU (IAU 2012).
 inline constexpr double kAstronomicalUnit = 1.495978707e11;  // m
 
+// The panels' angular response the sun methods invert (the `angular_response` choice).
+enum class AngularResponse : std::int32_t { cosine = 0, kelly = 1 };
+// The recursive filter beside the single-frame estimate (the `filter` choice).
+enum class FilterKind : std::int32_t { none = 0, mekf = 1 };
+
 // Every variable of the block (double precision throughout). Defaults of the sensor chain match the other
 // blocks: i_sc_norm is ssr_plant's short-circuit current of one panel at normal incidence and 1367 W/m²,
 // the voltage channel and sensitivity are the HMC2003's (magnetometer block).
 struct EstimatorData {
     // inputs. Their start values describe a consistent, lit, identity attitude (+x face towards the sun,
     // a 30 µT field along +z), so the block alone, unconnected, produces a valid estimate.
-    Vec3d i_sh{0.84754, 0.0, 0.0};                   // A, held differential currents I_sc+k − I_sc−k
-    Faces i_face{0.84754, 0.0, 0.0, 0.0, 0.0, 0.0};  // A, per-face sample/holds (ssr_plant i_face_sh)
-    Vec3d v_mag{2.5, 2.5, 2.8};                      // V, magnetometer outputs X, Y, Z
-    double v_mag_ref = 2.5;                          // V, magnetometer zero-field reference output
-    Vec3d sun_ref{1.0, 0.0, 0.0};                    // 1, sun direction, inertial frame (any length)
-    Vec3d mag_ref{0.0, 0.0, 30e-6};                  // T, geomagnetic field, inertial frame (any length)
+    Vec3d i_sh{kPanelCurrentAt1Au<double>, 0.0, 0.0};  // A, held differential currents I_sc+k − I_sc−k
+    Faces i_face{kPanelCurrentAt1Au<double>, 0.0, 0.0, 0.0, 0.0, 0.0};  // A, per-face sample/holds (i_face_sh)
+    Vec3d v_mag{2.5, 2.5, 2.8};                                         // V, magnetometer outputs X, Y, Z
+    double v_mag_ref = 2.5;                                             // V, magnetometer zero-field reference output
+    Vec3d sun_ref{1.0, 0.0, 0.0};                                       // 1, sun direction, inertial frame (any length)
+    Vec3d mag_ref{0.0, 0.0, 30e-6};           // T, geomagnetic field, inertial frame (any length)
     double sun_distance = kAstronomicalUnit;  // m, satellite to sun (on-board ephemeris; environment sun_distance)
 
     // parameters
-    double sample_period = 0.05;                           // s: 20 Hz, the seed asks for more than 10 Hz
-    Vec3d i_sc_norm{0.84754, 0.84754, 0.84754};            // A: ssr_plant's i_sc0 (000 eq. 5 denominators)
+    double sample_period = 0.05;  // s: 20 Hz, the seed asks for more than 10 Hz
+    Vec3d i_sc_norm{kPanelCurrentAt1Au<double>, kPanelCurrentAt1Au<double>,
+                    kPanelCurrentAt1Au<double>};           // A: ssr_plant's i_sc0 (000 eq. 5 denominators)
     double mag_sensitivity = kHmc2003Sensitivity<double>;  // V/T: 1 V/gauss
     double weight_sun = 0.5;                               // a_1 of 000 eq. 8 (normalized with weight_mag)
     double weight_mag = 0.5;                               // a_2
@@ -51,30 +57,30 @@ struct EstimatorData {
     double i_adc_max = 1.2;
     double v_adc_min = 0.0;  // V: voltage channels (HMC2003 outputs 0…5 V)
     double v_adc_max = 5.0;
-    fmu::FixedString<16> solver = "qmethod";                       // "qmethod" (default, the seeds' method) or "fast"
+    SolverKind solver = EstimatorConfig<double>{}.solver;          // qmethod (the seeds' method) or fast
     double min_sun_norm = kDefaultMinSunNorm<double>;              // 1: eclipse threshold on |s|
     double mag_rail_margin = kDefaultRailMargin<double>;           // V: saturation margin at the range ends
     double min_field = kDefaultMinField<double>;                   // T
     double min_separation_sin = kDefaultMinSeparationSin<double>;  // 1: sin 5°
     // Sun sensing (sun_methods.hpp, docs/sun_methods.md).
-    fmu::FixedString<24> sun_method = "difference";        // difference | inverse_response | cones | three_faces
-    fmu::FixedString<16> angular_response = "cosine";      // cosine (000 eq. 1) | kelly (the table below), as ssr_plant
-    Faces kelly_angle{0.0, 30.0, 50.0, 60.0, 80.0, 85.0};  // deg: ssr_plant's Kelly table (000 fig. 4)
-    Faces kelly_value{1.0, 0.866, 0.635, 0.450, 0.100, 0.0};                  // 1: relative response at those angles
-    Faces i_face_norm{0.84754, 0.84754, 0.84754, 0.84754, 0.84754, 0.84754};  // A: face current at β = 0
-    double face_dark_threshold = 0.02;  // 1: a face is lit above this fraction of i_face_norm
-    double i_face_adc_max = 1.2;        // A: face-current channels span 0 … this
-    double cone_tolerance = 0.03;       // 1: cones' agreement tolerance on the relative response
-    double cube_max_step = 0.0;         // rad: cones may cross the panel cube's forbidden edges by this much
-    double orbit_altitude = 570e3;      // m: cones' Earth-albedo model sees the Earth from this height
-    double cone_fit_tolerance = 0.01;   // 1: cones' albedo-model fit accepted below this RMS misfit (0: off)
-    double cone_albedo_max = 0.4;       // 1: cones' largest fitted albedo on a face toward nadir
+    SunMethod sun_method = SunMethodConfig<double>{}.method;     // difference | inverse_response | cones | three_faces
+    AngularResponse angular_response = AngularResponse::cosine;  // cosine (000 eq. 1) | kelly (the table below)
+    Faces kelly_angle{0.0, 30.0, 50.0, 60.0, 80.0, 85.0};        // deg: ssr_plant's Kelly table (000 fig. 4)
+    Faces kelly_value{1.0, 0.866, 0.635, 0.450, 0.100, 0.0};     // 1: relative response at those angles
+    Faces i_face_norm = SunMethodConfig<double>{}.i_face_norm;   // A: face current at β = 0
+    double face_dark_threshold = 0.02;                           // 1: a face is lit above this fraction of i_face_norm
+    double i_face_adc_max = 1.2;                                 // A: face-current channels span 0 … this
+    double cone_tolerance = 0.03;      // 1: cones' agreement tolerance on the relative response
+    double cube_max_step = 0.0;        // rad: cones may cross the panel cube's forbidden edges by this much
+    double orbit_altitude = 570e3;     // m: cones' Earth-albedo model sees the Earth from this height
+    double cone_fit_tolerance = 0.01;  // 1: cones' albedo-model fit accepted below this RMS misfit (0: off)
+    double cone_albedo_max = 0.4;      // 1: cones' largest fitted albedo on a face toward nadir
     // Rates (rates.md): spin frequencies from the FFT of sun_meas; mean |ω| from successive q_est (004 eq. 4).
     std::int32_t spin_window = 512;  // samples per FFT window (0: off)
     double rate_interval = 2.0;      // s: shortest time between two attitudes in one eq. 4 increment
     std::int32_t rate_window = 8;    // increments averaged (1 = eq. 4 alone)
     // Recursive filter (mekf.hpp, docs/filter.md): none (the seeds' single-frame estimate only) or mekf.
-    fmu::FixedString<8> filter = "none";
+    FilterKind filter = FilterKind::none;
     double filter_sun_sigma = 0.02;        // rad: sun vector noise and model error, 1σ per axis
     double filter_mag_sigma = 0.3e-6;      // T: field vector noise and model error, 1σ per axis
     double filter_rate_noise = 2e-5;       // rad/s: 1σ rate change over 1 s (random walk density, rad/s/√s)
@@ -168,6 +174,8 @@ public:
     double next_time_event() const override;
     void validate() const override;
     void check_state() const override;
+    // The core's configurations from the parameters (the per-sample sun-distance scaling aside).
+    void configure() override;
 
 private:
     void take_sample(double t);
@@ -176,15 +184,15 @@ private:
                        double polarity);
 
     SpinWorkspace spin_;
+    EstimatorConfig<double> config_{};    // at 1 AU (configure())
+    MekfConfig<double> filter_config_{};  // (configure())
 };
 
-// The core's configuration and inputs from the block's variables (exposed for the tests).
+// The core's configuration and inputs from the block's variables (exposed for the tests); the
+// configuration holds at 1 AU, at_sun_distance() scales its panel normalizations to a distance.
 EstimatorConfig<double> config_from(const EstimatorData& d);
+EstimatorConfig<double> at_sun_distance(EstimatorConfig<double> c, double sun_distance);
 SampleInputs<double> inputs_from(const EstimatorData& d);
-// SolverKind of the `solver` parameter's text; throws fmu::Error for any other text.
-SolverKind solver_from(std::string_view name);
-// SunMethod of the `sun_method` parameter's text; throws fmu::Error for any other text.
-SunMethod sun_method_from(std::string_view name);
 // The filter's configuration from the block's parameters.
 MekfConfig<double> filter_config_from(const EstimatorData& d);
 

@@ -25,7 +25,7 @@ namespace environment {
 // Every variable of the block. Defaults: the core's (seed scenario, environment/README.md).
 struct EnvironmentData {
     // --- parameters: attitude motion
-    fmu::FixedString<16> attitude_mode = "spin";                // spin | rigid_body
+    AttitudeMode attitude_mode = EnvironmentParams{}.attitude_mode;
     double spin_phi0 = 0.0;                                     // rad
     double spin_theta0 = 0.0;                                   // rad
     double spin_phi_dot = 1.26;                                 // rad/s, seed 000 section 4
@@ -47,7 +47,7 @@ struct EnvironmentData {
     std::int32_t epoch_minute = UtcDate{}.minute;
     double epoch_second = UtcDate{}.second;  // s
     // --- parameters: sun
-    fmu::FixedString<16> sun_model = "almanac";  // almanac | seed002
+    SunModel sun_model = EnvironmentParams{}.sun_model;
     std::int32_t equinox_year = EnvironmentParams{}.vernal_equinox.year;
     std::int32_t equinox_month = EnvironmentParams{}.vernal_equinox.month;
     std::int32_t equinox_day = EnvironmentParams{}.vernal_equinox.day;
@@ -58,14 +58,14 @@ struct EnvironmentData {
     double solar_constant = EnvironmentParams{}.solar_constant;                            // W/m^2
     bool eclipse_enabled = true;
     // --- parameters: field
-    fmu::FixedString<16> field_model = "igrf14";  // igrf14 | dipole
+    FieldModel field_model = EnvironmentParams{}.field_model;
     std::int32_t igrf_max_degree = EnvironmentParams{}.igrf_max_degree;
     // --- parameters: albedo
     bool albedo_enabled = true;
     double albedo_reflectivity = AlbedoParams{}.reflectivity;  // 1
     std::int32_t albedo_rings = AlbedoParams{}.rings;
     std::int32_t albedo_sectors = AlbedoParams{}.sectors;
-    fmu::FixedString<8> albedo_response = "cosine";  // cosine | kelly: the faces' angular response to albedo
+    AlbedoResponse albedo_response = AlbedoParams{}.response;  // the faces' angular response to albedo
     // --- calculated parameter
     double orbit_period = 0.0;  // s
     // --- continuous states and derivatives
@@ -88,7 +88,7 @@ struct EnvironmentData {
     double sun_distance = 0.0;  // m
 };
 
-/// The core's parameters as set in the block's data (throws fmu::Error for an unknown selection).
+/// The core's parameters as set in the block's data.
 EnvironmentParams environment_params(const EnvironmentData& d);
 
 class EnvironmentBlock : public fmu::Block<EnvironmentBlock, EnvironmentData> {
@@ -102,16 +102,15 @@ public:
     void evaluate_derivatives(double t) override;
     void validate() const override;
 
-private:
-    // The core object for the current parameters. Rebuilt when any parameter's bytes differ from those
-    // it was built from, so FMU-state restores, resets and tunable changes are seen; a plain copyable
-    // member, so clone() copies it along.
-    const Environment& core() const;
-    bool parameters_match_cache() const;
-    void remember_parameters() const;
+    // The core object for the parameters (built by configure()).
+    void configure() override;
 
-    mutable std::optional<Environment> core_;
-    mutable std::vector<std::byte> core_key_;
+private:
+    const Environment& core() const;
+
+    // Derived from the parameters by configure(), outside the FMU state; a plain copyable member, so
+    // clone() copies it along.
+    std::optional<Environment> core_;
 };
 
 }  // namespace environment

@@ -64,6 +64,11 @@ public:
     virtual void reset_to_defaults() = 0;
 
     // Equations. Called by the runtime only, in this contract:
+    // - configure(): rebuild what the block derives from its parameters and keeps outside its data
+    //   (a fitted model, a table, a workspace). The runtime calls it before the next equation after a
+    //   parameter was set, a state restored (fmi2SetFMUstate) or the instance reset, and at exit of
+    //   initialization after validate(); nothing else may rebuild or cache on parameters. Throw
+    //   fmu::Error for parameters it cannot use.
     // - initialize(t): from parameters and start values, set the discrete state (first time events,
     //   switch positions). Called whenever a value is read in initialization mode and at its exit,
     //   so it must depend only on parameters, inputs and start values (calling it twice = once).
@@ -75,6 +80,7 @@ public:
     // - next_time_event(): absolute time of the next time event, or no_time_event.
     // - validate(): cross-parameter checks at exit of initialization; throw fmu::Error with a
     //   message a user understands.
+    virtual void configure() {}
     virtual void initialize(double t) = 0;
     virtual void evaluate(double t) = 0;
     // Only what derivatives and event indicators need, when a solver asks for nothing else (no

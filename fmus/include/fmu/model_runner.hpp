@@ -25,10 +25,26 @@ public:
     // Any change of time, states, inputs or parameters makes the outputs stale; they are
     // recomputed on the next read. In initialization mode a read first re-runs initialize().
     void mark_changed() { stale_ = derivatives_stale_ = true; }
-    void set_initializing(bool on) {
-        initializing_ = on;
+    // A parameter changed: the block's configure() runs before its next equation.
+    void parameters_changed() {
+        configured_ = false;
         mark_changed();
     }
+    // configure() now if a parameter changed since it last ran (so that its error surfaces here).
+    void ensure_configured();
+
+    // The one initialization path, used by the FMU, the board emulator and the tests' driver
+    // (fmu/testing/block_driver.hpp), so that none of them can take a path the others do not:
+    // enter_initialization(), then sets and reads (each read re-runs initialize()), then
+    // exit_initialization(): validate(), configure(), initialize() and the equations with the final
+    // values. A Co-Simulation host then settles the discrete state at the start time with
+    // event_iteration(); a Model Exchange host does that in event mode.
+    void enter_initialization() { set_initializing(true); }
+    void exit_initialization();
+    bool initializing() const { return initializing_; }
+    // Back to the block's defaults, as instantiated (fmi2Reset).
+    void reset(double start_time);
+
     void ensure_evaluated();
     // Derivatives and indicators current (evaluate_derivatives; outputs may still be stale).
     void ensure_derivatives();
@@ -41,9 +57,13 @@ public:
     void get_nominals(std::span<double> nominal) const;
     void get_indicators(std::span<double> z);
 
-    // True when the block's next time event is due at the current time (within rounding).
-    bool time_event_due() const;
-    double next_time_event() const { return model_->next_time_event(); }
+    // True when the block's next time event is due at the current time (within rounding). Both
+    // configure the block first: its events may come from what configure() derives.
+    bool time_event_due();
+    double next_time_event() {
+        ensure_configured();
+        return model_->next_time_event();
+    }
     // One round of discrete updates at the current time.
     EventUpdate update_discrete();
     // Rounds until the block needs no more; throws if it never settles. `states_changed` and
@@ -69,6 +89,7 @@ private:
     bool stale_ = true;              // outputs
     bool derivatives_stale_ = true;  // derivatives and what the indicators use
     bool initializing_ = false;
+    bool configured_ = false;  // configure() ran since the last parameter change, restore or reset
     std::size_t indicator_count_ = 0;
 
     struct InputSlope {
@@ -77,6 +98,10 @@ private:
     };
     std::vector<InputSlope> input_slopes_;  // few (a block's Real inputs), searched linearly
     void apply_input_slopes();
+    void set_initializing(bool on) {
+        initializing_ = on;
+        mark_changed();
+    }
 };
 
 }  // namespace fmu

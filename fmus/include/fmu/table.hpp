@@ -12,6 +12,7 @@
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "fmu/errors.hpp"
@@ -43,6 +44,16 @@ template <std::size_t N>
 struct ScalarTraits<FixedString<N>> {
     static constexpr ValueType type = ValueType::String;
     static constexpr std::size_t capacity = N;
+};
+
+// A choice (Table::choice): a C++ enum stored as the FMI Enumeration's 32-bit integer.
+template <class T>
+requires std::is_enum_v<T>
+struct ScalarTraits<T> {
+    static_assert(sizeof(T) == sizeof(std::int32_t) && std::is_signed_v<std::underlying_type_t<T>>,
+                  "a choice's enum must have a 32-bit signed underlying type (an FMI Enumeration value)");
+    static constexpr ValueType type = ValueType::Enumeration;
+    static constexpr std::size_t capacity = 0;
 };
 
 template <class T>
@@ -89,7 +100,6 @@ public:
         Handle& depends_elementwise(std::initializer_list<std::string_view> names);
         Handle& derivative_depends_on(std::initializer_list<std::string_view> names);
         Handle& derivative_depends_elementwise(std::initializer_list<std::string_view> names);
-        Handle& one_of(std::initializer_list<std::string_view> values);  // String parameters
 
     private:
         void set_dependencies(std::size_t first, std::size_t last, std::initializer_list<std::string_view> names,
@@ -100,6 +110,8 @@ public:
 
 protected:
     std::size_t add(Variable v);
+    // The items of the Enumeration just declared last; refuses empty, repeated names or values.
+    void set_items(std::vector<EnumerationItem> items);
     void mark_state(std::size_t state, std::size_t derivative);
     void check_unit(std::string_view unit) const;
 
@@ -136,6 +148,20 @@ public:
     Handle local(std::string_view name, F Data::*field, std::string_view unit, std::string_view description) {
         return declare(name, field, unit, description, Causality::local, continuous_or_discrete<F>(),
                        Initial::calculated);
+    }
+    // A choice among named options: an FMI Enumeration parameter (a drop-down in a tool; settable by
+    // item name from the master's --set, an .ssd's ssv:Enumeration, ssv:String or ssv:Integer
+    // binding). The field holds the C++ enum, so the block never parses text; the runtime refuses any
+    // value that is not an item.
+    template <class E>
+    Handle choice(std::string_view name, E Data::*field, std::initializer_list<std::pair<std::string_view, E>> items,
+                  std::string_view description) {
+        static_assert(detail::FieldTraits<E>::count == 0, "a choice is a scalar");
+        Handle h = declare(name, field, "", description, Causality::parameter, Variability::fixed, Initial::exact);
+        std::vector<EnumerationItem> list;
+        for (const auto& [item, value] : items) list.push_back({std::string(item), static_cast<std::int32_t>(value)});
+        set_items(std::move(list));
+        return h;
     }
     // A continuous state and its derivative (named `der(name[i])`). The state's start value is
     // exact and settable before initialization; the derivative is calculated.

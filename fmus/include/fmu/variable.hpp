@@ -11,7 +11,9 @@
 
 namespace fmu {
 
-enum class ValueType { Real, Integer, Boolean, String };
+// Enumeration: an FMI 2.0 Enumeration (a <SimpleType> with <Item>s), accessed as an Integer; the
+// block's field is a C++ enum with a 32-bit underlying type (Table::choice).
+enum class ValueType { Real, Integer, Boolean, String, Enumeration };
 enum class Causality { parameter, calculated_parameter, input, output, local, independent };
 enum class Variability { constant, fixed, tunable, discrete, continuous };
 enum class Initial { none, exact, approx, calculated };
@@ -20,6 +22,12 @@ std::string_view to_string(ValueType v);
 std::string_view to_string(Causality c);  // the standard's spelling, e.g. "calculatedParameter"
 std::string_view to_string(Variability v);
 std::string_view to_string(Initial i);
+
+// One item of an Enumeration: the name a user types or picks, and the integer the FMU stores.
+struct EnumerationItem {
+    std::string name;
+    std::int32_t value = 0;
+};
 
 struct Variable {
     std::string name;       // structured name: "mag_body[2]", "der(b_filt[1])"
@@ -32,7 +40,10 @@ struct Variable {
     Initial initial = Initial::none;
     std::uint32_t value_reference = 0;
     std::optional<double> min, max, nominal;
-    std::vector<std::string> allowed_values;   // a String parameter that names one of a fixed set
+    // Enumeration only: its items, and the name of its type definition (the variable's name in
+    // CamelCase: "sun_method" has type "SunMethod").
+    std::vector<EnumerationItem> items;
+    std::string declared_type;
     std::size_t offset = 0;                    // byte offset of the value in the block's data struct
     std::size_t string_capacity = 0;           // String only
     std::optional<std::size_t> derivative_of;  // index of the state this is the derivative of
@@ -46,6 +57,11 @@ struct Variable {
     }
     bool is_state() const { return is_state_; }
     bool is_derivative() const { return derivative_of.has_value(); }
+    // Enumeration: the item with this name or value, or null.
+    const EnumerationItem* item_named(std::string_view item) const;
+    const EnumerationItem* item_valued(std::int32_t value) const;
+    // Enumeration: "a, b, c", for messages and documentation.
+    std::string item_names() const;
 
     bool is_state_ = false;  // set by the table when a derivative refers to this variable
 };

@@ -29,6 +29,12 @@ void write_value(std::span<std::byte> data, const fmu::Variable& v, double x) {
         case fmu::ValueType::Integer:
             fmu::write_integer(data, v, static_cast<std::int32_t>(std::lround(x)));
             break;
+        case fmu::ValueType::Enumeration: {
+            const auto value = static_cast<std::int32_t>(std::lround(x));
+            if (!v.item_valued(value)) throw fmu::Error(v.name + " = " + std::to_string(value) + " is not an item");
+            fmu::write_integer(data, v, value);
+            break;
+        }
         case fmu::ValueType::Boolean:
             fmu::write_boolean(data, v, x != 0.0);
             break;
@@ -42,6 +48,7 @@ double read_value(std::span<const std::byte> data, const fmu::Variable& v) {
         case fmu::ValueType::Real:
             return fmu::read_real(data, v);
         case fmu::ValueType::Integer:
+        case fmu::ValueType::Enumeration:
             return fmu::read_integer(data, v);
         case fmu::ValueType::Boolean:
             return fmu::read_boolean(data, v) ? 1.0 : 0.0;
@@ -72,6 +79,8 @@ void BoardEmulator::apply_settings() {
         if (v.type == fmu::ValueType::String) {
             if (text.size() > v.string_capacity) throw fmu::Error(v.name + ": value too long");
             fmu::write_string(runner_.model().bytes(), v, text);
+        } else if (v.type == fmu::ValueType::Enumeration && v.item_named(text)) {
+            fmu::write_integer(runner_.model().bytes(), v, v.item_named(text)->value);
         } else if (v.type == fmu::ValueType::Boolean) {
             fmu::write_boolean(runner_.model().bytes(), v, text == "true" || text == "1");
         } else {
@@ -95,7 +104,7 @@ Frame BoardEmulator::answer(const Frame& request) {
                          std::to_string(inputs_.size()) + " inputs");
     if (request.sequence == 1 && initialized_) {
         // Sequence 1 opens a run: the board starts over from its defaults and configuration.
-        runner_.model().reset_to_defaults();
+        runner_.reset(request.time);
         apply_settings();
         initialized_ = false;
     }
@@ -103,11 +112,9 @@ Frame BoardEmulator::answer(const Frame& request) {
         // As an FMU's initialization: the first frame's inputs are the initial inputs, its time
         // the start time, and the block's event iteration at the start follows.
         runner_.set_time(request.time);
-        runner_.set_initializing(true);
+        runner_.enter_initialization();
         set_inputs(request.values);
-        runner_.model().validate();
-        runner_.ensure_evaluated();
-        runner_.set_initializing(false);
+        runner_.exit_initialization();
         runner_.event_iteration();
         initialized_ = true;
     } else {

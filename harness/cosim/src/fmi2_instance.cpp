@@ -108,7 +108,9 @@ void Fmi2Instance::set_from_text(std::string_view name, std::string_view text) {
         }
         case fmi_loader::VariableType::integer:
         case fmi_loader::VariableType::enumeration: {
-            const fmi2Integer x = parse_integer(text, where);
+            const fmi2Integer x = v->type == fmi_loader::VariableType::integer
+                                      ? parse_integer(text, where)
+                                      : parse_enumeration(description(), *v, text, where);
             check(lib_->fmi2SetInteger(component_, &vr, 1, &x), "fmi2SetInteger");
             break;
         }

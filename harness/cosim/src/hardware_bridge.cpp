@@ -128,8 +128,10 @@ void HardwareBridge::set_from_text(std::string_view name, std::string_view text)
             set_real(v->value_reference, parse_real(text, where));
             break;
         case VariableType::integer:
-        case VariableType::enumeration:
             set_integer(v->value_reference, parse_integer(text, where));
+            break;
+        case VariableType::enumeration:
+            set_integer(v->value_reference, parse_enumeration(description_, *v, text, where));
             break;
         case VariableType::boolean:
             set_boolean(v->value_reference, parse_boolean(text, where));

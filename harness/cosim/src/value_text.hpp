@@ -5,11 +5,18 @@
 #include <string>
 #include <string_view>
 
+#include "fmi_loader/model_description.hpp"
+
 namespace cosim {
 
 double parse_real(std::string_view text, const std::string& what);
 int parse_integer(std::string_view text, const std::string& what);
 bool parse_boolean(std::string_view text, const std::string& what);
+// An Enumeration's value from an item name of its declared type ("cones") or an item's number ("3"):
+// the master accepts either wherever it takes text (--set, .ssd ssv:Enumeration, ssv:String and
+// ssv:Integer bindings). Refuses anything that is not an item, naming the items.
+int parse_enumeration(const fmi_loader::ModelDescription& md, const fmi_loader::ScalarVariable& v,
+                      std::string_view text, const std::string& what);
 std::string format_real(double x);
 
 }  // namespace cosim

@@ -18,6 +18,9 @@ inline constexpr std::int64_t no_noise_index = std::numeric_limits<std::int64_t>
 
 // Every variable of the block. Defaults are the HMC2003 datasheet's typical values where it gives
 // one (Honeywell, "HMC2003 Three-axis magnetic sensor hybrid"); the others are marked as assumptions.
+// Who pulses the set/reset strap (the `set_reset_source` choice).
+enum class SetResetSource : std::int32_t { input = 1, timer = 2, none = 3 };
+
 struct MagnetometerData {
     // inputs
     Vec3 mag_body{};                // T
@@ -26,10 +29,10 @@ struct MagnetometerData {
     double sensitivity = 1.0 / tesla_per_gauss;  // V/T: datasheet 1 V/gauss
     double v_null = 2.5;                         // V: zero-field output and the reference pin
     double bridge_offset = 0.02;                 // V: assumed; the datasheet's null spread is 2.3–2.7 V
-    // Who pulses the set/reset strap: "input" (the on-board computer, through set_reset_command, as in
-    // flight: seed 000 fig. 10 drives the strap from MOSFETs), "timer" (the sensor alternates set and
-    // reset by itself every set_reset_period: a stand-alone run) or "none" (set once at power-up).
-    fmu::FixedString<8> set_reset_source = "input";
+    // Who pulses the set/reset strap: input (the on-board computer, through set_reset_command, as in
+    // flight: seed 000 fig. 10 drives the strap from MOSFETs), timer (the sensor alternates set and
+    // reset by itself every set_reset_period: a stand-alone run) or none (set once at power-up).
+    SetResetSource set_reset_source = SetResetSource::input;
     double set_reset_period = 1.0;               // s: source "timer" only; assumed, the seed says "occasionally"
     double cross_axis = 0.003;                   // 1: assumed 0.3 % cross-field pick-up
     Vec3 misalignment{};                         // rad

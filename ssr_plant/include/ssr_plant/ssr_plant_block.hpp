@@ -13,50 +13,53 @@
 
 namespace ssr_plant {
 
-// Every variable of the block; defaults are the core's (parameters.hpp says which are the seed's and
-// which are assumed), except angular_response: the FMU defaults to the measured Kelly cosine of a real
-// panel (seed 000 fig. 4); the seed-scenario systems select "cosine", the law eq. 5 assumes.
+// Every variable of the block. Defaults are the core's (parameters.hpp says which are the seed's and
+// which are assumed), taken from its default-constructed structs so that they are written once (a test
+// checks that every parameter matches), except angular_response: the FMU defaults to the measured Kelly
+// cosine of a real panel (seed 000 fig. 4); the seed-scenario systems select cosine, the law eq. 5 assumes.
+inline constexpr Parameters core_defaults{};
+
 struct SsrPlantData {
     // inputs
-    std::array<double, 3> sun_body{0.0, 0.0, 1.0};
-    double irradiance = 1367.0;
-    std::array<double, 6> albedo_face{};
+    std::array<double, 3> sun_body = Inputs{}.sun_body;
+    double irradiance = Inputs{}.irradiance;
+    std::array<double, 6> albedo_face = Inputs{}.albedo_face;
     // parameters: selections
-    fmu::FixedString<15> fidelity = "switching";
-    fmu::FixedString<15> angular_response = "kelly";
-    fmu::FixedString<15> modulation = "latched_natural";
+    Fidelity fidelity = core_defaults.fidelity;
+    AngularResponse angular_response = AngularResponse::kelly;
+    Modulation modulation = core_defaults.modulation;
     // panel datasheet
-    double rated_irradiance = 1000.0;
-    double panel_isc = 0.62;
-    double panel_voc = 21.5;
-    double panel_imp = 0.5714;
-    double panel_vmp = 17.5;
-    std::int32_t cells_in_series = 36;
-    double panel_shunt_resistance = 2000.0;
-    double cell_temperature = 298.15;
+    double rated_irradiance = core_defaults.panel.rated_irradiance;
+    double panel_isc = core_defaults.panel.short_circuit_current;
+    double panel_voc = core_defaults.panel.open_circuit_voltage;
+    double panel_imp = core_defaults.panel.max_power_current;
+    double panel_vmp = core_defaults.panel.max_power_voltage;
+    std::int32_t cells_in_series = core_defaults.panel.cells_in_series;
+    double panel_shunt_resistance = core_defaults.panel.shunt_resistance;
+    double cell_temperature = core_defaults.panel.cell_temperature;
     // regulator and bus
-    double or_diode_forward_voltage = 0.6;
-    double or_diode_resistance = 0.05;
-    double shunt_switch_resistance = 0.05;
-    double pwm_frequency = 5000.0;
-    double bus_capacitance = 1500e-6;
-    double load_resistance = 90.0;
-    double bus_voltage_reference = 15.0;
-    double controller_gain = 300.0;
+    double or_diode_forward_voltage = core_defaults.or_diode_forward_voltage;
+    double or_diode_resistance = core_defaults.or_diode_resistance;
+    double shunt_switch_resistance = core_defaults.shunt_switch_resistance;
+    double pwm_frequency = core_defaults.pwm_frequency;
+    double bus_capacitance = core_defaults.bus_capacitance;
+    double load_resistance = core_defaults.load_resistance;
+    double bus_voltage_reference = core_defaults.bus_voltage_reference;
+    double controller_gain = core_defaults.controller_gain;
     // battery
-    double battery_capacity = 7200.0;
-    std::array<double, 11> battery_ocv{11.30, 11.51, 11.66, 11.81, 11.96, 12.10, 12.24, 12.37, 12.50, 12.62, 12.73};
-    double battery_internal_resistance = 0.05;
-    double charge_path_resistance = 5.0;
-    double battery_diode_forward_voltage = 0.6;
-    double battery_diode_resistance = 0.05;
-    double soc_connect = 0.80;
-    double soc_disconnect = 1.00;
-    fmu::FixedString<16> charge_control = "voltage";
-    double v_connect = 12.50;
-    double charge_end_current = 0.1;
-    double charge_voltage = 14.4;
-    double charge_polarization = 0.2;
+    double battery_capacity = core_defaults.battery.capacity;
+    std::array<double, 11> battery_ocv = core_defaults.battery.open_circuit_voltage;
+    double battery_internal_resistance = core_defaults.battery.internal_resistance;
+    double charge_path_resistance = core_defaults.battery.charge_path_resistance;
+    double battery_diode_forward_voltage = core_defaults.battery.diode_forward_voltage;
+    double battery_diode_resistance = core_defaults.battery.diode_resistance;
+    double soc_connect = core_defaults.battery.soc_connect;
+    double soc_disconnect = core_defaults.battery.soc_disconnect;
+    ChargeControl charge_control = core_defaults.battery.charge_control;
+    double v_connect = core_defaults.battery.v_connect;
+    double charge_end_current = core_defaults.battery.charge_end_current;
+    double charge_voltage = core_defaults.battery.charge_voltage;
+    double charge_polarization = core_defaults.battery.charge_polarization;
     // continuous states and derivatives
     double v_cap = 15.0;
     double soc_state = 0.9;
@@ -79,12 +82,6 @@ struct SsrPlantData {
     DiscreteState discrete{};
 };
 
-// The parameter fields of SsrPlantData are contiguous, from `fidelity` up to (not including) `v_cap`:
-// the fitted model is keyed on these bytes (a test checks that every declared parameter lies inside).
-// Equal bytes are equal values; unequal bytes (padding, a string's tail) only cost a refit.
-inline constexpr std::size_t parameter_bytes_begin = offsetof(SsrPlantData, fidelity);
-inline constexpr std::size_t parameter_bytes_end = offsetof(SsrPlantData, v_cap);
-
 class SsrPlantBlock : public fmu::Block<SsrPlantBlock, SsrPlantData> {
 public:
     static void declare(fmu::Table<SsrPlantData>& t);
@@ -101,13 +98,14 @@ public:
     void validate() const override;
     void check_state() const override;
 
+    // Fits the plant (panel fit ~0.2 ms) to the parameters: the runtime calls it after a parameter
+    // change, a state restore or a reset.
+    void configure() override;
+
 private:
-    // The fitted plant (panel fit ~0.2 ms) kept outside Data and rebuilt whenever the parameters
-    // it was made from differ from the current ones (reset, FMU-state restore, tunable change).
-    // const: a cache, refreshed from any call (next_time_event() too, after an FMU-state restore).
     const ssr_plant::Model& plant() const;
-    // What the current inputs fix (panel photocurrents, short-circuit and Hall currents), checked and
-    // recomputed only when the inputs or the model changed: inputs are constant over a step.
+    // What the current inputs fix (panel photocurrents, short-circuit and Hall currents), recomputed
+    // only when the input values changed (inputs are constant over a step); checked on every use.
     const Illumination& illumination(const ssr_plant::Model& m) const;
     Inputs inputs() const;
     State state() const;
@@ -115,8 +113,8 @@ private:
     std::int32_t pwm_period_output() const;
     Parameters parameters() const;
 
-    mutable std::optional<ssr_plant::Model> model_;
-    mutable std::array<std::byte, parameter_bytes_end - parameter_bytes_begin> model_key_{};  // its parameter bytes
+    // Derived from the parameters by configure(), outside the FMU state.
+    std::optional<ssr_plant::Model> model_;
     mutable std::optional<Illumination> illumination_;
     mutable Inputs illumination_inputs_{};
     // The last bus-side panel solves (see BusSideMemo), emptied with every new illumination (and so

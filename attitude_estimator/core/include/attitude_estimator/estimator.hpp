@@ -29,7 +29,7 @@ struct EstimatorConfig {
     std::array<AdcConfig<T>, 3> sun_adc{{{12, T(-2), T(2)}, {12, T(-2), T(2)}, {12, T(-2), T(2)}}};
     std::array<AdcConfig<T>, 3> mag_adc{{{12, T(0), T(5)}, {12, T(0), T(5)}, {12, T(0), T(5)}}};
     AdcConfig<T> mag_ref_adc{12, T(0), T(5)};
-    SolverKind solver = SolverKind::fast;
+    SolverKind solver = SolverKind::qmethod;             // the seeds' method; fast is the flight-code choice
     T min_sun_norm = kDefaultMinSunNorm<T>;              // sun_vector.hpp
     T mag_rail_margin = kDefaultRailMargin<T>;           // V, field_vector.hpp; rails = each mag_adc's min/max
     T min_field = kDefaultMinField<T>;                   // T, field_vector.hpp

@@ -51,11 +51,17 @@ constexpr bool cube_transition_allowed(int from, int to) noexcept {
     return true;
 }
 
+// A: one face's short-circuit current facing the sun squarely at 1367 W/m² (1 AU): ssr_plant's fitted
+// 10 Wp panel (its README). The default of every panel normalization of the core and the block.
+template <class T>
+inline constexpr T kPanelCurrentAt1Au = T(0.84754);
+
 template <class T>
 struct SunMethodConfig {
     SunMethod method = SunMethod::difference;
     // A: the face's short-circuit current facing the sun squarely in full sun (ssr_plant at 1367 W/m²).
-    std::array<T, 6> i_face_norm{T(0.84754), T(0.84754), T(0.84754), T(0.84754), T(0.84754), T(0.84754)};
+    std::array<T, 6> i_face_norm{kPanelCurrentAt1Au<T>, kPanelCurrentAt1Au<T>, kPanelCurrentAt1Au<T>,
+                                 kPanelCurrentAt1Au<T>, kPanelCurrentAt1Au<T>, kPanelCurrentAt1Au<T>};
     // The panels' angular response used to invert currents into cos β: panel_response::cosine<T>() (000 eq. 1,
     // the default, as ssr_plant's default) or panel_response::kelly<T>() (the Kelly table of fig. 4).
     panel_response::Response<T> response = panel_response::cosine<T>();

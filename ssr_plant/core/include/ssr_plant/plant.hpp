@@ -55,6 +55,7 @@ struct Inputs {
     std::array<double, 3> sun_body = {0.0, 0.0, 1.0};  // sun direction in body axes (normalized here)
     double irradiance = 1367.0;                        // W/m² of direct sunlight, 0 in eclipse (seed)
     std::array<double, face_count> albedo_face = {};   // W/m² of Earth albedo reaching each face
+    bool operator==(const Inputs&) const = default;
 };
 
 // Everything that changes only at events. Trivially copyable.
