@@ -12,6 +12,7 @@
 #include "metric_observer.hpp"
 #include "observer.hpp"
 #include "run_command.hpp"
+#include "setting.hpp"
 
 namespace campaign {
 
@@ -25,7 +26,8 @@ struct InterruptCheck : cosim::Observer {
 
 // The variable a "component.variable=value" setting names.
 std::string setting_variable(const std::string& setting) {
-    return setting.substr(0, setting.find('='));
+    const cosim::Setting s = cosim::parse_setting(setting, true);
+    return s.component + "." + s.variable;
 }
 
 void check_variable(const cosim::System& system, const std::string& name, const std::string& what) {

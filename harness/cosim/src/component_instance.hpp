@@ -11,6 +11,7 @@
 
 #include "fmi2/fmi2FunctionTypes.h"
 #include "fmi_loader/model_description.hpp"
+#include "setting.hpp"
 
 namespace cosim {
 
@@ -36,9 +37,13 @@ public:
     virtual void exit_initialization_mode() = 0;
     virtual void terminate() = 0;
 
-    // A variable from text ("0.5", "true", "qmethod"), parsed by its declared type; any value as text.
-    virtual void set_from_text(std::string_view name, std::string_view text) = 0;
-    virtual std::string get_as_text(const fmi_loader::ScalarVariable& v) = 0;
+    // The model description the component answers to (its FMU's, also for a bridged block).
+    virtual const fmi_loader::ModelDescription& description() const = 0;
+
+    // A setting (--set, an .ssd binding, a campaign draw) typed by the variable it names; any value as
+    // text (a Boolean as 1 or 0). Written once here for every kind of component, over the typed access.
+    void apply(const Setting& s);
+    std::string get_as_text(const fmi_loader::ScalarVariable& v);
 
     // Typed access by value reference.
     virtual double get_real(fmi2ValueReference vr) = 0;

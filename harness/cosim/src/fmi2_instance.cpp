@@ -95,68 +95,10 @@ void Fmi2Instance::terminate() {
     check(lib_->fmi2Terminate(component_), "fmi2Terminate");
 }
 
-void Fmi2Instance::set_from_text(std::string_view name, std::string_view text) {
-    const auto* v = description().find_variable(name);
-    if (!v) throw CosimError(name_ + ": no variable named '" + std::string(name) + "'");
-    const fmi2ValueReference vr = v->value_reference;
-    const std::string where = name_ + "." + std::string(name);
-    switch (v->type) {
-        case fmi_loader::VariableType::real: {
-            const fmi2Real x = parse_real(text, where);
-            check(lib_->fmi2SetReal(component_, &vr, 1, &x), "fmi2SetReal");
-            break;
-        }
-        case fmi_loader::VariableType::integer:
-        case fmi_loader::VariableType::enumeration: {
-            const fmi2Integer x = v->type == fmi_loader::VariableType::integer
-                                      ? parse_integer(text, where)
-                                      : parse_enumeration(description(), *v, text, where);
-            check(lib_->fmi2SetInteger(component_, &vr, 1, &x), "fmi2SetInteger");
-            break;
-        }
-        case fmi_loader::VariableType::boolean: {
-            const fmi2Boolean x = parse_boolean(text, where) ? fmi2True : fmi2False;
-            check(lib_->fmi2SetBoolean(component_, &vr, 1, &x), "fmi2SetBoolean");
-            break;
-        }
-        case fmi_loader::VariableType::string: {
-            const std::string s(text);
-            const fmi2String x = s.c_str();
-            check(lib_->fmi2SetString(component_, &vr, 1, &x), "fmi2SetString");
-            break;
-        }
-    }
-}
-
 double Fmi2Instance::get_real(fmi2ValueReference vr) {
     fmi2Real x = 0.0;
     check(lib_->fmi2GetReal(component_, &vr, 1, &x), "fmi2GetReal");
     return x;
-}
-
-std::string Fmi2Instance::get_as_text(const fmi_loader::ScalarVariable& v) {
-    const fmi2ValueReference vr = v.value_reference;
-    switch (v.type) {
-        case fmi_loader::VariableType::real:
-            return format_real(get_real(vr));
-        case fmi_loader::VariableType::integer:
-        case fmi_loader::VariableType::enumeration: {
-            fmi2Integer x = 0;
-            check(lib_->fmi2GetInteger(component_, &vr, 1, &x), "fmi2GetInteger");
-            return std::to_string(x);
-        }
-        case fmi_loader::VariableType::boolean: {
-            fmi2Boolean x = 0;
-            check(lib_->fmi2GetBoolean(component_, &vr, 1, &x), "fmi2GetBoolean");
-            return x ? "1" : "0";
-        }
-        case fmi_loader::VariableType::string: {
-            fmi2String x = nullptr;
-            check(lib_->fmi2GetString(component_, &vr, 1, &x), "fmi2GetString");
-            return x ? x : "";
-        }
-    }
-    return {};
 }
 
 void Fmi2Instance::do_step(double t, double h) {

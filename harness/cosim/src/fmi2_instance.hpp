@@ -20,7 +20,7 @@ public:
     Fmi2Instance(const Fmi2Instance&) = delete;
     Fmi2Instance& operator=(const Fmi2Instance&) = delete;
 
-    const fmi_loader::ModelDescription& description() const { return fmu_.description(); }
+    const fmi_loader::ModelDescription& description() const override { return fmu_.description(); }
     const std::string& name() const override { return name_; }
 
     void setup_experiment(double start_time, std::optional<double> stop_time, std::optional<double> tolerance) override;
@@ -28,11 +28,7 @@ public:
     void exit_initialization_mode() override;
     void terminate() override;
 
-    // Sets a variable from text ("0.5", "true", "qmethod"), parsed by the variable's declared type.
-    void set_from_text(std::string_view name, std::string_view text) override;
     double get_real(fmi2ValueReference vr) override;
-    // The value of any variable as text (for tables and CSV).
-    std::string get_as_text(const fmi_loader::ScalarVariable& v) override;
 
     void do_step(double t, double h) override;
     void set_real_input_derivatives(std::span<const fmi2ValueReference> vr, std::span<const double> dx) override;

@@ -119,44 +119,6 @@ void HardwareBridge::terminate() {
     link_.reset();
 }
 
-void HardwareBridge::set_from_text(std::string_view name, std::string_view text) {
-    const auto* v = description_.find_variable(name);
-    if (!v) throw CosimError(name_ + ": no variable named '" + std::string(name) + "'");
-    const std::string where = name_ + "." + std::string(name);
-    switch (v->type) {
-        case VariableType::real:
-            set_real(v->value_reference, parse_real(text, where));
-            break;
-        case VariableType::integer:
-            set_integer(v->value_reference, parse_integer(text, where));
-            break;
-        case VariableType::enumeration:
-            set_integer(v->value_reference, parse_enumeration(description_, *v, text, where));
-            break;
-        case VariableType::boolean:
-            set_boolean(v->value_reference, parse_boolean(text, where));
-            break;
-        case VariableType::string:
-            set_string(v->value_reference, std::string(text));
-            break;
-    }
-}
-
-std::string HardwareBridge::get_as_text(const fmi_loader::ScalarVariable& v) {
-    switch (v.type) {
-        case VariableType::real:
-            return format_real(get_real(v.value_reference));
-        case VariableType::integer:
-        case VariableType::enumeration:
-            return std::to_string(get_integer(v.value_reference));
-        case VariableType::boolean:
-            return get_boolean(v.value_reference) ? "1" : "0";
-        case VariableType::string:
-            return get_string(v.value_reference);
-    }
-    return {};
-}
-
 double HardwareBridge::get_real(fmi2ValueReference vr) {
     return values_[slot(Kind::real, vr)];
 }

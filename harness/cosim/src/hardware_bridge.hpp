@@ -24,14 +24,12 @@ public:
     ~HardwareBridge() override;
 
     const std::string& name() const override { return name_; }
+    const fmi_loader::ModelDescription& description() const override { return description_; }
 
     void setup_experiment(double start_time, std::optional<double> stop_time, std::optional<double> tolerance) override;
     void enter_initialization_mode() override {}
     void exit_initialization_mode() override;
     void terminate() override;
-
-    void set_from_text(std::string_view name, std::string_view text) override;
-    std::string get_as_text(const fmi_loader::ScalarVariable& v) override;
 
     double get_real(fmi2ValueReference vr) override;
     void set_real(fmi2ValueReference vr, double x) override;

@@ -44,11 +44,7 @@ void simulate(const SimulateOptions& options, std::ostream& out) {
 
     Fmi2Instance instance(fmu, fmi_loader::FmuKind::co_simulation, md.model_name);
     instance.setup_experiment(start, stop, options.tolerance ? options.tolerance : ex.tolerance);
-    for (const auto& setting : options.settings) {
-        const auto eq = setting.find('=');
-        if (eq == std::string::npos) throw CosimError("--set expects name=value, got '" + setting + "'");
-        instance.set_from_text(setting.substr(0, eq), setting.substr(eq + 1));
-    }
+    for (const auto& setting : options.settings) instance.apply(parse_setting(setting, false));
     instance.enter_initialization_mode();
     instance.exit_initialization_mode();
 

@@ -70,12 +70,9 @@ System::System(const SystemDescription& description, const SystemOptions& option
     mark_continuous_consumers();
     changed_.assign(components_.size(), 0);
     discrete_changed_.assign(components_.size(), 0);
-    for (const auto& setting : options.settings) {
-        const auto dot = setting.find('.');
-        const auto eq = setting.find('=');
-        if (dot == std::string::npos || eq == std::string::npos || eq < dot)
-            throw CosimError("--set expects component.variable=value, got '" + setting + "'");
-        settings_.emplace_back(component_index(setting.substr(0, dot)), setting.substr(dot + 1));
+    for (const auto& text : options.settings) {
+        Setting setting = parse_setting(text, true);
+        settings_.emplace_back(component_index(setting.component), std::move(setting));
     }
     check_open_inputs();
 }
@@ -270,9 +267,8 @@ void System::check_open_inputs() const {
             if (v.causality != Causality::input || v.start) continue;
             const bool connected = std::any_of(connections_.begin(), connections_.end(),
                                                [&](const Connection& c) { return c.to == i && c.target == &v; });
-            const bool set = std::any_of(settings_.begin(), settings_.end(), [&](const auto& s) {
-                return s.first == i && s.second.substr(0, s.second.find('=')) == v.name;
-            });
+            const bool set = std::any_of(settings_.begin(), settings_.end(),
+                                         [&](const auto& s) { return s.first == i && s.second.variable == v.name; });
             if (!connected && !set)
                 throw CosimError(components_[i].name + "." + v.name +
                                  ": input is not connected and has no start value");
@@ -448,12 +444,9 @@ void System::initialize(double start_time, std::optional<double> stop_time) {
     for (std::size_t i = 0; i < components_.size(); ++i) {
         auto& c = components_[i];
         c.instance->setup_experiment(start_time, stop_time, tolerance_);
-        for (const auto& p : description_.components[i].parameters) c.instance->set_from_text(p.name, p.value);
-        for (const auto& [index, setting] : settings_) {
-            if (index != i) continue;
-            const auto eq = setting.find('=');
-            c.instance->set_from_text(setting.substr(0, eq), setting.substr(eq + 1));
-        }
+        for (const auto& p : description_.components[i].parameters) c.instance->apply({"", p.name, p.value, p.type});
+        for (const auto& [index, setting] : settings_)
+            if (index == i) c.instance->apply(setting);
     }
     for (auto& c : components_) c.instance->enter_initialization_mode();
     propagate(Pass::all);  // in connection order: each input sees its source's initial value

@@ -12,6 +12,7 @@
 
 #include "component_instance.hpp"
 #include "fmi_loader/fmu.hpp"
+#include "setting.hpp"
 #include "system_description.hpp"
 
 namespace cosim {
@@ -129,7 +130,7 @@ private:
     std::vector<TransferGroup> groups_;             // connections_ in order, batched by (source, target) component
     std::vector<char> changed_, discrete_changed_;  // per component, since clear_changes()
     std::vector<double> slopes_;                    // step_co_simulation's input derivatives
-    std::vector<std::pair<std::size_t, std::string>> settings_;  // component, "variable=value"
+    std::vector<std::pair<std::size_t, Setting>> settings_;  // component index, its setting
     std::optional<double> tolerance_;
 };
 
