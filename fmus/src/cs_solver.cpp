@@ -5,7 +5,7 @@
 #include <string>
 
 #include "fmu/errors.hpp"
-#include "fmu/indicator_bisection.hpp"
+#include "integrator/indicator_bisection.hpp"
 
 namespace fmu {
 
@@ -26,7 +26,8 @@ CsSolver::CsSolver(ModelRunner& runner, double relative_tolerance) : runner_(run
         runner_.set_states(x);
         runner_.get_indicators(g);
     };
-    cvode_ = std::make_unique<CvodeIntegrator>(n, runner_.indicator_count(), rhs, roots, relative_tolerance, abstol);
+    cvode_ = std::make_unique<integrator::CvodeIntegrator>(n, runner_.indicator_count(), rhs, roots, relative_tolerance,
+                                                           abstol);
 }
 
 SolverStatistics CsSolver::statistics() const {
@@ -46,7 +47,7 @@ bool CsSolver::integrate_to(double t_stop) {
         ++stats_.restarts;
     }
     double t = runner_.time();
-    CvodeIntegrator::Stop stop;
+    integrator::CvodeIntegrator::Stop stop;
     try {
         stop = cvode_->advance(t_stop, t, x_);
     } catch (...) {
@@ -56,17 +57,17 @@ bool CsSolver::integrate_to(double t_stop) {
     // The callbacks may have left trial values behind: set the point CVODE returned.
     runner_.set_time(t);
     runner_.set_states(x_);
-    return stop == CvodeIntegrator::Stop::root;
+    return stop == integrator::CvodeIntegrator::Stop::root;
 }
 
 bool CsSolver::locate_without_states(double t_stop) {
     const std::size_t m = runner_.indicator_count();
-    const auto crossing =
-        m == 0 ? std::nullopt
-               : bisect_indicator_crossing(runner_.time(), t_stop, m, [this](double t, std::span<double> z) {
-                     runner_.set_time(t);
-                     runner_.get_indicators(z);
-                 });
+    const auto crossing = m == 0 ? std::nullopt
+                                 : integrator::bisect_indicator_crossing(runner_.time(), t_stop, m,
+                                                                         [this](double t, std::span<double> z) {
+                                                                             runner_.set_time(t);
+                                                                             runner_.get_indicators(z);
+                                                                         });
     runner_.set_time(crossing.value_or(t_stop));
     return crossing.has_value();
 }

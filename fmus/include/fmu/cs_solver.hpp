@@ -8,8 +8,8 @@
 #include <memory>
 #include <vector>
 
-#include "fmu/cvode_integrator.hpp"
 #include "fmu/model_runner.hpp"
+#include "integrator/cvode_integrator.hpp"
 
 namespace fmu {
 
@@ -39,7 +39,7 @@ private:
     bool locate_without_states(double t_stop);  // no states: bisection on the indicators
 
     ModelRunner& runner_;
-    std::unique_ptr<CvodeIntegrator> cvode_;
+    std::unique_ptr<integrator::CvodeIntegrator> cvode_;
     std::vector<double> x_;
     bool restart_needed_ = true;
     SolverStatistics stats_;

@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "campaign_error.hpp"
-#include "fmu/random.hpp"
+#include "random.hpp"
 #include "value_text.hpp"
 
 namespace campaign {
@@ -23,7 +23,7 @@ std::uint64_t splitmix(std::uint64_t x) {
 }
 
 // Uniform in [0, 1) from the top 53 bits.
-double unit(fmu::Random& rng) {
+double unit(Random& rng) {
     return static_cast<double>(rng.next() >> 11) * 0x1.0p-53;
 }
 
@@ -34,7 +34,7 @@ std::string element(const std::string& prefix, int i) {
 // "env.epoch" -> "env.epoch_year" ...
 const char* const epoch_fields[] = {"_year", "_month", "_day", "_hour", "_minute", "_second"};
 
-void add_epoch(const Draw& d, fmu::Random& rng, RunDraws& out) {
+void add_epoch(const Draw& d, Random& rng, RunDraws& out) {
     const auto from_ms = static_cast<std::int64_t>(std::llround(d.epoch_from * 1000.0));
     const auto span_ms = static_cast<std::int64_t>(std::llround((d.epoch_to - d.epoch_from) * 1000.0));
     const auto offset = static_cast<std::int64_t>(std::floor(unit(rng) * static_cast<double>(span_ms)));
@@ -115,7 +115,7 @@ RunDraws draw_run(const CampaignSpec& spec, long index) {
     long stride = 1;
     RunDraws out;
     for (const auto& d : spec.draws) {
-        fmu::Random rng;
+        Random rng;
         rng.seed(stream_seed(spec.seed, unit_index, d.target));
         auto set = [&](const std::string& variable, const std::string& text) {
             out.settings.push_back(variable + "=" + text);

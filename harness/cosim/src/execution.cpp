@@ -9,8 +9,8 @@
 #include <thread>
 
 #include "cosim_error.hpp"
-#include "fmu/cvode_integrator.hpp"
-#include "fmu/indicator_bisection.hpp"
+#include "integrator/cvode_integrator.hpp"
+#include "integrator/indicator_bisection.hpp"
 
 namespace cosim {
 
@@ -38,7 +38,7 @@ struct Execution::Impl {
     std::vector<std::size_t> me, cs, consumers;  // component indices
     std::size_t n = 0, m = 0;
     std::vector<double> x;
-    std::unique_ptr<fmu::CvodeIntegrator> cvode;
+    std::unique_ptr<integrator::CvodeIntegrator> cvode;
     bool restart = true;
     bool terminate = false;
     double t = 0.0;
@@ -230,7 +230,7 @@ struct Execution::Impl {
 
     // No continuous states but event indicators: locate a sign change by bisection on time.
     bool bisect(double t_stop) {
-        const auto crossing = fmu::bisect_indicator_crossing(
+        const auto crossing = integrator::bisect_indicator_crossing(
             t, t_stop, m, [this](double time, std::span<double> z) { indicators(time, x, z); });
         t = crossing.value_or(t_stop);
         return crossing.has_value();
@@ -245,7 +245,7 @@ struct Execution::Impl {
                 restart = false;
                 ++stats.restarts;
             }
-            return cvode->advance(t_out, t_hard, t, x) == fmu::CvodeIntegrator::Stop::root;
+            return cvode->advance(t_out, t_hard, t, x) == integrator::CvodeIntegrator::Stop::root;
         }
         if (m > 0) return bisect(std::min(t_out, t_hard));
         t = std::min(t_out, t_hard);
@@ -275,7 +275,7 @@ struct Execution::Impl {
             if (c.state_count) c.instance->get_nominals(abstol.data() + c.state_offset, c.state_count);
         }
         for (auto& a : abstol) a *= options.relative_tolerance;
-        cvode = std::make_unique<fmu::CvodeIntegrator>(
+        cvode = std::make_unique<integrator::CvodeIntegrator>(
             n, m, [this](double tt, std::span<const double> xx, std::span<double> dx) { rhs(tt, xx, dx); },
             [this](double tt, std::span<const double> xx, std::span<double> z) { indicators(tt, xx, z); },
             options.relative_tolerance, abstol);

@@ -1,5 +1,5 @@
-// A seeded pseudo-random generator small enough to live inside a block's data struct, so that it is
-// part of the FMU state: saving and restoring an FMU state restores the noise sequence exactly.
+// A seeded pseudo-random generator whose whole state is four words: a campaign's draw for (seed, run,
+// name) is reproducible anywhere, in any order, on any MPI rank.
 // xoshiro256** (Blackman & Vigna, 2018) seeded through splitmix64; normal deviates by the polar
 // Box–Muller method without a cached second value, so the state is just the four words.
 #pragma once
@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdint>
 
-namespace fmu {
+namespace campaign {
 
 struct Random {
     std::uint64_t s[4] = {0x9E3779B97F4A7C15ull, 0xBF58476D1CE4E5B9ull, 0x94D049BB133111EBull, 1};
@@ -51,4 +51,4 @@ private:
     static std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
 };
 
-}  // namespace fmu
+}  // namespace campaign

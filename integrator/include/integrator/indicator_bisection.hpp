@@ -10,7 +10,7 @@
 #include <span>
 #include <vector>
 
-namespace fmu {
+namespace integrator {
 
 // `indicators(t, z)` writes the m indicators at time t into z. Returns the earliest time in (t_lo, t_hi]
 // found just past a sign change of any indicator relative to its value at t_lo (as CVODE's root finding
@@ -35,4 +35,4 @@ std::optional<double> bisect_indicator_crossing(double t_lo, double t_hi, std::s
     return hi;
 }
 
-}  // namespace fmu
+}  // namespace integrator

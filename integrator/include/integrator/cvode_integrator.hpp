@@ -7,9 +7,15 @@
 #include <functional>
 #include <memory>
 #include <span>
+#include <stdexcept>
 #include <vector>
 
-namespace fmu {
+namespace integrator {
+
+// CVODE refused or failed (a flag, an allocation); the FMU runtime and the master report it as theirs.
+struct Error : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
 
 class CvodeIntegrator {
 public:
@@ -52,4 +58,4 @@ private:
     long steps_before_restart_ = 0, rhs_before_restart_ = 0;
 };
 
-}  // namespace fmu
+}  // namespace integrator

@@ -1,4 +1,4 @@
-#include "fmu/cvode_integrator.hpp"
+#include "integrator/cvode_integrator.hpp"
 
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
@@ -12,9 +12,7 @@
 #include <type_traits>
 #include <utility>
 
-#include "fmu/errors.hpp"
-
-namespace fmu {
+namespace integrator {
 
 namespace {
 
@@ -161,4 +159,4 @@ long CvodeIntegrator::rhs_evaluations() const {
     return rhs_before_restart_ + n;
 }
 
-}  // namespace fmu
+}  // namespace integrator
