@@ -244,3 +244,48 @@ TEST_P(ConformanceMisuse, WrongGuidIsRefused) {
     EXPECT_EQ(r.status, fmi2Error) << "fmi2Instantiate with a wrong GUID did not return NULL";
     EXPECT_TRUE(r.logged) << "no error message for the wrong GUID\nFMU log:\n" << r.log;
 }
+
+// FMI 2.0.4 section 2.1.3: after fmi2Error "the simulation cannot be continued with this FMU instance"
+// unless a state saved before the error is restored (canGetAndSetFMUstate) or the instance is reset.
+// Our FMUs enforce it: after an error a step is refused; a restore continues from the saved state; a
+// reset starts over.
+TEST_P(ConformanceMisuse, AfterAnErrorOnlyARestoreOrAResetContinues) {
+    if (!md().co_simulation || !md().co_simulation->can_get_and_set_fmu_state)
+        GTEST_SKIP() << "no Co-Simulation with FMU states";
+    const ScalarVariable* p = nullptr;
+    for (const auto& v : md().model_variables)
+        if (v.causality == Causality::parameter && v.variability == Variability::fixed && v.start) {
+            p = &v;
+            break;
+        }
+    if (!p) GTEST_SKIP() << "no fixed parameter to provoke an error with";
+    const IsolatedResult r = run_isolated([&](bool& logged, std::string& log) -> fmi2Status {
+        Instance inst(fmu(), FmuKind::co_simulation);
+        const Experiment ex = experiment_of(inst.md());
+        auto fail = [&](const char* why) {
+            log = std::string(why) + "\n" + inst.log().dump();
+            return fmi2Fatal;
+        };
+        if (!inst.ok() || !initialized(inst)) return fail("could not initialize");
+        const auto& f = inst.f();
+        fmi2FMUstate saved = nullptr;
+        if (f.fmi2GetFMUstate(inst.c(), &saved) != fmi2OK) return fail("fmi2GetFMUstate failed");
+        if (inst.set_start(*p) != fmi2Error) return fail("setting a fixed parameter was not an error");
+        logged = true;
+        if (f.fmi2DoStep(inst.c(), ex.start, ex.step, fmi2True) != fmi2Error)
+            return fail("fmi2DoStep was accepted after an error");
+        if (f.fmi2SetFMUstate(inst.c(), saved) != fmi2OK) return fail("fmi2SetFMUstate after the error failed");
+        if (f.fmi2DoStep(inst.c(), ex.start, ex.step, fmi2True) > fmi2Warning)
+            return fail("fmi2DoStep after restoring the state saved before the error failed");
+        f.fmi2FreeFMUstate(inst.c(), &saved);
+        if (inst.set_start(*p) != fmi2Error) return fail("the second error was not one");
+        if (f.fmi2Reset(inst.c()) != fmi2OK) return fail("fmi2Reset after the error failed");
+        if (!initialized(inst)) return fail("initialization after fmi2Reset failed");
+        if (f.fmi2DoStep(inst.c(), ex.start, ex.step, fmi2True) > fmi2Warning)
+            return fail("fmi2DoStep after fmi2Reset failed");
+        inst.free();
+        return fmi2OK;
+    });
+    ASSERT_TRUE(r.completed) << r.crash;
+    EXPECT_EQ(r.status, fmi2OK) << r.log;
+}
