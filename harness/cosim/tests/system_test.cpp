@@ -85,6 +85,32 @@ RunStatistics run(System& system, Observer& probe, double stop, double interval,
     return Execution(system, ex).run({&probe});
 }
 
+// A choice (an FMI Enumeration) is set by item name from an ssv:Enumeration or ssv:String binding, by
+// number from an ssv:Integer one, and by name from --set; anything else is refused with the items named.
+TEST(CosimSystem, ChoiceIsSetByItemNameOrNumberFromBindingsAndSettings) {
+    auto gain_output = [](const std::string& binding, std::vector<std::string> settings = {}) {
+        const std::string params =
+            binding.empty() ? "" : "<ssv:Parameter name=\"sign\">" + binding + "</ssv:Parameter>";
+        SsdFile ssd(system_body(component("gain", "test_gain", params)));
+        SystemOptions o = options();
+        o.settings = std::move(settings);
+        System system(read_system_description(ssd.path), o);
+        Probe probe(system, "gain", "y");
+        run(system, probe, 0.5, 0.5);
+        return probe.samples.back().second;  // y = sign k u with k = 2, u = 1
+    };
+    EXPECT_EQ(gain_output(""), 2.0);
+    EXPECT_EQ(gain_output("<ssv:Enumeration value=\"minus\"/>"), -2.0);
+    EXPECT_EQ(gain_output("<ssv:String value=\"minus\"/>"), -2.0);
+    EXPECT_EQ(gain_output("<ssv:Integer value=\"2\"/>"), -2.0);
+    EXPECT_EQ(gain_output("", {"gain.sign=minus"}), -2.0);
+    EXPECT_EQ(gain_output("<ssv:Enumeration value=\"minus\"/>", {"gain.sign=plus"}), 2.0);  // --set last
+    EXPECT_THROW(gain_output("<ssv:Enumeration value=\"zero\"/>"), CosimError);
+    EXPECT_THROW(gain_output("<ssv:Integer value=\"3\"/>"), CosimError);
+    EXPECT_THROW(gain_output("<ssv:Real value=\"2\"/>"), CosimError);  // the binding's type is checked
+    EXPECT_THROW(gain_output("", {"gain.sign"}), CosimError);          // not component.variable=value
+}
+
 TEST(CosimSystem, FeedbackLoopThroughAnIntegratorIsAnExponential) {
     // integrator.x' = gain.y / tau = k x / tau: x(t) = exp(k t / tau) with k = -0.5, tau = 1.
     SsdFile ssd(system_body(component("int", "test_integrator") + component("gain", "test_gain", real("k", -0.5)),

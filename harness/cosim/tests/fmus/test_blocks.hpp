@@ -2,12 +2,18 @@
 // integrator (none). Units chosen so they connect in both directions.
 #pragma once
 
+#include <cstdint>
+
 #include "fmu/block.hpp"
 
 namespace cosim_test {
 
+// The gain's sign: a choice (an FMI Enumeration), for the master's settings by item name or number.
+enum class Sign : std::int32_t { plus = 1, minus = 2 };
+
 struct GainData {
     double k = 2.0;
+    Sign sign = Sign::plus;
     double u = 1.0;
     double y = 0.0;
 };
@@ -16,6 +22,7 @@ class Gain : public fmu::Block<Gain, GainData> {
 public:
     static void declare(fmu::Table<GainData>& t) {
         t.parameter("k", &GainData::k, "1", "Gain").tunable();
+        t.choice("sign", &GainData::sign, {{"plus", Sign::plus}, {"minus", Sign::minus}}, "Sign of the gain");
         t.input("u", &GainData::u, "V", "Input");
         t.output("y", &GainData::y, "V", "k times u").depends_on({"u"});
     }
@@ -26,7 +33,7 @@ public:
         info.description = "y = k u";
         return info;
     }
-    void evaluate(double) override { data().y = data().k * data().u; }
+    void evaluate(double) override { data().y = (data().sign == Sign::minus ? -1.0 : 1.0) * data().k * data().u; }
 };
 
 struct IntegratorData {
