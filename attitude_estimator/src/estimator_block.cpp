@@ -511,6 +511,8 @@ void EstimatorBlock::update_filter(double t, const SampleResult<double>& r, cons
         for (std::size_t k = 0; k < 6; ++k) {
             const double i = convert(nominal.face_adc[k], d.i_face[k]).value;
             in.face_r[k] = i / nominal.sun.i_face_norm[k];
+            // The cones fit's albedo is relative to the normalization the sun method used, (1 + ε̂) × nominal.
+            in.face_albedo[k] = r.face_albedo[k];
             const bool usable =
                 (r.lit_faces >> k & 1) && !(r.rejected_faces >> k & 1) && in.face_r[k] >= kScaleFaceMinResponse;
             if (usable) in.face_use |= static_cast<std::uint8_t>(1u << k);

@@ -28,6 +28,7 @@ void measure_sun(const SampleInputs<T>& in, const EstimatorConfig<T>& config, Su
     r.sun_norm = sun.norm;
     r.lit_faces = sun.lit_faces;
     r.rejected_faces = sun.rejected_faces;
+    r.face_albedo = sun.face_albedo;
     r.cube_state = sun.cube_state;
 }
 

@@ -260,8 +260,9 @@ MekfUpdate<T> mekf_update_field(MekfState<T>& s, const Vec3<T>& field_ref, const
 }
 
 template <class T>
-int mekf_update_faces(MekfState<T>& s, const Vec3<T>& sun_ref, const std::array<T, 6>& r, std::uint8_t use,
-                      const panel_response::Response<T>& response, const MekfConfig<T>& c) noexcept {
+int mekf_update_faces(MekfState<T>& s, const Vec3<T>& sun_ref, const std::array<T, 6>& r,
+                      const std::array<T, 6>& albedo, std::uint8_t use, const panel_response::Response<T>& response,
+                      const MekfConfig<T>& c) noexcept {
     int accepted = 0;
     const V3<T> ref = v3(sun_ref).normalized();
     for (int k = 0; k < 6; ++k) {
@@ -275,7 +276,9 @@ int mekf_update_faces(MekfState<T>& s, const Vec3<T>& sun_ref, const std::array<
         const T slope = (panel_response::response_from_cos(response, cos_beta + d) -
                          panel_response::response_from_cos(response, cos_beta - d)) /
                         (T(2) * d);
-        const T nominal = panel_response::response_from_cos(response, cos_beta);
+        // The sun's share by the law, plus the Earth's: a lit face that also sees the bright Earth reads more
+        // than (1 + ε) R(cos β), and without the albedo that excess would be read as a larger scale.
+        const T nominal = panel_response::response_from_cos(response, cos_beta) + albedo[static_cast<std::size_t>(k)];
         const T gain = T(1) + s.panel_scale;
         Eigen::Matrix<T, 1, 1> y;
         y(0) = r[static_cast<std::size_t>(k)] - gain * nominal;
@@ -343,7 +346,8 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
         accepted += result.mag.accepted;
     }
     if (c.estimate_scale && in.sun_valid && in.response != nullptr && in.face_use != 0)
-        result.faces_accepted = mekf_update_faces(s, in.sun_ref, in.face_r, in.face_use, *in.response, c);
+        result.faces_accepted =
+            mekf_update_faces(s, in.sun_ref, in.face_r, in.face_albedo, in.face_use, *in.response, c);
 
     if (offered > 0) s.refused_in_row = accepted > 0 ? 0 : s.refused_in_row + 1;
     if (s.refused_in_row >= c.reset_after || !finite(s)) {
@@ -373,8 +377,8 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
                                            const MekfConfig<T>&) noexcept;                                           \
     template MekfUpdate<T> mekf_update_field(MekfState<T>&, const Vec3<T>&, const Vec3<T>&, T,                       \
                                              const MekfConfig<T>&) noexcept;                                         \
-    template int mekf_update_faces(MekfState<T>&, const Vec3<T>&, const std::array<T, 6>&, std::uint8_t,             \
-                                   const panel_response::Response<T>&, const MekfConfig<T>&) noexcept;               \
+    template int mekf_update_faces(MekfState<T>&, const Vec3<T>&, const std::array<T, 6>&, const std::array<T, 6>&,  \
+                                   std::uint8_t, const panel_response::Response<T>&, const MekfConfig<T>&) noexcept; \
     template T mekf_attitude_bound(const MekfState<T>&) noexcept;                                                    \
     template MekfSampleResult<T> mekf_sample(MekfState<T>&, const MekfSampleInputs<T>&, const MekfConfig<T>&) noexcept;
 ATTITUDE_ESTIMATOR_MEKF_INSTANTIATE(float)

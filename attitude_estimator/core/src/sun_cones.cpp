@@ -480,9 +480,10 @@ bool cones_albedo_model(const FaceReadings<T>& fr, const SunMethodConfig<T>& cfg
     std::uint8_t rejected = 0;
     T n2 = T(0);
     for (int k = 0; k < 6; ++k) {
+        const T earth = m.alpha * albedo_shape(T(face_sign(k)) * m.d[face_axis(k)], inv_h);
+        out.face_albedo[static_cast<std::size_t>(k)] = earth;
         if (!(fr.lit & face_bit(k))) continue;
         const T sun = panel_response::response_from_cos(cfg.response, T(face_sign(k)) * m.s[face_axis(k)]);
-        const T earth = m.alpha * albedo_shape(T(face_sign(k)) * m.d[face_axis(k)], inv_h);
         if (sun <= cfg.dark_threshold || earth > cfg.cone_tolerance) {
             rejected |= face_bit(k);  // lit by the Earth only, or carrying more albedo than the agreement band
         } else {

@@ -80,6 +80,7 @@ struct SampleResult {
     std::uint8_t lit_faces = 0;       // face-based methods: faces above the dark threshold (bit k = face k)
     std::uint8_t rejected_faces = 0;  // face-based methods: lit faces the method did not use (albedo)
     int cube_state = kCubeDark;       // cones: the panel-cube state of this sample (sun_methods.hpp)
+    std::array<T, 6> face_albedo{};   // cones' fitted albedo per face, relative (SunMethodResult::face_albedo)
 };
 // When sun or field is invalid no attitude is computed: q and A are the identity, loss 0, valid false.
 

@@ -102,11 +102,13 @@ MekfUpdate<T> mekf_update_field(MekfState<T>& s, const Vec3<T>& field_ref, const
                                 const MekfConfig<T>& config) noexcept;
 
 // Face update (the panel scale): relative responses r[k] = i_face[k] / i_face_norm[k] (nominal
-// normalization) of the faces in `use` (bit k = face k), predicted as (1 + ε) R(n_k · A sun_ref).
+// normalization) of the faces in `use` (bit k = face k), predicted as (1 + ε) (R(n_k · A sun_ref) + a_k)
+// with a_k the Earth albedo on the face relative to full sun (the cones fit's; zero when unknown).
 // Returns the number of faces accepted.
 template <class T>
-int mekf_update_faces(MekfState<T>& s, const Vec3<T>& sun_ref, const std::array<T, 6>& r, std::uint8_t use,
-                      const panel_response::Response<T>& response, const MekfConfig<T>& config) noexcept;
+int mekf_update_faces(MekfState<T>& s, const Vec3<T>& sun_ref, const std::array<T, 6>& r,
+                      const std::array<T, 6>& albedo, std::uint8_t use, const panel_response::Response<T>& response,
+                      const MekfConfig<T>& config) noexcept;
 
 // 3σ bound on the attitude error angle: 3 √(trace P_θθ) (rad). |δθ|² is a sum of the three variances'
 // worth of χ²₁ terms, so this bound holds with probability ≥ 99.7 % whatever the covariance's shape.
@@ -129,6 +131,7 @@ struct MekfSampleInputs {
     T polarity = T(1);   // set/reset sign of this field reading
     // Face update (only with config.estimate_scale): relative responses and the faces to use.
     std::array<T, 6> face_r{};
+    std::array<T, 6> face_albedo{};  // relative albedo on each face (cones' fit), taken out of face_r's model
     std::uint8_t face_use = 0;
     const panel_response::Response<T>* response = nullptr;
 };
@@ -149,18 +152,19 @@ struct MekfSampleResult {
 template <class T>
 MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, const MekfConfig<T>& config) noexcept;
 
-#define ATTITUDE_ESTIMATOR_MEKF_EXTERN(T)                                                                       \
-    extern template void mekf_start(MekfState<T>&, const Quaternion<T>&, const Vec3<T>&, T,                     \
-                                    const MekfConfig<T>&) noexcept;                                             \
-    extern template void mekf_propagate(MekfState<T>&, T, const MekfConfig<T>&) noexcept;                       \
-    extern template MekfUpdate<T> mekf_update_sun(MekfState<T>&, const Vec3<T>&, const Vec3<T>&,                \
-                                                  const MekfConfig<T>&) noexcept;                               \
-    extern template MekfUpdate<T> mekf_update_field(MekfState<T>&, const Vec3<T>&, const Vec3<T>&, T,           \
-                                                    const MekfConfig<T>&) noexcept;                             \
-    extern template int mekf_update_faces(MekfState<T>&, const Vec3<T>&, const std::array<T, 6>&, std::uint8_t, \
-                                          const panel_response::Response<T>&, const MekfConfig<T>&) noexcept;   \
-    extern template T mekf_attitude_bound(const MekfState<T>&) noexcept;                                        \
-    extern template MekfSampleResult<T> mekf_sample(MekfState<T>&, const MekfSampleInputs<T>&,                  \
+#define ATTITUDE_ESTIMATOR_MEKF_EXTERN(T)                                                                            \
+    extern template void mekf_start(MekfState<T>&, const Quaternion<T>&, const Vec3<T>&, T,                          \
+                                    const MekfConfig<T>&) noexcept;                                                  \
+    extern template void mekf_propagate(MekfState<T>&, T, const MekfConfig<T>&) noexcept;                            \
+    extern template MekfUpdate<T> mekf_update_sun(MekfState<T>&, const Vec3<T>&, const Vec3<T>&,                     \
+                                                  const MekfConfig<T>&) noexcept;                                    \
+    extern template MekfUpdate<T> mekf_update_field(MekfState<T>&, const Vec3<T>&, const Vec3<T>&, T,                \
+                                                    const MekfConfig<T>&) noexcept;                                  \
+    extern template int mekf_update_faces(MekfState<T>&, const Vec3<T>&, const std::array<T, 6>&,                    \
+                                          const std::array<T, 6>&, std::uint8_t, const panel_response::Response<T>&, \
+                                          const MekfConfig<T>&) noexcept;                                            \
+    extern template T mekf_attitude_bound(const MekfState<T>&) noexcept;                                             \
+    extern template MekfSampleResult<T> mekf_sample(MekfState<T>&, const MekfSampleInputs<T>&,                       \
                                                     const MekfConfig<T>&) noexcept;
 ATTITUDE_ESTIMATOR_MEKF_EXTERN(float)
 ATTITUDE_ESTIMATOR_MEKF_EXTERN(double)

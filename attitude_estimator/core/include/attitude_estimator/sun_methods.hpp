@@ -119,6 +119,9 @@ struct SunMethodResult {
     int cube_state = kCubeDark;       // this sample's panel-cube state (cube_state_of)
     T residual = T(0);                // method's consistency measure (docs/sun_methods.md); 0 when exact
     T norm = T(0);                    // difference: |s| of eq. 5; others: |c| of the lit-face cosines used
+    // cones with its albedo model: the albedo the fit puts on each face, relative to full sun (what the
+    // orbit filter's panel-scale update takes out of a face's reading); zero otherwise.
+    std::array<T, 6> face_albedo{};
 };
 
 // Per-face relative responses r_k = i_face[k] / i_face_norm[k] and the lit mask.
