@@ -7,7 +7,7 @@ namespace fmu {
 
 namespace {
 
-constexpr std::array<UnitDefinition, 25> units{{
+constexpr std::array<UnitDefinition, 28> units{{
     {.name = "1"},
     {.name = "s", .s = 1},
     {.name = "Hz", .s = -1},
@@ -33,6 +33,9 @@ constexpr std::array<UnitDefinition, 25> units{{
     {.name = "V/A", .kg = 1, .m = 2, .s = -3, .A = -2},
     {.name = "%/V", .kg = -1, .m = -2, .s = 3, .A = 1, .factor = 0.01},
     {.name = "1/V", .kg = -1, .m = -2, .s = 3, .A = 1},
+    {.name = "V/K", .kg = 1, .m = 2, .s = -3, .A = -1, .K = -1},
+    {.name = "J/(m2.K)", .kg = 1, .s = -2, .K = -1},  // areal heat capacity
+    {.name = "W/(m2.K)", .kg = 1, .s = -3, .K = -1},  // areal thermal conductance
 }};
 
 }  // namespace

@@ -15,6 +15,10 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
     t.input("irradiance", &D::irradiance, "W/m2", "Direct solar irradiance, 0 in eclipse").min(0.0);
     t.input("albedo_face", &D::albedo_face, "W/m2", "Earth albedo irradiance on each face (+x, -x, +y, -y, +z, -z)")
         .min(0.0);
+    t.input("panel_temperature", &D::panel_temperature, "K",
+            "Cell temperature of each face (+x, -x, +y, -y, +z, -z); at cell_temperature a face is the datasheet fit, "
+            "elsewhere the temperature coefficients move its curve (environment face_temperature)")
+        .range(100.0, 500.0);
 
     t.choice("fidelity", &D::fidelity, {{"switching", Fidelity::switching}, {"averaged", Fidelity::averaged}},
              "switching: every PWM edge a time event, S/H tracks while the gate is on; averaged: state-space "
@@ -44,6 +48,12 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
         .min(1.0);
     t.parameter("cell_temperature", &D::cell_temperature, "K", "Cell temperature (thermal voltage of eq. 2)")
         .range(100.0, 500.0);
+    t.parameter("isc_temperature_coefficient", &D::isc_temperature_coefficient, "1/K",
+                "Relative change of the short-circuit current per kelvin (assumed +0.05 %/K, crystalline silicon)")
+        .range(-0.01, 0.01);
+    t.parameter("voc_temperature_coefficient", &D::voc_temperature_coefficient, "V/K",
+                "Change of the panel's open-circuit voltage per kelvin (assumed -74 mV/K: -2.06 mV/K per cell)")
+        .range(-1.0, 1.0);
     t.parameter("or_diode_forward_voltage", &D::or_diode_forward_voltage, "V",
                 "Forward drop of each panel's OR diode (assumed)")
         .range(0.0, 2.0);
@@ -109,21 +119,21 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
     auto v = t.state("v_cap", &D::v_cap, &D::der_v_cap, "V", "Bus capacitor voltage (the bus voltage)").nominal(15.0);
     auto q = t.state("soc_state", &D::soc_state, &D::der_soc_state, "1", "Battery state of charge (charge / capacity)")
                  .nominal(1.0);
-    v.derivative_depends_on({"v_cap", "soc_state", "sun_body", "irradiance", "albedo_face"});
+    v.derivative_depends_on({"v_cap", "soc_state", "sun_body", "irradiance", "albedo_face", "panel_temperature"});
     q.derivative_depends_on({"v_cap", "soc_state"});
 
     t.output("i_sh", &D::i_sh, "A",
              "Sample/hold of the differential Hall current I(+axis) - I(-axis) of the short-circuited panels")
-        .depends_on({"sun_body", "irradiance", "albedo_face"});
+        .depends_on({"sun_body", "irradiance", "albedo_face", "panel_temperature"});
     t.output("i_face_sh", &D::i_face_sh, "A",
              "Sample/hold of each face's Hall channel (+x, -x, +y, -y, +z, -z), the current of its short-circuited "
              "panel: tracks while the gate is on, holds while it is off (averaged fidelity: the live current); "
              "i_sh[k] = i_face_sh[2k-1] - i_face_sh[2k]")
-        .depends_on({"sun_body", "irradiance", "albedo_face"});
+        .depends_on({"sun_body", "irradiance", "albedo_face", "panel_temperature"});
     t.output("i_sc", &D::i_sc, "A", "Each panel's true short-circuit current")
-        .depends_on({"sun_body", "irradiance", "albedo_face"});
+        .depends_on({"sun_body", "irradiance", "albedo_face", "panel_temperature"});
     t.output("i_panel", &D::i_panel, "A", "Each panel's current delivered to the bus (averaged over the PWM state)")
-        .depends_on({"sun_body", "irradiance", "albedo_face", "v_cap"});
+        .depends_on({"sun_body", "irradiance", "albedo_face", "panel_temperature", "v_cap"});
     t.output("v_bus", &D::v_bus, "V", "Bus voltage").depends_on({"v_cap"});
     t.output("v_batt", &D::v_batt, "V", "Battery terminal voltage").depends_on({"v_cap", "soc_state"});
     t.output("i_batt", &D::i_batt, "A", "Battery current, positive charging").depends_on({"v_cap", "soc_state"});
@@ -184,6 +194,8 @@ Parameters SsrPlantBlock::parameters() const {
     p.panel.cells_in_series = d.cells_in_series;
     p.panel.shunt_resistance = d.panel_shunt_resistance;
     p.panel.cell_temperature = d.cell_temperature;
+    p.panel.isc_temperature_coefficient = d.isc_temperature_coefficient;
+    p.panel.voc_temperature_coefficient = d.voc_temperature_coefficient;
     p.or_diode_forward_voltage = d.or_diode_forward_voltage;
     p.or_diode_resistance = d.or_diode_resistance;
     p.shunt_switch_resistance = d.shunt_switch_resistance;
@@ -256,6 +268,7 @@ Inputs SsrPlantBlock::inputs() const {
     u.sun_body = d.sun_body;
     u.irradiance = d.irradiance;
     u.albedo_face = d.albedo_face;
+    u.panel_temperature = d.panel_temperature;
     try {
         check_inputs(u);
     } catch (const std::invalid_argument& e) {

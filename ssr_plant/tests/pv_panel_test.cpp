@@ -118,4 +118,33 @@ TEST(SsrCorePanelFit, RejectsInconsistentDatasheets) {
     EXPECT_THROW(fit_diode_model(s), ParameterError);
 }
 
+// A panel away from the datasheet's 25 °C (at_temperature): the reference values below come from an
+// independent Python script that takes the fit's five parameters as given (I_ph,rated 0.620417, I_0
+// 8.0715e-9 A, a 1.185220 V, R_s 1.343961 Ω, R_sh 2000 Ω), applies the temperature rules of the header
+// (I_ph (1 + 0.0005 ΔT), a T/T_ref, I_0 from the open circuit at 21.5 − 0.074 ΔT V) and solves eq. 2 for
+// I by bisection, at 1367 W/m² and normal incidence.
+TEST(SsrCorePvPanel, TemperatureMovesTheCurveAsItsCoefficientsSay) {
+    const PanelDatasheet sheet;
+    const DiodeModel ref = fit_diode_model(sheet);
+    const DiodeModel same = at_temperature(ref, sheet, sheet.cell_temperature);
+    EXPECT_EQ(same.saturation_current, ref.saturation_current);  // the fit itself, bit for bit
+    EXPECT_EQ(same.ideality_voltage, ref.ideality_voltage);
+    EXPECT_EQ(same.photocurrent_rated, ref.photocurrent_rated);
+
+    const DiodeModel hot = at_temperature(ref, sheet, 333.15);  // 60 °C
+    const double iph_hot = photocurrent(hot, 1367.0);
+    EXPECT_NEAR(panel_current(hot, iph_hot, 0.0), 0.8623714143, 1e-8);
+    EXPECT_NEAR(panel_current(hot, iph_hot, 15.6), 0.7457821443, 1e-8);  // near the bus: 0.865 of Isc
+    // Isc +1.75 % (0.05 %/K over 35 K), Voc 21.5 − 0.074 · 35 = 18.91 V at the rated irradiance.
+    EXPECT_NEAR(panel_current(hot, iph_hot, 0.0) / panel_current(ref, photocurrent(ref, 1367.0), 0.0), 1.0175, 2e-4);
+    EXPECT_NEAR(panel_current(hot, photocurrent(hot, 1000.0), 18.91), 0.0, 1e-9);
+
+    const DiodeModel cold = at_temperature(ref, sheet, 233.15);  // −40 °C
+    const double iph_cold = photocurrent(cold, 1367.0);
+    EXPECT_NEAR(panel_current(cold, iph_cold, 0.0), 0.8199949609, 1e-8);
+    EXPECT_NEAR(panel_current(cold, iph_cold, 15.6), 0.8121819434, 1e-8);
+
+    EXPECT_THROW(at_temperature(ref, sheet, 600.0), ParameterError);  // Voc would be gone: 21.5 − 0.074 · 302 < 0
+}
+
 }  // namespace

@@ -44,34 +44,45 @@ double period_start(const DiscreteState& d, const Model& m, std::int64_t k) {
     return d.period_origin + static_cast<double>(k) * m.pwm_period;
 }
 
+using FaceDiodes = std::array<DiodeModel, face_count>;
+
+// Per face: the panel at the face's temperature (the fit itself at the datasheet's).
+FaceDiodes face_diodes(const Model& m, const Inputs& u) {
+    FaceDiodes d;
+    for (std::size_t k = 0; k < face_count; ++k)
+        d[k] = at_temperature(m.diode, m.parameters.panel, u.panel_temperature[k]);
+    return d;
+}
+
 // Per face: photocurrent from the effective irradiance.
-std::array<double, face_count> photocurrents(const Model& m, const Inputs& u) {
+std::array<double, face_count> photocurrents(const Model& m, const FaceDiodes& diode, const Inputs& u) {
     const auto g = face_irradiance(m, u);
     std::array<double, face_count> iph{};
-    for (std::size_t k = 0; k < face_count; ++k) iph[k] = photocurrent(m.diode, g[k]);
+    for (std::size_t k = 0; k < face_count; ++k) iph[k] = photocurrent(diode[k], g[k]);
     return iph;
 }
 
 // Current each panel pushes through its OR diode into the bus when its shunt switch is off: the panel
 // sits at v_bus + V_f + I R_or; a reverse-biased diode (panel below bus + V_f) passes nothing. A dark
 // panel (I_ph = 0: every face turned away from the sun without albedo) is below any bus V >= 0: no solve.
-std::array<double, face_count> bus_side_currents(const Model& m, const std::array<double, face_count>& iph,
-                                                 double v_bus) {
+std::array<double, face_count> bus_side_currents(const Model& m, const FaceDiodes& diode,
+                                                 const std::array<double, face_count>& iph, double v_bus) {
     const auto& p = m.parameters;
     const double v_anode = v_bus + p.or_diode_forward_voltage;
     std::array<double, face_count> i{};
     for (std::size_t k = 0; k < face_count; ++k)
         if (iph[k] > 0.0 || v_anode < 0.0)
-            i[k] = std::max(0.0, panel_current(m.diode, iph[k], v_anode, p.or_diode_resistance));
+            i[k] = std::max(0.0, panel_current(diode[k], iph[k], v_anode, p.or_diode_resistance));
     return i;
 }
 
 // Current through each closed shunt switch (panel short-circuited through R_DS(on)): what the Hall
 // transducer sees while the gate is on.
-std::array<double, face_count> shunted_currents(const Model& m, const std::array<double, face_count>& iph) {
+std::array<double, face_count> shunted_currents(const Model& m, const FaceDiodes& diode,
+                                                const std::array<double, face_count>& iph) {
     std::array<double, face_count> i{};
     for (std::size_t k = 0; k < face_count; ++k)
-        i[k] = panel_current(m.diode, iph[k], 0.0, m.parameters.shunt_switch_resistance);
+        i[k] = panel_current(diode[k], iph[k], 0.0, m.parameters.shunt_switch_resistance);
     return i;
 }
 
@@ -134,25 +145,26 @@ struct BusBalance {
 };
 
 // The bus-side currents at v through the caller's memo (if any): a hit is the earlier solve's result.
-std::array<double, face_count> memoized_bus_side_currents(const Model& m, const std::array<double, face_count>& iph,
-                                                          double v, BusSideMemo* memo) {
-    if (!memo) return bus_side_currents(m, iph, v);
+std::array<double, face_count> memoized_bus_side_currents(const Model& m, const FaceDiodes& diode,
+                                                          const std::array<double, face_count>& iph, double v,
+                                                          BusSideMemo* memo) {
+    if (!memo) return bus_side_currents(m, diode, iph, v);
     for (const auto& e : memo->entries)
         if (e.valid && e.v_bus == v) return e.current;
     auto& e = memo->entries[memo->next];
     memo->next = (memo->next + 1) % memo->entries.size();
-    e = {true, v, bus_side_currents(m, iph, v)};
+    e = {true, v, bus_side_currents(m, diode, iph, v)};
     return e.current;
 }
 
-BusBalance bus_balance(const Model& m, const std::array<double, face_count>& iph, const DiscreteState& d,
-                       const State& x, BusSideMemo* memo = nullptr) {
+BusBalance bus_balance(const Model& m, const FaceDiodes& diode, const std::array<double, face_count>& iph,
+                       const DiscreteState& d, const State& x, BusSideMemo* memo = nullptr) {
     const auto& p = m.parameters;
     const double v = x[state_v_bus];
     BusBalance b;
     b.sigma = shunt_fraction(m, d, v);
     // With the shunts closed all period long (gate on, or D = 1) no panel feeds the bus: no solve.
-    if (b.sigma < 1.0) b.i_pv = memoized_bus_side_currents(m, iph, v, memo);
+    if (b.sigma < 1.0) b.i_pv = memoized_bus_side_currents(m, diode, iph, v, memo);
     double i_in = 0.0;
     for (double i : b.i_pv) i_in += i;
     i_in *= (1.0 - b.sigma);  // eq. 4: I_bus = (1 − D) I; σ ∈ {0, 1} when switching
@@ -167,7 +179,7 @@ Evaluation evaluation(const Model& m, const Illumination& l, const DiscreteState
                       BusSideMemo* memo) {
     const auto& p = m.parameters;
     const double v = x[state_v_bus];
-    const BusBalance b = bus_balance(m, l.photocurrent, d, x, memo);
+    const BusBalance b = bus_balance(m, l.diode, l.photocurrent, d, x, memo);
     Evaluation e;
     e.derivatives = b.dx;
     Outputs& y = e.outputs;
@@ -202,6 +214,8 @@ Model make_model(const Parameters& p) {
     require(non_negative(p.or_diode_forward_voltage) && non_negative(p.or_diode_resistance),
             "OR diode forward voltage and resistance must be >= 0");
     require(non_negative(p.shunt_switch_resistance), "shunt switch resistance must be >= 0");
+    require(std::isfinite(p.panel.isc_temperature_coefficient) && std::isfinite(p.panel.voc_temperature_coefficient),
+            "panel temperature coefficients must be finite");
     require(positive(p.pwm_frequency), "PWM frequency must be > 0");
     require(positive(p.bus_capacitance), "bus capacitance must be > 0");
     require(positive(p.load_resistance), "load resistance must be > 0");
@@ -235,6 +249,10 @@ void check_inputs(const Inputs& u) {
     for (double a : u.albedo_face)
         if (!std::isfinite(a) || a < 0.0)
             throw std::invalid_argument("ssr_plant inputs: albedo_face must be finite and >= 0");
+    // 100–500 K: beyond, no silicon cell works (and the temperature coefficients mean nothing).
+    for (double t : u.panel_temperature)
+        if (!(t >= 100.0 && t <= 500.0))
+            throw std::invalid_argument("ssr_plant inputs: panel_temperature must be within 100 ... 500 K");
 }
 
 std::array<double, face_count> face_irradiance(const Model& m, const Inputs& u) {
@@ -253,9 +271,10 @@ std::array<double, face_count> face_irradiance(const Model& m, const Inputs& u) 
 
 Illumination illuminate(const Model& m, const Inputs& u) {
     Illumination l;
-    l.photocurrent = photocurrents(m, u);
-    for (std::size_t k = 0; k < face_count; ++k) l.i_sc[k] = panel_current(m.diode, l.photocurrent[k], 0.0);
-    l.i_shunt = shunted_currents(m, l.photocurrent);
+    l.diode = face_diodes(m, u);
+    l.photocurrent = photocurrents(m, l.diode, u);
+    for (std::size_t k = 0; k < face_count; ++k) l.i_sc[k] = panel_current(l.diode[k], l.photocurrent[k], 0.0);
+    l.i_shunt = shunted_currents(m, l.diode, l.photocurrent);
     l.i_hall = differential_currents(l.i_shunt);
     return l;
 }
@@ -277,7 +296,8 @@ DiscreteState initialize(const Model& m, const Inputs& u, double t0, const State
 }
 
 State derivatives(const Model& m, const Inputs& u, const DiscreteState& d, double /*t*/, const State& x) {
-    return bus_balance(m, photocurrents(m, u), d, x).dx;
+    const FaceDiodes diode = face_diodes(m, u);
+    return bus_balance(m, diode, photocurrents(m, diode, u), d, x).dx;
 }
 
 Evaluation evaluate(const Model& m, const Illumination& l, const DiscreteState& d, double /*t*/, const State& x) {

@@ -209,4 +209,21 @@ double panel_current(const DiodeModel& m, double iph, double v, double extra_ser
     return (x - v) / rs;
 }
 
+DiodeModel at_temperature(const DiodeModel& ref, const PanelDatasheet& sheet, double temperature) {
+    if (temperature == sheet.cell_temperature) return ref;
+    if (!(temperature > 0.0) || !std::isfinite(temperature))
+        throw ParameterError("panel temperature must be finite and positive (K)");
+    const double dt = temperature - sheet.cell_temperature;
+    DiodeModel m = ref;
+    m.photocurrent_rated = ref.photocurrent_rated * (1.0 + sheet.isc_temperature_coefficient * dt);
+    m.ideality_voltage = ref.ideality_voltage * temperature / sheet.cell_temperature;
+    const double voc = sheet.open_circuit_voltage + sheet.voc_temperature_coefficient * dt;
+    if (!(voc > 0.0) || !(m.photocurrent_rated > voc / ref.shunt_resistance))
+        throw ParameterError("panel at " + std::to_string(temperature) +
+                             " K: no open-circuit voltage left (isc/voc_temperature_coefficient)");
+    // Open circuit at the rated irradiance: I_ph − I_0 (exp(Voc / a) − 1) − Voc / R_sh = 0.
+    m.saturation_current = (m.photocurrent_rated - voc / ref.shunt_resistance) / std::expm1(voc / m.ideality_voltage);
+    return m;
+}
+
 }  // namespace ssr_plant

@@ -24,6 +24,7 @@ struct SsrPlantData {
     std::array<double, 3> sun_body = Inputs{}.sun_body;
     double irradiance = Inputs{}.irradiance;
     std::array<double, 6> albedo_face = Inputs{}.albedo_face;
+    std::array<double, 6> panel_temperature = Inputs{}.panel_temperature;
     // parameters: selections
     Fidelity fidelity = core_defaults.fidelity;
     AngularResponse angular_response = AngularResponse::kelly;
@@ -37,6 +38,8 @@ struct SsrPlantData {
     std::int32_t cells_in_series = core_defaults.panel.cells_in_series;
     double panel_shunt_resistance = core_defaults.panel.shunt_resistance;
     double cell_temperature = core_defaults.panel.cell_temperature;
+    double isc_temperature_coefficient = core_defaults.panel.isc_temperature_coefficient;
+    double voc_temperature_coefficient = core_defaults.panel.voc_temperature_coefficient;
     // regulator and bus
     double or_diode_forward_voltage = core_defaults.or_diode_forward_voltage;
     double or_diode_resistance = core_defaults.or_diode_resistance;

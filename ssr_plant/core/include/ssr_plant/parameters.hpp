@@ -37,7 +37,12 @@ struct PanelDatasheet {
     // 2000 Ω gives the fit n ≈ 1.28, R_s ≈ 1.34 Ω (37 mΩ per cell); a much lower R_sh cannot reach this
     // fill factor with a physical ideality (500 Ω would need n ≈ 0.42).
     double shunt_resistance = 2000.0;
-    double cell_temperature = 298.15;  // K, thermal voltage V_T = k T / q of eq. 2
+    double cell_temperature = 298.15;  // K, the datasheet's (and the fit's) cell temperature, V_T = k T / q of eq. 2
+    // Temperature coefficients of a crystalline-silicon module (typical datasheet values, assumed):
+    // Isc +0.05 %/K; Voc −74 mV/K for 36 cells (−2.06 mV/K per cell, −0.34 %/K of 21.5 V). How a panel at
+    // another temperature is derived from the fit: pv_panel.hpp, at_temperature().
+    double isc_temperature_coefficient = 0.0005;  // 1/K, relative
+    double voc_temperature_coefficient = -0.074;  // V/K, whole panel
 };
 
 // What the battery's hysteresis charge controller watches (seed 000 §2: it "connects the battery to the

@@ -55,6 +55,9 @@ struct Inputs {
     std::array<double, 3> sun_body = {0.0, 0.0, 1.0};  // sun direction in body axes (normalized here)
     double irradiance = 1367.0;                        // W/m² of direct sunlight, 0 in eclipse (seed)
     std::array<double, face_count> albedo_face = {};   // W/m² of Earth albedo reaching each face
+    // K, each face's cell temperature; at the datasheet's cell_temperature (the default) a face is the fit
+    // itself, elsewhere pv_panel.hpp's at_temperature() moves its curve.
+    std::array<double, face_count> panel_temperature = {298.15, 298.15, 298.15, 298.15, 298.15, 298.15};
     bool operator==(const Inputs&) const = default;
 };
 
@@ -106,6 +109,7 @@ static_assert(std::is_trivially_copyable_v<Parameters> && std::is_trivially_copy
 // panels (per face, and per axis: their difference). Inputs are constant over a host's communication step, so a wrapper computes this
 // once per input change instead of once per right-hand side (12 of the 18 panel solves of outputs()).
 struct Illumination {
+    std::array<DiodeModel, face_count> diode = {};     // each face's panel at its temperature
     std::array<double, face_count> photocurrent = {};  // A, I_ph of each face
     std::array<double, face_count> i_sc = {};          // A, each panel's short-circuit current (V = 0)
     std::array<double, face_count> i_shunt = {};       // A, each face's current through its closed shunt

@@ -29,6 +29,16 @@ struct DiodeModel {
 // has dP/dV = 0 there. Throws ParameterError if the datasheet is inconsistent or has no such fit.
 DiodeModel fit_diode_model(const PanelDatasheet& sheet);
 
+// The same panel at cell temperature T (K), from its fit at the datasheet's temperature T_ref: the
+// photocurrent scales with (1 + α ΔT) (α = isc_temperature_coefficient), the diode's thermal voltage with
+// T / T_ref, and the saturation current is what puts the open-circuit point at Voc + β ΔT (β =
+// voc_temperature_coefficient) with the new photocurrent and thermal voltage, as in M. G. Villalva,
+// J. R. Gazoli, E. Ruppert Filho, "Comprehensive approach to modeling and simulation of photovoltaic
+// arrays", IEEE Trans. Power Electronics 24(5), 1198–1208, 2009 (their I_0(T) of eq. 7, with R_sh kept).
+// Returns `ref` itself, bit for bit, at T == T_ref. Throws ParameterError for a temperature at which the
+// panel would have no open-circuit voltage left.
+DiodeModel at_temperature(const DiodeModel& ref, const PanelDatasheet& sheet, double temperature);
+
 // Photocurrent at an effective irradiance (W/m², direct · angular response + albedo): linear in
 // irradiance, as eq. 1 assumes.
 double photocurrent(const DiodeModel& m, double effective_irradiance);
