@@ -180,6 +180,14 @@ void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
         .depends_on({"q"});
     t.output("omega_body", &D::omega_body, "rad/s", "True angular velocity, body axes").depends_elementwise({"omega"});
     t.output("r_eci", &D::r_eci, "m", "Satellite position, ECI (J2000)").depends_on({});
+    t.output("nadir_body", &D::nadir_body, "1", "Unit vector satellite to the Earth's centre, body axes")
+        .depends_on({"q"});
+    t.output("orbit_radius_ratio", &D::orbit_radius_ratio, "1", "Orbit radius over the Earth's radius, r / R_E")
+        .depends_on({});
+    t.output("albedo_source", &D::albedo_source, "W/m2",
+             "Albedo flux scale for a panel heat balance: reflectivity times the sun's irradiance at the Earth times "
+             "the cosine of its zenith angle at the sub-satellite point (0 over the night side)")
+        .depends_on({});
 
     t.local("sunlight_fraction", &D::sunlight_fraction, "1", "Visible fraction of the solar disc (1 lit, 0 umbra)");
     t.output("sun_distance", &D::sun_distance, "m",
@@ -308,6 +316,9 @@ void EnvironmentBlock::evaluate(double t) {
     d.r_eci = o.r_eci;
     d.sunlight_fraction = o.sunlight_fraction;
     d.sun_distance = o.sun_distance;
+    d.nadir_body = o.nadir_body;
+    d.orbit_radius_ratio = o.orbit_radius_ratio;
+    d.albedo_source = o.albedo_source;
 }
 
 }  // namespace environment

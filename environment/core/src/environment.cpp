@@ -1,5 +1,6 @@
 #include "environment/environment.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -109,6 +110,11 @@ EnvironmentOutputs Environment::evaluate(double t, const RigidBodyState* state) 
     const double e_earth =
         params_.solar_constant * (kAstronomicalUnit / d_earth_sun) * (kAstronomicalUnit / d_earth_sun);
     out.albedo_face = earth_albedo(params_.albedo, r, r_sun / d_earth_sun, e_earth, A);
+    const double rn = r.norm();
+    out.nadir_body = to_array(A * (-r / rn));
+    out.orbit_radius_ratio = rn / kEarthRadius;
+    const double cos_zss = r.dot(r_sun) / (rn * d_earth_sun);
+    out.albedo_source = params_.albedo.enabled ? params_.albedo.reflectivity * e_earth * std::max(0.0, cos_zss) : 0.0;
     return out;
 }
 

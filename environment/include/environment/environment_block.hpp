@@ -83,6 +83,9 @@ struct EnvironmentData {
     std::array<double, 4> q_true = {0.0, 0.0, 0.0, 1.0};
     std::array<double, 3> omega_body{};
     std::array<double, 3> r_eci{};
+    std::array<double, 3> nadir_body{};
+    double orbit_radius_ratio = 1.0;
+    double albedo_source = 0.0;  // W/m2
     // --- locals
     double sunlight_fraction = 1.0;
     double sun_distance = 0.0;  // m

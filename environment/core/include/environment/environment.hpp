@@ -55,6 +55,10 @@ struct EnvironmentOutputs {
     std::array<double, 3> mag_eci{};      // T
     std::array<double, 3> mag_body{};     // T
     std::array<double, 6> albedo_face{};  // W/m^2 on +x, -x, +y, -y, +z, -z
+    // What a panel's heat balance needs of the Earth (panel_thermal): where it is and how bright.
+    std::array<double, 3> nadir_body{};  // unit, satellite -> Earth's centre, body axes
+    double orbit_radius_ratio = 1.0;     // r / R_E
+    double albedo_source = 0.0;          // W/m^2, rho E_earth max(0, cos z_ss), z_ss the sun's zenith below
 };
 
 class Environment {
