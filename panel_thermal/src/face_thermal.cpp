@@ -17,8 +17,9 @@ double plate_sphere_view_factor(double cos_theta, double h_ratio) {
     const double s = std::sqrt(std::max(0.0, 1.0 - c * c));  // sin θ > 0 here
     const double x = std::sqrt(h2 - 1.0);
     const double term1 = 0.5 - std::asin(std::min(1.0, x / (h_ratio * s))) / std::numbers::pi;
-    const double term2 = (c * std::acos(std::clamp(-x * c / s, -1.0, 1.0)) - x * std::sqrt(std::max(0.0, 1.0 - h2 * c * c))) /
-                         (std::numbers::pi * h2);
+    const double term2 =
+        (c * std::acos(std::clamp(-x * c / s, -1.0, 1.0)) - x * std::sqrt(std::max(0.0, 1.0 - h2 * c * c))) /
+        (std::numbers::pi * h2);
     return std::max(0.0, term1 + term2);
 }
 

@@ -15,7 +15,9 @@ ThermalParams params_of(const PanelThermalData& d) {
                          .body_temperature = d.body_temperature};
 }
 
-Eigen::Vector3d vec(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
+Eigen::Vector3d vec(const std::array<double, 3>& a) {
+    return {a[0], a[1], a[2]};
+}
 
 }  // namespace
 
@@ -45,8 +47,8 @@ void PanelThermalBlock::declare(fmu::Table<PanelThermalData>& t) {
         .range(100.0, 500.0);
     t.state("t_face", &D::t_face, &D::der_t_face, "K", "Temperature of each face +x, -x, +y, -y, +z, -z")
         .nominal(300.0)
-        .derivative_depends_on({"t_face", "sun_body", "irradiance", "nadir_body", "orbit_radius_ratio",
-                                "albedo_source"});
+        .derivative_depends_on(
+            {"t_face", "sun_body", "irradiance", "nadir_body", "orbit_radius_ratio", "albedo_source"});
     t.output("face_temperature", &D::face_temperature, "K",
              "Temperature of each face, the states t_face (ssr_plant panel_temperature)")
         .depends_elementwise({"t_face"});

@@ -17,7 +17,7 @@ constexpr double pi = std::numbers::pi;
 double view_factor_by_quadrature(double theta, double h) {
     const double gamma_max = std::acos(1.0 / h);  // the horizon
     const int n_gamma = 800, n_psi = 800;
-    const Eigen::Vector3d sat(0, 0, h);  // sphere of radius 1 at the origin
+    const Eigen::Vector3d sat(0, 0, h);                                  // sphere of radius 1 at the origin
     const Eigen::Vector3d normal(std::sin(theta), 0, -std::cos(theta));  // θ from the nadir (−z)
     double f = 0.0;
     for (int i = 0; i < n_gamma; ++i) {
@@ -71,7 +71,7 @@ TEST(PanelThermalCore, FaceInTheDarkCoolsAsTheClosedForm) {
     const std::array<double, 6> dark{};
     std::array<double, 6> t{};
     t.fill(350.0);
-    const double h = 0.5, end = 2100.0;  // 35 min: a long eclipse
+    const double h = 0.5, end = 2100.0;                      // 35 min: a long eclipse
     for (double time = 0.0; time < end - 1e-9; time += h) {  // classical RK4 in the test
         auto f = [&](const std::array<double, 6>& x) { return face_temperature_derivative(p, x, dark); };
         auto add = [](std::array<double, 6> a, const std::array<double, 6>& b, double s) {

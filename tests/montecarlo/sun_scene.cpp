@@ -78,6 +78,13 @@ Scene SceneGenerator::next() {
     u.sun_body = s.sun_body;
     u.irradiance = config_.irradiance;
     u.albedo_face = s.albedo;
+    // Drawn last, and only when asked for: the scenes of a study without temperatures stay the same.
+    for (std::size_t k = 0; k < 6; ++k)
+        s.temperature[k] =
+            config_.temperature_max > config_.temperature_min
+                ? config_.temperature_min + (config_.temperature_max - config_.temperature_min) * uniform()
+                : config_.temperature_min;
+    u.panel_temperature = s.temperature;
     const auto i_sc = ssr_plant::illuminate(plant_, u).i_sc;
     const attitude_estimator::AdcConfig<double> adc{config_.adc_bits, 0.0, config_.adc_max};
     for (std::size_t k = 0; k < 6; ++k) s.i_face[k] = attitude_estimator::convert(adc, i_sc[k]).value;

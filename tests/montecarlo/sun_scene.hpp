@@ -20,13 +20,18 @@ struct SceneConfig {
     double irradiance = 1367.0;  // W/m², direct sun (seed 000 §4)
     unsigned adc_bits = 12;      // the estimator's converters (TMS320F2808), 0 = ideal
     double adc_max = 1.2;        // A, full scale of the per-face current channels (0 … adc_max)
+    // K: each face's cell temperature drawn uniformly from [temperature_min, temperature_max] (the panels'
+    // datasheet 298.15 K both: no draw, every face at its fit); the estimator stays normalized at 298.15 K.
+    double temperature_min = 298.15;
+    double temperature_max = 298.15;
 };
 
 struct Scene {
-    std::array<double, 3> sun_body{};    // truth: unit sun direction in body axes
-    std::array<double, 3> nadir_body{};  // unit direction to the Earth's centre in body axes
-    std::array<double, 6> albedo{};      // W/m² on +x, −x, +y, −y, +z, −z
-    std::array<double, 6> i_face{};      // A, digitized short-circuit current of each face
+    std::array<double, 3> sun_body{};     // truth: unit sun direction in body axes
+    std::array<double, 3> nadir_body{};   // unit direction to the Earth's centre in body axes
+    std::array<double, 6> albedo{};       // W/m² on +x, −x, +y, −y, +z, −z
+    std::array<double, 6> i_face{};       // A, digitized short-circuit current of each face
+    std::array<double, 6> temperature{};  // K, each face's cell temperature
 };
 
 // Draws scenes from a fixed seed, so a study is reproducible run to run and machine to machine (the

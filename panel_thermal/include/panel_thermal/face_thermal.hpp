@@ -19,12 +19,12 @@
 namespace panel_thermal {
 
 struct ThermalParams {
-    double absorptance = 0.90;           // solar, of a cell-covered face (assumed; 0.85–0.92 typical)
-    double emissivity = 0.85;            // infrared, of the cover glass (assumed; 0.80–0.90 typical)
-    double areal_heat_capacity = 2500;   // J/(m² K): ~1.5 kg/m² panel of ~900 J/(kg K) plus cells (assumed)
-    double earth_infrared = 237.0;       // W/m², the Earth's emitted flux at its surface
-    double inner_conductance = 2.0;      // W/(m² K), face to body through its inner side (assumed)
-    double body_temperature = 293.15;    // K, the body the faces exchange heat with
+    double absorptance = 0.90;          // solar, of a cell-covered face (assumed; 0.85–0.92 typical)
+    double emissivity = 0.85;           // infrared, of the cover glass (assumed; 0.80–0.90 typical)
+    double areal_heat_capacity = 2500;  // J/(m² K): ~1.5 kg/m² panel of ~900 J/(kg K) plus cells (assumed)
+    double earth_infrared = 237.0;      // W/m², the Earth's emitted flux at its surface
+    double inner_conductance = 2.0;     // W/(m² K), face to body through its inner side (assumed)
+    double body_temperature = 293.15;   // K, the body the faces exchange heat with
 };
 
 inline constexpr double stefan_boltzmann = 5.670374419e-8;  // W/(m² K⁴), CODATA 2018 (exact)
