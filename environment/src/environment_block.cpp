@@ -58,7 +58,10 @@ EnvironmentParams environment_params(const EnvironmentData& d) {
     p.albedo = AlbedoParams{.enabled = d.albedo_enabled,
                             .reflectivity = d.albedo_reflectivity,
                             .rings = d.albedo_rings,
-                            .sectors = d.albedo_sectors};
+                            .sectors = d.albedo_sectors,
+                            .model = d.albedo_reflectivity_model,
+                            .reflectivity_equator = d.albedo_reflectivity_equator,
+                            .reflectivity_pole = d.albedo_reflectivity_pole};
     p.albedo.response = d.albedo_response;
     return p;
 }
@@ -153,6 +156,18 @@ void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
              {{"cosine", AlbedoResponse::cosine}, {"kelly", AlbedoResponse::kelly}},
              "Angular response the faces weigh albedo with: cosine (ideal) or kelly (seed 000 fig. 4, set it as the "
              "plant's angular_response: albedo_face is then the equivalent normal-incidence irradiance)");
+    t.choice("albedo_reflectivity_model", &D::albedo_reflectivity_model,
+             {{"uniform", ReflectivityModel::uniform}, {"zonal", ReflectivityModel::zonal}},
+             "Earth's reflectivity: uniform (albedo_reflectivity everywhere) or zonal (rising from "
+             "albedo_reflectivity_equator to albedo_reflectivity_pole as the square of the sine of latitude)");
+    t.parameter("albedo_reflectivity_equator", &D::albedo_reflectivity_equator, "1",
+                "Zonal model: reflectivity at the equator (assumed 0.2)")
+        .range(0.0, 1.0)
+        .tunable();
+    t.parameter("albedo_reflectivity_pole", &D::albedo_reflectivity_pole, "1",
+                "Zonal model: reflectivity at the poles (assumed 0.6)")
+        .range(0.0, 1.0)
+        .tunable();
     t.calculated_parameter("orbit_period", &D::orbit_period, "s", "Period of the circular orbit, 2 pi sqrt(a^3/mu)");
 
     // States: used in rigid_body mode only (derivatives 0 in spin mode).

@@ -116,3 +116,52 @@ TEST(EnvironmentCoreAlbedo, ScalesWithReflectivityAndSwitchesOff) {
         EXPECT_DOUBLE_EQ(v, 0.0);
     }
 }
+
+namespace environment {
+namespace {
+
+// The zonal reflectivity model against the uniform one it reduces to, and against bounds from the latitudes
+// the visible cap spans: at 570 km the cap reaches gamma_max = acos(R_E / r) = 23.37 deg from the
+// sub-satellite point (hand calculation), so above a pole every element lies at latitude >= 66.63 deg and its
+// reflectivity within [0.2 + 0.4 sin^2(66.63 deg), 0.6] = [0.5371, 0.6]; above the equator within
+// [0.2, 0.2 + 0.4 sin^2(23.37 deg)] = [0.2, 0.2629]. The result must lie between the uniform runs at those ends.
+TEST(EnvironmentAlbedoZonal, ReducesToUniformAndStaysWithinItsLatitudeBounds) {
+    const double r = kEarthRadius + 570e3;
+    AlbedoParams uniform;
+    uniform.reflectivity = 0.3;
+    AlbedoParams zonal = uniform;
+    zonal.model = ReflectivityModel::zonal;
+    zonal.reflectivity_equator = zonal.reflectivity_pole = 0.3;
+    const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+    const Eigen::Vector3d sun(0.3, 0.1, 0.95);
+    const auto a =
+        earth_albedo(uniform, Eigen::Vector3d(0.2, 0.3, 0.93).normalized() * r, sun.normalized(), 1361.0, identity);
+    const auto b =
+        earth_albedo(zonal, Eigen::Vector3d(0.2, 0.3, 0.93).normalized() * r, sun.normalized(), 1361.0, identity);
+    for (int k = 0; k < 6; ++k) EXPECT_NEAR(a[k], b[k], 1e-12 * (1.0 + a[k])) << "face " << k;
+
+    zonal.reflectivity_equator = 0.2;
+    zonal.reflectivity_pole = 0.6;
+    auto nadir_face = [&](const AlbedoParams& p, const Eigen::Vector3d& where, const Eigen::Vector3d& s) {
+        return earth_albedo(p, where * r, s, 1361.0, identity);
+    };
+    const Eigen::Vector3d pole(0, 0, 1), equator(1, 0, 0);
+    AlbedoParams lo = uniform, hi = uniform;
+    // Above the north pole, sun overhead: the -z face looks down.
+    lo.reflectivity = 0.5370;
+    hi.reflectivity = 0.6;
+    const double polar = nadir_face(zonal, pole, pole)[5];
+    EXPECT_GT(polar, nadir_face(lo, pole, pole)[5]);
+    EXPECT_LT(polar, nadir_face(hi, pole, pole)[5]);
+    // Above the equator, sun overhead: the -x face looks down.
+    lo.reflectivity = 0.2;
+    hi.reflectivity = 0.2630;
+    const double tropical = nadir_face(zonal, equator, equator)[1];
+    EXPECT_GT(tropical, nadir_face(lo, equator, equator)[1]);
+    EXPECT_LT(tropical, nadir_face(hi, equator, equator)[1]);
+    EXPECT_NEAR(reflectivity_at(zonal, 1.0), 0.6, 1e-15);
+    EXPECT_NEAR(reflectivity_at(zonal, 0.0), 0.2, 1e-15);
+}
+
+}  // namespace
+}  // namespace environment

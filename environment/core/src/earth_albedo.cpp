@@ -82,7 +82,12 @@ std::array<double, 6> earth_albedo(const AlbedoParams& params, const Eigen::Vect
                                    const Eigen::Vector3d& sun_direction, double solar_irradiance,
                                    const Eigen::Matrix3d& body_from_eci) {
     std::array<double, 6> e{};
-    if (!params.enabled || params.reflectivity <= 0.0 || solar_irradiance <= 0.0) return e;
+    const bool zonal = params.model == ReflectivityModel::zonal;
+    if (!params.enabled || solar_irradiance <= 0.0) return e;
+    if (!zonal && params.reflectivity <= 0.0) return e;
+    if (zonal && !(params.reflectivity_equator >= 0.0 && params.reflectivity_equator <= 1.0 &&
+                   params.reflectivity_pole >= 0.0 && params.reflectivity_pole <= 1.0))
+        throw std::invalid_argument("earth_albedo: zonal reflectivities must be in [0, 1]");
     if (params.rings < 1 || params.sectors < 3) throw std::invalid_argument("earth_albedo: rings >= 1, sectors >= 3");
     const double r = r_sat.norm();
     if (!(r > kEarthRadius)) throw std::invalid_argument("earth_albedo: satellite below the Earth's surface");
@@ -97,19 +102,24 @@ std::array<double, 6> earth_albedo(const AlbedoParams& params, const Eigen::Vect
     const double s_dot_e3 = sun_direction.dot(e3);
     const double s_dot_e1 = sun_direction.dot(e1);
     const double s_dot_e2 = sun_direction.dot(e2);
-    // Radiance per unit cos(zenith): L = rho E cos z / pi.
-    const double radiance_scale = params.reflectivity * solar_irradiance / kPi;
+    // Radiance per unit cos(zenith): L = rho E cos z / pi (zonal: rho applied per element below).
+    const double radiance_scale = (zonal ? 1.0 : params.reflectivity) * solar_irradiance / kPi;
+    const double rho_eq = params.reflectivity_equator,
+                 rho_step = params.reflectivity_pole - params.reflectivity_equator;
 
     // Work in body axes: the six face normals are then just +/- the coordinate axes. Per sector, the
     // horizontal direction psi in body axes and the sun's component along it (the same on every ring).
     const Eigen::Vector3d b1 = body_from_eci * e1, b2 = body_from_eci * e2, b3 = body_from_eci * e3;
     thread_local std::vector<Eigen::Vector3d> horizontal;
     thread_local std::vector<double> sun_horizontal;
+    thread_local std::vector<double> polar_horizontal;  // z (ECI) of the horizontal direction psi
     horizontal.resize(params.sectors);
     sun_horizontal.resize(params.sectors);
+    polar_horizontal.resize(params.sectors);
     for (int j = 0; j < params.sectors; ++j) {
         horizontal[j] = q.cos_psi[j] * b1 + q.sin_psi[j] * b2;
         sun_horizontal[j] = q.cos_psi[j] * s_dot_e1 + q.sin_psi[j] * s_dot_e2;
+        polar_horizontal[j] = q.cos_psi[j] * e1.z() + q.sin_psi[j] * e2.z();
     }
     for (int i = 0; i < params.rings; ++i) {
         const double gamma = 0.5 * gamma_max * (q.node[i] + 1.0);
@@ -121,7 +131,7 @@ std::array<double, 6> earth_albedo(const AlbedoParams& params, const Eigen::Vect
         // cos of the emission angle at the element: -p^ . d/l = (r cos gamma - R)/l
         const double cos_emit = (r * cg - kEarthRadius) / l;
         if (cos_emit <= 0.0) continue;
-        const double ring_weight = radiance_scale * cos_emit * area / l2;
+        const double ring_scale = radiance_scale * cos_emit * area / l2;
         // d in body axes (unnormalised): (R cos gamma - r) b3 + R sin gamma h(psi)
         const Eigen::Vector3d vertical = (kEarthRadius * cg - r) * b3;
         const double radial = kEarthRadius * sg;
@@ -129,6 +139,12 @@ std::array<double, 6> earth_albedo(const AlbedoParams& params, const Eigen::Vect
             // cos of the solar zenith angle at the element
             const double cos_z = cg * s_dot_e3 + sg * sun_horizontal[j];
             if (cos_z <= 0.0) continue;
+            // Zonal: sin(latitude) of the element is the ECI z of its unit position cg e3 + sg h(psi).
+            double ring_weight = ring_scale;
+            if (zonal) {
+                const double sin_lat = cg * e3.z() + sg * polar_horizontal[j];
+                ring_weight *= rho_eq + rho_step * sin_lat * sin_lat;
+            }
             if (params.response == AlbedoResponse::kelly) {
                 const double a = ring_weight * cos_z, inv_l = 1.0 / l;
                 for (int k = 0; k < 3; ++k) {

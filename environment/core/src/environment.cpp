@@ -24,8 +24,10 @@ void validate(const EnvironmentParams& p) {
     }
     if (p.igrf_max_degree < 1 || p.igrf_max_degree > 13)
         throw std::invalid_argument("Environment: igrf_max_degree must be 1..13");
-    if (!(p.albedo.reflectivity >= 0.0 && p.albedo.reflectivity <= 1.0)) {
-        throw std::invalid_argument("Environment: albedo reflectivity must be in [0, 1]");
+    const auto in_unit = [](double x) { return x >= 0.0 && x <= 1.0; };
+    if (!in_unit(p.albedo.reflectivity) || !in_unit(p.albedo.reflectivity_equator) ||
+        !in_unit(p.albedo.reflectivity_pole)) {
+        throw std::invalid_argument("Environment: albedo reflectivities must be in [0, 1]");
     }
     if (p.albedo.rings < 1 || p.albedo.rings > 1000 || p.albedo.sectors < 3 || p.albedo.sectors > 4000) {
         throw std::invalid_argument("Environment: albedo grid must have 1..1000 rings and 3..4000 sectors");
@@ -114,7 +116,8 @@ EnvironmentOutputs Environment::evaluate(double t, const RigidBodyState* state) 
     out.nadir_body = to_array(A * (-r / rn));
     out.orbit_radius_ratio = rn / kEarthRadius;
     const double cos_zss = r.dot(r_sun) / (rn * d_earth_sun);
-    out.albedo_source = params_.albedo.enabled ? params_.albedo.reflectivity * e_earth * std::max(0.0, cos_zss) : 0.0;
+    out.albedo_source =
+        params_.albedo.enabled ? reflectivity_at(params_.albedo, r.z() / rn) * e_earth * std::max(0.0, cos_zss) : 0.0;
     return out;
 }
 

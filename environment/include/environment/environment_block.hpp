@@ -66,6 +66,9 @@ struct EnvironmentData {
     std::int32_t albedo_rings = AlbedoParams{}.rings;
     std::int32_t albedo_sectors = AlbedoParams{}.sectors;
     AlbedoResponse albedo_response = AlbedoParams{}.response;  // the faces' angular response to albedo
+    ReflectivityModel albedo_reflectivity_model = AlbedoParams{}.model;
+    double albedo_reflectivity_equator = AlbedoParams{}.reflectivity_equator;  // 1
+    double albedo_reflectivity_pole = AlbedoParams{}.reflectivity_pole;        // 1
     // --- calculated parameter
     double orbit_period = 0.0;  // s
     // --- continuous states and derivatives

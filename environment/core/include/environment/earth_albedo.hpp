@@ -27,13 +27,32 @@ namespace environment {
 // normal incidence, gives the panel the same current: what the plant adds after its law for the direct sun.
 enum class AlbedoResponse { cosine, kelly };
 
+// How the Earth's reflectivity varies over its surface: one value everywhere, or a zonal shape that rises
+// from the equator to the poles, rho(phi) = rho_equator + (rho_pole - rho_equator) sin^2(phi), phi the
+// latitude of the reflecting element (the J2000 equator: within 0.4 deg of today's). The shape is the
+// simplest that captures the measured zonal means (dark tropical oceans, bright polar ice and cloud); it is
+// not a fit to a data set, and its two values are parameters: set them from one (satellite radiation
+// budget climatologies give zonal annual means of about 0.2 to 0.3 in the tropics and 0.5 to 0.7 at the
+// poles). Real reflectivity maps add longitude (continents, deserts, ocean), season and cloud: the
+// albedo-aware sun sensors of the literature use monthly gridded maps from satellite reflectivity data.
+enum class ReflectivityModel { uniform = 0, zonal = 1 };
+
 struct AlbedoParams {
     bool enabled = true;
-    double reflectivity = 0.3;  // Earth's mean Bond albedo, about 0.3
+    double reflectivity = 0.3;  // Earth's mean Bond albedo, about 0.3 (uniform model)
     AlbedoResponse response = AlbedoResponse::cosine;
     int rings = 16;    // Gauss-Legendre points in gamma
     int sectors = 36;  // midpoint points in psi
+    ReflectivityModel model = ReflectivityModel::uniform;
+    double reflectivity_equator = 0.2;  // zonal model (assumed, see above)
+    double reflectivity_pole = 0.6;
 };
+
+/// The reflectivity at a latitude (its sine) under the model.
+inline double reflectivity_at(const AlbedoParams& p, double sin_latitude) {
+    if (p.model == ReflectivityModel::uniform) return p.reflectivity;
+    return p.reflectivity_equator + (p.reflectivity_pole - p.reflectivity_equator) * sin_latitude * sin_latitude;
+}
 
 /// Irradiance (W/m^2) on the faces +x, -x, +y, -y, +z, -z. r_sat, sun_direction: ECI (m, unit);
 /// solar_irradiance at the Earth (W/m^2); body_from_eci = A (maps ECI to body).
