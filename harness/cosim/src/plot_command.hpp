@@ -1,7 +1,10 @@
 // `cosim plot results.csv`: the figures a person looks at after a run, as PNG files drawn by gnuplot:
-// the real and the acquired sun vector components (seed 000 fig. 8), the bus voltage (fig. 9), the
-// attitude error of the estimate against the truth in degrees, the battery state of charge. A
-// figure whose columns the CSV lacks is skipped with a note.
+// per axis the acquired sun vector (the estimator's samples) on the real one (seed 000 fig. 8), the sun
+// vector and attitude errors at the estimator's samples while valid (median and 95th percentile in the
+// legend), the bus voltage (fig. 9), the battery state of charge; from a CSV sampled finer than 50 us the
+// bus ripple over its last millisecond instead. A figure whose columns the CSV lacks is skipped with a
+// note. Writes index.html in the folder: every figure there, the error statistics, and
+// run_statistics.txt when present.
 #pragma once
 
 #include <filesystem>
