@@ -5,10 +5,25 @@
 #include <string_view>
 
 #include "fmi_loader/fmu.hpp"
+#include "system_description.hpp"
 
 namespace cosim {
 
+namespace {
+// A system (.ssd or .ssp): its components, their FMUs and bindings, its connections.
+void print_system_info(const std::filesystem::path& path, std::ostream& out) {
+    const SystemDescription d = read_system_description(path);
+    out << "system " << d.name << (d.archive ? " (SSP archive)" : "") << ": " << d.components.size() << " components, "
+        << d.connections.size() << " connections\n";
+    for (const auto& c : d.components) {
+        out << "  " << c.name << "  " << c.source << (c.bridge ? "  (hardware bridge)" : "") << "\n";
+        for (const auto& p : c.parameters) out << "      " << p.name << " = " << p.value << "  (" << p.type << ")\n";
+    }
+}
+}  // namespace
+
 void print_info(const std::filesystem::path& fmu_path, std::ostream& out) {
+    if (fmu_path.extension() == ".ssd" || fmu_path.extension() == ".ssp") return print_system_info(fmu_path, out);
     const fmi_loader::Fmu fmu(fmu_path);
     const auto& md = fmu.description();
     out << md.model_name << " — " << md.description << "\n";

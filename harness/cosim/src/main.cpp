@@ -13,14 +13,24 @@
 #include "plot_command.hpp"
 #include "run_command.hpp"
 #include "simulate_command.hpp"
+#include "ssp_archive.hpp"
 
 int main(int argc, char** argv) {
     CLI::App app{"cosim: FMI 2.0 co-simulation master"};
     app.require_subcommand(1);
 
     std::string info_path;
-    auto* info = app.add_subcommand("info", "Print an FMU's interface: kinds, variables, causality, unit, start");
-    info->add_option("fmu", info_path, "The .fmu file")->required();
+    auto* info = app.add_subcommand(
+        "info", "Print an FMU's interface (kinds, variables, causality, unit, start) or a system's components");
+    info->add_option("fmu", info_path, "The .fmu file, or a system (.ssd, .ssp)")->required();
+
+    std::string pack_ssd, pack_out;
+    std::vector<std::string> pack_fmu_dirs;
+    auto* pack = app.add_subcommand("pack", "Pack a system (.ssd) and its FMUs into an SSP archive (.ssp)");
+    pack->add_option("ssd", pack_ssd, "The system structure description")->required();
+    pack->add_option("-o,--output", pack_out, "The .ssp to write")->required();
+    pack->add_option("--fmu-dir", pack_fmu_dirs, "Where to look for FMUs not found beside the .ssd")
+        ->default_val(std::vector<std::string>{PVATT_DEFAULT_FMU_DIR});
 
     cosim::SimulateOptions sim;
     std::string fmu_path, csv_path;
@@ -36,8 +46,8 @@ int main(int argc, char** argv) {
     cosim::RunOptions run_options;
     std::string ssd_path, run_csv;
     std::vector<std::string> fmu_dirs;
-    auto* run = app.add_subcommand("run", "Run a system described in SSP (.ssd)");
-    run->add_option("ssd", ssd_path, "The system structure description")->required();
+    auto* run = app.add_subcommand("run", "Run a system described in SSP (.ssd, or an .ssp archive)");
+    run->add_option("ssd", ssd_path, "The system structure description (.ssd) or SSP archive (.ssp)")->required();
     run->add_option("--stop-time", run_options.stop_time, "Stop time in s (default: the .ssd's DefaultExperiment)");
     run->add_option("--output", run_csv, "CSV results file");
     run->add_option("--output-interval", run_options.output_interval,
@@ -101,6 +111,10 @@ int main(int argc, char** argv) {
     cosim::install_interrupt_handlers();
     try {
         if (*info) cosim::print_info(info_path, std::cout);
+        if (*pack) {
+            std::vector<std::filesystem::path> dirs(pack_fmu_dirs.begin(), pack_fmu_dirs.end());
+            cosim::pack_system(pack_ssd, pack_out, dirs, std::cout);
+        }
         if (*campaign) {
             campaign_options.spec = spec_path;
             if (!campaign_output.empty()) campaign_options.output = campaign_output;

@@ -7,6 +7,7 @@
 #include "cosim_error.hpp"
 #include "fmi2_instance.hpp"
 #include "hardware_bridge.hpp"
+#include "ssp_archive.hpp"
 
 namespace cosim {
 
@@ -84,25 +85,7 @@ std::size_t System::component_index(const std::string& name) const {
 }
 
 std::filesystem::path System::resolve_source(const std::string& source, const SystemOptions& options) const {
-    std::filesystem::path p = source;
-    if (source.starts_with("file:")) p = source.substr(source.starts_with("file://") ? 7 : 5);
-    std::vector<std::filesystem::path> tried;
-    auto found = [&](const std::filesystem::path& candidate) {
-        tried.push_back(candidate);
-        return std::filesystem::is_regular_file(candidate);
-    };
-    if (p.is_absolute()) {
-        if (found(p)) return p;
-    } else {
-        if (auto beside = description_.file.parent_path() / p; found(beside)) return beside;
-        for (const auto& dir : options.fmu_dirs) {
-            if (found(dir / p)) return dir / p;
-            if (found(dir / p.filename())) return dir / p.filename();
-        }
-    }
-    std::string where;
-    for (const auto& t : tried) where += "\n  " + t.string();
-    throw CosimError(description_.file.string() + ": FMU '" + source + "' not found; looked at:" + where);
+    return resolve_fmu(description_, source, options.fmu_dirs);
 }
 
 void System::load_components(const SystemOptions& options) {

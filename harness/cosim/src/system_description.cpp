@@ -183,8 +183,20 @@ std::optional<ExecutionHint> read_execution(const xmlNode* component, const std:
 
 }  // namespace
 
-SystemDescription read_system_description(const std::filesystem::path& ssd) {
-    if (!std::filesystem::exists(ssd)) throw CosimError(ssd.string() + ": no such file");
+SystemDescription read_system_description(const std::filesystem::path& path) {
+    if (!std::filesystem::exists(path)) throw CosimError(path.string() + ": no such file");
+    std::shared_ptr<const fmi_loader::FmuArchive> archive;
+    std::filesystem::path ssd = path;
+    if (path.extension() == ".ssp") {
+        try {
+            archive = std::make_shared<const fmi_loader::FmuArchive>(path);
+        } catch (const std::exception& e) {
+            throw CosimError(path.string() + ": not a usable SSP archive: " + e.what());
+        }
+        ssd = archive->directory() / "SystemStructure.ssd";
+        if (!std::filesystem::is_regular_file(ssd))
+            throw CosimError(path.string() + ": no SystemStructure.ssd at the archive's root (SSP 1.0 section 5)");
+    }
     const Doc doc = parse_file(ssd);
     const xmlNode* root = xmlDocGetRootElement(doc.get());
     if (!is(root, "SystemStructureDescription"))
@@ -194,6 +206,7 @@ SystemDescription read_system_description(const std::filesystem::path& ssd) {
 
     SystemDescription out;
     out.file = ssd;
+    out.archive = std::move(archive);
     out.name = required(system, "name", ssd);
     for (const xmlNode* e = first_child(system, "Elements") ? first_child(system, "Elements")->children : nullptr; e;
          e = e->next) {

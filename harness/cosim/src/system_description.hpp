@@ -6,9 +6,12 @@
 #include <cstdint>
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "fmi_loader/fmu_archive.hpp"
 
 namespace cosim {
 
@@ -69,6 +72,9 @@ struct ConnectionDescription {
 
 struct SystemDescription {
     std::filesystem::path file;  // where it was read from; relative sources resolve against it
+    // An SSP archive (.ssp) read from: unpacked in a private directory kept while any copy of this
+    // description lives; `file` is its SystemStructure.ssd, the FMUs lie beside it under resources/.
+    std::shared_ptr<const fmi_loader::FmuArchive> archive;
     std::string name;
     std::vector<ComponentDescription> components;
     std::vector<ConnectionDescription> connections;
@@ -77,6 +83,8 @@ struct SystemDescription {
     std::optional<double> max_step;         // and <Integrator maxStep=".."/>
 };
 
+// An .ssd, or an .ssp archive (by its extension) unpacked first within the loader's archive limits
+// (fmi_loader/limits.hpp: entries, sizes, compression ratio, no path leaving the archive).
 // Throws CosimError naming the file, line and cause for anything malformed or unsupported.
 SystemDescription read_system_description(const std::filesystem::path& ssd);
 

@@ -1,0 +1,112 @@
+// SSP archives: what `cosim pack` writes runs exactly as the .ssd it came from; broken archives are
+// refused with a reason.
+#include <gtest/gtest.h>
+#include <zip.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "cosim_error.hpp"
+#include "execution.hpp"
+#include "ssp_archive.hpp"
+#include "system.hpp"
+
+namespace cosim {
+namespace {
+
+const std::filesystem::path fmu_dir = COSIM_TEST_FMU_DIR;
+
+std::filesystem::path temp(const std::string& name) {
+    return std::filesystem::temp_directory_path() /
+           ("cosim_ssp_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" + name);
+}
+
+// gain.y = k u with k = -0.5 fed back into the integrator: x(t) = exp(-0.5 t).
+void write_ssd(const std::filesystem::path& path) {
+    std::ofstream(path) << R"(<?xml version="1.0" encoding="UTF-8"?>
+<ssd:SystemStructureDescription xmlns:ssd="http://ssp-standard.org/SSP1/SystemStructureDescription"
+    xmlns:ssc="http://ssp-standard.org/SSP1/SystemStructureCommon"
+    xmlns:ssv="http://ssp-standard.org/SSP1/SystemStructureParameterValues" version="1.0" name="loop">
+  <ssd:System name="loop">
+    <ssd:Elements>
+      <ssd:Component name="int" source="test_integrator.fmu"/>
+      <ssd:Component name="gain" source="test_gain.fmu">
+        <ssd:ParameterBindings><ssd:ParameterBinding><ssd:ParameterValues><ssv:ParameterSet version="1.0" name="p">
+          <ssv:Parameters><ssv:Parameter name="k"><ssv:Real value="-0.5"/></ssv:Parameter></ssv:Parameters>
+        </ssv:ParameterSet></ssd:ParameterValues></ssd:ParameterBinding></ssd:ParameterBindings>
+      </ssd:Component>
+    </ssd:Elements>
+    <ssd:Connections>
+      <ssd:Connection startElement="int" startConnector="y" endElement="gain" endConnector="u"/>
+      <ssd:Connection startElement="gain" startConnector="y" endElement="int" endConnector="u"/>
+    </ssd:Connections>
+  </ssd:System>
+  <ssd:DefaultExperiment startTime="0" stopTime="1"/>
+</ssd:SystemStructureDescription>
+)";
+}
+
+std::vector<double> run_y(const std::filesystem::path& system_file, std::vector<std::filesystem::path> fmu_dirs = {}) {
+    SystemOptions o;
+    o.fmu_dirs = std::move(fmu_dirs);  // none for an archive: it must carry its FMUs
+    System system(read_system_description(system_file), o);
+    struct Probe : Observer {
+        std::vector<double> y;
+        void sample(double, System& s) override {
+            const auto i = s.component_index("int");
+            y.push_back(s.components()[i].instance->get_real(
+                s.components()[i].description().find_variable("y")->value_reference));
+        }
+    } probe;
+    ExecutionOptions ex;
+    ex.stop_time = 1.0;
+    ex.output_interval = 0.25;
+    ex.relative_tolerance = 1e-9;
+    Execution(system, ex).run({&probe});
+    return probe.y;
+}
+
+TEST(CosimSsp, PackedArchiveRunsExactlyAsItsSsd) {
+    const auto ssd = temp("loop.ssd"), ssp = temp("loop.ssp");
+    write_ssd(ssd);
+    std::ostringstream log;
+    pack_system(ssd, ssp, {fmu_dir}, log);
+    ASSERT_TRUE(std::filesystem::exists(ssp));
+    EXPECT_FALSE(std::filesystem::exists(ssp.string() + ".partial"));
+    const auto packed = run_y(ssp);
+    ASSERT_EQ(packed.size(), 5u);
+    EXPECT_EQ(packed, run_y(ssd, {fmu_dir}));  // bit for bit
+    for (std::size_t k = 0; k < packed.size(); ++k) EXPECT_NEAR(packed[k], std::exp(-0.5 * 0.25 * k), 1e-6);
+    EXPECT_THROW(pack_system(ssd, temp("missing.ssp"), {}, log), CosimError);  // FMUs nowhere: nothing written
+    EXPECT_FALSE(std::filesystem::exists(temp("missing.ssp")));
+    std::filesystem::remove(ssd);
+    std::filesystem::remove(ssp);
+}
+
+void write_zip(const std::filesystem::path& path, const std::vector<std::pair<std::string, std::string>>& entries) {
+    int error = 0;
+    zip_t* z = zip_open(path.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error);
+    ASSERT_NE(z, nullptr);
+    for (const auto& [name, text] : entries) {
+        zip_source_t* s = zip_source_buffer(z, text.data(), text.size(), 0);
+        ASSERT_GE(zip_file_add(z, name.c_str(), s, ZIP_FL_ENC_UTF_8), 0);
+    }
+    ASSERT_EQ(zip_close(z), 0);
+}
+
+TEST(CosimSsp, BrokenArchivesAreRefused) {
+    const auto no_ssd = temp("no_ssd.ssp"), escape = temp("escape.ssp"), not_zip = temp("not_zip.ssp");
+    write_zip(no_ssd, {{"resources/readme.txt", "no system here"}});
+    write_zip(escape, {{"../evil.ssd", "<x/>"}});
+    std::ofstream(not_zip) << "plain text";
+    EXPECT_THROW(read_system_description(no_ssd), CosimError);
+    EXPECT_THROW(read_system_description(escape), CosimError);
+    EXPECT_THROW(read_system_description(not_zip), CosimError);
+    for (const auto& p : {no_ssd, escape, not_zip}) std::filesystem::remove(p);
+}
+
+}  // namespace
+}  // namespace cosim
