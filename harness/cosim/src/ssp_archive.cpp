@@ -83,8 +83,8 @@ void pack_system(const std::filesystem::path& ssd, const std::filesystem::path& 
         const std::string entry = "resources/" + fmu.filename().string();
         const auto [it, inserted] = file_of_entry.emplace(entry, fmu);
         if (!inserted && std::filesystem::canonical(it->second) != std::filesystem::canonical(fmu))
-            throw CosimError(ssd.string() + ": two different FMUs are named " + fmu.filename().string() +
-                             " (" + it->second.string() + ", " + fmu.string() + ")");
+            throw CosimError(ssd.string() + ": two different FMUs are named " + fmu.filename().string() + " (" +
+                             it->second.string() + ", " + fmu.string() + ")");
         source_of[c.name] = entry;
     }
 
