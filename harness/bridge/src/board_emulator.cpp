@@ -58,12 +58,18 @@ double read_value(std::span<const std::byte> data, const fmu::Variable& v) {
     throw fmu::Error(v.name + ": String variables cannot cross the link");
 }
 
+std::string format_count(double x) {
+    return x == std::floor(x) && std::abs(x) < 1e15 ? std::to_string(static_cast<long long>(x)) : std::to_string(x);
+}
+
 }  // namespace
 
 BoardEmulator::BoardEmulator(std::unique_ptr<fmu::Model> model, const std::vector<std::string>& settings)
     : runner_(std::move(model)), settings_(settings) {
     inputs_ = by_causality(runner_.table(), fmu::Causality::input);
     outputs_ = by_causality(runner_.table(), fmu::Causality::output);
+    for (const auto* v : by_causality(runner_.table(), fmu::Causality::parameter))
+        if (v->type != fmu::ValueType::String) parameters_.push_back(v);
     if (inputs_.size() > max_values || outputs_.size() > max_values)
         throw FrameError("the block has more inputs or outputs than a frame carries (" + std::to_string(max_values) +
                          ")");
@@ -97,20 +103,57 @@ void BoardEmulator::set_inputs(const std::vector<double>& values) {
     runner_.mark_changed();
 }
 
+Frame BoardEmulator::configure(const Frame& frame) {
+    if (frame.time != static_cast<double>(parameters_.size()))
+        throw FrameError("configuration of " + format_count(frame.time) + " parameters; the block has " +
+                         std::to_string(parameters_.size()));
+    if (frame.sequence > parameters_.size() || frame.values.size() > parameters_.size() - frame.sequence)
+        throw FrameError("configure frame at index " + std::to_string(frame.sequence) + " with " +
+                         std::to_string(frame.values.size()) + " values runs past the block's " +
+                         std::to_string(parameters_.size()) + " parameters");
+    // Checked before any is kept: a value outside a parameter's declared range is refused whole.
+    for (std::size_t i = 0; i < frame.values.size(); ++i) {
+        const fmu::Variable& v = *parameters_[frame.sequence + i];
+        const double x = frame.values[i];
+        if (!std::isfinite(x) || (v.min && x < *v.min) || (v.max && x > *v.max) ||
+            (v.type == fmu::ValueType::Enumeration && !v.item_valued(static_cast<std::int32_t>(std::lround(x)))))
+            throw FrameError("configuration: " + v.name + " = " + std::to_string(x) + " is not a value it takes");
+    }
+    if (configuration_.size() != parameters_.size()) {
+        configuration_.assign(parameters_.size(), 0.0);
+        configured_.assign(parameters_.size(), false);
+    }
+    for (std::size_t i = 0; i < frame.values.size(); ++i) {
+        configuration_[frame.sequence + i] = frame.values[i];
+        configured_[frame.sequence + i] = true;
+    }
+    Frame ack;
+    ack.type = FrameType::configured;
+    ack.sequence = frame.sequence;
+    ack.time = static_cast<double>(parameters_.size());
+    return ack;
+}
+
+// The master's parameter values over the board's own settings, for the run that starts now.
+void BoardEmulator::apply_configuration() {
+    for (std::size_t i = 0; i < configuration_.size(); ++i)
+        if (configured_[i]) write_value(runner_.model().bytes(), *parameters_[i], configuration_[i]);
+}
+
 Frame BoardEmulator::answer(const Frame& request) {
-    if (request.type != FrameType::request) throw FrameError("expected a request frame, got a reply");
+    if (request.type == FrameType::configure) return configure(request);
+    if (request.type != FrameType::request) throw FrameError("expected a request or configure frame");
     if (request.values.size() != inputs_.size())
         throw FrameError("request carries " + std::to_string(request.values.size()) + " values, the block has " +
                          std::to_string(inputs_.size()) + " inputs");
-    if (request.sequence == 1 && initialized_) {
-        // Sequence 1 opens a run: the board starts over from its defaults and configuration.
+    if (request.sequence == 1) initialized_ = false;  // sequence 1 opens a run
+    if (!initialized_) {
+        // The board starts over from its defaults, its own settings and the master's configuration; then,
+        // as an FMU's initialization, the first frame's inputs are the initial inputs, its time the start
+        // time, and the block's event iteration at the start follows.
         runner_.reset(request.time);
         apply_settings();
-        initialized_ = false;
-    }
-    if (!initialized_) {
-        // As an FMU's initialization: the first frame's inputs are the initial inputs, its time
-        // the start time, and the block's event iteration at the start follows.
+        apply_configuration();
         runner_.set_time(request.time);
         runner_.enter_initialization();
         set_inputs(request.values);
@@ -145,13 +188,19 @@ ServeStatistics serve(BoardEmulator& board, Link& link, const ServeOptions& opti
         if (!bytes) continue;
         last_frame = Clock::now();
         Frame reply;
+        bool configuration = false;
         try {
             const Frame request = decode(*bytes);
-            ++stats.requests;
+            configuration = request.type == FrameType::configure;
+            ++(configuration ? stats.configure_frames : stats.requests);
             reply = board.answer(request);
         } catch (const std::exception& e) {
             ++stats.rejected;
             if (options.log) *options.log << "board: rejected a frame: " << e.what() << "\n";
+            continue;
+        }
+        if (configuration) {
+            link.send(encode(reply));
             continue;
         }
         if (options.drop_every > 0 && stats.requests % options.drop_every == 0) {

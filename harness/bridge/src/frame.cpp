@@ -56,7 +56,7 @@ std::vector<std::uint8_t> encode(const Frame& frame) {
     put_u32(out, 4, frame.sequence);
     put_f64(out, 8, frame.time);
     put_u16(out, 16, static_cast<std::uint16_t>(n));
-    // bytes 18..23: flags and reserved, zero in version 1
+    // bytes 18..23: flags and reserved, zero in versions 1 and 2
     for (std::size_t i = 0; i < n; ++i) put_f64(out, header_size + 8 * i, frame.values[i]);
     const std::size_t body = header_size + 8 * n;
     put_u16(out, body, crc16_ccitt(std::span(out).first(body)));
@@ -74,8 +74,8 @@ Frame decode(std::span<const std::uint8_t> bytes) {
     if (bytes[2] != frame_version)
         throw FrameError("unsupported frame version " + std::to_string(bytes[2]) + " (expected " +
                          std::to_string(frame_version) + ")");
-    if (bytes[3] != static_cast<std::uint8_t>(FrameType::request) &&
-        bytes[3] != static_cast<std::uint8_t>(FrameType::reply))
+    if (bytes[3] < static_cast<std::uint8_t>(FrameType::request) ||
+        bytes[3] > static_cast<std::uint8_t>(FrameType::configured))
         throw FrameError("unknown frame type " + std::to_string(bytes[3]));
     const std::size_t n = get_u16(bytes, 16);
     if (n > max_values)

@@ -226,12 +226,30 @@ TEST(Udp, SamplePeriodSettingDrivesTheExchanges) {
 
 // A silent board (a bound socket nobody answers on): policy stop gives up after max_misses.
 TEST(Udp, StopPolicyErrorsAfterConsecutiveMisses) {
-    auto silent = free_udp();
+    // A board that takes its configuration but answers no request.
+    auto link = free_udp();
+    const int port = link->port();
+    bridge::ServeOptions deaf;
+    deaf.drop_every = 1;
+    Board board(std::move(link), deaf);
     try {
-        run(annotation(R"(port="1" timeout_ms="20" max_misses="3" policy="stop")"), silent->port());
+        run(annotation(R"(port="1" timeout_ms="20" max_misses="3" policy="stop")"), port);
         FAIL() << "the run should have stopped";
     } catch (const CosimError& e) {
         EXPECT_NE(std::string(e.what()).find("3 consecutive misses"), std::string::npos) << e.what();
+    }
+}
+
+// A board that never answers is not run with parameters it may not have: the configuration frames the
+// master sends first go unacknowledged, and the run stops before its first sample, naming the timeout.
+TEST(Udp, UnacknowledgedConfigurationRefusesTheRun) {
+    auto silent = free_udp();
+    try {
+        run(annotation(R"(port="1" timeout_ms="20")"), silent->port());
+        FAIL() << "the run should have been refused";
+    } catch (const CosimError& e) {
+        EXPECT_NE(std::string(e.what()).find("did not acknowledge its configuration"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("timeout_ms"), std::string::npos) << e.what();
     }
 }
 
@@ -242,10 +260,17 @@ TEST(Udp, MalformedRepliesAreRejected) {
     const int port = board->port();
     std::atomic<bool> stop{false};
     std::thread fake([&] {
-        for (int i = 0; i < 2 && !stop; ++i) {
+        for (int i = 0; i < 2 && !stop;) {
             const auto request = board->receive(bridge::Clock::now() + std::chrono::seconds(5));
             if (!request) return;
             bridge::Frame reply = bridge::decode(*request);
+            if (reply.type == bridge::FrameType::configure) {  // take the configuration, as a board does
+                reply.type = bridge::FrameType::configured;
+                reply.values.clear();
+                board->send(bridge::encode(reply));
+                continue;
+            }
+            ++i;
             reply.type = bridge::FrameType::reply;
             reply.values.assign(3, 0.0);
             auto bytes = bridge::encode(reply);
@@ -280,8 +305,9 @@ TEST(Udp, RealtimePacesEachExchange) {
         while (arrivals.size() < 11) {
             const auto bytes = server->receive(bridge::Clock::now() + std::chrono::seconds(5));
             if (!bytes) return;
-            arrivals.push_back(bridge::Clock::now());
-            server->send(bridge::encode(emulator.answer(bridge::decode(*bytes))));
+            const bridge::Frame frame = bridge::decode(*bytes);
+            if (frame.type == bridge::FrameType::request) arrivals.push_back(bridge::Clock::now());
+            server->send(bridge::encode(emulator.answer(frame)));
         }
     });
     const auto before = bridge::Clock::now();

@@ -64,8 +64,8 @@ TEST(Codec, LayoutIsLittleEndianAsDocumented) {
     const auto b = encode(f);
     EXPECT_EQ(b[0], 'P');
     EXPECT_EQ(b[1], 'V');
-    EXPECT_EQ(b[2], 1);
-    EXPECT_EQ(b[3], 1);
+    EXPECT_EQ(b[2], 2);  // version 2
+    EXPECT_EQ(b[3], 1);  // request
     EXPECT_EQ(b[4], 0x04);
     EXPECT_EQ(b[7], 0x01);
     EXPECT_EQ(b[15], 0x3F);
@@ -91,8 +91,8 @@ TEST(Codec, BadMagicRejected) {
 
 TEST(Codec, BadVersionRejected) {
     auto b = encode(sample_frame());
-    b[2] = 2;
-    EXPECT_NE(rejection(b).find("version 2"), std::string::npos);
+    b[2] = 1;  // a peer of before the configuration frames
+    EXPECT_NE(rejection(b).find("version 1"), std::string::npos);
 }
 
 TEST(Codec, UnknownTypeRejected) {

@@ -34,7 +34,7 @@ double percentile(const std::vector<double>& sorted, double p) {
 HardwareBridge::HardwareBridge(const fmi_loader::ModelDescription& description, std::string name,
                                BridgeDescription settings)
     : description_(description), name_(std::move(name)), settings_(std::move(settings)) {
-    std::vector<std::pair<fmi2ValueReference, std::size_t>> ins, outs;
+    std::vector<std::pair<fmi2ValueReference, std::size_t>> ins, outs, params;
     for (const auto& v : description_.model_variables) {
         Kind kind = Kind::real;
         switch (v.type) {
@@ -69,6 +69,7 @@ HardwareBridge::HardwareBridge(const fmi_loader::ModelDescription& description, 
         values_.push_back(start);
         if (v.causality == Causality::input) ins.emplace_back(v.value_reference, index);
         if (v.causality == Causality::output) outs.emplace_back(v.value_reference, index);
+        if (v.causality == Causality::parameter) params.emplace_back(v.value_reference, index);
         if (v.name == "sample_period") period_slot_ = index + 1;
     }
     // Frames carry inputs and outputs in value-reference order, as the block's own table numbers them.
@@ -76,6 +77,8 @@ HardwareBridge::HardwareBridge(const fmi_loader::ModelDescription& description, 
     std::sort(outs.begin(), outs.end());
     for (const auto& [vr, i] : ins) inputs_.push_back(i);
     for (const auto& [vr, i] : outs) outputs_.push_back(i);
+    std::sort(params.begin(), params.end());
+    for (const auto& [vr, i] : params) parameters_.push_back(i);
     if (!period_slot_)
         throw CosimError(name_ +
                          ": a hardware-bridged block needs a Real parameter 'sample_period' (its sampling instants)");
@@ -96,6 +99,7 @@ std::size_t HardwareBridge::slot(Kind kind, fmi2ValueReference vr) const {
 void HardwareBridge::setup_experiment(double start_time, std::optional<double>, std::optional<double>) {
     start_time_ = time_ = start_time;
     next_sample_ = 0;
+    board_configured_ = false;
     bridge::LinkSettings link;
     link.transport = settings_.transport;
     link.host = settings_.host;
@@ -174,7 +178,46 @@ fmi2EventInfo HardwareBridge::new_discrete_states() {
     return info;
 }
 
+void HardwareBridge::configure_board() {
+    const auto total = static_cast<double>(parameters_.size());
+    for (std::size_t first = 0; first < parameters_.size(); first += bridge::max_values) {
+        bridge::Frame frame;
+        frame.type = bridge::FrameType::configure;
+        frame.sequence = static_cast<std::uint32_t>(first);
+        frame.time = total;
+        for (std::size_t i = first; i < std::min(parameters_.size(), first + bridge::max_values); ++i)
+            frame.values.push_back(values_[parameters_[i]]);
+        link_->send(bridge::encode(frame));
+        const auto deadline = bridge::Clock::now() + std::chrono::milliseconds(settings_.timeout_ms);
+        bool taken = false;
+        while (!taken) {
+            const auto bytes = link_->receive(deadline);
+            if (!bytes) break;
+            bridge::Frame ack;
+            try {
+                ack = bridge::decode(*bytes);
+            } catch (const bridge::FrameError& e) {
+                ++stats_.malformed;
+                last_error_ = e.what();
+                continue;
+            }
+            if (ack.type != bridge::FrameType::configured || ack.sequence != frame.sequence) continue;
+            if (ack.time != total)
+                throw CosimError(name_ + ": the board has " + format_real(ack.time) + " parameters, the block " +
+                                 std::to_string(parameters_.size()) + ": not the same block (or firmware version)");
+            taken = true;
+        }
+        if (!taken)
+            throw CosimError(name_ + ": the board did not acknowledge its configuration (parameters " +
+                             std::to_string(first) + " on) within " + std::to_string(settings_.timeout_ms) +
+                             " ms (the bridge's timeout_ms); refusing to run it with parameters it may not have" +
+                             (last_error_.empty() ? "" : " (last error: " + last_error_ + ")"));
+    }
+    board_configured_ = true;
+}
+
 void HardwareBridge::exchange() {
+    if (!board_configured_) configure_board();
     if (pacer_) pacer_(time_);  // --realtime: the frame leaves at the sample instant's wall time
     // Answers to frames already given up arrive late: take them off the link first.
     while (auto stale = link_->receive(bridge::Clock::now())) {

@@ -62,12 +62,17 @@ private:
     std::size_t slot(Kind kind, fmi2ValueReference vr) const;
     double next_sample_time() const { return start_time_ + static_cast<double>(next_sample_) * period_; }
     void exchange();
+    // Sends the block's parameter values (configure frames) and waits for the board to take each; throws
+    // CosimError when it does not within the bridge's timeout_ms, or has other parameters.
+    void configure_board();
 
     const fmi_loader::ModelDescription& description_;
     std::string name_;
     BridgeDescription settings_;
     std::map<std::pair<Kind, fmi2ValueReference>, std::size_t> slots_;  // -> index into values_
     std::vector<double> values_;                 // every non-String variable, as the wire carries it (f64)
+    std::vector<std::size_t> parameters_;        // indices into values_ of the parameters, value-reference order
+    bool board_configured_ = false;              // configure frames sent and taken, for this run
     std::vector<std::string> strings_;           // String variables (stay on this side of the link)
     std::vector<std::size_t> inputs_, outputs_;  // value-reference order
     std::size_t period_slot_ = 0;

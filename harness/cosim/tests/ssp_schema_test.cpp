@@ -52,9 +52,9 @@ TEST(CosimSspSchema, BundledSystemsAndTheirArchivesValidate) {
     for (const char* name : {"seed_spin", "seed_spin_hil", "leo_orbit"}) {
         const auto ssd = systems_dir / (std::string(name) + ".ssd");
         EXPECT_EQ(schema_errors(ssd), "") << ssd;
-        const auto ssp = std::filesystem::temp_directory_path() /
-                         ("cosim_schema_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
-                          name + ".ssp");
+        const auto ssp =
+            std::filesystem::temp_directory_path() /
+            ("cosim_schema_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" + name + ".ssp");
         std::ostringstream log;
         pack_system(ssd, ssp, {PVATT_FMU_DIR}, log);
         const fmi_loader::FmuArchive unpacked(ssp);  // the zip, as any SSP importer opens it

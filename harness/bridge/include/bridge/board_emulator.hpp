@@ -18,22 +18,29 @@ namespace bridge {
 class BoardEmulator {
 public:
     // `settings` are "parameter=value" applied before the block initializes (the board's own
-    // configuration; the link carries no parameters).
+    // configuration); parameter values the master sends in configure frames are applied after them.
     explicit BoardEmulator(std::unique_ptr<fmu::Model> model, const std::vector<std::string>& settings = {});
 
     std::size_t input_count() const { return inputs_.size(); }
     std::size_t output_count() const { return outputs_.size(); }
-    // Throws FrameError for a request whose value count is not the block's input count, and
-    // fmu::Error when the block refuses its inputs.
+    std::size_t parameter_count() const { return parameters_.size(); }
+    // A request gets its reply, a configure frame its configured frame. Throws FrameError for a request
+    // whose value count is not the block's input count or a configuration that is not the block's, and
+    // fmu::Error when the block refuses its inputs or parameters.
     Frame answer(const Frame& request);
 
 private:
     void set_inputs(const std::vector<double>& values);
     void apply_settings();
+    void apply_configuration();
+    Frame configure(const Frame& frame);
 
     fmu::ModelRunner runner_;
     std::vector<std::string> settings_;
     std::vector<const fmu::Variable*> inputs_, outputs_;
+    std::vector<const fmu::Variable*> parameters_;  // non-String parameters, value-reference order
+    std::vector<double> configuration_;             // from configure frames, applied at each run's start
+    std::vector<bool> configured_;
     bool initialized_ = false;
 };
 
@@ -48,6 +55,7 @@ struct ServeOptions {
 
 struct ServeStatistics {
     long requests = 0, replies = 0, dropped = 0, rejected = 0;
+    long configure_frames = 0;  // answered always: drop_every and max_frames count requests only
 };
 
 ServeStatistics serve(BoardEmulator& board, Link& link, const ServeOptions& options);

@@ -18,19 +18,28 @@ public:
 };
 
 inline constexpr std::uint16_t frame_magic = 0x5650;  // bytes 'P' 'V' on the wire
-inline constexpr std::uint8_t frame_version = 1;
+// Version 2 added the configuration frames; a version-1 peer is refused by name.
+inline constexpr std::uint8_t frame_version = 2;
 inline constexpr std::size_t header_size = 24;  // values start 8-byte aligned
 inline constexpr std::size_t crc_size = 2;
 inline constexpr std::size_t max_values = 64;
 inline constexpr std::size_t max_frame_size = header_size + 8 * max_values + crc_size;  // 538 bytes
 
-enum class FrameType : std::uint8_t { request = 1, reply = 2 };
+// request/reply: one sample. configure (master -> board, before the first request of a run): the bridged
+// block's parameter values, as many frames as they need; configured (board -> master): the board took one.
+enum class FrameType : std::uint8_t { request = 1, reply = 2, configure = 3, configured = 4 };
 
 struct Frame {
     FrameType type = FrameType::request;
+    // request/reply: the exchange's number (1 opens a run). configure/configured: the index of the first
+    // parameter value the frame carries.
     std::uint32_t sequence = 0;
-    double time = 0.0;           // simulation time of the sample instant, s
-    std::vector<double> values;  // inputs (request) or outputs (reply) in value-reference order
+    // request/reply: simulation time of the sample instant, s. configure: the number of parameters the
+    // master sends in all; configured: the number the board has (the two must agree).
+    double time = 0.0;
+    // request: inputs; reply: outputs; configure: parameter values — each in value-reference order, the
+    // parameters being the block's non-String ones (an Integer, Boolean or Enumeration as its number).
+    std::vector<double> values;
 };
 
 // CRC-16/CCITT-FALSE: polynomial 0x1021, initial value 0xFFFF, no reflection, no final xor.
