@@ -374,12 +374,14 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.output("mag_set_reset", &D::mag_set_reset, "",
              "Set/reset pulse commanded last, to the magnetometer's set_reset_command: true set, false reset")
         .discrete()
-        .depends_on({});
+        .depends_on({})
+        .initial_depends_on({});  // set at the start sample, whatever the inputs (no pulse there)
     t.output("mag_offset", &D::mag_offset, "V",
              "Magnetometer offset taken out of the field: the mean of mag_offset_window estimates from set/reset "
              "readings (half the sum of a set and a reset reading); 0 until that many were taken")
         .discrete()
-        .depends_on({});
+        .depends_on({})
+        .initial_depends_on({});  // no set/reset pair at the start sample
     t.local("t_start", &D::t_start, "s", "Start time: sample k is due at t_start + k*sample_period").discrete();
 }
 

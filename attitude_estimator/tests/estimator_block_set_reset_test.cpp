@@ -52,5 +52,24 @@ TEST(EstimatorFmuSetReset, WithoutPulsesTheCommandStaysSetAndTheOffsetInTheField
     EXPECT_NEAR(d.mag_field[0], 32e-6, 1e-12);  // (0.3 + 0.02) V / 1e4 V/T
 }
 
+// The model description says mag_set_reset and mag_offset leave initialization independent of every input
+// and parameter (InitialUnknowns dependencies=""), which lets a host start the mag -> est -> mag loop
+// without iterating: whatever the readings and the pulse period, the start sample commands set, offset 0.
+TEST(EstimatorFmuSetReset, StartValuesDependOnNoInputOrParameter) {
+    for (const double v : {0.3, 2.5, 4.9})
+        for (const int period : {0, 1, 3}) {
+            Simulation sim;
+            auto& d = sim.data();
+            d.mag_set_reset_samples = period;
+            d.mag_offset_window = 1;
+            d.v_mag = {v, 5.0 - v, v};
+            d.v_mag_ref = v;
+            sim.inputs_changed();
+            sim.start();
+            EXPECT_TRUE(d.mag_set_reset) << v << " V, period " << period;
+            EXPECT_EQ(d.mag_offset, (Vec3d{0.0, 0.0, 0.0})) << v << " V, period " << period;
+        }
+}
+
 }  // namespace
 }  // namespace attitude_estimator::test

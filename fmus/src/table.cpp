@@ -152,6 +152,29 @@ TableBase::Handle& TableBase::Handle::depends_elementwise(std::initializer_list<
     return *this;
 }
 
+TableBase::Handle& TableBase::Handle::initial_depends_on(std::initializer_list<std::string_view> names) {
+    const auto& vars = table_.variables_;
+    for (auto i = first_; i < last_; ++i) {
+        auto& v = table_.variables_[i];
+        if (v.causality != Causality::output) throw Error("'" + v.name + "': initial dependencies are for outputs");
+        auto& deps = v.initial_dependencies.emplace();
+        for (auto name : names) {
+            bool found = false;
+            for (std::size_t k = 0; k < vars.size(); ++k) {
+                if (vars[k].name != name && vars[k].base_name != name) continue;
+                if (vars[k].causality != Causality::input && vars[k].causality != Causality::parameter)
+                    throw Error("'" + vars[k].name +
+                                "' is neither an input nor a parameter: not an initial dependency");
+                deps.push_back(k);
+                found = true;
+            }
+            if (!found) throw Error("initial dependency '" + std::string(name) + "' is not declared (yet)");
+        }
+        std::sort(deps.begin(), deps.end());
+    }
+    return *this;
+}
+
 // The derivatives of a state block were declared right after it, with the same length.
 TableBase::Handle& TableBase::Handle::derivative_depends_on(std::initializer_list<std::string_view> names) {
     const auto n = last_ - first_;

@@ -66,6 +66,8 @@ void write_unit(Writer& w, const UnitDefinition& u) {
     w.end();
 }
 
+// with_dependencies: Outputs and Derivatives (Variable::dependencies), else InitialUnknowns
+// (Variable::initial_dependencies); either only where declared.
 void write_unknowns(Writer& w, const char* element, const std::vector<std::size_t>& indices,
                     const std::vector<Variable>& vars, bool with_dependencies) {
     if (indices.empty()) return;
@@ -73,8 +75,8 @@ void write_unknowns(Writer& w, const char* element, const std::vector<std::size_
     for (auto i : indices) {
         w.start("Unknown");
         w.attribute("index", static_cast<int>(i + 1));
-        const auto& deps = vars[i].dependencies;
-        if (with_dependencies && deps) {
+        const auto& deps = with_dependencies ? vars[i].dependencies : vars[i].initial_dependencies;
+        if (deps) {
             std::string list;
             for (auto d : *deps) list += (list.empty() ? "" : " ") + std::to_string(d + 1);
             w.attribute("dependencies", list);

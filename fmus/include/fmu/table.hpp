@@ -99,6 +99,9 @@ public:
         Handle& depends_on(std::initializer_list<std::string_view> names);
         Handle& depends_elementwise(std::initializer_list<std::string_view> names);
         Handle& derivative_depends_on(std::initializer_list<std::string_view> names);
+        // Inputs and parameters this output's value at the end of initialization depends on (an empty
+        // list: none, a value the block sets alone whatever its inputs).
+        Handle& initial_depends_on(std::initializer_list<std::string_view> names);
         Handle& derivative_depends_elementwise(std::initializer_list<std::string_view> names);
 
     private:

@@ -50,6 +50,10 @@ struct Variable {
     // Outputs and derivatives: indices of the inputs and states this value depends on directly
     // (empty optional: not declared, meaning "may depend on every known").
     std::optional<std::vector<std::size_t>> dependencies;
+    // Outputs with initial="calculated": indices of the inputs and parameters its value at the end of
+    // initialization depends on (empty optional: not declared, "may depend on every known"). FMI 2.0
+    // §2.2.8 InitialUnknowns; a host that breaks algebraic loops in initialization reads it.
+    std::optional<std::vector<std::size_t>> initial_dependencies;
 
     bool has_start() const {
         return causality == Causality::input || initial == Initial::exact || initial == Initial::approx ||

@@ -82,7 +82,11 @@ CsvTable read_csv(const std::filesystem::path& file) {
             throw CosimError(file.string() + ": row " + std::to_string(row) + " is short");
         for (std::size_t i = 0; i < cells.size(); ++i) {
             double x = std::numeric_limits<double>::quiet_NaN();
-            std::from_chars(cells[i].data(), cells[i].data() + cells[i].size(), x);
+            // Blanks around a number are allowed (other tools pad their cells: OMSimulator writes " 13").
+            std::string_view cell = cells[i];
+            while (!cell.empty() && (cell.front() == ' ' || cell.front() == '\t')) cell.remove_prefix(1);
+            while (!cell.empty() && (cell.back() == ' ' || cell.back() == '\t')) cell.remove_suffix(1);
+            std::from_chars(cell.data(), cell.data() + cell.size(), x);
             table.columns[i].push_back(x);
         }
     }

@@ -31,6 +31,11 @@ int main(int argc, char** argv) {
     pack->add_option("-o,--output", pack_out, "The .ssp to write")->required();
     pack->add_option("--fmu-dir", pack_fmu_dirs, "Where to look for FMUs not found beside the .ssd")
         ->default_val(std::vector<std::string>{PVATT_DEFAULT_FMU_DIR});
+    cosim::PackOptions pack_options;
+    pack->add_option("--oms-step", pack_options.oms_step,
+                     "Fixed step written for OMSimulator's co-simulation master (default: the smallest "
+                     "Co-Simulation communicationStep of the system, else the FMUs' smallest stepSize)")
+        ->check(CLI::PositiveNumber);
 
     cosim::SimulateOptions sim;
     std::string fmu_path, csv_path;
@@ -112,8 +117,8 @@ int main(int argc, char** argv) {
     try {
         if (*info) cosim::print_info(info_path, std::cout);
         if (*pack) {
-            std::vector<std::filesystem::path> dirs(pack_fmu_dirs.begin(), pack_fmu_dirs.end());
-            cosim::pack_system(pack_ssd, pack_out, dirs, std::cout);
+            pack_options.fmu_dirs.assign(pack_fmu_dirs.begin(), pack_fmu_dirs.end());
+            cosim::pack_system(pack_ssd, pack_out, pack_options, std::cout);
         }
         if (*campaign) {
             campaign_options.spec = spec_path;

@@ -3,6 +3,7 @@
 #include <libxml/parser.h>
 #include <libxml/tree.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -125,29 +126,34 @@ int int_attribute(const xmlNode* n, const char* name, int fallback, int lo, int 
     return x;
 }
 
+BridgeDescription parse_bridge(const xmlNode* b, const std::filesystem::path& file) {
+    const std::string where = file.string() + ":" + std::to_string(b->line);
+    BridgeDescription d;
+    d.transport = attribute(b, "transport").value_or(d.transport);
+    d.host = attribute(b, "host").value_or(d.host);
+    d.device = attribute(b, "device").value_or("");
+    d.policy = attribute(b, "policy").value_or(d.policy);
+    d.port = int_attribute(b, "port", d.port, 0, 65535, file);
+    d.baud = int_attribute(b, "baud", d.baud, 1, 4000000, file);
+    d.timeout_ms = int_attribute(b, "timeout_ms", d.timeout_ms, 1, 60000, file);
+    d.max_misses = int_attribute(b, "max_misses", d.max_misses, 1, 1000000, file);
+    if (d.transport != "udp" && d.transport != "serial")
+        throw CosimError(where + ": bridge transport '" + d.transport + "' is neither udp nor serial");
+    if (d.transport == "serial" && d.device.empty()) throw CosimError(where + ": a serial bridge needs device=\"...\"");
+    if (d.policy != "hold" && d.policy != "stop")
+        throw CosimError(where + ": bridge policy '" + d.policy + "' is neither hold nor stop");
+    return d;
+}
+
 std::optional<BridgeDescription> read_bridge(const xmlNode* component, const std::filesystem::path& file) {
     std::optional<BridgeDescription> out;
     for_children(first_child(component, "Annotations"), "Annotation", [&](const xmlNode* a) {
         if (attribute(a, "type").value_or("") != hardware_bridge_annotation) return;
         const xmlNode* b = first_child(a, "Bridge");
-        const std::string where = file.string() + ":" + std::to_string(a->line);
-        if (!b) throw CosimError(where + ": a hardware-bridge annotation needs a <Bridge> element");
-        BridgeDescription d;
-        d.transport = attribute(b, "transport").value_or(d.transport);
-        d.host = attribute(b, "host").value_or(d.host);
-        d.device = attribute(b, "device").value_or("");
-        d.policy = attribute(b, "policy").value_or(d.policy);
-        d.port = int_attribute(b, "port", d.port, 0, 65535, file);
-        d.baud = int_attribute(b, "baud", d.baud, 1, 4000000, file);
-        d.timeout_ms = int_attribute(b, "timeout_ms", d.timeout_ms, 1, 60000, file);
-        d.max_misses = int_attribute(b, "max_misses", d.max_misses, 1, 1000000, file);
-        if (d.transport != "udp" && d.transport != "serial")
-            throw CosimError(where + ": bridge transport '" + d.transport + "' is neither udp nor serial");
-        if (d.transport == "serial" && d.device.empty())
-            throw CosimError(where + ": a serial bridge needs device=\"...\"");
-        if (d.policy != "hold" && d.policy != "stop")
-            throw CosimError(where + ": bridge policy '" + d.policy + "' is neither hold nor stop");
-        out = d;
+        if (!b)
+            throw CosimError(file.string() + ":" + std::to_string(a->line) +
+                             ": a hardware-bridge annotation needs a <Bridge> element");
+        out = parse_bridge(b, file);
     });
     return out;
 }
@@ -168,9 +174,7 @@ double positive_attribute(const xmlNode* n, const char* name, const std::filesys
     return x;
 }
 
-std::optional<ExecutionHint> read_execution(const xmlNode* component, const std::filesystem::path& file) {
-    const xmlNode* e = annotation(component, execution_annotation, "Execution");
-    if (!e) return std::nullopt;
+ExecutionHint parse_execution(const xmlNode* e, const std::filesystem::path& file) {
     ExecutionHint hint;
     const std::string kind = required(e, "interface", file);
     if (kind != "CoSimulation" && kind != "ModelExchange")
@@ -179,6 +183,35 @@ std::optional<ExecutionHint> read_execution(const xmlNode* component, const std:
     hint.co_simulation = kind == "CoSimulation";
     if (attribute(e, "communicationStep")) hint.communication_step = positive_attribute(e, "communicationStep", file);
     return hint;
+}
+
+std::optional<ExecutionHint> read_execution(const xmlNode* component, const std::filesystem::path& file) {
+    const xmlNode* e = annotation(component, execution_annotation, "Execution");
+    if (!e) return std::nullopt;
+    return parse_execution(e, file);
+}
+
+// A component's execution hint or bridge written among the system's annotations, with a component
+// attribute naming it (where `cosim pack` puts them: OMSimulator 2.1.3 refuses annotations in a component).
+void read_system_level_hints(const xmlNode* system, SystemDescription& out, const std::filesystem::path& file) {
+    for_children(first_child(system, "Annotations"), "Annotation", [&](const xmlNode* a) {
+        const std::string type = attribute(a, "type").value_or("");
+        const bool execution = type == execution_annotation, bridge = type == hardware_bridge_annotation;
+        if (!execution && !bridge) return;
+        for_children(a, execution ? "Execution" : "Bridge", [&](const xmlNode* e) {
+            const std::string where = file.string() + ":" + std::to_string(e->line);
+            const std::string name = required(e, "component", file);
+            const auto c = std::find_if(out.components.begin(), out.components.end(),
+                                        [&](const ComponentDescription& d) { return d.name == name; });
+            if (c == out.components.end()) throw CosimError(where + ": no component named '" + name + "'");
+            if (execution ? c->execution.has_value() : c->bridge.has_value())
+                throw CosimError(where + ": component '" + name + "' has a second " + type + " annotation");
+            if (execution)
+                c->execution = parse_execution(e, file);
+            else
+                c->bridge = parse_bridge(e, file);
+        });
+    });
 }
 
 }  // namespace
@@ -244,6 +277,7 @@ SystemDescription read_system_description(const std::filesystem::path& path) {
                              ": connections to the system's own connectors are not supported");
         out.connections.push_back(std::move(conn));
     });
+    read_system_level_hints(system, out, ssd);
     if (const xmlNode* ex = first_child(root, "DefaultExperiment")) {
         if (auto s = attribute(ex, "startTime")) out.start_time = parse_real(*s, ssd.string() + ": startTime");
         if (auto s = attribute(ex, "stopTime")) out.stop_time = parse_real(*s, ssd.string() + ": stopTime");

@@ -2,6 +2,8 @@
 // (issue 14 cases 4, 5, 6, 7, 9): every one is refused with a reason, or done as asked.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
@@ -144,6 +146,11 @@ TEST(CosimHostile, CsvFieldsAreQuotedPerRfc4180AndReadBack) {
     EXPECT_EQ(t.names[1], "c.x,y");
     EXPECT_EQ(t.names[2], "c.\"q\"");
     EXPECT_EQ(t.columns[2][1], 4.0);
+    // Cells padded with blanks (OMSimulator's CSV) read as their number; text reads as NaN.
+    std::ofstream(file) << "time,a,b\n0, 13 ,x\n";
+    const CsvTable padded = read_csv(file);
+    EXPECT_EQ(padded.columns[1][0], 13.0);
+    EXPECT_TRUE(std::isnan(padded.columns[2][0]));
 }
 
 // The cosim executable as a child with stdout and stderr in files and TMPDIR pointed at `tmp`.

@@ -73,7 +73,7 @@ TEST(CosimSsp, PackedArchiveRunsExactlyAsItsSsd) {
     const auto ssd = temp("loop.ssd"), ssp = temp("loop.ssp");
     write_ssd(ssd);
     std::ostringstream log;
-    pack_system(ssd, ssp, {fmu_dir}, log);
+    pack_system(ssd, ssp, {.fmu_dirs = {fmu_dir}, .oms_step = {}}, log);
     ASSERT_TRUE(std::filesystem::exists(ssp));
     EXPECT_FALSE(std::filesystem::exists(ssp.string() + ".partial"));
     const auto packed = run_y(ssp);

@@ -12,6 +12,7 @@
 
 #include "fmi_loader/fmu_archive.hpp"
 #include "ssp_archive.hpp"
+#include "system_description.hpp"
 
 namespace cosim {
 namespace {
@@ -56,11 +57,52 @@ TEST(CosimSspSchema, BundledSystemsAndTheirArchivesValidate) {
             std::filesystem::temp_directory_path() /
             ("cosim_schema_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" + name + ".ssp");
         std::ostringstream log;
-        pack_system(ssd, ssp, {PVATT_FMU_DIR}, log);
+        pack_system(ssd, ssp, {.fmu_dirs = {PVATT_FMU_DIR}, .oms_step = {}}, log);
         const fmi_loader::FmuArchive unpacked(ssp);  // the zip, as any SSP importer opens it
         EXPECT_EQ(schema_errors(unpacked.directory() / "SystemStructure.ssd"), "") << ssp;
         std::filesystem::remove(ssp);
     }
+}
+
+std::string read_text(const std::filesystem::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// What makes the archive travel (ssp_archive.hpp): choices bound by value, the components' hints at the
+// system level (read back the same), OMSimulator's annotation first with the system's step.
+TEST(CosimSspSchema, PackedSystemIsPortableAndReadsBackTheSame) {
+    const auto ssd = systems_dir / "seed_spin_hil.ssd";
+    const auto ssp = std::filesystem::temp_directory_path() /
+                     ("cosim_portable_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + ".ssp");
+    std::ostringstream log;
+    pack_system(ssd, ssp, {.fmu_dirs = {PVATT_FMU_DIR}, .oms_step = {}}, log);
+    const SystemDescription original = read_system_description(ssd), packed = read_system_description(ssp);
+    const fmi_loader::FmuArchive unpacked(ssp);
+    const std::string xml = read_text(unpacked.directory() / "SystemStructure.ssd");
+    EXPECT_EQ(xml.find("ssv:String"), std::string::npos) << "every choice of the bundled systems is an Enumeration";
+    EXPECT_NE(xml.find(R"(<ssv:Parameter name="fidelity"><ssv:Integer value="0"/>)"), std::string::npos);
+    const auto system_annotations = xml.find("<ssd:Annotations>", xml.find("</ssd:Connections>"));
+    ASSERT_NE(system_annotations, std::string::npos);
+    EXPECT_LT(xml.find(R"(type="org.openmodelica")", system_annotations),
+              xml.find(R"(type="org.pvatt.execution")", system_annotations));
+    EXPECT_NE(xml.find(R"(<oms:FixedStepMaster description="oms-ma" stepSize="0.001")"), std::string::npos);
+    ASSERT_EQ(packed.components.size(), original.components.size());
+    for (std::size_t i = 0; i < original.components.size(); ++i) {
+        const auto &a = original.components[i], &b = packed.components[i];
+        EXPECT_EQ(a.execution.has_value(), b.execution.has_value()) << a.name;
+        if (a.execution && b.execution) {
+            EXPECT_EQ(a.execution->co_simulation, b.execution->co_simulation);
+            EXPECT_EQ(a.execution->communication_step, b.execution->communication_step);
+        }
+        EXPECT_EQ(a.bridge.has_value(), b.bridge.has_value()) << a.name;
+        if (a.bridge && b.bridge) {
+            EXPECT_EQ(a.bridge->port, b.bridge->port);
+        }
+    }
+    std::filesystem::remove(ssp);
 }
 
 TEST(CosimSspSchema, TheCheckFindsAnInvalidFile) {
