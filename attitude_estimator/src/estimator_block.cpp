@@ -14,114 +14,10 @@ namespace attitude_estimator {
 
 namespace {
 
-constexpr double kEarthMeanRadius = 6371e3;  // m: the albedo model's sphere (the core's 570 km default uses it)
-
-// The rates' state must travel with the FMU state as bytes.
-static_assert(std::is_trivially_copyable_v<MeanAngularRate<double>> &&
-              std::is_trivially_copyable_v<SunMethodState<double>> && std::is_trivially_copyable_v<MekfState<double>> &&
-              std::is_trivially_copyable_v<SetResetState<double>>);
-
-// A face's current is used for the panel-scale update only well inside the response curve (below about
-// 45 deg of incidence with the Kelly law), where a small attitude error changes it little and albedo is a
-// small part of it.
-constexpr double kScaleFaceMinResponse = 0.7;
-
-panel_response::Response<double> response_from(const EstimatorData& d) {
-    if (d.angular_response == AngularResponse::cosine) return panel_response::cosine<double>();
-    std::array<panel_response::Knot<double>, 6> knots{};
-    for (std::size_t i = 0; i < knots.size(); ++i) knots[i] = {d.kelly_angle[i], d.kelly_value[i]};
-    return panel_response::table<double>(knots);
-}
-
-MeanAngularRateConfig<double> rate_config_from(const EstimatorData& d) {
-    MeanAngularRateConfig<double> c;
-    c.measure = RateMeasure::attitude_angle;
-    c.window = static_cast<std::size_t>(d.rate_window);
-    c.min_interval = d.rate_interval;
-    // A few invalid estimates in between (a refused cones sample, a grazing sun) do not break an increment;
-    // a gap longer than two increments (an eclipse) does: the rotation across it could alias past π.
-    c.max_interval = std::max(2.0 * d.rate_interval, 5.0 * d.sample_period);
-    return c;
-}
-
-SetResetConfig set_reset_config_from(const EstimatorData& d) {
-    return SetResetConfig{.period_samples = d.mag_set_reset_samples, .offset_window = d.mag_offset_window};
-}
-
-AdcConfig<double> adc(std::int32_t bits, double min, double max) {
-    return AdcConfig<double>{static_cast<unsigned>(bits), min, max};
-}
+// The computer's state must travel with the FMU state as bytes.
+static_assert(std::is_trivially_copyable_v<OnboardState<double>> && std::is_trivially_copyable_v<OnboardState<float>>);
 
 }  // namespace
-
-MekfConfig<double> filter_config_from(const EstimatorData& d) {
-    MekfConfig<double> c;
-    c.sun_sigma = d.filter_sun_sigma;
-    c.mag_sigma = d.filter_mag_sigma;
-    c.rate_noise = d.filter_rate_noise;
-    c.attitude_noise = d.filter_attitude_noise;
-    c.estimate_offset = d.filter_offset;
-    c.estimate_scale = d.filter_scale;
-    c.face_sigma = d.filter_face_sigma;
-    c.inertia = d.inertia;
-    c.reset_after = d.filter_reset_after;
-    // The rate comes from two single-frame attitudes at most a few samples apart.
-    c.max_init_gap = 3.5 * d.sample_period;
-    return c;
-}
-
-EstimatorConfig<double> config_from(const EstimatorData& d) {
-    EstimatorConfig<double> c;
-    c.i_sc_norm = d.i_sc_norm;  // at 1 AU; at_sun_distance() scales them to the sample's distance
-    c.mag_sensitivity = d.mag_sensitivity;
-    c.sun_weight = d.weight_sun;
-    c.mag_weight = d.weight_mag;
-    const auto current = adc(d.adc_bits, d.i_adc_min, d.i_adc_max);
-    const auto voltage = adc(d.adc_bits, d.v_adc_min, d.v_adc_max);
-    c.sun_adc = {current, current, current};
-    c.mag_adc = {voltage, voltage, voltage};
-    c.mag_ref_adc = voltage;  // the zero-field reference goes through a channel of the same kind
-    c.solver = d.solver;
-    c.min_sun_norm = d.min_sun_norm;
-    c.mag_rail_margin = d.mag_rail_margin;
-    c.min_field = d.min_field;
-    c.min_separation_sin = d.min_separation_sin;
-    c.sun.method = d.sun_method;
-    c.sun.i_face_norm = d.i_face_norm;
-    c.sun.response = response_from(d);
-    c.sun.dark_threshold = d.face_dark_threshold;
-    c.sun.min_sun_norm = d.min_sun_norm;
-    c.sun.cone_tolerance = d.cone_tolerance;
-    c.sun.cube_max_step = d.cube_max_step;
-    c.sun.cone_earth_sin_radius = kEarthMeanRadius / (kEarthMeanRadius + d.orbit_altitude);
-    c.sun.cone_fit_tolerance = d.cone_fit_tolerance;
-    c.sun.cone_albedo_max = d.cone_albedo_max;
-    c.face_adc.fill(adc(d.adc_bits, 0.0, d.i_face_adc_max));
-    return c;
-}
-
-EstimatorConfig<double> at_sun_distance(EstimatorConfig<double> c, double sun_distance) {
-    // The panels' currents scale with the irradiance, (1 AU / distance)² of the 1 AU normalization
-    // (±3.4 % over a year): the cones method's albedo fit needs the absolute scale.
-    const double au_ratio = kAstronomicalUnit / sun_distance;
-    const double scale = au_ratio * au_ratio;
-    for (auto& v : c.i_sc_norm) v *= scale;
-    for (auto& v : c.sun.i_face_norm) v *= scale;
-    return c;
-}
-
-SampleInputs<double> inputs_from(const EstimatorData& d) {
-    return SampleInputs<double>{
-        .i_sh = d.i_sh,
-        .i_face = d.i_face,
-        .v_mag = d.v_mag,
-        .v_mag_ref = d.v_mag_ref,
-        .sun_ref = d.sun_ref,
-        .mag_ref = d.mag_ref,
-        // The reading now at the inputs was taken in the polarity commanded at the previous sample.
-        .mag_polarity = d.set_reset.polarity,
-        .mag_offset = applied_offset(d.set_reset, set_reset_config_from(d))};
-}
 
 void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     using D = EstimatorData;
@@ -232,6 +128,10 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.parameter("rate_window", &D::rate_window, "", "Mean-rate increments averaged (1 = 004 eq. 4 alone), 1 to 64")
         .range(1.0, static_cast<double>(kMaxRateWindow));
 
+    t.choice("precision", &D::precision,
+             {{"double", Precision::double_precision}, {"float", Precision::single_precision}},
+             "Arithmetic of the on-board computer: double, or float as the firmware on a Cortex-M4F computes "
+             "(attitude_estimator/firmware: the same source; the spin-rate FFT stays in double)");
     t.choice("filter", &D::filter, {{"none", FilterKind::none}, {"mekf", FilterKind::mekf}},
              "Recursive attitude filter beside the single-frame estimate: none, or mekf (multiplicative "
              "extended Kalman filter with rate, magnetometer-offset and panel-scale states; docs/filter.md)");
@@ -459,114 +359,17 @@ void EstimatorBlock::validate() const {
 
 void EstimatorBlock::take_sample(double t) {
     auto& d = data();
-    const EstimatorConfig<double> nominal = at_sun_distance(config_, d.sun_distance);
-    EstimatorConfig<double> config = nominal;
-    if (d.filter == FilterKind::mekf && d.filter_scale && d.filter_state.stage == 2) {
-        // The filter's panel-scale estimate corrects the normalization the sun method divides by.
-        const double gain = 1.0 + d.filter_state.panel_scale;
-        for (auto& v : config.sun.i_face_norm) v *= gain;
-        for (auto& v : config.i_sc_norm) v *= gain;
+    if (d.precision == Precision::single_precision) {
+        store_outputs(
+            d, onboard_sample(d.onboard_float, onboard_inputs_from<float>(d), settings_float_, static_cast<float>(t)));
+    } else {
+        store_outputs(d, onboard_sample(d.onboard, onboard_inputs_from<double>(d), settings_, t));
     }
-    const SampleResult<double> r = estimate_sample(inputs_from(d), config, d.sun_state);
-    d.q_est = {r.q.x, r.q.y, r.q.z, r.q.w};
-    d.A_est = r.a;
-    d.sun_meas = r.sun_meas;
-    d.mag_meas = r.mag_meas;
-    d.mag_field = r.mag_field;
-    d.sun_norm = r.sun_norm;
-    d.loss = r.loss;
-    d.valid = r.valid;
-    d.sun_valid = r.sun_valid;
-    d.mag_valid = r.mag_valid;
-    d.lit_faces = r.lit_faces;
-    d.rejected_faces = r.rejected_faces;
-    d.cube_state = r.cube_state;
-    if (d.samples < std::numeric_limits<std::int32_t>::max()) ++d.samples;
-    const double reading_polarity = d.set_reset.polarity;  // this sample's reading was taken in it
-    // The next reading is taken in the polarity commanded here.
-    set_reset_after_sample(d.set_reset, r.mag_reading, r.mag_reading_usable, set_reset_config_from(d));
-    d.mag_set_reset = d.set_reset.polarity > 0.0;
-    d.mag_offset = applied_offset(d.set_reset, set_reset_config_from(d));
-    update_rates(t);
-    if (d.filter == FilterKind::mekf) update_filter(t, r, nominal, reading_polarity);
+    update_spin();
 }
 
-void EstimatorBlock::update_filter(double t, const SampleResult<double>& r, const EstimatorConfig<double>& nominal,
-                                   double polarity) {
+void EstimatorBlock::update_spin() {
     auto& d = data();
-    const MekfConfig<double>& config = filter_config_;
-    MekfSampleInputs<double> in;
-    in.t = t;
-    in.attitude_valid = r.valid;
-    in.q_single = r.q;
-    in.sun_valid = r.sun_valid;
-    in.sun_ref = d.sun_ref;
-    in.sun_body = r.sun_meas;
-    in.mag_valid = r.mag_valid;
-    in.mag_ref = d.mag_ref;
-    // The field comes with the set/reset offset estimate taken out, B + p (v_os − applied)/S: the filter's
-    // offset state is what is left of the offset, with the sign of this reading's polarity.
-    in.mag_body = r.mag_field;
-    in.polarity = polarity;
-    if (d.filter_scale && nominal.sun.method != SunMethod::difference) {
-        // Relative responses against the nominal normalization: the filter's model is (1 + ε) R(cos β).
-        for (std::size_t k = 0; k < 6; ++k) {
-            const double i = convert(nominal.face_adc[k], d.i_face[k]).value;
-            in.face_r[k] = i / nominal.sun.i_face_norm[k];
-            // The cones fit's albedo is relative to the normalization the sun method used, (1 + ε̂) × nominal.
-            in.face_albedo[k] = r.face_albedo[k];
-            const bool usable =
-                (r.lit_faces >> k & 1) && !(r.rejected_faces >> k & 1) && in.face_r[k] >= kScaleFaceMinResponse;
-            if (usable) in.face_use |= static_cast<std::uint8_t>(1u << k);
-        }
-        in.response = &nominal.sun.response;
-    }
-    const MekfSampleResult<double> f = mekf_sample(d.filter_state, in, config);
-    const MekfState<double>& s = d.filter_state;
-    const bool running = s.stage == 2;
-    d.q_filt = running ? std::array<double, 4>{s.q.x, s.q.y, s.q.z, s.q.w} : std::array<double, 4>{0, 0, 0, 1};
-    d.omega_filt = running ? s.omega : Vec3d{};
-    for (std::size_t k = 0; k < 3; ++k) d.mag_offset_filt[k] = s.mag_offset[k] * d.mag_sensitivity;
-    d.panel_scale_filt = s.panel_scale;
-    d.attitude_bound = running ? f.bound : 0.0;
-    d.filter_valid = running && f.valid;
-    d.filter_resets = s.resets;
-}
-
-void EstimatorBlock::update_rates(double t) {
-    auto& d = data();
-    // Mean |ω| (004 eq. 4) from successive valid attitudes; invalid ones are skipped, and a gap longer than
-    // the rate config's max_interval starts a new chain.
-    if (d.valid) d.rate_state.push(t, Quaternion<double>{d.q_est[0], d.q_est[1], d.q_est[2], d.q_est[3]});
-    const MeanRate<double> mean = d.rate_state.result();
-    d.rate_mean = mean.rate;
-    d.rate_window_time = mean.window_seconds;
-    // Aliasing: an increment rate_interval long reads the turn modulo 2π (folded beyond π), so rate_mean
-    // is not trusted when one increment may turn more than π/2 (margin for a rate that changes within
-    // the window). Two witnesses: the filter's rate when it runs, and the turn between successive
-    // single-frame estimates (averaged, α = 0.2) when it is clearly above their noise (0.1 rad per sample;
-    // below that a fast rate cannot be told from noise by this test: use omega_filt).
-    constexpr double kHalfPi = 1.5707963267948966;
-    constexpr double kStepNoise = 0.1;  // rad per sample
-    if (d.valid) {
-        if (d.rate_has_last && t - d.rate_last_t <= 1.5 * d.sample_period) {
-            double dot = 0.0;
-            for (std::size_t k = 0; k < 4; ++k) dot += d.rate_last_q[k] * d.q_est[k];
-            const double turn = 2.0 * std::acos(std::min(1.0, std::abs(dot)));
-            d.rate_step_turn += 0.2 * (turn - d.rate_step_turn);
-        }
-        d.rate_last_q = d.q_est;
-        d.rate_last_t = t;
-        d.rate_has_last = true;
-    }
-    const bool step_aliases =
-        d.rate_step_turn >= kStepNoise && d.rate_step_turn / d.sample_period * d.rate_interval >= kHalfPi;
-    const auto& f = d.filter_state;
-    const double filter_rate = std::sqrt(f.omega[0] * f.omega[0] + f.omega[1] * f.omega[1] + f.omega[2] * f.omega[2]);
-    const bool filter_aliases =
-        d.filter == FilterKind::mekf && f.stage == 2 && filter_rate * d.rate_interval >= kHalfPi;
-    d.rate_valid = mean.valid && !step_aliases && !filter_aliases;
-
     // Spin rates (000 §4): the history of valid sun vectors; an invalid one empties the window (the FFT
     // needs evenly spaced samples).
     const auto n = d.spin_window;
@@ -605,8 +408,8 @@ SpinSpectrum& SpinWorkspace::get(double sample_period, std::int32_t window) {
 }
 
 void EstimatorBlock::configure() {
-    config_ = config_from(data());
-    filter_config_ = filter_config_from(data());
+    settings_ = onboard_settings_from<double>(data());
+    settings_float_ = onboard_settings_from<float>(data());
 }
 
 void EstimatorBlock::initialize(double t) {
@@ -614,18 +417,10 @@ void EstimatorBlock::initialize(double t) {
     // From scratch every time (initialize runs on each read in initialization mode): the sample at the
     // start time sees the inputs as they are when initialization ends.
     d.t_start = t;
-    d.samples = 0;
-    d.sun_state = {};
-    d.rate_state = MeanAngularRate<double>(rate_config_from(d));
     d.history_head = 0;
     d.history_filled = 0;
-    d.filter_state = {};
-    d.rate_has_last = false;
-    d.rate_step_turn = 0.0;
-    d.set_reset = {};  // set at power-up, no offset known
-    // No pulse at the start sample: during initialization a host re-reads the magnetometer after every
-    // output change, so a pulse here would be in the reading this very sample takes as a set one.
-    d.set_reset.since_pulse = -1;
+    onboard_start(d.onboard, settings_);
+    onboard_start(d.onboard_float, settings_float_);
     take_sample(t);
     d.next_index = 1;
 }
@@ -641,6 +436,38 @@ fmu::EventUpdate EstimatorBlock::event_update(double t, bool time_event_due) {
     return {};
 }
 
+namespace {
+
+template <class T>
+void check_onboard_state(const OnboardState<T>& s, const std::string& name) {
+    fmu::require_range(s.sun.cube_state, 0, 26, name + ".sun.cube_state");
+    fmu::require_range(s.sun.refusals, 0, std::numeric_limits<int>::max(), name + ".sun.refusals");
+    fmu::require_bool(s.sun.has_last, name + ".sun.has_last");
+    for (const T x : s.sun.last_unit) fmu::require_finite(static_cast<double>(x), name + ".sun.last_unit");
+    if (!s.rate.consistent()) throw fmu::Error("restored FMU state: " + name + ".rate is inconsistent");
+    const MekfState<T>& f = s.filter;
+    fmu::require_range(f.stage, 0, 2, name + ".filter.stage");
+    fmu::require_range(f.refused_in_row, 0, std::numeric_limits<std::int32_t>::max(), name + ".filter.refused_in_row");
+    fmu::require_range(f.resets, 0, std::numeric_limits<std::int32_t>::max(), name + ".filter.resets");
+    const T filter_scalars[] = {f.q.x,       f.q.y,           f.q.z,           f.q.w,           f.q_first.x,
+                                f.q_first.y, f.q_first.z,     f.q_first.w,     f.omega[0],      f.omega[1],
+                                f.omega[2],  f.mag_offset[0], f.mag_offset[1], f.mag_offset[2], f.panel_scale,
+                                f.t_first,   f.t_last};
+    for (const T x : filter_scalars) fmu::require_finite(static_cast<double>(x), name + ".filter");
+    for (const T x : f.p) fmu::require_finite(static_cast<double>(x), name + ".filter.p");
+    const T last[] = {s.last_q.x, s.last_q.y, s.last_q.z, s.last_q.w, s.last_t, s.step_turn};
+    for (const T x : last) fmu::require_finite(static_cast<double>(x), name + ".last_q/last_t/step_turn");
+    fmu::require_bool(s.has_last, name + ".has_last");
+    fmu::require_range(s.samples, 0, std::numeric_limits<std::int32_t>::max(), name + ".samples");
+    const SetResetState<T>& r = s.set_reset;
+    const T set_reset[] = {r.polarity,           r.offset[0],          r.offset[1],          r.offset[2],
+                           r.last_reading[0],    r.last_reading[1],    r.last_reading[2],    r.last_polarity,
+                           r.earlier_reading[0], r.earlier_reading[1], r.earlier_reading[2], r.earlier_polarity};
+    for (const T x : set_reset) fmu::require_finite(static_cast<double>(x), name + ".set_reset");
+}
+
+}  // namespace
+
 // The fields outside the table, for a state restored from bytes (issue 14 case 8).
 void EstimatorBlock::check_state() const {
     const auto& d = data();
@@ -649,26 +476,8 @@ void EstimatorBlock::check_state() const {
     fmu::require_range(d.history_filled, 0, kMaxSpinWindow, "history_filled");
     fmu::require_finite(d.t_start, "t_start");
     for (const auto& s : d.sun_history) fmu::require_finite(std::span<const double>(s.data(), s.size()), "sun_history");
-    fmu::require_range(d.sun_state.cube_state, 0, 26, "sun_state.cube_state");
-    fmu::require_range(d.sun_state.refusals, 0, std::numeric_limits<int>::max(), "sun_state.refusals");
-    fmu::require_bool(d.sun_state.has_last, "sun_state.has_last");
-    fmu::require_finite(std::span<const double>(d.sun_state.last_unit.data(), d.sun_state.last_unit.size()),
-                        "sun_state.last_unit");
-    if (!d.rate_state.consistent()) throw fmu::Error("restored FMU state: rate_state is inconsistent");
-    const MekfState<double>& f = d.filter_state;
-    fmu::require_range(f.stage, 0, 2, "filter_state.stage");
-    fmu::require_range(f.refused_in_row, 0, std::numeric_limits<std::int32_t>::max(), "filter_state.refused_in_row");
-    fmu::require_range(f.resets, 0, std::numeric_limits<std::int32_t>::max(), "filter_state.resets");
-    const double filter_scalars[] = {f.q.x,       f.q.y,           f.q.z,           f.q.w,           f.q_first.x,
-                                     f.q_first.y, f.q_first.z,     f.q_first.w,     f.omega[0],      f.omega[1],
-                                     f.omega[2],  f.mag_offset[0], f.mag_offset[1], f.mag_offset[2], f.panel_scale,
-                                     f.t_first,   f.t_last};
-    fmu::require_finite(filter_scalars, "filter_state");
-    fmu::require_finite(std::span<const double>(f.p.data(), f.p.size()), "filter_state.p");
-    fmu::require_finite(std::span<const double>(d.rate_last_q.data(), d.rate_last_q.size()), "rate_last_q");
-    fmu::require_finite(d.rate_last_t, "rate_last_t");
-    fmu::require_bool(d.rate_has_last, "rate_has_last");
-    fmu::require_finite(d.rate_step_turn, "rate_step_turn");
+    check_onboard_state(d.onboard, "onboard");
+    check_onboard_state(d.onboard_float, "onboard_float");
 }
 
 double EstimatorBlock::next_time_event() const {

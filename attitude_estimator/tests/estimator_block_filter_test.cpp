@@ -83,7 +83,7 @@ TEST(EstimatorFmuFilter, NoneLeavesTheFilterOutputsAtRest) {
     EXPECT_TRUE(d.valid);
     EXPECT_FALSE(d.filter_valid);
     EXPECT_EQ(d.q_filt, (std::array<double, 4>{0, 0, 0, 1}));
-    EXPECT_EQ(d.filter_state.stage, 0);
+    EXPECT_EQ(d.onboard.filter.stage, 0);
 }
 
 TEST(EstimatorFmuFilter, TracksATumbleBetterThanTheSingleFrameEstimate) {
@@ -140,7 +140,7 @@ TEST(EstimatorFmuFilter, SavedAndRestoredStateReplaysBitIdentically) {
         a.inputs_changed();
         a.advance_to(k * d.sample_period);
     }
-    ASSERT_EQ(d.filter_state.stage, 2);
+    ASSERT_EQ(d.onboard.filter.stage, 2);
     const auto bytes = a.runner.model().bytes();
     const std::vector<std::byte> saved(bytes.begin(), bytes.end());
 
@@ -168,17 +168,17 @@ TEST(EstimatorFmuFilter, SavedAndRestoredStateReplaysBitIdentically) {
     {
         const auto broken = a.runner.model().clone();
         auto& bd = static_cast<EstimatorBlock&>(*broken).data();
-        bd.filter_state.p[5] = std::numeric_limits<double>::quiet_NaN();
+        bd.onboard.filter.p[5] = std::numeric_limits<double>::quiet_NaN();
         EXPECT_THROW(broken->check_state(), fmu::Error);
-        bd.filter_state.p[5] = 0.0;
-        bd.filter_state.stage = 3;
+        bd.onboard.filter.p[5] = 0.0;
+        bd.onboard.filter.stage = 3;
         EXPECT_THROW(broken->check_state(), fmu::Error);
     }
     const auto ea = a.runner.model().bytes();
     const auto eb = b.runner.model().bytes();
     EXPECT_EQ(std::memcmp(ea.data(), eb.data(), ea.size()), 0);
     EXPECT_EQ(a.data().q_filt, b.data().q_filt);
-    EXPECT_EQ(a.data().filter_state.p, b.data().filter_state.p);
+    EXPECT_EQ(a.data().onboard.filter.p, b.data().onboard.filter.p);
 }
 
 }  // namespace

@@ -88,11 +88,11 @@ protected:
     }
 
     // cosim on the same archive: Model Exchange as packed (step 0), or every component in Co-Simulation.
-    CsvTable run_cosim(const fs::path& ssp, double stop, double cs_step = 0.0, const std::vector<std::string>& cs = {}) {
+    CsvTable run_cosim(const fs::path& ssp, double stop, double cs_step = 0.0,
+                       const std::vector<std::string>& cs = {}) {
         const fs::path csv = dir_ / (ssp.stem().string() + (cs_step > 0 ? "_cs" : "_me") + ".csv");
-        std::string command = std::string("'") + PVATT_COSIM + "' run '" + ssp.string() +
-                              "' --stop-time " + std::to_string(stop) + " --output '" + csv.string() +
-                              "' --output-interval 0.025";
+        std::string command = std::string("'") + PVATT_COSIM + "' run '" + ssp.string() + "' --stop-time " +
+                              std::to_string(stop) + " --output '" + csv.string() + "' --output-interval 0.025";
         if (cs_step > 0) {
             command += " --step " + std::to_string(cs_step);
             for (const auto& c : cs) command += " --cs " + c;
@@ -184,7 +184,8 @@ TEST_F(OmSimulator, LeoOrbitAgreesWithCosimCoSimulation) {
     const CsvTable oms = run_oms(ssp, stop);
     const CsvTable cs = run_cosim(ssp, stop, h, {"env", "plant", "mag", "est", "thermal"});
     const CsvTable me = run_cosim(ssp, stop);
-    const Agreement same_master = compare(oms, cs, stop), vs_me = compare(oms, me, stop), cs_vs_me = compare(cs, me, stop);
+    const Agreement same_master = compare(oms, cs, stop), vs_me = compare(oms, me, stop),
+                    cs_vs_me = compare(cs, me, stop);
     std::cout << "OMSimulator vs cosim, all Co-Simulation at 10 ms: " << same_master << "\n"
               << "OMSimulator vs cosim ME: " << vs_me << "\n"
               << "cosim all Co-Simulation vs cosim ME: " << cs_vs_me << "\n";

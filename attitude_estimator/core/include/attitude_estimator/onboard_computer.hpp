@@ -1,0 +1,100 @@
+// One sample of the on-board computer as its flight software runs it, around estimate_sample
+// (estimator.hpp): the panels' normalization scaled to the sun distance and corrected by the filter's
+// panel-scale estimate, the magnetometer's set/reset sequence and offset (set_reset.hpp), the mean rate
+// of 004 eq. 4 with its aliasing test (angular_rate.hpp), and the recursive filter (mekf.hpp).
+// Templated on float/double, no heap, no exceptions: attitude_estimator.fmu runs it in double (or in
+// float, `precision = float`), the firmware on the Cortex-M in float, from the same source. The spin-rate
+// FFT (spin_spectrum.hpp, on FFTW) is not part of it: the FMU runs it beside, the firmware has none.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "attitude_estimator/angular_rate.hpp"
+#include "attitude_estimator/estimator.hpp"
+#include "attitude_estimator/mekf.hpp"
+#include "attitude_estimator/set_reset.hpp"
+
+namespace attitude_estimator {
+
+// The distance at which the panels' normalizations hold (1367 W/m², seed 000 §4): 1 AU (IAU 2012).
+inline constexpr double kAstronomicalUnit = 1.495978707e11;  // m
+
+// The recursive filter beside the single-frame estimate.
+enum class FilterKind : std::int32_t { none = 0, mekf = 1 };
+
+template <class T>
+struct OnboardSettings {
+    EstimatorConfig<T> estimator{};  // the panels' normalizations (i_sc_norm, sun.i_face_norm) at 1 AU
+    SetResetConfig set_reset{.period_samples = 0, .offset_window = 20};
+    MeanAngularRateConfig<T> rate{};
+    FilterKind filter = FilterKind::none;
+    bool filter_scale = false;  // the filter's panel-scale estimate corrects the normalizations
+    MekfConfig<T> mekf{};
+    T sample_period = T(0.05);  // s
+    T rate_interval = T(2);     // s, rate.min_interval
+};
+
+template <class T>
+struct OnboardInputs {
+    Vec3<T> i_sh{};                         // A, sample/hold differential currents
+    std::array<T, 6> i_face{};              // A, per-face sample/hold currents
+    Vec3<T> v_mag{};                        // V, magnetometer outputs
+    T v_mag_ref = T(2.5);                   // V, its zero-field reference
+    Vec3<T> sun_ref{};                      // sun direction, inertial frame (any length)
+    Vec3<T> mag_ref{};                      // T, field, inertial frame
+    T sun_distance = T(kAstronomicalUnit);  // m
+};
+
+// Everything the computer remembers between samples: trivially copyable (an FMU state is its bytes).
+template <class T>
+struct OnboardState {
+    SunMethodState<T> sun{};       // cones' panel-cube tracking
+    MeanAngularRate<T> rate{};     // eq. 4 increments
+    MekfState<T> filter{};         // the recursive filter
+    SetResetState<T> set_reset{};  // the polarity commanded last, the offset estimate
+    // The turn between successive valid estimates one sample apart, smoothed: the mean rate's increments
+    // span rate_interval and alias when the turn over one of them nears π.
+    Quaternion<T> last_q{};
+    T last_t = T(0);
+    bool has_last = false;
+    T step_turn = T(0);  // rad per sample (exponential average)
+    std::int32_t samples = 0;
+};
+
+template <class T>
+struct OnboardOutputs {
+    SampleResult<T> sample{};   // the single-frame estimate
+    std::int32_t samples = 0;   // samples taken, this one included (saturates at 2^31 − 1)
+    bool mag_set_reset = true;  // the pulse commanded now: true set, false reset
+    Vec3<T> mag_offset{};       // V, the offset taken out of the field
+    T rate_mean = T(0);         // rad/s
+    T rate_window_time = T(0);  // s
+    bool rate_valid = false;
+    Quaternion<T> q_filt{};     // identity until the filter runs
+    Vec3<T> omega_filt{};       // rad/s
+    Vec3<T> mag_offset_filt{};  // V, the filter's offset left after mag_offset, as read after a set pulse
+    T panel_scale_filt = T(0);  // 1
+    T attitude_bound = T(0);    // rad, 3σ
+    bool filter_valid = false;
+    std::int32_t filter_resets = 0;
+};
+
+// Power-up: nothing remembered, the sensor set, and no pulse at the first sample (a host re-reads the
+// sensor while it initializes; a pulse there would land in the very reading this sample takes).
+template <class T>
+void onboard_start(OnboardState<T>& state, const OnboardSettings<T>& settings) noexcept;
+
+// The sample at time t (s) of the inputs present then.
+template <class T>
+OnboardOutputs<T> onboard_sample(OnboardState<T>& state, const OnboardInputs<T>& in, const OnboardSettings<T>& settings,
+                                 T t) noexcept;
+
+extern template void onboard_start(OnboardState<float>&, const OnboardSettings<float>&) noexcept;
+extern template void onboard_start(OnboardState<double>&, const OnboardSettings<double>&) noexcept;
+extern template OnboardOutputs<float> onboard_sample(OnboardState<float>&, const OnboardInputs<float>&,
+                                                     const OnboardSettings<float>&, float) noexcept;
+extern template OnboardOutputs<double> onboard_sample(OnboardState<double>&, const OnboardInputs<double>&,
+                                                      const OnboardSettings<double>&, double) noexcept;
+
+}  // namespace attitude_estimator

@@ -1,0 +1,155 @@
+#include "attitude_estimator/onboard_computer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace attitude_estimator {
+
+namespace {
+
+// A face's current is used for the panel-scale update only well inside the response curve (below about
+// 45 deg of incidence with the Kelly law), where a small attitude error changes it little and albedo is a
+// small part of it.
+template <class T>
+constexpr T kScaleFaceMinResponse = T(0.7);
+
+template <class T>
+EstimatorConfig<T> at_sun_distance(EstimatorConfig<T> c, T sun_distance) {
+    // The panels' currents scale with the irradiance, (1 AU / distance)² of the 1 AU normalization
+    // (±3.4 % over a year): the cones method's albedo fit needs the absolute scale.
+    const T au_ratio = T(kAstronomicalUnit) / sun_distance;
+    const T scale = au_ratio * au_ratio;
+    for (auto& v : c.i_sc_norm) v *= scale;
+    for (auto& v : c.sun.i_face_norm) v *= scale;
+    return c;
+}
+
+template <class T>
+void update_filter(OnboardState<T>& s, const OnboardInputs<T>& in, const OnboardSettings<T>& settings, T t,
+                   const SampleResult<T>& r, const EstimatorConfig<T>& nominal, T polarity, OnboardOutputs<T>& out) {
+    MekfSampleInputs<T> f;
+    f.t = t;
+    f.attitude_valid = r.valid;
+    f.q_single = r.q;
+    f.sun_valid = r.sun_valid;
+    f.sun_ref = in.sun_ref;
+    f.sun_body = r.sun_meas;
+    f.mag_valid = r.mag_valid;
+    f.mag_ref = in.mag_ref;
+    // The field comes with the set/reset offset estimate taken out, B + p (v_os − applied)/S: the filter's
+    // offset state is what is left of the offset, with the sign of this reading's polarity.
+    f.mag_body = r.mag_field;
+    f.polarity = polarity;
+    if (settings.filter_scale && nominal.sun.method != SunMethod::difference) {
+        // Relative responses against the nominal normalization: the filter's model is (1 + ε) R(cos β).
+        for (std::size_t k = 0; k < 6; ++k) {
+            const T i = convert(nominal.face_adc[k], in.i_face[k]).value;
+            f.face_r[k] = i / nominal.sun.i_face_norm[k];
+            // The cones fit's albedo is relative to the normalization the sun method used, (1 + ε̂) × nominal.
+            f.face_albedo[k] = r.face_albedo[k];
+            const bool usable =
+                (r.lit_faces >> k & 1) && !(r.rejected_faces >> k & 1) && f.face_r[k] >= kScaleFaceMinResponse<T>;
+            if (usable) f.face_use |= static_cast<std::uint8_t>(1u << k);
+        }
+        f.response = &nominal.sun.response;
+    }
+    const MekfSampleResult<T> result = mekf_sample(s.filter, f, settings.mekf);
+    const MekfState<T>& m = s.filter;
+    const bool running = m.stage == 2;
+    out.q_filt = running ? m.q : Quaternion<T>{};
+    out.omega_filt = running ? m.omega : Vec3<T>{};
+    for (std::size_t k = 0; k < 3; ++k) out.mag_offset_filt[k] = m.mag_offset[k] * settings.estimator.mag_sensitivity;
+    out.panel_scale_filt = m.panel_scale;
+    out.attitude_bound = running ? result.bound : T(0);
+    out.filter_valid = running && result.valid;
+    out.filter_resets = m.resets;
+}
+
+template <class T>
+void update_rates(OnboardState<T>& s, const OnboardSettings<T>& settings, T t, const SampleResult<T>& r,
+                  OnboardOutputs<T>& out) {
+    // Mean |ω| (004 eq. 4) from successive valid attitudes; invalid ones are skipped, and a gap longer than
+    // the rate config's max_interval starts a new chain.
+    if (r.valid) s.rate.push(t, r.q);
+    const MeanRate<T> mean = s.rate.result();
+    out.rate_mean = mean.rate;
+    out.rate_window_time = mean.window_seconds;
+    // Aliasing: an increment rate_interval long reads the turn modulo 2π (folded beyond π), so rate_mean
+    // is not trusted when one increment may turn more than π/2 (margin for a rate that changes within
+    // the window). Two witnesses: the filter's rate when it runs, and the turn between successive
+    // single-frame estimates (averaged, α = 0.2) when it is clearly above their noise (0.1 rad per sample;
+    // below that a fast rate cannot be told from noise by this test: use omega_filt).
+    constexpr T kHalfPi = T(1.5707963267948966);
+    constexpr T kStepNoise = T(0.1);  // rad per sample
+    if (r.valid) {
+        if (s.has_last && t - s.last_t <= T(1.5) * settings.sample_period) {
+            const T dot = s.last_q.x * r.q.x + s.last_q.y * r.q.y + s.last_q.z * r.q.z + s.last_q.w * r.q.w;
+            const T turn = T(2) * std::acos(std::min(T(1), std::abs(dot)));
+            s.step_turn += T(0.2) * (turn - s.step_turn);
+        }
+        s.last_q = r.q;
+        s.last_t = t;
+        s.has_last = true;
+    }
+    const bool step_aliases =
+        s.step_turn >= kStepNoise && s.step_turn / settings.sample_period * settings.rate_interval >= kHalfPi;
+    const auto& f = s.filter;
+    const T filter_rate = std::sqrt(f.omega[0] * f.omega[0] + f.omega[1] * f.omega[1] + f.omega[2] * f.omega[2]);
+    const bool filter_aliases =
+        settings.filter == FilterKind::mekf && f.stage == 2 && filter_rate * settings.rate_interval >= kHalfPi;
+    out.rate_valid = mean.valid && !step_aliases && !filter_aliases;
+}
+
+}  // namespace
+
+template <class T>
+void onboard_start(OnboardState<T>& state, const OnboardSettings<T>& settings) noexcept {
+    state = OnboardState<T>{};
+    state.rate = MeanAngularRate<T>(settings.rate);
+    state.set_reset.since_pulse = -1;  // no pulse at the first sample
+}
+
+template <class T>
+OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& in, const OnboardSettings<T>& settings,
+                                 T t) noexcept {
+    OnboardOutputs<T> out;
+    const EstimatorConfig<T> nominal = at_sun_distance(settings.estimator, in.sun_distance);
+    EstimatorConfig<T> config = nominal;
+    if (settings.filter == FilterKind::mekf && settings.filter_scale && s.filter.stage == 2) {
+        // The filter's panel-scale estimate corrects the normalization the sun method divides by.
+        const T gain = T(1) + s.filter.panel_scale;
+        for (auto& v : config.sun.i_face_norm) v *= gain;
+        for (auto& v : config.i_sc_norm) v *= gain;
+    }
+    // The reading now at the inputs was taken in the polarity commanded at the previous sample.
+    const T reading_polarity = s.set_reset.polarity;
+    const SampleInputs<T> sample_in{.i_sh = in.i_sh,
+                                    .i_face = in.i_face,
+                                    .v_mag = in.v_mag,
+                                    .v_mag_ref = in.v_mag_ref,
+                                    .sun_ref = in.sun_ref,
+                                    .mag_ref = in.mag_ref,
+                                    .mag_polarity = reading_polarity,
+                                    .mag_offset = applied_offset(s.set_reset, settings.set_reset)};
+    out.sample = estimate_sample(sample_in, config, s.sun);
+    if (s.samples < std::numeric_limits<std::int32_t>::max()) ++s.samples;
+    out.samples = s.samples;
+    // The next reading is taken in the polarity commanded here.
+    set_reset_after_sample(s.set_reset, out.sample.mag_reading, out.sample.mag_reading_usable, settings.set_reset);
+    out.mag_set_reset = s.set_reset.polarity > T(0);
+    out.mag_offset = applied_offset(s.set_reset, settings.set_reset);
+    update_rates(s, settings, t, out.sample, out);
+    if (settings.filter == FilterKind::mekf)
+        update_filter(s, in, settings, t, out.sample, nominal, reading_polarity, out);
+    return out;
+}
+
+template void onboard_start(OnboardState<float>&, const OnboardSettings<float>&) noexcept;
+template void onboard_start(OnboardState<double>&, const OnboardSettings<double>&) noexcept;
+template OnboardOutputs<float> onboard_sample(OnboardState<float>&, const OnboardInputs<float>&,
+                                              const OnboardSettings<float>&, float) noexcept;
+template OnboardOutputs<double> onboard_sample(OnboardState<double>&, const OnboardInputs<double>&,
+                                               const OnboardSettings<double>&, double) noexcept;
+
+}  // namespace attitude_estimator

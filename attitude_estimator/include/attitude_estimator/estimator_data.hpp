@@ -1,0 +1,157 @@
+// The variables of attitude_estimator.fmu as one plain struct, and the three conversions between it and the
+// on-board computer (onboard_computer.hpp): settings from the parameters, inputs, outputs back. FMI-free:
+// the FMU block (estimator_block.hpp) and the Cortex-M firmware (attitude_estimator/firmware) both hold
+// an EstimatorData and run the same conversions, so a parameter means the same on either.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "attitude_estimator/onboard_computer.hpp"
+
+namespace attitude_estimator {
+
+using Vec3d = std::array<double, 3>;
+using Faces = std::array<double, 6>;  // one value per face: +x, −x, +y, −y, +z, −z
+
+// Longest sun-vector history the spin-rate FFT can analyse (samples; 102 s at 20 Hz). The history is part
+// of the FMU state, so it has a fixed size inside the data struct.
+inline constexpr std::int32_t kMaxSpinWindow = 2048;
+
+// The panels' angular response the sun methods invert (the `angular_response` choice).
+enum class AngularResponse : std::int32_t { cosine = 0, kelly = 1 };
+// The arithmetic of the on-board computer (the `precision` choice): double, or float as the firmware on
+// a Cortex-M4F computes (attitude_estimator/firmware).
+enum class Precision : std::int32_t { double_precision = 0, single_precision = 1 };
+
+// Every variable of the block (double precision throughout; the on-board computer's own state in the
+// precision it runs in). No FMI type here: the firmware keeps its parameters, inputs and outputs in one
+// of these too, set through the wire table generated from the block's table. Defaults of the sensor chain match the other
+// blocks: i_sc_norm is ssr_plant's short-circuit current of one panel at normal incidence and 1367 W/m²,
+// the voltage channel and sensitivity are the HMC2003's (magnetometer block).
+struct EstimatorData {
+    // inputs. Their start values describe a consistent, lit, identity attitude (+x face towards the sun,
+    // a 30 µT field along +z), so the block alone, unconnected, produces a valid estimate.
+    Vec3d i_sh{kPanelCurrentAt1Au<double>, 0.0, 0.0};  // A, held differential currents I_sc+k − I_sc−k
+    Faces i_face{kPanelCurrentAt1Au<double>, 0.0, 0.0, 0.0, 0.0, 0.0};  // A, per-face sample/holds (i_face_sh)
+    Vec3d v_mag{2.5, 2.5, 2.8};                                         // V, magnetometer outputs X, Y, Z
+    double v_mag_ref = 2.5;                                             // V, magnetometer zero-field reference output
+    Vec3d sun_ref{1.0, 0.0, 0.0};                                       // 1, sun direction, inertial frame (any length)
+    Vec3d mag_ref{0.0, 0.0, 30e-6};           // T, geomagnetic field, inertial frame (any length)
+    double sun_distance = kAstronomicalUnit;  // m, satellite to sun (on-board ephemeris; environment sun_distance)
+
+    // parameters
+    double sample_period = 0.05;  // s: 20 Hz, the seed asks for more than 10 Hz
+    Vec3d i_sc_norm{kPanelCurrentAt1Au<double>, kPanelCurrentAt1Au<double>,
+                    kPanelCurrentAt1Au<double>};           // A: ssr_plant's i_sc0 (000 eq. 5 denominators)
+    double mag_sensitivity = kHmc2003Sensitivity<double>;  // V/T: 1 V/gauss
+    double weight_sun = 0.5;                               // a_1 of 000 eq. 8 (normalized with weight_mag)
+    double weight_mag = 0.5;                               // a_2
+    std::int32_t adc_bits = 12;                            // TMS320F2808: 12 bits; 0 = ideal converter
+    double i_adc_min = -1.2;                               // A: current channels' full-scale range, ±1.4 i_sc0
+    double i_adc_max = 1.2;
+    double v_adc_min = 0.0;  // V: voltage channels (HMC2003 outputs 0…5 V)
+    double v_adc_max = 5.0;
+    SolverKind solver = EstimatorConfig<double>{}.solver;          // qmethod (the seeds' method) or fast
+    double min_sun_norm = kDefaultMinSunNorm<double>;              // 1: eclipse threshold on |s|
+    double mag_rail_margin = kDefaultRailMargin<double>;           // V: saturation margin at the range ends
+    double min_field = kDefaultMinField<double>;                   // T
+    double min_separation_sin = kDefaultMinSeparationSin<double>;  // 1: sin 5°
+    // Sun sensing (sun_methods.hpp, docs/sun_methods.md).
+    SunMethod sun_method = SunMethodConfig<double>{}.method;     // difference | inverse_response | cones | three_faces
+    AngularResponse angular_response = AngularResponse::cosine;  // cosine (000 eq. 1) | kelly (the table below)
+    Faces kelly_angle{0.0, 30.0, 50.0, 60.0, 80.0, 85.0};        // deg: ssr_plant's Kelly table (000 fig. 4)
+    Faces kelly_value{1.0, 0.866, 0.635, 0.450, 0.100, 0.0};     // 1: relative response at those angles
+    Faces i_face_norm = SunMethodConfig<double>{}.i_face_norm;   // A: face current at β = 0
+    double face_dark_threshold = 0.02;                           // 1: a face is lit above this fraction of i_face_norm
+    double i_face_adc_max = 1.2;                                 // A: face-current channels span 0 … this
+    double cone_tolerance = 0.03;      // 1: cones' agreement tolerance on the relative response
+    double cube_max_step = 0.0;        // rad: cones may cross the panel cube's forbidden edges by this much
+    double orbit_altitude = 570e3;     // m: cones' Earth-albedo model sees the Earth from this height
+    double cone_fit_tolerance = 0.01;  // 1: cones' albedo-model fit accepted below this RMS misfit (0: off)
+    double cone_albedo_max = 0.4;      // 1: cones' largest fitted albedo on a face toward nadir
+    // Rates (rates.md): spin frequencies from the FFT of sun_meas; mean |ω| from successive q_est (004 eq. 4).
+    std::int32_t spin_window = 512;  // samples per FFT window (0: off)
+    double rate_interval = 2.0;      // s: shortest time between two attitudes in one eq. 4 increment
+    std::int32_t rate_window = 8;    // increments averaged (1 = eq. 4 alone)
+    // Recursive filter (mekf.hpp, docs/filter.md): none (the seeds' single-frame estimate only) or mekf.
+    FilterKind filter = FilterKind::none;
+    Precision precision = Precision::double_precision;  // double, or float as on the Cortex-M firmware
+    double filter_sun_sigma = 0.02;                     // rad: sun vector noise and model error, 1σ per axis
+    double filter_mag_sigma = 0.3e-6;                   // T: field vector noise and model error, 1σ per axis
+    double filter_rate_noise = 2e-5;       // rad/s: 1σ rate change over 1 s (random walk density, rad/s/√s)
+    double filter_attitude_noise = 1e-6;   // rad: 1σ attitude drift over 1 s (random walk density, rad/√s)
+    bool filter_offset = true;             // estimate the magnetometer offset (3 states)
+    bool filter_scale = false;             // estimate a common panel scale (face-based sun methods)
+    double filter_face_sigma = 0.02;       // 1: relative face response noise and model error, 1σ
+    std::array<double, 9> inertia{};       // kg m², row-major; all zero = kinematic rate model
+    std::int32_t filter_reset_after = 40;  // samples with every update refused before a reset
+    // HMC2003 set/reset (set_reset.hpp): pulse every this many samples and average the offset over this
+    // many set/reset pairs. 0 (default): no pulses, the offset stays in the field — the safe default for a
+    // magnetometer whose set_reset_command is not wired to mag_set_reset (its readings never flip).
+    std::int32_t mag_set_reset_samples = 0;
+    std::int32_t mag_offset_window = 20;
+
+    // outputs (discrete: set at sample instants, held in between). Before the first sample: identity.
+    std::array<double, 4> q_est{0.0, 0.0, 0.0, 1.0};                           // scalar-last [x, y, z, w], w >= 0
+    std::array<double, 9> A_est{1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0};  // row-major, w_body = A v_ref
+    Vec3d sun_meas{};       // 1, unit sun vector in body axes (zero when sun_valid is false)
+    Vec3d mag_meas{};       // 1, unit field vector in body axes (zero when mag_valid is false)
+    Vec3d mag_field{};      // T, measured field in body axes
+    double sun_norm = 0.0;  // 1, |s| of 000 eq. 5 before normalization
+    double loss = 0.0;      // 1, L(A) of 000 eq. 8
+    bool valid = false;
+    bool sun_valid = false;
+    bool mag_valid = false;
+    std::int32_t samples = 0;             // samples taken so far (saturates at 2^31 − 1)
+    std::int32_t lit_faces = 0;           // bit k: face k above the dark threshold (face-based methods)
+    std::int32_t rejected_faces = 0;      // bit k: lit face k not used (albedo)
+    std::int32_t cube_state = kCubeDark;  // cones: panel-cube state 9(x+1) + 3(y+1) + (z+1)
+    double spin_theta_dot = 0.0;          // rad/s, θ̇ of the seed's spin (FFT of sun_meas, 000 §4)
+    double spin_phi_dot = 0.0;            // rad/s, φ̇
+    double spin_bin_width = 0.0;          // rad/s, frequency resolution 2π/(N T)
+    double spin_window_time = 0.0;        // s, N T
+    bool spin_valid = false;
+    double rate_mean = 0.0;         // rad/s, mean |ω| from successive estimates (004 eq. 4)
+    double rate_window_time = 0.0;  // s, time the averaged increments span
+    bool rate_valid = false;
+    std::array<double, 4> q_filt{0.0, 0.0, 0.0, 1.0};  // filter attitude, scalar-last, w >= 0
+    Vec3d omega_filt{};                                // rad/s, filter body rate
+    Vec3d mag_offset_filt{};        // V: the filter's estimate of the offset left after mag_offset is taken out
+    double panel_scale_filt = 0.0;  // 1: estimated common panel scale error ε (currents (1 + ε) × nominal)
+    double attitude_bound = 0.0;    // rad: 3σ bound on the filter's attitude error
+    bool filter_valid = false;
+    std::int32_t filter_resets = 0;  // divergence resets so far
+    bool mag_set_reset = true;       // the set/reset pulse commanded last: true set, false reset (to the sensor)
+    Vec3d mag_offset{};              // V, the sensor offset estimated from set/reset pairs
+
+    // discrete state
+    double t_start = 0.0;  // s, the start time: sample k is due at t_start + k·sample_period
+    // Index k of the next sample. 64 bits (not an FMI Integer, so not declared): never overflows, and
+    // t_start + k·sample_period is computed from it afresh each time, so sample instants never drift.
+    std::int64_t next_index = 0;
+    std::array<Vec3d, kMaxSpinWindow> sun_history{};  // ring of sun_meas for the FFT
+    std::int32_t history_head = 0;                    // next write position
+    std::int32_t history_filled = 0;                  // consecutive valid samples in the ring (≤ spin_window)
+    OnboardState<double> onboard{};                   // the computer's memory (onboard_computer.hpp), double
+    OnboardState<float> onboard_float{};              // the same in float (precision = float)
+};
+
+// The on-board computer's settings from the block's parameters, in T (float: each value rounded once).
+template <class T>
+OnboardSettings<T> onboard_settings_from(const EstimatorData& d);
+// The inputs of a sample, in T.
+template <class T>
+OnboardInputs<T> onboard_inputs_from(const EstimatorData& d);
+// A sample's outputs into the block's output variables (double).
+template <class T>
+void store_outputs(EstimatorData& d, const OnboardOutputs<T>& out);
+
+extern template OnboardSettings<float> onboard_settings_from(const EstimatorData&);
+extern template OnboardSettings<double> onboard_settings_from(const EstimatorData&);
+extern template OnboardInputs<float> onboard_inputs_from(const EstimatorData&);
+extern template OnboardInputs<double> onboard_inputs_from(const EstimatorData&);
+extern template void store_outputs(EstimatorData&, const OnboardOutputs<float>&);
+extern template void store_outputs(EstimatorData&, const OnboardOutputs<double>&);
+
+}  // namespace attitude_estimator

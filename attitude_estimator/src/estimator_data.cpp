@@ -1,0 +1,149 @@
+#include "attitude_estimator/estimator_data.hpp"
+
+#include <algorithm>
+
+namespace attitude_estimator {
+
+namespace {
+
+constexpr double kEarthMeanRadius = 6371e3;  // m: the albedo model's sphere (the core's 570 km default uses it)
+
+template <class T, std::size_t N>
+std::array<T, N> to(const std::array<double, N>& a) {
+    std::array<T, N> out{};
+    for (std::size_t i = 0; i < N; ++i) out[i] = static_cast<T>(a[i]);
+    return out;
+}
+
+template <std::size_t N, class T>
+std::array<double, N> from(const std::array<T, N>& a) {
+    std::array<double, N> out{};
+    for (std::size_t i = 0; i < N; ++i) out[i] = static_cast<double>(a[i]);
+    return out;
+}
+
+template <class T>
+AdcConfig<T> adc(std::int32_t bits, double min, double max) {
+    return AdcConfig<T>{static_cast<unsigned>(bits), static_cast<T>(min), static_cast<T>(max)};
+}
+
+template <class T>
+panel_response::Response<T> response_from(const EstimatorData& d) {
+    if (d.angular_response == AngularResponse::cosine) return panel_response::cosine<T>();
+    std::array<panel_response::Knot<T>, 6> knots{};
+    for (std::size_t i = 0; i < knots.size(); ++i)
+        knots[i] = {static_cast<T>(d.kelly_angle[i]), static_cast<T>(d.kelly_value[i])};
+    return panel_response::table<T>(knots);
+}
+
+}  // namespace
+
+template <class T>
+OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
+    OnboardSettings<T> s;
+    EstimatorConfig<T>& c = s.estimator;
+    c.i_sc_norm = to<T>(d.i_sc_norm);  // at 1 AU; the sample scales them to its sun distance
+    c.mag_sensitivity = static_cast<T>(d.mag_sensitivity);
+    c.sun_weight = static_cast<T>(d.weight_sun);
+    c.mag_weight = static_cast<T>(d.weight_mag);
+    const auto current = adc<T>(d.adc_bits, d.i_adc_min, d.i_adc_max);
+    const auto voltage = adc<T>(d.adc_bits, d.v_adc_min, d.v_adc_max);
+    c.sun_adc = {current, current, current};
+    c.mag_adc = {voltage, voltage, voltage};
+    c.mag_ref_adc = voltage;  // the zero-field reference goes through a channel of the same kind
+    c.solver = d.solver;
+    c.min_sun_norm = static_cast<T>(d.min_sun_norm);
+    c.mag_rail_margin = static_cast<T>(d.mag_rail_margin);
+    c.min_field = static_cast<T>(d.min_field);
+    c.min_separation_sin = static_cast<T>(d.min_separation_sin);
+    c.sun.method = d.sun_method;
+    c.sun.i_face_norm = to<T>(d.i_face_norm);
+    c.sun.response = response_from<T>(d);
+    c.sun.dark_threshold = static_cast<T>(d.face_dark_threshold);
+    c.sun.min_sun_norm = static_cast<T>(d.min_sun_norm);
+    c.sun.cone_tolerance = static_cast<T>(d.cone_tolerance);
+    c.sun.cube_max_step = static_cast<T>(d.cube_max_step);
+    c.sun.cone_earth_sin_radius = static_cast<T>(kEarthMeanRadius / (kEarthMeanRadius + d.orbit_altitude));
+    c.sun.cone_fit_tolerance = static_cast<T>(d.cone_fit_tolerance);
+    c.sun.cone_albedo_max = static_cast<T>(d.cone_albedo_max);
+    c.face_adc.fill(adc<T>(d.adc_bits, 0.0, d.i_face_adc_max));
+
+    s.set_reset = SetResetConfig{.period_samples = d.mag_set_reset_samples, .offset_window = d.mag_offset_window};
+    s.sample_period = static_cast<T>(d.sample_period);
+    s.rate_interval = static_cast<T>(d.rate_interval);
+    s.rate.measure = RateMeasure::attitude_angle;
+    s.rate.window = static_cast<std::size_t>(d.rate_window);
+    s.rate.min_interval = static_cast<T>(d.rate_interval);
+    // A few invalid estimates in between (a refused cones sample, a grazing sun) do not break an increment;
+    // a gap longer than two increments (an eclipse) does: the rotation across it could alias past π.
+    s.rate.max_interval = static_cast<T>(std::max(2.0 * d.rate_interval, 5.0 * d.sample_period));
+
+    s.filter = d.filter;
+    s.filter_scale = d.filter_scale;
+    MekfConfig<T>& m = s.mekf;
+    m.sun_sigma = static_cast<T>(d.filter_sun_sigma);
+    m.mag_sigma = static_cast<T>(d.filter_mag_sigma);
+    m.rate_noise = static_cast<T>(d.filter_rate_noise);
+    m.attitude_noise = static_cast<T>(d.filter_attitude_noise);
+    m.estimate_offset = d.filter_offset;
+    m.estimate_scale = d.filter_scale;
+    m.face_sigma = static_cast<T>(d.filter_face_sigma);
+    m.inertia = to<T>(d.inertia);
+    m.reset_after = d.filter_reset_after;
+    // The rate comes from two single-frame attitudes at most a few samples apart.
+    m.max_init_gap = static_cast<T>(3.5 * d.sample_period);
+    return s;
+}
+
+template <class T>
+OnboardInputs<T> onboard_inputs_from(const EstimatorData& d) {
+    return OnboardInputs<T>{.i_sh = to<T>(d.i_sh),
+                            .i_face = to<T>(d.i_face),
+                            .v_mag = to<T>(d.v_mag),
+                            .v_mag_ref = static_cast<T>(d.v_mag_ref),
+                            .sun_ref = to<T>(d.sun_ref),
+                            .mag_ref = to<T>(d.mag_ref),
+                            .sun_distance = static_cast<T>(d.sun_distance)};
+}
+
+template <class T>
+void store_outputs(EstimatorData& d, const OnboardOutputs<T>& out) {
+    const SampleResult<T>& r = out.sample;
+    d.q_est = {r.q.x, r.q.y, r.q.z, r.q.w};
+    d.A_est = from<9>(r.a);
+    d.sun_meas = from<3>(r.sun_meas);
+    d.mag_meas = from<3>(r.mag_meas);
+    d.mag_field = from<3>(r.mag_field);
+    d.sun_norm = r.sun_norm;
+    d.loss = r.loss;
+    d.valid = r.valid;
+    d.sun_valid = r.sun_valid;
+    d.mag_valid = r.mag_valid;
+    d.lit_faces = r.lit_faces;
+    d.rejected_faces = r.rejected_faces;
+    d.cube_state = r.cube_state;
+    d.samples = out.samples;
+    d.mag_set_reset = out.mag_set_reset;
+    d.mag_offset = from<3>(out.mag_offset);
+    d.rate_mean = out.rate_mean;
+    d.rate_window_time = out.rate_window_time;
+    d.rate_valid = out.rate_valid;
+    if (d.filter == FilterKind::mekf) {
+        d.q_filt = {out.q_filt.x, out.q_filt.y, out.q_filt.z, out.q_filt.w};
+        d.omega_filt = from<3>(out.omega_filt);
+        d.mag_offset_filt = from<3>(out.mag_offset_filt);
+        d.panel_scale_filt = out.panel_scale_filt;
+        d.attitude_bound = out.attitude_bound;
+        d.filter_valid = out.filter_valid;
+        d.filter_resets = out.filter_resets;
+    }
+}
+
+template OnboardSettings<float> onboard_settings_from(const EstimatorData&);
+template OnboardSettings<double> onboard_settings_from(const EstimatorData&);
+template OnboardInputs<float> onboard_inputs_from(const EstimatorData&);
+template OnboardInputs<double> onboard_inputs_from(const EstimatorData&);
+template void store_outputs(EstimatorData&, const OnboardOutputs<float>&);
+template void store_outputs(EstimatorData&, const OnboardOutputs<double>&);
+
+}  // namespace attitude_estimator
