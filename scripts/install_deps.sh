@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the build and the tests need, skipping those already installed.
 # Runs apt-get as root (directly, or through sudo for a normal user).
+# --firmware adds the Cortex-M cross toolchain and QEMU (the estimator firmware, scripts/pil.sh, the test
+# suite): about 420 MB installed, left out of the seed run.
 set -euo pipefail
 
 packages=(
@@ -19,6 +21,14 @@ packages=(
   clang-format        # one format for every C++ file (scripts/format.sh --check in scripts/test.sh)
   clang libclang-rt-14-dev   # libFuzzer with ASan and UBSan (scripts/fuzz.sh, fuzz/)
 )
+
+if [ "${1:-}" = "--firmware" ]; then
+  packages+=(
+    gcc-arm-none-eabi libnewlib-arm-none-eabi  # the firmware: Arm's GCC and newlib (C library and libm)
+    libstdc++-arm-none-eabi-dev                # C++ headers only (the firmware links no libstdc++)
+    qemu-system-arm                            # mps2-an386, the Cortex-M4F board the firmware runs on
+  )
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -4,7 +4,7 @@
 # libFuzzer target briefly (scripts/fuzz.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/install_deps.sh
+bash scripts/install_deps.sh --firmware
 # Format first: it takes a second and a misformatted file fails the run before the long build.
 bash scripts/format.sh --check
 build=${PVATT_TEST_BUILD_DIR:-build-sanitize}

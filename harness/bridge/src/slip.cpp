@@ -3,59 +3,26 @@
 namespace bridge {
 
 std::vector<std::uint8_t> slip_encode(std::span<const std::uint8_t> frame) {
-    std::vector<std::uint8_t> out;
-    out.reserve(frame.size() + 8);
-    out.push_back(slip_end);  // a leading END flushes line noise at the receiver
-    for (const std::uint8_t b : frame) {
-        if (b == slip_end) {
-            out.push_back(slip_esc);
-            out.push_back(slip_esc_end);
-        } else if (b == slip_esc) {
-            out.push_back(slip_esc);
-            out.push_back(slip_esc_esc);
-        } else {
-            out.push_back(b);
-        }
-    }
-    out.push_back(slip_end);
+    std::vector<std::uint8_t> out(slip_max_encoded_size(frame.size()));
+    out.resize(slip_encode_into(frame, out));
     return out;
 }
 
 std::optional<std::vector<std::uint8_t>> SlipDecoder::feed(std::uint8_t byte) {
-    if (byte == slip_end) {
-        const bool had = !buffer_.empty() && !discarding_;
-        std::vector<std::uint8_t> frame;
-        frame.swap(buffer_);
-        discarding_ = escaped_ = false;
-        if (had) return frame;
-        return std::nullopt;
-    }
-    if (discarding_) return std::nullopt;
-    if (escaped_) {
-        escaped_ = false;
-        if (byte == slip_esc_end)
-            byte = slip_end;
-        else if (byte == slip_esc_esc)
-            byte = slip_esc;
-        else {
-            error_ = "bad SLIP escape";
-            ++dropped_;
-            discarding_ = true;
-            buffer_.clear();
-            return std::nullopt;
+    switch (reader_.feed(byte)) {
+        case SlipReader::Event::frame: {
+            const auto f = reader_.frame();
+            return std::vector<std::uint8_t>(f.begin(), f.end());
         }
-    } else if (byte == slip_esc) {
-        escaped_ = true;
-        return std::nullopt;
+        case SlipReader::Event::dropped_too_long:
+            error_ = "SLIP frame longer than " + std::to_string(buffer_.size()) + " bytes";
+            break;
+        case SlipReader::Event::dropped_bad_escape:
+            error_ = "bad SLIP escape";
+            break;
+        case SlipReader::Event::none:
+            break;
     }
-    if (buffer_.size() >= max_size_) {
-        error_ = "SLIP frame longer than " + std::to_string(max_size_) + " bytes";
-        ++dropped_;
-        discarding_ = true;
-        buffer_.clear();
-        return std::nullopt;
-    }
-    buffer_.push_back(byte);
     return std::nullopt;
 }
 

@@ -75,6 +75,9 @@ int main(int argc, char** argv) {
     run->add_option("--bridge-port", run_options.system.bridge_port,
                     "UDP port of every hardware-bridged component (replaces the .ssd's)")
         ->check(CLI::Range(0, 65535));
+    run->add_option("--bridge-device", run_options.system.bridge_device,
+                    "Serial device of every serial hardware bridge (replaces the .ssd's; scripts/pil.sh passes QEMU's "
+                    "pseudo-terminal)");
     run->add_flag("--realtime", run_options.realtime, "Pace simulated time to the wall clock");
     run->add_option("--realtime-tolerance", run_options.realtime_tolerance,
                     "With --realtime: how far behind its wall time (s) an output point may be before it counts as late")

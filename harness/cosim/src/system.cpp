@@ -107,6 +107,7 @@ void System::load_components(const SystemOptions& options) {
             if (want_cs) throw CosimError(cd.name + ": a hardware-bridged component runs as Model Exchange only");
             BridgeDescription bridge = *cd.bridge;
             if (options.bridge_port && bridge.transport == "udp") bridge.port = *options.bridge_port;
+            if (options.bridge_device && bridge.transport == "serial") bridge.device = *options.bridge_device;
             c.instance = std::make_unique<HardwareBridge>(md, cd.name, bridge);
             c.state_offset = states;
             c.indicator_offset = indicators;

@@ -52,7 +52,8 @@ struct SystemOptions {
     std::optional<double> communication_step;     // of every Co-Simulation component (replaces the .ssd's)
     bool model_exchange_only = false;             // ignore the .ssd's execution annotations (reference runs)
     std::optional<double> tolerance;
-    std::optional<int> bridge_port;  // replaces the port of every UDP hardware bridge
+    std::optional<int> bridge_port;            // replaces the port of every UDP hardware bridge
+    std::optional<std::string> bridge_device;  // replaces the device of every serial hardware bridge
 };
 
 // Consecutive connections (in flow order) between the same two components, copied in one get and

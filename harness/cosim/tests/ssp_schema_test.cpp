@@ -50,7 +50,7 @@ std::string schema_errors(const std::filesystem::path& file) {
 }
 
 TEST(CosimSspSchema, BundledSystemsAndTheirArchivesValidate) {
-    for (const char* name : {"seed_spin", "seed_spin_hil", "leo_orbit"}) {
+    for (const char* name : {"seed_spin", "seed_spin_hil", "seed_spin_pil", "leo_orbit"}) {
         const auto ssd = systems_dir / (std::string(name) + ".ssd");
         EXPECT_EQ(schema_errors(ssd), "") << ssd;
         const auto ssp =
