@@ -62,7 +62,8 @@ std::string accepts(const fmu::Variable& v) {
     if (v.max) c += " && x <= " + number(*v.max);
     if (v.type == fmu::ValueType::Enumeration) {
         std::string items;
-        for (const auto& item : v.items) items += (items.empty() ? "" : " || ") + std::string("x == ") + std::to_string(item.value);
+        for (const auto& item : v.items)
+            items += (items.empty() ? "" : " || ") + std::string("x == ") + std::to_string(item.value);
         c += " && (" + items + ")";
     }
     if (v.type == fmu::ValueType::Integer) c += " && x == std::round(x) && std::abs(x) < 2147483648.0";
@@ -82,7 +83,9 @@ int main(int argc, char** argv) {
                parameters = of(table, fmu::Causality::parameter);
     std::ostringstream h;
     h << "// Generated at build time by attitude_estimator/firmware/generate_wire_table.cpp from the variable table\n"
-         "// of " << model->info().model_identifier << ".fmu: do not edit. Inputs, outputs and non-String parameters in\n"
+         "// of "
+      << model->info().model_identifier
+      << ".fmu: do not edit. Inputs, outputs and non-String parameters in\n"
          "// value-reference order, the order of the hardware bridge's frames (harness/bridge/README.md).\n"
          "#pragma once\n\n#include <cmath>\n#include <cstddef>\n#include <cstdint>\n\n"
          "#include \"attitude_estimator/estimator_data.hpp\"\n\n"
@@ -90,12 +93,15 @@ int main(int argc, char** argv) {
       << "inline constexpr std::size_t kInputCount = " << inputs.size() << ";\n"
       << "inline constexpr std::size_t kOutputCount = " << outputs.size() << ";\n"
       << "inline constexpr std::size_t kParameterCount = " << parameters.size() << ";\n\n";
-    h << "// Input i of a request frame into its field.\ninline void set_input(EstimatorData& d, std::size_t i, double x) {\n"
+    h << "// Input i of a request frame into its field.\ninline void set_input(EstimatorData& d, std::size_t i, double "
+         "x) {\n"
          "    switch (i) {\n";
     for (std::size_t i = 0; i < inputs.size(); ++i)
-        h << "        case " << i << ":  // " << inputs[i]->name << "\n            " << store(*inputs[i]) << "\n            break;\n";
+        h << "        case " << i << ":  // " << inputs[i]->name << "\n            " << store(*inputs[i])
+          << "\n            break;\n";
     h << "        default:\n            break;\n    }\n}\n\n";
-    h << "// Output i of a reply frame.\ninline double output(const EstimatorData& d, std::size_t i) {\n    switch (i) {\n";
+    h << "// Output i of a reply frame.\ninline double output(const EstimatorData& d, std::size_t i) {\n    switch (i) "
+         "{\n";
     for (std::size_t i = 0; i < outputs.size(); ++i) {
         const auto& v = *outputs[i];
         const std::string value = v.type == fmu::ValueType::Boolean ? "(" + field(v) + " ? 1.0 : 0.0)"
@@ -106,8 +112,8 @@ int main(int argc, char** argv) {
     h << "// Whether parameter i takes the value x (finite, in its declared range, an item of its Enumeration).\n"
          "inline bool parameter_accepts(std::size_t i, double x) {\n    switch (i) {\n";
     for (std::size_t i = 0; i < parameters.size(); ++i)
-        h << "        case " << i << ":  // " << parameters[i]->name << "\n            return " << accepts(*parameters[i])
-          << ";\n";
+        h << "        case " << i << ":  // " << parameters[i]->name << "\n            return "
+          << accepts(*parameters[i]) << ";\n";
     h << "        default:\n            return false;\n    }\n}\n\n";
     h << "// Parameter i of a configure frame into its field (checked with parameter_accepts first).\n"
          "inline void set_parameter(EstimatorData& d, std::size_t i, double x) {\n    switch (i) {\n";

@@ -18,7 +18,9 @@ namespace {
 
 using attitude_estimator::EstimatorData;
 
-volatile std::uint32_t& reg(std::uintptr_t address) { return *reinterpret_cast<volatile std::uint32_t*>(address); }
+volatile std::uint32_t& reg(std::uintptr_t address) {
+    return *reinterpret_cast<volatile std::uint32_t*>(address);
+}
 constexpr std::uintptr_t kSystCsr = 0xE000E010, kSystRvr = 0xE000E014, kSystCvr = 0xE000E018;
 
 firmware::CmsdkUart* uart = nullptr;
@@ -41,8 +43,12 @@ void systick_start() {
     reg(kSystCvr) = 0;
     reg(kSystCsr) = 0x5;  // enabled, processor clock, no interrupt
 }
-std::uint32_t systick() { return reg(kSystCvr); }
-std::uint32_t ticks_between(std::uint32_t start, std::uint32_t end) { return (start - end) & 0xFFFFFF; }
+std::uint32_t systick() {
+    return reg(kSystCvr);
+}
+std::uint32_t ticks_between(std::uint32_t start, std::uint32_t end) {
+    return (start - end) & 0xFFFFFF;
+}
 
 // Ticks per million instructions, from a loop of two instructions per turn.
 std::uint32_t calibrate() {
@@ -116,7 +122,8 @@ void run(const Case& c, std::uint32_t ticks_per_million) {
     for (std::size_t first = 0; first < wire::kParameterCount; first += bridge::max_values) {
         std::array<double, bridge::max_values> values{};
         std::size_t n = 0;
-        for (std::size_t p = first; p < wire::kParameterCount && n < values.size(); ++p) values[n++] = wire::parameter(d, p);
+        for (std::size_t p = first; p < wire::kParameterCount && n < values.size(); ++p)
+            values[n++] = wire::parameter(d, p);
         const bridge::FrameHeader h{.type = bridge::FrameType::configure,
                                     .sequence = static_cast<std::uint32_t>(first),
                                     .time = static_cast<double>(wire::kParameterCount),
@@ -176,8 +183,7 @@ void run(const Case& c, std::uint32_t ticks_per_million) {
     register std::uint32_t r0 asm("r0") = 0x18;
     register std::uint32_t r1 asm("r1") = 0x20026;
     asm volatile("bkpt 0xAB" : : "r"(r0), "r"(r1) : "memory");
-    for (;;) {
-    }
+    for (;;) {}
 }
 
 }  // namespace
@@ -196,13 +202,15 @@ int main() {
         {"difference_fast", [](EstimatorData& d) { d.solver = SolverKind::fast; }},
         {"inverse_response_qmethod", [](EstimatorData& d) { d.sun_method = SunMethod::inverse_response; }},
         {"cones_qmethod", [](EstimatorData& d) { d.sun_method = SunMethod::cones; }},
-        {"cones_fast", [](EstimatorData& d) {
+        {"cones_fast",
+         [](EstimatorData& d) {
              d.sun_method = SunMethod::cones;
              d.solver = SolverKind::fast;
          }},
         {"three_faces_qmethod", [](EstimatorData& d) { d.sun_method = SunMethod::three_faces; }},
         {"difference_qmethod_mekf", [](EstimatorData& d) { d.filter = FilterKind::mekf; }},
-        {"cones_qmethod_mekf_scale_setreset", [](EstimatorData& d) {
+        {"cones_qmethod_mekf_scale_setreset",
+         [](EstimatorData& d) {
              d.sun_method = SunMethod::cones;
              d.filter = FilterKind::mekf;
              d.filter_scale = true;

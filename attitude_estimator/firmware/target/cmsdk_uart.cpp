@@ -15,8 +15,7 @@ CmsdkUart::CmsdkUart(std::uintptr_t base, std::uint32_t bauddiv) : base_(base) {
 }
 
 void CmsdkUart::put(std::uint8_t byte) {
-    while (reg(kState) & kTxFull) {
-    }
+    while (reg(kState) & kTxFull) {}
     reg(kData) = byte;
 }
 

@@ -7,6 +7,10 @@
 
 extern "C" {
 [[noreturn]] void fault_handler();
-[[noreturn]] void* __wrap_malloc(std::size_t) { fault_handler(); }
-[[noreturn]] void __wrap_free(void*) { fault_handler(); }
+[[noreturn]] void* __wrap_malloc(std::size_t) {
+    fault_handler();
+}
+[[noreturn]] void __wrap_free(void*) {
+    fault_handler();
+}
 }

@@ -18,14 +18,15 @@ int main();
 
 namespace {
 
-volatile std::uint32_t& reg(std::uintptr_t address) { return *reinterpret_cast<volatile std::uint32_t*>(address); }
+volatile std::uint32_t& reg(std::uintptr_t address) {
+    return *reinterpret_cast<volatile std::uint32_t*>(address);
+}
 constexpr std::uintptr_t kCpacr = 0xE000ED88;  // Coprocessor Access Control: CP10 and CP11 = the FPU
 
 }  // namespace
 
 extern "C" [[noreturn]] void fault_handler() {
-    for (;;) {
-    }
+    for (;;) {}
 }
 
 extern "C" [[noreturn]] void reset_handler() {

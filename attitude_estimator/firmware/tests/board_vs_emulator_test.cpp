@@ -12,8 +12,8 @@
 #include "attitude_estimator/estimator_block.hpp"
 #include "bridge/board_emulator.hpp"
 #include "bridge/frame.hpp"
-#include "fmu/value_access.hpp"
 #include "estimator_board.hpp"
+#include "fmu/value_access.hpp"
 
 namespace attitude_estimator {
 namespace {
@@ -57,12 +57,12 @@ std::vector<double> scene_inputs(int k) {
     const double i0 = kPanelCurrentAt1Au<double>;
     std::vector<double> in;
     for (int i = 0; i < 3; ++i) in.push_back(i0 * s[static_cast<std::size_t>(i)]);  // i_sh
-    for (int i = 0; i < 3; ++i) {                                                      // i_face +x, -x, ...
+    for (int i = 0; i < 3; ++i) {                                                   // i_face +x, -x, ...
         in.push_back(i0 * std::max(0.0, s[static_cast<std::size_t>(i)]) + (i == 2 ? 0.02 : 0.0));
         in.push_back(i0 * std::max(0.0, -s[static_cast<std::size_t>(i)]));
     }
     for (int i = 0; i < 3; ++i) in.push_back(2.5 + 1e4 * m[static_cast<std::size_t>(i)] + 0.003);  // v_mag
-    in.push_back(2.5);                                                                                // v_mag_ref
+    in.push_back(2.5);                                                                             // v_mag_ref
     for (double x : sun_ref) in.push_back(x);
     for (double x : mag_ref) in.push_back(x);
     in.push_back(1.495978707e11 * 0.99);  // sun_distance
@@ -145,24 +145,23 @@ TEST_P(BoardVsEmulator, RepliesAreByteIdentical) {
     EXPECT_EQ(board.samples(), 120);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Configurations, BoardVsEmulator,
-    ::testing::Values(Case{"seed", [](EstimatorData&) {}},
-                      Case{"fast_cones_mekf",
-                           [](EstimatorData& d) {
-                               d.solver = SolverKind::fast;
-                               d.sun_method = SunMethod::cones;
-                               d.filter = FilterKind::mekf;
-                               d.filter_scale = true;
-                               d.mag_set_reset_samples = 1;
-                           }},
-                      Case{"three_faces_kelly",
-                           [](EstimatorData& d) {
-                               d.sun_method = SunMethod::three_faces;
-                               d.angular_response = AngularResponse::kelly;
-                               d.adc_bits = 10;
-                           }}),
-    [](const auto& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(Configurations, BoardVsEmulator,
+                         ::testing::Values(Case{"seed", [](EstimatorData&) {}},
+                                           Case{"fast_cones_mekf",
+                                                [](EstimatorData& d) {
+                                                    d.solver = SolverKind::fast;
+                                                    d.sun_method = SunMethod::cones;
+                                                    d.filter = FilterKind::mekf;
+                                                    d.filter_scale = true;
+                                                    d.mag_set_reset_samples = 1;
+                                                }},
+                                           Case{"three_faces_kelly",
+                                                [](EstimatorData& d) {
+                                                    d.sun_method = SunMethod::three_faces;
+                                                    d.angular_response = AngularResponse::kelly;
+                                                    d.adc_bits = 10;
+                                                }}),
+                         [](const auto& info) { return std::string(info.param.name); });
 
 TEST(FirmwareBoard, RefusesWhatItDoesNotCompute) {
     static EstimatorBoard board;

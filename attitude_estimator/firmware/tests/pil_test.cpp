@@ -8,8 +8,8 @@
 // calls the C library's float functions (acosf, asinf, atan2f, sinf, cosf: newlib's on the board, glibc's
 // on the host, each within an ulp or two but not the same), the results differ by what those ulps become:
 // the cones method's albedo fit (up to 2e-5 on q_est measured) and the filter's propagation (3e-7 on q_filt).
-#include <gtest/gtest.h>
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -77,11 +77,11 @@ private:
 class Pil : public ::testing::Test {
 protected:
     void SetUp() override {
-        if (std::string(PVATT_QEMU).empty()) GTEST_SKIP() << "qemu-system-arm not found (scripts/install_deps.sh --firmware)";
+        if (std::string(PVATT_QEMU).empty())
+            GTEST_SKIP() << "qemu-system-arm not found (scripts/install_deps.sh --firmware)";
         if (!fs::exists(PVATT_FIRMWARE_ELF)) GTEST_SKIP() << "no firmware image at " << PVATT_FIRMWARE_ELF;
-        dir_ = fs::temp_directory_path() /
-               ("pvatt_pil_" + std::to_string(getpid()) + "_" +
-                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        dir_ = fs::temp_directory_path() / ("pvatt_pil_" + std::to_string(getpid()) + "_" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::create_directories(dir_);
     }
     void TearDown() override {
@@ -91,7 +91,8 @@ protected:
     // The PIL run and the all-FMU float run of the seed scenario with `settings` (--set ...) on both.
     std::pair<cosim::CsvTable, cosim::CsvTable> run_both(const std::string& settings, double stop) {
         Qemu qemu(dir_ / "qemu.log");
-        EXPECT_FALSE(qemu.pty().empty()) << "QEMU named no pseudo-terminal (see " << dir_ / "qemu.log" << ")";
+        EXPECT_FALSE(qemu.pty().empty()) << "QEMU named no pseudo-terminal (see " << dir_ / "qemu.log"
+                                         << ")";
         const std::string common = " --stop-time " + std::to_string(stop) + " --output-interval 0.025 " + settings;
         const fs::path pil = dir_ / "pil.csv", fmu = dir_ / "fmu.csv";
         const std::string pil_run = std::string("'") + PVATT_COSIM + "' run '" + PVATT_SYSTEMS_DIR +
@@ -107,7 +108,8 @@ protected:
         s << log.rdbuf();
         // Every sample answered by the board: 1 + 20 per second.
         const std::string answered = std::to_string(1 + static_cast<int>(std::lround(20 * stop)));
-        EXPECT_NE(s.str().find(answered + " frames, " + answered + " answered, 0 missed"), std::string::npos) << s.str();
+        EXPECT_NE(s.str().find(answered + " frames, " + answered + " answered, 0 missed"), std::string::npos)
+            << s.str();
         return {cosim::read_csv(pil), cosim::read_csv(fmu)};
     }
 

@@ -50,10 +50,13 @@ const char* describe(DecodeStatus status) noexcept;
 // CRC-16/CCITT-FALSE: polynomial 0x1021, initial value 0xFFFF, no reflection, no final xor.
 std::uint16_t crc16_ccitt(std::span<const std::uint8_t> bytes) noexcept;
 
-inline constexpr std::size_t frame_size(std::size_t count) { return header_size + 8 * count + crc_size; }
+inline constexpr std::size_t frame_size(std::size_t count) {
+    return header_size + 8 * count + crc_size;
+}
 
 // Writes the frame into `out`; returns its size, or 0 when values.size() > max_values or `out` is too small.
-std::size_t encode_frame(const FrameHeader& header, std::span<const double> values, std::span<std::uint8_t> out) noexcept;
+std::size_t encode_frame(const FrameHeader& header, std::span<const double> values,
+                         std::span<std::uint8_t> out) noexcept;
 // Checks one whole frame; on ok fills `header` (its values are read with frame_value).
 DecodeStatus decode_frame(std::span<const std::uint8_t> bytes, FrameHeader& header) noexcept;
 // Value i of a frame decode_frame accepted.

@@ -13,7 +13,9 @@ namespace bridge {
 inline constexpr std::uint8_t slip_end = 0xC0, slip_esc = 0xDB, slip_esc_end = 0xDC, slip_esc_esc = 0xDD;
 
 // The longest encoding of a frame of n bytes: every byte escaped, and the two ENDs.
-inline constexpr std::size_t slip_max_encoded_size(std::size_t n) { return 2 * n + 2; }
+inline constexpr std::size_t slip_max_encoded_size(std::size_t n) {
+    return 2 * n + 2;
+}
 
 // Writes the encoding of `frame` into `out`; returns its size, or 0 when `out` is too small.
 std::size_t slip_encode_into(std::span<const std::uint8_t> frame, std::span<std::uint8_t> out) noexcept;
