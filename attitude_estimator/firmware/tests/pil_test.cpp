@@ -19,7 +19,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -50,15 +49,19 @@ public:
         if (posix_spawn(&pid_, argv[0], &actions, nullptr, argv.data(), environ) != 0) pid_ = -1;
         posix_spawn_file_actions_destroy(&actions);
         // QEMU names the terminal on its output: "char device redirected to /dev/pts/N (label serial0)".
-        const std::regex pts("(/dev/pts/[0-9]+)");
+        // (A plain search: <regex> trips GCC 12's -Wmaybe-uninitialized under the sanitizers.)
+        const std::string prefix = "/dev/pts/";
         for (int i = 0; i < 100 && pid_ > 0 && pty_.empty(); ++i) {
             std::this_thread::sleep_for(std::chrono::milliseconds(50));
             std::ifstream in(log);
             std::stringstream s;
             s << in.rdbuf();
-            std::smatch m;
             const std::string text = s.str();
-            if (std::regex_search(text, m, pts)) pty_ = m[1];
+            const auto at = text.find(prefix);
+            if (at == std::string::npos) continue;
+            auto end = at + prefix.size();
+            while (end < text.size() && text[end] >= '0' && text[end] <= '9') ++end;
+            if (end > at + prefix.size()) pty_ = text.substr(at, end - at);
         }
     }
     ~Qemu() {
