@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <memory>
+#include <ostream>
 #include <vector>
 
 #include "attitude_estimator/estimator_block.hpp"
@@ -84,6 +85,11 @@ struct Case {
     const char* name;
     void (*edit)(EstimatorData&);
 };
+
+// The case's name in test listings (gtest would print the struct's bytes, pointers included).
+void PrintTo(const Case& c, std::ostream* out) {
+    *out << c.name;
+}
 
 class BoardVsEmulator : public ::testing::TestWithParam<Case> {};
 

@@ -46,6 +46,23 @@ std::string degrees(double x) {
     return buf;
 }
 
+// A y range for a figure whose values are all equal (a battery that stays full over a short run): gnuplot
+// would widen it itself, with a warning on the terminal. Empty when the values vary.
+std::string flat_range(const std::vector<Series>& series, std::size_t first_row) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (const auto& s : series)
+        for (std::size_t r = first_row; r < s.values.size(); ++r)
+            if (std::isfinite(s.values[r])) {
+                lo = std::min(lo, s.values[r]);
+                hi = std::max(hi, s.values[r]);
+            }
+    if (!(lo == hi)) return "";
+    const double margin = lo == 0.0 ? 1.0 : 0.05 * std::abs(lo);
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "set yrange [%.17g:%.17g]\n", lo - margin, hi + margin);
+    return buf;
+}
+
 // One figure: writes the data and a gnuplot script, runs gnuplot, returns the PNG.
 std::filesystem::path draw(const std::filesystem::path& out_dir, const std::string& name, const std::string& title,
                            const std::string& ylabel, const std::vector<double>& time,
@@ -64,7 +81,8 @@ std::filesystem::path draw(const std::filesystem::path& out_dir, const std::stri
     const auto png = out_dir / (name + ".png");
     std::string script = "set terminal pngcairo noenhanced size 1100,600 font 'sans,11'\nset output '" + png.string() +
                          "'\nset title '" + title + "'\nset xlabel 'time (s)'\nset ylabel '" + ylabel +
-                         "'\nset grid\nset key outside right\nset datafile missing 'nan'\nplot ";
+                         "'\nset grid\nset key outside right\nset datafile missing 'nan'\n" +
+                         flat_range(series, first_row) + "plot ";
     for (std::size_t i = 0; i < series.size(); ++i)
         script += (i ? ", " : "") + std::string("'") + data.string() + "' using 1:" + std::to_string(i + 2) +
                   (series[i].points ? " with points pt 7 ps 0.7" : " with lines lw 2") + " title '" + series[i].title +
