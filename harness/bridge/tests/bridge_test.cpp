@@ -320,6 +320,39 @@ TEST(Udp, RealtimePacesEachExchange) {
     EXPECT_EQ(hw.link.answered, 11);
 }
 
+// A board slow to take its configuration (QEMU booting the firmware takes most of a second) delays the
+// run's start, not its samples: --realtime's wall clock starts once the board has acknowledged, so frame k
+// still leaves k sample periods after that acknowledgement (a lower bound again; the old clock started
+// before the configuration and sent the first frames at once to catch up).
+TEST(Udp, RealtimeClockStartsAfterTheBoardIsConfigured) {
+    auto server = free_udp();
+    const int port = server->port();
+    bridge::BoardEmulator emulator(fmu::make_model());
+    std::vector<bridge::Clock::time_point> arrivals;
+    bridge::Clock::time_point acknowledged{};
+    std::thread board([&] {
+        while (arrivals.size() < 11) {
+            const auto bytes = server->receive(bridge::Clock::now() + std::chrono::seconds(5));
+            if (!bytes) return;
+            const bridge::Frame frame = bridge::decode(*bytes);
+            if (frame.type == bridge::FrameType::configure) {
+                std::this_thread::sleep_for(std::chrono::milliseconds(300));
+                acknowledged = bridge::Clock::now();
+            } else if (frame.type == bridge::FrameType::request) {
+                arrivals.push_back(bridge::Clock::now());
+            }
+            server->send(bridge::encode(emulator.answer(frame)));
+        }
+    });
+    const Result hw = run(annotation(R"(port="1" timeout_ms="2000")"), port, true);
+    board.join();
+    ASSERT_EQ(arrivals.size(), 11u);
+    for (std::size_t k = 0; k < arrivals.size(); ++k)
+        EXPECT_GE(std::chrono::duration<double>(arrivals[k] - acknowledged).count(), 0.05 * static_cast<double>(k))
+            << "frame " << k;
+    EXPECT_EQ(hw.link.answered, 11);
+}
+
 // The emulator's side: a bad frame is refused with a reason and the next good one still answered.
 TEST(Emulator, RejectsMalformedRequestsAndGoesOn) {
     bridge::BoardEmulator board(fmu::make_model());

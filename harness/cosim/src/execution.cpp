@@ -294,17 +294,23 @@ struct Execution::Impl {
             stepping[i].last = start;
             if (!(stepping[i].step > 0.0)) throw CosimError(comp(i).name + ": the communication step must be positive");
         }
-        const auto wall_start = std::chrono::steady_clock::now();
+        // The wall clock of --realtime starts when the run does, after initialization: a board's answer to
+        // its configuration (QEMU booting the firmware takes most of a second) is not simulated time.
+        const auto run_started = std::chrono::steady_clock::now();
+        const auto wall_origin =
+            std::make_shared<std::chrono::steady_clock::time_point>(std::chrono::steady_clock::now());
         stats.realtime_tolerance = options.realtime_tolerance;
         if (options.realtime) {
             // Components that talk to hardware act at their instants' wall time, not only at output points.
             for (auto& c : system.components())
-                c.instance->set_pacer([wall_start, start](double time) {
-                    std::this_thread::sleep_until(wall_due(wall_start, time - start));
+                c.instance->set_pacer([wall_origin, start](double time) {
+                    std::this_thread::sleep_until(wall_due(*wall_origin, time - start));
                 });
         }
 
         system.initialize(start, stop);
+        *wall_origin = std::chrono::steady_clock::now();
+        const auto wall_start = *wall_origin;
         t = start;
         // Model Exchange components leave initialization in event mode: all of them settle here.
         for (auto i : me) in_event[i] = 1;
@@ -383,7 +389,7 @@ struct Execution::Impl {
         for (auto& c : system.components()) c.instance->terminate();
 
         stats.simulated_time = t - start;
-        stats.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+        stats.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - run_started).count();
         if (cvode) {
             stats.integrator_steps = cvode->steps();
             stats.rhs_evaluations = cvode->rhs_evaluations();

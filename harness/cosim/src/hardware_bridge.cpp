@@ -117,6 +117,8 @@ void HardwareBridge::exit_initialization_mode() {
     period_ = values_[period_slot_ - 1];
     if (!(period_ > 0.0) || !std::isfinite(period_))
         throw CosimError(name_ + ": sample_period must be positive, got " + format_real(period_));
+    // The parameters are final here: the board gets them now, before the run's wall clock starts.
+    if (!board_configured_) configure_board();
 }
 
 void HardwareBridge::terminate() {
