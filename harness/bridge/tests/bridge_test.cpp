@@ -293,62 +293,63 @@ TEST(Udp, MalformedRepliesAreRejected) {
     fake.join();
 }
 
+// The emulator answering on a thread and noting when each request arrives, until `requests` have, and
+// when it acknowledged its configuration (after `configure_delay`: a slow board, QEMU booting firmware).
+struct TimedBoard {
+    std::unique_ptr<bridge::UdpLink> server = free_udp();
+    bridge::BoardEmulator emulator{fmu::make_model()};
+    std::vector<bridge::Clock::time_point> arrivals;
+    bridge::Clock::time_point acknowledged{};
+    std::thread thread;
+    TimedBoard(std::size_t requests, std::chrono::milliseconds configure_delay) {
+        thread = std::thread([this, requests, configure_delay] {
+            while (arrivals.size() < requests) {
+                const auto bytes = server->receive(bridge::Clock::now() + std::chrono::seconds(5));
+                if (!bytes) return;
+                const bridge::Frame frame = bridge::decode(*bytes);
+                if (frame.type == bridge::FrameType::configure) {
+                    std::this_thread::sleep_for(configure_delay);
+                    acknowledged = bridge::Clock::now();
+                } else if (frame.type == bridge::FrameType::request) {
+                    arrivals.push_back(bridge::Clock::now());
+                }
+                server->send(bridge::encode(emulator.answer(frame)));
+            }
+        });
+    }
+    void join() { thread.join(); }
+    ~TimedBoard() {
+        if (thread.joinable()) thread.join();
+    }
+};
+
 // --realtime: each request leaves at its sample instant's wall time, so the board sees frame k no
 // earlier than k * sample_period after the run began (which is after `before`). A lower bound only:
 // a late wall clock (a loaded machine) is not a fault.
 TEST(Udp, RealtimePacesEachExchange) {
-    auto server = free_udp();
-    const int port = server->port();
-    bridge::BoardEmulator emulator(fmu::make_model());
-    std::vector<bridge::Clock::time_point> arrivals;
-    std::thread board([&] {
-        while (arrivals.size() < 11) {
-            const auto bytes = server->receive(bridge::Clock::now() + std::chrono::seconds(5));
-            if (!bytes) return;
-            const bridge::Frame frame = bridge::decode(*bytes);
-            if (frame.type == bridge::FrameType::request) arrivals.push_back(bridge::Clock::now());
-            server->send(bridge::encode(emulator.answer(frame)));
-        }
-    });
+    TimedBoard board(11, std::chrono::milliseconds(0));
     const auto before = bridge::Clock::now();
-    const Result hw = run(annotation(R"(port="1" timeout_ms="2000")"), port, true);
+    const Result hw = run(annotation(R"(port="1" timeout_ms="2000")"), board.server->port(), true);
     board.join();
-    ASSERT_EQ(arrivals.size(), 11u);
-    for (std::size_t k = 1; k < arrivals.size(); ++k)
-        EXPECT_GE(std::chrono::duration<double>(arrivals[k] - before).count(), 0.05 * static_cast<double>(k))
+    ASSERT_EQ(board.arrivals.size(), 11u);
+    for (std::size_t k = 1; k < board.arrivals.size(); ++k)
+        EXPECT_GE(std::chrono::duration<double>(board.arrivals[k] - before).count(), 0.05 * static_cast<double>(k))
             << "frame " << k;
     EXPECT_EQ(hw.link.answered, 11);
 }
 
-// A board slow to take its configuration (QEMU booting the firmware takes most of a second) delays the
-// run's start, not its samples: --realtime's wall clock starts once the board has acknowledged, so frame k
-// still leaves k sample periods after that acknowledgement (a lower bound again; the old clock started
-// before the configuration and sent the first frames at once to catch up).
+// A board slow to take its configuration delays the run's start, not its samples: --realtime's wall clock
+// starts once the board has acknowledged, so frame k still leaves k sample periods after that
+// acknowledgement (a lower bound again; the old clock started before the configuration and sent the first
+// frames at once to catch up).
 TEST(Udp, RealtimeClockStartsAfterTheBoardIsConfigured) {
-    auto server = free_udp();
-    const int port = server->port();
-    bridge::BoardEmulator emulator(fmu::make_model());
-    std::vector<bridge::Clock::time_point> arrivals;
-    bridge::Clock::time_point acknowledged{};
-    std::thread board([&] {
-        while (arrivals.size() < 11) {
-            const auto bytes = server->receive(bridge::Clock::now() + std::chrono::seconds(5));
-            if (!bytes) return;
-            const bridge::Frame frame = bridge::decode(*bytes);
-            if (frame.type == bridge::FrameType::configure) {
-                std::this_thread::sleep_for(std::chrono::milliseconds(300));
-                acknowledged = bridge::Clock::now();
-            } else if (frame.type == bridge::FrameType::request) {
-                arrivals.push_back(bridge::Clock::now());
-            }
-            server->send(bridge::encode(emulator.answer(frame)));
-        }
-    });
-    const Result hw = run(annotation(R"(port="1" timeout_ms="2000")"), port, true);
+    TimedBoard board(11, std::chrono::milliseconds(300));
+    const Result hw = run(annotation(R"(port="1" timeout_ms="2000")"), board.server->port(), true);
     board.join();
-    ASSERT_EQ(arrivals.size(), 11u);
-    for (std::size_t k = 0; k < arrivals.size(); ++k)
-        EXPECT_GE(std::chrono::duration<double>(arrivals[k] - acknowledged).count(), 0.05 * static_cast<double>(k))
+    ASSERT_EQ(board.arrivals.size(), 11u);
+    for (std::size_t k = 0; k < board.arrivals.size(); ++k)
+        EXPECT_GE(std::chrono::duration<double>(board.arrivals[k] - board.acknowledged).count(),
+                  0.05 * static_cast<double>(k))
             << "frame " << k;
     EXPECT_EQ(hw.link.answered, 11);
 }

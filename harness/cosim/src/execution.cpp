@@ -297,8 +297,7 @@ struct Execution::Impl {
         // The wall clock of --realtime starts when the run does, after initialization: a board's answer to
         // its configuration (QEMU booting the firmware takes most of a second) is not simulated time.
         const auto run_started = std::chrono::steady_clock::now();
-        const auto wall_origin =
-            std::make_shared<std::chrono::steady_clock::time_point>(std::chrono::steady_clock::now());
+        const auto wall_origin = std::make_shared<std::chrono::steady_clock::time_point>(run_started);
         stats.realtime_tolerance = options.realtime_tolerance;
         if (options.realtime) {
             // Components that talk to hardware act at their instants' wall time, not only at output points.

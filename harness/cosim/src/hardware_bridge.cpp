@@ -99,7 +99,6 @@ std::size_t HardwareBridge::slot(Kind kind, fmi2ValueReference vr) const {
 void HardwareBridge::setup_experiment(double start_time, std::optional<double>, std::optional<double>) {
     start_time_ = time_ = start_time;
     next_sample_ = 0;
-    board_configured_ = false;
     bridge::LinkSettings link;
     link.transport = settings_.transport;
     link.host = settings_.host;
@@ -117,8 +116,9 @@ void HardwareBridge::exit_initialization_mode() {
     period_ = values_[period_slot_ - 1];
     if (!(period_ > 0.0) || !std::isfinite(period_))
         throw CosimError(name_ + ": sample_period must be positive, got " + format_real(period_));
-    // The parameters are final here: the board gets them now, before the run's wall clock starts.
-    if (!board_configured_) configure_board();
+    // The parameters are final here: the board gets them now, before the run's wall clock starts and
+    // before the first exchange (samples come only after initialization).
+    configure_board();
 }
 
 void HardwareBridge::terminate() {
@@ -215,11 +215,9 @@ void HardwareBridge::configure_board() {
                              " ms (the bridge's timeout_ms); refusing to run it with parameters it may not have" +
                              (last_error_.empty() ? "" : " (last error: " + last_error_ + ")"));
     }
-    board_configured_ = true;
 }
 
 void HardwareBridge::exchange() {
-    if (!board_configured_) configure_board();
     if (pacer_) pacer_(time_);  // --realtime: the frame leaves at the sample instant's wall time
     // Answers to frames already given up arrive late: take them off the link first.
     while (auto stale = link_->receive(bridge::Clock::now())) {

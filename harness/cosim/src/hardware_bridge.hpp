@@ -72,7 +72,6 @@ private:
     std::map<std::pair<Kind, fmi2ValueReference>, std::size_t> slots_;  // -> index into values_
     std::vector<double> values_;                 // every non-String variable, as the wire carries it (f64)
     std::vector<std::size_t> parameters_;        // indices into values_ of the parameters, value-reference order
-    bool board_configured_ = false;              // configure frames sent and taken, for this run
     std::vector<std::string> strings_;           // String variables (stay on this side of the link)
     std::vector<std::size_t> inputs_, outputs_;  // value-reference order
     std::size_t period_slot_ = 0;
