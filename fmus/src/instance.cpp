@@ -520,6 +520,13 @@ void Instance::get_nominals(std::span<double> nominal) {
     runner_.get_nominals(nominal);
 }
 
+CsSolver& Instance::cs_solver() {
+    // A restore out of the error mode may bring an instance whose solver a reset dropped (or that was never
+    // initialized) back to step-complete: the solver is a function of the model's state, so it is rebuilt here.
+    if (!cs_solver_) cs_solver_ = std::make_unique<CsSolver>(runner_, tolerance_);
+    return *cs_solver_;
+}
+
 fmi2Status Instance::do_step(double current_time, double step_size) {
     if (!std::isfinite(current_time) || !std::isfinite(step_size) || step_size < 0.0)
         throw Error("fmi2DoStep: step size must be finite and non-negative (got " + format_real(step_size) + ")");
@@ -531,8 +538,9 @@ fmi2Status Instance::do_step(double current_time, double step_size) {
     // A step that throws leaves the instance in the error mode (fmi2_api.cpp's guard): the host may
     // restore a saved state and retry, or reset.
     runner_.set_time(current_time);
-    cs_solver_->invalidate();  // inputs may have jumped at the communication point
-    const auto outcome = cs_solver_->advance(current_time + step_size);
+    CsSolver& solver = cs_solver();
+    solver.invalidate();  // inputs may have jumped at the communication point
+    const auto outcome = solver.advance(current_time + step_size);
     runner_.clear_input_slopes();  // given for this step; the inputs stay at their values at its end
     last_successful_time_ = runner_.time();
     if (outcome == CsSolver::Outcome::terminated) {

@@ -112,6 +112,7 @@ private:
                     Write&& write);
     void require_owned(const Snapshot* state) const;
     bool category_on(const char* category) const;
+    CsSolver& cs_solver();
 
     std::string name_;
     std::string guid_;
@@ -121,6 +122,8 @@ private:
     std::vector<bool> category_enabled_;
     Mode mode_ = Mode::instantiated;
     ModelRunner runner_;
+    // Built at the exit of initialization, dropped by a reset, and built again on the first step after a
+    // restore that brought a solverless instance (reset, or never initialized) back to step-complete.
     std::unique_ptr<CsSolver> cs_solver_;
     double start_time_ = 0.0;
     double tolerance_;

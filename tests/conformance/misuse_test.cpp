@@ -289,3 +289,54 @@ TEST_P(ConformanceMisuse, AfterAnErrorOnlyARestoreOrAResetContinues) {
     ASSERT_TRUE(r.completed) << r.crash;
     EXPECT_EQ(r.status, fmi2OK) << r.log;
 }
+
+// A restore out of the error mode on an instance that has no Co-Simulation solver (reset, or never
+// initialized) must continue or refuse, never crash: issue 24's first finding, a null solver reached
+// through fmi2Reset -> a refused call -> fmi2SetFMUstate (or a deserialized state) -> fmi2DoStep.
+TEST_P(ConformanceMisuse, ARestoreIntoAnInstanceWithoutASolverSteps) {
+    if (!md().co_simulation || !md().co_simulation->can_get_and_set_fmu_state)
+        GTEST_SKIP() << "no Co-Simulation with FMU states";
+    for (const bool through_bytes : {false, true}) {
+        const IsolatedResult r = run_isolated([&](bool& logged, std::string& log) -> fmi2Status {
+            Instance donor(fmu(), FmuKind::co_simulation, "donor");
+            const Experiment ex = experiment_of(donor.md());
+            auto fail = [&](const char* why) {
+                log = std::string(why) + "\n" + donor.log().dump();
+                return fmi2Fatal;
+            };
+            if (!donor.ok() || !initialized(donor)) return fail("could not initialize");
+            const auto& f = donor.f();
+            fmi2FMUstate saved = nullptr;
+            if (f.fmi2GetFMUstate(donor.c(), &saved) != fmi2OK) return fail("fmi2GetFMUstate failed");
+            // The instance under test: the donor itself after a reset, or a fresh one never initialized.
+            Instance fresh(fmu(), FmuKind::co_simulation, "fresh");
+            Instance& inst = through_bytes ? fresh : donor;
+            if (!through_bytes && f.fmi2Reset(donor.c()) != fmi2OK) return fail("fmi2Reset failed");
+            if (f.fmi2DoStep(inst.c(), ex.start, ex.step, fmi2True) != fmi2Error)
+                return fail("fmi2DoStep before initialization was not refused");
+            logged = true;
+            fmi2FMUstate target = saved;
+            if (through_bytes) {
+                std::size_t size = 0;
+                if (f.fmi2SerializedFMUstateSize(donor.c(), saved, &size) != fmi2OK) return fail("size failed");
+                std::vector<fmi2Byte> bytes(size);
+                if (f.fmi2SerializeFMUstate(donor.c(), saved, bytes.data(), size) != fmi2OK)
+                    return fail("fmi2SerializeFMUstate failed");
+                target = nullptr;
+                if (f.fmi2DeSerializeFMUstate(inst.c(), bytes.data(), size, &target) != fmi2OK)
+                    return fail("fmi2DeSerializeFMUstate failed");
+            }
+            if (f.fmi2SetFMUstate(inst.c(), target) != fmi2OK) return fail("fmi2SetFMUstate after the error failed");
+            if (f.fmi2DoStep(inst.c(), ex.start, ex.step, fmi2True) > fmi2Warning)
+                return fail("fmi2DoStep after the restore failed");
+            if (through_bytes) f.fmi2FreeFMUstate(inst.c(), &target);
+            f.fmi2FreeFMUstate(donor.c(), &saved);
+            fresh.free();
+            donor.free();
+            return fmi2OK;
+        });
+        ASSERT_TRUE(r.completed) << (through_bytes ? "deserialized into a fresh instance: " : "after fmi2Reset: ")
+                                 << r.crash;
+        EXPECT_EQ(r.status, fmi2OK) << r.log;
+    }
+}
