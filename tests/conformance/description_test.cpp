@@ -3,9 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <csignal>
+#include <fstream>
+#include <iterator>
+#include <string_view>
 
 #include "conformance_fixture.hpp"
 #include "description_rules.hpp"
+#include "xml_schema.hpp"
 
 using namespace conformance;
 using namespace fmi_loader;
@@ -23,6 +27,22 @@ TEST_P(ConformanceDescription, FollowsFmi2Rules) {
     std::string all;
     for (const auto& v : violations) all += "  " + v + "\n";
     EXPECT_TRUE(violations.empty()) << violations.size() << " violation(s) in " << GetParam() << ":\n" << all;
+}
+
+// The description as written into the archive, against the standard's own schema (fmi2/schema, FMI 2.0.4).
+TEST_P(ConformanceDescription, ValidatesAgainstTheFmi2Schema) {
+    const std::filesystem::path schema = std::filesystem::path(FMI2_SCHEMA_DIR) / "fmi2ModelDescription.xsd";
+    const auto description = fmu().archive().model_description_path();
+    EXPECT_EQ(test_support::xml_schema_errors(schema, description), "") << GetParam();
+    // The same description with one attribute the schema does not know must fail: the check is not vacuous.
+    std::ifstream in(description);
+    std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto at = xml.find("<ModelVariables");
+    ASSERT_NE(at, std::string::npos);
+    xml.insert(at + std::string_view("<ModelVariables").size(), " unknownAttribute=\"1\"");
+    const auto doctored = description.parent_path() / "doctored_modelDescription.xml";
+    std::ofstream(doctored) << xml;
+    EXPECT_NE(test_support::xml_schema_errors(schema, doctored).find("unknownAttribute"), std::string::npos);
 }
 
 TEST_P(ConformanceDescription, BinaryExportsEveryFunction) {

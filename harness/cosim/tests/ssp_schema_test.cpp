@@ -1,8 +1,6 @@
 // The bundled systems, and what `cosim pack` writes from them, against the SSP 1.0 XML schemas
 // (harness/systems/schema/: the Modelica Association's SSP 1.0.1 schemas, BSD 2-Clause, unchanged).
 #include <gtest/gtest.h>
-#include <libxml/parser.h>
-#include <libxml/xmlschemas.h>
 
 #include <filesystem>
 #include <fstream>
@@ -13,6 +11,7 @@
 #include "fmi_loader/fmu_archive.hpp"
 #include "ssp_archive.hpp"
 #include "system_description.hpp"
+#include "xml_schema.hpp"
 
 namespace cosim {
 namespace {
@@ -22,31 +21,7 @@ const std::filesystem::path systems_dir = PVATT_SYSTEMS_SOURCE_DIR;
 
 // Validates `file` against SystemStructureDescription.xsd; returns the schema's complaints (empty: valid).
 std::string schema_errors(const std::filesystem::path& file) {
-    std::string errors;
-    xmlSchemaParserCtxtPtr parser = xmlSchemaNewParserCtxt((schema_dir / "SystemStructureDescription.xsd").c_str());
-    xmlSchemaPtr schema = parser ? xmlSchemaParse(parser) : nullptr;
-    if (!schema) {
-        if (parser) xmlSchemaFreeParserCtxt(parser);
-        return "the schema does not parse";
-    }
-    xmlSchemaValidCtxtPtr valid = xmlSchemaNewValidCtxt(schema);
-    xmlSchemaSetValidStructuredErrors(
-        valid,
-        [](void* out, xmlErrorPtr e) {
-            *static_cast<std::string*>(out) += std::to_string(e->line) + ": " + (e->message ? e->message : "?");
-        },
-        &errors);
-    xmlDocPtr doc = xmlReadFile(file.c_str(), nullptr, XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING);
-    if (!doc) {
-        errors = "does not parse";
-    } else if (xmlSchemaValidateDoc(valid, doc) != 0 && errors.empty()) {
-        errors = "invalid";
-    }
-    if (doc) xmlFreeDoc(doc);
-    xmlSchemaFreeValidCtxt(valid);
-    xmlSchemaFree(schema);
-    xmlSchemaFreeParserCtxt(parser);
-    return errors;
+    return test_support::xml_schema_errors(schema_dir / "SystemStructureDescription.xsd", file);
 }
 
 TEST(CosimSspSchema, BundledSystemsAndTheirArchivesValidate) {
