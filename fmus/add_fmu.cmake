@@ -7,6 +7,9 @@
 #   <name>_describe  the build-time writer of modelDescription.xml and documentation/index.html
 #   <name>_fmu       ${PVATT_FMU_DIR}/<name>.fmu (or OUTPUT_DIR, for test FMUs), built by default; its
 #                    binary without debug information, which stays in fmu_binaries/<name>.so.debug
+# The same function serves this tree and a project built on the installed package (find_package(pvatt),
+# examples/battery_heater): it names the runtime's targets as pvatt::..., FMU_VERSION_SCRIPT and
+# PVATT_FMU_DIR come from the tree or from pvattConfig.cmake.
 function(add_fmu name)
   cmake_parse_arguments(ARG "" "OUTPUT_DIR" "SOURCES;LIBRARIES" ${ARGN})
   if(NOT ARG_OUTPUT_DIR)
@@ -14,10 +17,10 @@ function(add_fmu name)
   endif()
 
   add_library(${name}_model STATIC ${ARG_SOURCES})
-  target_link_libraries(${name}_model PUBLIC fmu_model ${ARG_LIBRARIES})
+  target_link_libraries(${name}_model PUBLIC pvatt::fmu_model ${ARG_LIBRARIES})
   set_target_properties(${name}_model PROPERTIES CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)
 
-  add_library(${name} SHARED $<TARGET_OBJECTS:fmu_runtime_objects>)
+  add_library(${name} SHARED $<TARGET_OBJECTS:pvatt::fmu_runtime_objects>)
   target_link_libraries(${name} PRIVATE ${name}_model)
   set_target_properties(${name} PROPERTIES PREFIX "" OUTPUT_NAME ${name}
     CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON
@@ -28,8 +31,8 @@ function(add_fmu name)
     target_link_options(${name} PRIVATE -static-libstdc++ -static-libgcc)
   endif()
 
-  add_executable(${name}_describe $<TARGET_OBJECTS:fmu_describe_main>)
-  target_link_libraries(${name}_describe PRIVATE ${name}_model fmu_description_writer)
+  add_executable(${name}_describe $<TARGET_OBJECTS:pvatt::fmu_describe_main>)
+  target_link_libraries(${name}_describe PRIVATE ${name}_model pvatt::fmu_description_writer)
 
   set(stage ${CMAKE_BINARY_DIR}/fmu_staging/${name})
   set(fmu_file ${ARG_OUTPUT_DIR}/${name}.fmu)

@@ -11,7 +11,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh --firmware
 build=${PVATT_BUILD_DIR:-build}
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPVATT_FIRMWARE=ON > /dev/null
+cmake --preset firmware -B "$build" > /dev/null   # CMakePresets.json
 if [ "${1:-}" = "--bench" ]; then
   cmake --build "$build" -j"$(nproc)" --target estimator_firmware
   # -icount shift=0: one instruction per virtual nanosecond, so the firmware's SysTick counts instructions.

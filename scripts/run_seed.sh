@@ -8,7 +8,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
+cmake --preset release > /dev/null   # CMakePresets.json
 cmake --build build -j"$(nproc)" --target cosim environment_fmu ssr_plant_fmu magnetometer_fmu attitude_estimator_fmu
 mkdir -p results
 # The run, its statistics and parameters kept for results/index.html.

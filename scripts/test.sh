@@ -8,7 +8,7 @@ bash scripts/install_deps.sh --firmware
 # Format first: it takes a second and a misformatted file fails the run before the long build.
 bash scripts/format.sh --check
 build=${PVATT_TEST_BUILD_DIR:-build-sanitize}
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPVATT_SANITIZE=ON -DPVATT_BENCHMARKS=ON -DPVATT_WERROR=ON
+cmake --preset sanitize -B "$build"   # CMakePresets.json
 cmake --build "$build" -j"$(nproc)"
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0:strict_string_checks=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}

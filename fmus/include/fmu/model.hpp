@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "fmu/table.hpp"
+#include "fmu/version.hpp"
 
 namespace fmu {
 
@@ -28,7 +29,7 @@ struct ModelInfo {
     std::string description;         // one line, for the model description
     std::string documentation_html;  // the block's page in documentation/index.html (body fragment)
     std::string author = "pv_attitude_fmi contributors";
-    std::string version = "0.1.0";
+    std::string version = toolkit_version;  // a block of another project sets its own
     std::string license = "MIT";
     DefaultExperiment default_experiment;
 };

@@ -17,6 +17,7 @@
 
 int main(int argc, char** argv) {
     CLI::App app{"cosim: FMI 2.0 co-simulation master"};
+    app.set_version_flag("--version", std::string("cosim ") + PVATT_VERSION);  // project(VERSION) in CMake
     app.require_subcommand(1);
 
     std::string info_path;

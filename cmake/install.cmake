@@ -1,0 +1,23 @@
+# `cmake --install` and the exported CMake package `pvatt`: the FMI 2.0 runtime (fmus/), the FMI 2.0
+# headers (fmi2/), the CVODE wrapper it steps Co-Simulation with (integrator/) and add_fmu(), so that a
+# block can be written and packed into an .fmu outside this tree (examples/battery_heater, built against
+# the installed package by the test Package.OutOfTreeBlock).
+include(CMakePackageConfigHelpers)
+
+install(TARGETS fmi2_headers cvode_integrator fmu_model fmu_runtime_objects fmu_description_writer fmu_describe_main
+  EXPORT pvattTargets
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  OBJECTS DESTINATION ${CMAKE_INSTALL_LIBDIR}/pvatt/objects
+  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY fmus/include/fmu fmi2/include/fmi2 integrator/include/
+  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h" PATTERN "*.hpp")
+install(FILES ${CMAKE_BINARY_DIR}/fmus_runtime/generated/fmu/version.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/fmu)
+
+set(config_dir ${CMAKE_INSTALL_LIBDIR}/cmake/pvatt)
+install(EXPORT pvattTargets NAMESPACE pvatt:: DESTINATION ${config_dir})
+configure_package_config_file(cmake/pvattConfig.cmake.in ${CMAKE_BINARY_DIR}/pvattConfig.cmake
+  INSTALL_DESTINATION ${config_dir})
+write_basic_package_version_file(${CMAKE_BINARY_DIR}/pvattConfigVersion.cmake COMPATIBILITY SameMinorVersion)
+install(FILES ${CMAKE_BINARY_DIR}/pvattConfig.cmake ${CMAKE_BINARY_DIR}/pvattConfigVersion.cmake
+  fmus/add_fmu.cmake fmus/fmu.map DESTINATION ${config_dir})
+install(FILES LICENSE DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/pvatt)
