@@ -69,8 +69,8 @@ void Instance::log(fmi2Status status, const char* category, const std::string& m
     logger_(environment_, name_.c_str(), status, category, "%s", message.c_str());
 }
 
-void Instance::log_call(const char* function) const {
-    if (logger_ && category_enabled_[kLogAll]) log(fmi2OK, "logAll", function);
+void Instance::log_call(std::string_view function) const {
+    if (logger_ && category_enabled_[kLogAll]) log(fmi2OK, "logAll", std::string(function));
 }
 
 void Instance::set_debug_logging(bool on, std::span<const fmi2String> categories) {

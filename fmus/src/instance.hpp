@@ -48,7 +48,7 @@ public:
     // Logging through the host's callback. Errors and warnings are always passed on; the other
     // categories only when enabled with fmi2SetDebugLogging or loggingOn.
     void log(fmi2Status status, const char* category, const std::string& message) const;
-    void log_call(const char* function) const;  // logAll
+    void log_call(std::string_view function) const;  // logAll
     void set_debug_logging(bool on, std::span<const fmi2String> categories);
 
     // Throws fmu::Error naming the mode when `call` is not allowed now.
