@@ -186,8 +186,8 @@ Tle parse_tle(std::string_view line1_text, std::string_view line2_text) {
     tle.epoch_day = l1.number(21, 32, "epoch day");
     const double days_in_year = is_leap_year(tle.epoch_year) ? 366.0 : 365.0;
     if (!(tle.epoch_day >= 1.0 && tle.epoch_day < days_in_year + 1.0)) {
-        l1.fail(21, "epoch day " + std::to_string(tle.epoch_day) + " outside [1, " + std::to_string(days_in_year + 1.0) +
-                        ") of year " + std::to_string(tle.epoch_year));
+        l1.fail(21, "epoch day " + std::to_string(tle.epoch_day) + " outside [1, " +
+                        std::to_string(days_in_year + 1.0) + ") of year " + std::to_string(tle.epoch_year));
     }
     tle.epoch_jd_utc = julian_date_of_year_start(tle.epoch_year) + (tle.epoch_day - 1.0);
     // The mean motion's derivatives are read for validation only: SGP4 does not use them.

@@ -96,16 +96,16 @@ TEST(Tle, ChecksumMismatchNamesLineAndColumn69) {
 }
 
 TEST(Tle, RefusesEachMalformedField) {
-    EXPECT_EQ(error_at(kLine2, kLine1), std::make_pair(1, 1));                       // swapped lines
-    EXPECT_EQ(error_at(kLine1.substr(0, 60), kLine2), std::make_pair(1, 61));        // truncated
-    EXPECT_EQ(error_at(kLine1 + "x", kLine2), std::make_pair(1, 70));                // too long
-    EXPECT_EQ(error_at(with(kLine1, 18, '1'), kLine2), std::make_pair(1, 18));       // a blank column filled
-    EXPECT_EQ(error_at(kLine1, with(kLine2, 7, '6')), std::make_pair(2, 3));         // catalog numbers differ
-    EXPECT_EQ(error_at(with(kLine1, 25, 'x'), kLine2), std::make_pair(1, 21));       // epoch day not a number
-    EXPECT_EQ(error_at(kLine1, with(kLine2, 30, 'e')), std::make_pair(2, 30));       // eccentricity digit
-    EXPECT_EQ(error_at(with(kLine1, 61, '?'), kLine2), std::make_pair(1, 61));       // B* exponent
-    EXPECT_EQ(error_at(kLine1, with(kLine2, 9, '2')), std::make_pair(2, 9));         // inclination 234 deg
-    EXPECT_EQ(error_at(with(kLine1, 21, '0'), kLine2), std::make_pair(0, 0));      // day 079 is fine...
+    EXPECT_EQ(error_at(kLine2, kLine1), std::make_pair(1, 1));                                 // swapped lines
+    EXPECT_EQ(error_at(kLine1.substr(0, 60), kLine2), std::make_pair(1, 61));                  // truncated
+    EXPECT_EQ(error_at(kLine1 + "x", kLine2), std::make_pair(1, 70));                          // too long
+    EXPECT_EQ(error_at(with(kLine1, 18, '1'), kLine2), std::make_pair(1, 18));                 // a blank column filled
+    EXPECT_EQ(error_at(kLine1, with(kLine2, 7, '6')), std::make_pair(2, 3));                   // catalog numbers differ
+    EXPECT_EQ(error_at(with(kLine1, 25, 'x'), kLine2), std::make_pair(1, 21));                 // epoch day not a number
+    EXPECT_EQ(error_at(kLine1, with(kLine2, 30, 'e')), std::make_pair(2, 30));                 // eccentricity digit
+    EXPECT_EQ(error_at(with(kLine1, 61, '?'), kLine2), std::make_pair(1, 61));                 // B* exponent
+    EXPECT_EQ(error_at(kLine1, with(kLine2, 9, '2')), std::make_pair(2, 9));                   // inclination 234 deg
+    EXPECT_EQ(error_at(with(kLine1, 21, '0'), kLine2), std::make_pair(0, 0));                  // day 079 is fine...
     EXPECT_EQ(error_at(with(with(kLine1, 21, '3'), 22, '9'), kLine2), std::make_pair(1, 21));  // ...day 399 not
 }
 

@@ -32,8 +32,9 @@ struct MeanElements {
 
     template <typename U>
     MeanElements<U> as() const noexcept {
-        return {static_cast<U>(mean_motion_rad_per_min), static_cast<U>(eccentricity), static_cast<U>(inclination_rad),
-                static_cast<U>(raan_rad),                static_cast<U>(arg_perigee_rad), static_cast<U>(mean_anomaly_rad),
+        return {static_cast<U>(mean_motion_rad_per_min), static_cast<U>(eccentricity),
+                static_cast<U>(inclination_rad),         static_cast<U>(raan_rad),
+                static_cast<U>(arg_perigee_rad),         static_cast<U>(mean_anomaly_rad),
                 static_cast<U>(bstar_per_earth_radius)};
     }
 };

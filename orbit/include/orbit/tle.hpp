@@ -10,10 +10,10 @@ namespace orbit {
 
 /// The mean elements of a two-line element set, in the set's own units.
 struct Tle {
-    int catalog_number = 0;      // columns 3-7 of both lines (Alpha-5 letters accepted: A = 10, ..., Z = 33)
-    int epoch_year = 0;          // four digits (the set's two: 57-99 are 19xx, 00-56 are 20xx)
-    double epoch_day = 0.0;      // day of the year and its fraction, UTC; 1.0 is 1 January 00:00
-    double epoch_jd_utc = 0.0;   // the same epoch as a Julian date (UTC)
+    int catalog_number = 0;                // columns 3-7 of both lines (Alpha-5 letters accepted: A = 10, ..., Z = 33)
+    int epoch_year = 0;                    // four digits (the set's two: 57-99 are 19xx, 00-56 are 20xx)
+    double epoch_day = 0.0;                // day of the year and its fraction, UTC; 1.0 is 1 January 00:00
+    double epoch_jd_utc = 0.0;             // the same epoch as a Julian date (UTC)
     double mean_motion_rev_per_day = 0.0;  // Kozai mean motion
     double eccentricity = 0.0;
     double inclination_deg = 0.0;
