@@ -93,8 +93,8 @@ TEST(Frames, TemeToJ2000MatchesErfaRoute) {
         eraNut80(jd, 0.0, &dpsi, &deps);
         worst_kinematic = std::max(worst_kinematic, std::abs(eraEqeq94(jd, 0.0) - dpsi * std::cos(eraObl80(jd, 0.0))));
     });
-    std::printf("TEME->J2000 vs ERFA's route: %.3g rad (%.3g m at 7000 km); eqeq94's kinematic terms: %.3g\"\n",
-                worst, worst * 7.0e6, worst_kinematic / kArcsec);
+    std::printf("TEME->J2000 vs ERFA's route: %.3g rad (%.3g m at 7000 km); eqeq94's kinematic terms: %.3g\"\n", worst,
+                worst * 7.0e6, worst_kinematic / kArcsec);
     EXPECT_LT(worst, 1e-13);
     // The state rotates with the matrix: a position and a velocity keep their lengths and turn alike.
     const orbit::OrbitState<double> teme{{7000.0, -1200.0, 300.0}, {1.0, 7.0, 0.5}};
@@ -122,13 +122,14 @@ TEST(Frames, TruncatedNutationErrorOver2020To2035) {
             const orbit::Nutation<double> n = orbit::nutation_iau1980(t, terms);
             worst_psi = std::max(worst_psi, std::abs(n.dpsi - dpsi));
             worst_eps = std::max(worst_eps, std::abs(n.deps - deps));
-            worst_rotation = std::max(worst_rotation, angle_between(orbit::j2000_from_teme(t, terms),
-                                                                    erfa_j2000_from_teme(jd)));
+            worst_rotation =
+                std::max(worst_rotation, angle_between(orbit::j2000_from_teme(t, terms), erfa_j2000_from_teme(jd)));
         });
-        std::printf("%3d terms: dpsi %.3f\" (bound %.3f\"), deps %.3f\" (bound %.3f\"), TEME->J2000 %.3f\" = %.2f m at "
-                    "7000 km\n",
-                    terms, worst_psi / kArcsec, bound_psi / kArcsec, worst_eps / kArcsec, bound_eps / kArcsec,
-                    worst_rotation / kArcsec, worst_rotation * 7.0e6);
+        std::printf(
+            "%3d terms: dpsi %.3f\" (bound %.3f\"), deps %.3f\" (bound %.3f\"), TEME->J2000 %.3f\" = %.2f m at "
+            "7000 km\n",
+            terms, worst_psi / kArcsec, bound_psi / kArcsec, worst_eps / kArcsec, bound_eps / kArcsec,
+            worst_rotation / kArcsec, worst_rotation * 7.0e6);
         EXPECT_LE(worst_psi, bound_psi + 1e-5 * kArcsec);
         EXPECT_LE(worst_eps, bound_eps + 1e-5 * kArcsec);
     }
@@ -136,8 +137,8 @@ TEST(Frames, TruncatedNutationErrorOver2020To2035) {
     // 0.2" (7 m at 7000 km) of the full series.
     double worst4 = 0.0;
     for_dates(2020.0, 2035.0, [&](double jd) {
-        worst4 = std::max(worst4, angle_between(orbit::j2000_from_teme(orbit::julian_centuries(jd), 4),
-                                                erfa_j2000_from_teme(jd)));
+        worst4 = std::max(
+            worst4, angle_between(orbit::j2000_from_teme(orbit::julian_centuries(jd), 4), erfa_j2000_from_teme(jd)));
     });
     EXPECT_LT(worst4, 0.2 * kArcsec);
 }
@@ -149,8 +150,7 @@ TEST(Frames, FloatRotationAgainstErfa) {
             orbit::j2000_from_teme(static_cast<float>(orbit::julian_centuries(jd))).cast<double>();
         worst = std::max(worst, angle_between(f, erfa_j2000_from_teme(jd)));
     });
-    std::printf("float TEME->J2000 vs ERFA (double), 2020-2035: %.3g rad (%.3g m at 7000 km)\n", worst,
-                worst * 7.0e6);
+    std::printf("float TEME->J2000 vs ERFA (double), 2020-2035: %.3g rad (%.3g m at 7000 km)\n", worst, worst * 7.0e6);
     EXPECT_LT(worst, 5e-7);  // float rounding (6e-8 per element), with margin: 3.5 m at 7000 km
 }
 
