@@ -254,7 +254,8 @@ TEST(SsrCorePlant, DerivativesBalanceChargeAndPower) {
                     }
                     const double i_batt = battery_operating_point(p.battery, 0.5, v, conn).current;
                     EXPECT_NEAR(dx[state_v_bus] * 1500e-6, i_pv - v / 90.0 - i_batt, 1e-9);
-                    EXPECT_NEAR(dx[state_soc] * 7200.0, i_batt, 1e-12);
+                    // Coulomb counting with lead-acid's published charge efficiency 0.85 while charging.
+                    EXPECT_NEAR(dx[state_soc] * 7200.0, i_batt > 0.0 ? 0.85 * i_batt : i_batt, 1e-12);
                     // Power: what the panels deliver = capacitor + load + battery + OR-diode losses.
                     const auto y = outputs(m, u, d, 0.0, x);
                     double diode_loss = 0.0;
@@ -340,11 +341,12 @@ TEST(SsrCorePlant, HysteresisRunHasFiniteSwitchingsAndRespectsFullCharge) {
 }
 
 TEST(SsrCorePlant, VoltageControlledChargeConnectsInTheSunAtTheMinimumVoltageAndStopsAtTheTaper) {
-    // The defaults (terminal-voltage control, 14.4 V charger, K = 0.2 Ω) with a 1 C battery so a cycle
-    // takes seconds: 0.5 s of eclipse from soc 0.82 (the terminal falls below v_connect = 12.5 V near soc
-    // 0.806, but there is no sun to charge: no connection), then sun: connect as soon as the bus can charge,
-    // charge with the tapering current, disconnect at 0.1 A. Independent script (the hand charge-branch
-    // formulas, bisection): the current falls to 0.1 A at soc 0.998027.
+    // The defaults (lead-acid: terminal-voltage control, 14.4 V charger, K = 2.9 Ω, end of charge 0.04 A) with
+    // a 1 C battery so a cycle takes seconds: 0.5 s of eclipse from soc 0.82 (the terminal falls below
+    // v_connect = 12.5 V near soc 0.806, but there is no sun to charge: no connection), then sun: connect as
+    // soon as the bus can charge, charge with the tapering current, disconnect at 0.04 A. Independent script
+    // (the hand charge-branch formulas on the Trojan table, bisection): the current falls to 0.04 A at soc
+    // 0.946427, inside the 14.4 V constant-voltage phase (which starts at soc 0.846).
     Parameters p;
     p.fidelity = Fidelity::averaged;
     p.battery.capacity = 1.0;
@@ -355,7 +357,7 @@ TEST(SsrCorePlant, VoltageControlledChargeConnectsInTheSunAtTheMinimumVoltageAnd
     State x{12.0, 0.82};
     double t_connect = -1, t_disconnect = -1, soc_at_disconnect = -1, soc_max = 0.0;
     bool prev = false;
-    const auto st = ssr_plant_test::simulate(m, u, x, 0.0, 3.0, 20e-6, 1e-4,
+    const auto st = ssr_plant_test::simulate(m, u, x, 0.0, 5.0, 20e-6, 1e-4,
                                              [&](double t, const State& xs, const DiscreteState& d, bool) {
                                                  soc_max = std::max(soc_max, xs[state_soc]);
                                                  if (d.charge_connected && !prev) t_connect = t;
@@ -369,8 +371,8 @@ TEST(SsrCorePlant, VoltageControlledChargeConnectsInTheSunAtTheMinimumVoltageAnd
     EXPECT_GT(t_connect, 0.5);   // not in eclipse
     EXPECT_LT(t_connect, 0.51);  // but as soon as the sun is back
     EXPECT_GT(t_disconnect, t_connect);
-    EXPECT_NEAR(soc_at_disconnect, 0.998027, 1e-3);
-    EXPECT_LT(soc_max, 0.9995);                          // no longer a constant 0.5 A up to 100 %
+    EXPECT_NEAR(soc_at_disconnect, 0.946427, 1e-3);
+    EXPECT_LT(soc_max, 0.95);                            // no longer a constant 0.5 A up to 100 %
     EXPECT_NEAR(x[state_soc], soc_at_disconnect, 1e-6);  // standby after the disconnect
     std::cout << "[voltage-controlled charge] connect at " << t_connect << " s, disconnect at " << t_disconnect
               << " s at soc " << soc_at_disconnect << "\n";
