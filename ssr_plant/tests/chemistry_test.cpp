@@ -22,9 +22,9 @@ TEST(SsrCoreChemistry, LeadAcidRestVoltageIsTrojansTable) {
     struct Point {
         double soc, volts;
     };
-    for (const Point& p : {Point{1.0, 12.73}, Point{0.9, 12.62}, Point{0.8, 12.50}, Point{0.7, 12.37},
-                           Point{0.6, 12.24}, Point{0.5, 12.10}, Point{0.4, 11.96}, Point{0.3, 11.81},
-                           Point{0.2, 11.66}, Point{0.1, 11.51}})
+    for (const Point& p :
+         {Point{1.0, 12.73}, Point{0.9, 12.62}, Point{0.8, 12.50}, Point{0.7, 12.37}, Point{0.6, 12.24},
+          Point{0.5, 12.10}, Point{0.4, 11.96}, Point{0.3, 11.81}, Point{0.2, 11.66}, Point{0.1, 11.51}})
         EXPECT_NEAR(open_circuit_voltage(b, p.soc), p.volts, 1e-9) << p.soc;
     // Linden's rule for a lead-acid cell, OCV = specific gravity + 0.84 V: Trojan's specific gravities 1.277
     // (100 %) and 1.172 (50 %) give 6 × 2.117 = 12.70 V and 6 × 2.012 = 12.07 V, within 0.04 V of the table.
@@ -109,8 +109,8 @@ void expect_cycle_returns(BatteryChemistry chemistry, double soc_start, double e
     ASSERT_TRUE(done) << "the cycle did not return to its start";
     EXPECT_GT(soc_top, soc_start + 0.05);  // it did charge
     EXPECT_NEAR(q_out / q_in, efficiency, 2e-3) << "in " << q_in << " C, out " << q_out << " C";
-    std::cout << "[charge cycle] from soc " << soc_start << " to " << soc_top << " and back: in " << q_in
-              << " C, out " << q_out << " C, ratio " << q_out / q_in << "\n";
+    std::cout << "[charge cycle] from soc " << soc_start << " to " << soc_top << " and back: in " << q_in << " C, out "
+              << q_out << " C, ratio " << q_out / q_in << "\n";
 }
 
 TEST(SsrCoreChemistry, ChargeDischargeCycleReturnsLessThanPutInByTheEfficiency) {
