@@ -68,7 +68,7 @@ BatteryPoint battery_operating_point(const BatteryParameters& b, double soc, dou
         if (b.charge_voltage > 0.0) i = std::min(i, std::max(0.0, (b.charge_voltage - emf) / r_batt));
         return {i, emf + i * r_batt};
     }
-    const double g_int = 1.0 / r_own;
+    const double g_int = 1.0 / r_own;  // not charging: the plain network
     const double g_sw = charge_connected ? 1.0 / b.charge_path_resistance : 0.0;
     const double g_d = 1.0 / b.diode_resistance;
 
@@ -79,6 +79,13 @@ BatteryPoint battery_operating_point(const BatteryParameters& b, double soc, dou
         vt = (g_int * emf + g_sw * v_bus + g_d * (v_bus + b.diode_forward_voltage)) / (g_int + g_sw + g_d);
     }
     return {(vt - emf) * g_int, vt};
+}
+
+bool charge_voltage_binds(const BatteryParameters& b, double soc, double v_bus) {
+    if (b.charge_voltage <= 0.0) return false;
+    const double emf = open_circuit_voltage(b, soc);
+    const double r_batt = battery_resistance(b, soc) + charge_polarization_resistance(b, soc);
+    return (v_bus - emf) / (b.charge_path_resistance + r_batt) >= (b.charge_voltage - emf) / r_batt;
 }
 
 }  // namespace ssr_plant

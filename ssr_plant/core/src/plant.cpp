@@ -121,14 +121,20 @@ bool comparator_armed(const Model& m, const DiscreteState& d) {
 //            down to v_connect and the bus can charge it with twice charge_end_current (Δ = 2 I_end (R_path +
 //            R_int + R_p)): no connecting in eclipse, and the connected indicator starts at +I_end, so the
 //            two never chatter;
-//            connected: I_charge − charge_end_current (full: the constant-voltage taper; or no more sun).
+//            connected: in the charger's constant-voltage phase I_charge − charge_end_current (full: the
+//            taper); below it, where the bus sets the current (weak sun), I_charge (disconnect when the bus no
+//            longer charges at all). Ending the charge at I_end in weak sun too made the switch chatter at
+//            every sunrise: connected, the panels' small surplus sank below I_end; disconnected, the bus rose
+//            again (35 switchings in 0.5 s of penumbra in leo_orbit). Without a voltage limit: I − I_end.
 double charge_switch_indicator(const Model& m, bool connected, const State& x) {
     const auto& b = m.parameters.battery;
     const double soc = x[state_soc], v_bus = x[state_v_bus];
     if (b.charge_control == ChargeControl::state_of_charge)
         return connected ? b.soc_disconnect - soc : soc - b.soc_connect;
     const BatteryPoint p = battery_operating_point(b, soc, v_bus, connected);
-    if (connected) return p.current - b.charge_end_current;
+    if (connected)
+        return b.charge_voltage > 0.0 && !charge_voltage_binds(b, soc, v_bus) ? p.current
+                                                                              : p.current - b.charge_end_current;
     const double margin =
         2.0 * b.charge_end_current *
         (b.charge_path_resistance + battery_resistance(b, soc) + charge_polarization_resistance(b, soc));

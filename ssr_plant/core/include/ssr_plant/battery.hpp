@@ -66,4 +66,8 @@ double charge_polarization_resistance(const BatteryParameters& b, double soc);
 // Continuous in v_bus and soc (kinks where the diode starts to conduct and where the voltage limit starts).
 BatteryPoint battery_operating_point(const BatteryParameters& b, double soc, double v_bus, bool charge_connected);
 
+// Whether the charger's voltage limit sets the charge current at this bus voltage (connected, charging):
+// (v_bus − EMF)/(R_path + R + R_p) ≥ (charge_voltage − EMF)/(R + R_p). False without a limit (charge_voltage 0).
+bool charge_voltage_binds(const BatteryParameters& b, double soc, double v_bus);
+
 }  // namespace ssr_plant
