@@ -101,8 +101,8 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
              {{"voltage", ChargeControl::voltage}, {"state_of_charge", ChargeControl::state_of_charge}},
              "What the charge hysteresis watches: voltage (default: connect when the battery's terminal voltage "
              "falls to the chemistry's reconnect voltage and the bus can charge it, disconnect when the charge "
-             "current tapers to the chemistry's end-of-charge current) or state_of_charge (soc_connect, "
-             "soc_disconnect)");
+             "current tapers to the chemistry's end-of-charge current in the charger's constant-voltage phase, or "
+             "when the bus stops charging it) or state_of_charge (soc_connect, soc_disconnect)");
 
     auto v = t.state("v_cap", &D::v_cap, &D::der_v_cap, "V", "Bus capacitor voltage (the bus voltage)").nominal(15.0);
     auto q = t.state("soc_state", &D::soc_state, &D::der_soc_state, "1", "Battery state of charge (charge / capacity)")
