@@ -6,6 +6,7 @@
 
 #include "fmu/errors.hpp"
 #include "fmu/state_check.hpp"
+#include "ssr_plant/battery.hpp"
 
 namespace ssr_plant {
 
@@ -76,13 +77,13 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
                 "Proportional gain, duty per volt of bus error: D = clamp(K (v_bus - v_ref), 0, 1) (seed: 300 per "
                 "volt, offset D/K = 2.8 mV). The regular modulator is unstable above about 12 per volt")
         .range(0.0, 1e5);
+    t.choice("battery_chemistry", &D::battery_chemistry,
+             {{"lead_acid", BatteryChemistry::lead_acid}, {"lithium_ion", BatteryChemistry::lithium_ion}},
+             "Battery chemistry, each a published characteristic with its charger settings: lead_acid (12 V, Trojan "
+             "rested-voltage table, charge to 14.4 V, reconnect at 12.5 V, end of charge C/50, charge efficiency "
+             "0.85) or lithium_ion (3 cells in series, Chen and Rincon-Mora 2006 cell model, charge to 4.10 V per "
+             "cell, reconnect at 4.05 V per cell, end of charge C/20, charge efficiency 0.99)");
     t.parameter("battery_capacity", &D::battery_capacity, "C", "Battery capacity (assumed 2 Ah = 7200 C)").min(1.0);
-    t.parameter("battery_ocv", &D::battery_ocv, "V",
-                "Battery open-circuit voltage at soc = 0, 0.1, ..., 1 (assumed 12 V lead-acid)")
-        .range(0.0, 100.0);
-    t.parameter("battery_internal_resistance", &D::battery_internal_resistance, "Ohm",
-                "Battery internal resistance (assumed)")
-        .range(1e-4, 100.0);
     t.parameter("charge_path_resistance", &D::charge_path_resistance, "Ohm",
                 "Current-limiting resistance of the charge path (assumed)")
         .range(1e-3, 1e4);
@@ -99,22 +100,9 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
     t.choice("charge_control", &D::charge_control,
              {{"voltage", ChargeControl::voltage}, {"state_of_charge", ChargeControl::state_of_charge}},
              "What the charge hysteresis watches: voltage (default: connect when the battery's terminal voltage "
-             "falls to v_connect and the bus can charge it, disconnect when the charge current tapers to "
-             "charge_end_current) or state_of_charge (soc_connect, soc_disconnect)");
-    t.parameter("v_connect", &D::v_connect, "V",
-                "Battery terminal voltage at which the charge switch connects (assumed 12.5 V: rested soc 0.8)")
-        .range(1.0, 100.0);
-    t.parameter("charge_end_current", &D::charge_end_current, "A",
-                "Charge current at which the battery counts as full and is disconnected (assumed C/20 = 0.1 A)")
-        .range(1e-6, 100.0);
-    t.parameter(
-         "charge_voltage", &D::charge_voltage, "V",
-         "Constant-voltage limit of the charger on the battery terminal (assumed 14.4 V, 2.4 V per cell; 0 = none)")
-        .range(0.0, 100.0);
-    t.parameter("charge_polarization", &D::charge_polarization, "Ohm",
-                "K of the charge polarization resistance K soc/(1 - soc + 0.01) (Shepherd/Tremblay form; assumed 0.2; "
-                "0 = none)")
-        .range(0.0, 100.0);
+             "falls to the chemistry's reconnect voltage and the bus can charge it, disconnect when the charge "
+             "current tapers to the chemistry's end-of-charge current in the charger's constant-voltage phase, or "
+             "when the bus stops charging it) or state_of_charge (soc_connect, soc_disconnect)");
 
     auto v = t.state("v_cap", &D::v_cap, &D::der_v_cap, "V", "Bus capacitor voltage (the bus voltage)").nominal(15.0);
     auto q = t.state("soc_state", &D::soc_state, &D::der_soc_state, "1", "Battery state of charge (charge / capacity)")
@@ -154,7 +142,8 @@ fmu::ModelInfo SsrPlantBlock::describe() {
     fmu::ModelInfo info;
     info.model_identifier = "ssr_plant";
     info.model_name = "ssr_plant";
-    info.description = "Six PV panels (one per face), Sequential Shunt Regulator, 12 V battery and Hall sample/hold";
+    info.description =
+        "Six PV panels (one per face), Sequential Shunt Regulator, 12 V-class battery and Hall sample/hold";
     info.documentation_html =
         "<p>The power system of seed paper 000 sections 2-4 and 001 sections 3-4: six photovoltaic panels, one per "
         "box face (+x, -x, +y, -y, +z, -z), each a single-diode model (eq. 2) with series and shunt resistance "
@@ -165,7 +154,8 @@ fmu::ModelInfo SsrPlantBlock::describe() {
         "modulator (gate on at each period start, a time event; off when D(v(t)) meets the carrier, a state "
         "event; <code>modulation</code> = latched_natural) or a regularly sampled one (<code>regular</code>: "
         "pulse of D T, unstable above about 12 per volt); the 1500 uF bus feeds the 90 Ohm load; a "
-        "12 V battery charges through a charge switch with hysteresis (state events) and carries the load "
+        "12 V-class battery (lead-acid or lithium-ion) charges through a charge switch with hysteresis (state events) "
+        "and carries the load "
         "through a series diode in eclipse. The Hall transducer of each axis measures I(+axis) - I(-axis) of the "
         "shorted panels; its sample/hold tracks while the gate is on and holds while it is off (seed 001 "
         "section 3): <code>i_sh / i_sc0</code> is the sun vector of eq. 5. The same sample/hold on each face's "
@@ -204,19 +194,14 @@ Parameters SsrPlantBlock::parameters() const {
     p.load_resistance = d.load_resistance;
     p.bus_voltage_reference = d.bus_voltage_reference;
     p.controller_gain = d.controller_gain;
+    p.battery = battery_preset(d.battery_chemistry);
     p.battery.capacity = d.battery_capacity;
-    p.battery.open_circuit_voltage = d.battery_ocv;
-    p.battery.internal_resistance = d.battery_internal_resistance;
     p.battery.charge_path_resistance = d.charge_path_resistance;
     p.battery.diode_forward_voltage = d.battery_diode_forward_voltage;
     p.battery.diode_resistance = d.battery_diode_resistance;
     p.battery.soc_connect = d.soc_connect;
     p.battery.soc_disconnect = d.soc_disconnect;
     p.battery.charge_control = d.charge_control;
-    p.battery.v_connect = d.v_connect;
-    p.battery.charge_end_current = d.charge_end_current;
-    p.battery.charge_voltage = d.charge_voltage;
-    p.battery.charge_polarization = d.charge_polarization;
     return p;
 }
 

@@ -60,16 +60,17 @@ TEST(SsrCoreBattery, ContinuousAtTheDiodeThreshold) {
 
 TEST(SsrCoreBattery, ChargeCurrentTapersWithPolarizationAndStopsAtTheChargeVoltage) {
     // Independent script (Python, the same hand formulas written out, not this code): loop current
-    // (15 − EMF)/(5 + 0.05 + R_p), R_p = 0.2 s/(1.01 − s), limited to (14.4 − EMF)/(0.05 + R_p):
-    //   soc 0.5: 0.552794 A; 0.9: 0.355948 A; 0.99: 0.152575 A (unlimited: terminal 14.24 V);
-    //   0.997: 0.108737 A (the 14.4 V limit binds: terminal exactly 14.4 V).
-    const BatteryParameters d{};  // the defaults: K = 0.2 Ω, 14.4 V
+    // (15 − EMF)/(5 + 0.05 + R_p), R_p = 2.9 s/(1.01 − s), limited to (14.4 − EMF)/(0.05 + R_p):
+    //   soc 0.5: 0.367408 A, terminal 13.163 V (2.19 V per cell); 0.8: 0.155302 A (14.22 V);
+    //   0.85: 0.119046 A, the 14.4 V limit binds (2.40 V per cell at 85 % charge, the fitted point);
+    //   0.95: 0.037527 A (limited).
+    const BatteryParameters d{};  // the defaults: lead-acid, K = 2.9 Ω, 14.4 V
     struct Case {
         double soc, current;
         bool limited;
     };
-    for (const Case& c : {Case{0.5, 0.552794, false}, Case{0.9, 0.355948, false}, Case{0.99, 0.152575, false},
-                          Case{0.997, 0.108737, true}}) {
+    for (const Case& c : {Case{0.5, 0.367408, false}, Case{0.8, 0.155302, false}, Case{0.85, 0.119046, true},
+                          Case{0.95, 0.037527, true}}) {
         const auto pt = battery_operating_point(d, c.soc, 15.0, true);
         EXPECT_NEAR(pt.current, c.current, 1e-6) << c.soc;
         if (c.limited)
@@ -77,6 +78,12 @@ TEST(SsrCoreBattery, ChargeCurrentTapersWithPolarizationAndStopsAtTheChargeVolta
         else
             EXPECT_LT(pt.terminal_voltage, 14.4) << c.soc;
     }
+    // The charge curve the issue names: a lead-acid cell near 2.2–2.3 V at half charge, 2.40 V at 80–90 %.
+    const double per_cell_half = battery_operating_point(d, 0.5, 15.0, true).terminal_voltage / 6.0;
+    EXPECT_GT(per_cell_half, 2.15);
+    EXPECT_LT(per_cell_half, 2.3);
+    EXPECT_LT(battery_operating_point(d, 0.79, 15.0, true).terminal_voltage, 14.4);
+    EXPECT_NEAR(battery_operating_point(d, 0.9, 15.0, true).terminal_voltage, 14.4, 1e-12);
     // Discharging through the closed switch (bus below the EMF) sees no polarization: the plain network.
     EXPECT_NEAR(battery_operating_point(d, 0.5, 11.0, true).current,
                 battery_operating_point(b, 0.5, 11.0, true).current, 1e-12);

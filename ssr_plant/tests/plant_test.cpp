@@ -254,7 +254,8 @@ TEST(SsrCorePlant, DerivativesBalanceChargeAndPower) {
                     }
                     const double i_batt = battery_operating_point(p.battery, 0.5, v, conn).current;
                     EXPECT_NEAR(dx[state_v_bus] * 1500e-6, i_pv - v / 90.0 - i_batt, 1e-9);
-                    EXPECT_NEAR(dx[state_soc] * 7200.0, i_batt, 1e-12);
+                    // Coulomb counting with lead-acid's published charge efficiency 0.85 while charging.
+                    EXPECT_NEAR(dx[state_soc] * 7200.0, i_batt > 0.0 ? 0.85 * i_batt : i_batt, 1e-12);
                     // Power: what the panels deliver = capacitor + load + battery + OR-diode losses.
                     const auto y = outputs(m, u, d, 0.0, x);
                     double diode_loss = 0.0;
@@ -340,11 +341,12 @@ TEST(SsrCorePlant, HysteresisRunHasFiniteSwitchingsAndRespectsFullCharge) {
 }
 
 TEST(SsrCorePlant, VoltageControlledChargeConnectsInTheSunAtTheMinimumVoltageAndStopsAtTheTaper) {
-    // The defaults (terminal-voltage control, 14.4 V charger, K = 0.2 Ω) with a 1 C battery so a cycle
-    // takes seconds: 0.5 s of eclipse from soc 0.82 (the terminal falls below v_connect = 12.5 V near soc
-    // 0.806, but there is no sun to charge: no connection), then sun: connect as soon as the bus can charge,
-    // charge with the tapering current, disconnect at 0.1 A. Independent script (the hand charge-branch
-    // formulas, bisection): the current falls to 0.1 A at soc 0.998027.
+    // The defaults (lead-acid: terminal-voltage control, 14.4 V charger, K = 2.9 Ω, end of charge 0.04 A) with
+    // a 1 C battery so a cycle takes seconds: 0.5 s of eclipse from soc 0.82 (the terminal falls below
+    // v_connect = 12.5 V near soc 0.806, but there is no sun to charge: no connection), then sun: connect as
+    // soon as the bus can charge, charge with the tapering current, disconnect at 0.04 A. Independent script
+    // (the hand charge-branch formulas on the Trojan table, bisection): the current falls to 0.04 A at soc
+    // 0.946427, inside the 14.4 V constant-voltage phase (which starts at soc 0.846).
     Parameters p;
     p.fidelity = Fidelity::averaged;
     p.battery.capacity = 1.0;
@@ -355,7 +357,7 @@ TEST(SsrCorePlant, VoltageControlledChargeConnectsInTheSunAtTheMinimumVoltageAnd
     State x{12.0, 0.82};
     double t_connect = -1, t_disconnect = -1, soc_at_disconnect = -1, soc_max = 0.0;
     bool prev = false;
-    const auto st = ssr_plant_test::simulate(m, u, x, 0.0, 3.0, 20e-6, 1e-4,
+    const auto st = ssr_plant_test::simulate(m, u, x, 0.0, 5.0, 20e-6, 1e-4,
                                              [&](double t, const State& xs, const DiscreteState& d, bool) {
                                                  soc_max = std::max(soc_max, xs[state_soc]);
                                                  if (d.charge_connected && !prev) t_connect = t;
@@ -369,11 +371,39 @@ TEST(SsrCorePlant, VoltageControlledChargeConnectsInTheSunAtTheMinimumVoltageAnd
     EXPECT_GT(t_connect, 0.5);   // not in eclipse
     EXPECT_LT(t_connect, 0.51);  // but as soon as the sun is back
     EXPECT_GT(t_disconnect, t_connect);
-    EXPECT_NEAR(soc_at_disconnect, 0.998027, 1e-3);
-    EXPECT_LT(soc_max, 0.9995);                          // no longer a constant 0.5 A up to 100 %
+    EXPECT_NEAR(soc_at_disconnect, 0.946427, 1e-3);
+    EXPECT_LT(soc_max, 0.95);                            // no longer a constant 0.5 A up to 100 %
     EXPECT_NEAR(x[state_soc], soc_at_disconnect, 1e-6);  // standby after the disconnect
     std::cout << "[voltage-controlled charge] connect at " << t_connect << " s, disconnect at " << t_disconnect
               << " s at soc " << soc_at_disconnect << "\n";
+}
+
+}  // namespace
+
+namespace {
+
+// Weak sun (a sunrise through the penumbra): the panels can feed the load and a charge smaller than the
+// end-of-charge current, but not more. The charger connects once and stays connected, charging with what
+// there is: below its voltage limit the bus, not the charger, sets the current, and a small current is no
+// sign of a full battery. (Ending the charge at I_end there made the switch chatter: disconnected, the bus
+// rose and the charger reconnected; 35 switchings in 0.5 s of leo_orbit's penumbra.) Lithium-ion at soc 0.9
+// (rest 12.05 V, below its 12.15 V reconnect), sun on +z at 300 W/m²: I_sc = 0.62 × 0.3 = 0.186 A; the
+// 90 Ω load at ~12.2 V takes 0.136 A; about 0.05 A is left for the battery, half its 0.1 A end current.
+TEST(SsrCorePlant, WeakSunChargesWithoutChatter) {
+    Parameters p;
+    p.fidelity = Fidelity::averaged;
+    p.battery = battery_preset(BatteryChemistry::lithium_ion);
+    const Model m = make_model(p);
+    auto u = [](double) { return sun_along(0.0, 0.0, 1.0, 300.0); };
+    State x{15.0, 0.9};
+    double i_last = 0.0;
+    const auto st = ssr_plant_test::simulate(
+        m, u, x, 0.0, 0.5, 20e-6, 1e-3,
+        [&](double t, const State& xs, const DiscreteState& d, bool) { i_last = outputs(m, u(t), d, t, xs).i_batt; });
+    EXPECT_LE(st.charge_switchings, 1);
+    EXPECT_GT(i_last, 0.02);  // charging …
+    EXPECT_LT(i_last, 0.1);   // … with less than the end-of-charge current
+    std::cout << "[weak sun] charge current " << i_last << " A, switchings " << st.charge_switchings << "\n";
 }
 
 }  // namespace

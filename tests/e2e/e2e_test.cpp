@@ -132,7 +132,7 @@ TEST(E2eLeoOrbit, EclipseInvalidatesTheEstimateAndDrainsTheBattery) {
     }
     ASSERT_GT(dark, 20);                // eclipse was reached
     EXPECT_GT(lit_valid, lit * 3 / 4);  // lit and not parallel: mostly valid
-    // soc falls at the rate the load predicts (charge switch open above soc 0.8; no self-discharge).
+    // soc falls at the rate the load predicts (the charge switch opens in eclipse; no self-discharge).
     const double rate = (soc_last - soc_enter) / (t_last - t_enter);
     EXPECT_NEAR(rate, -i_load / 7200.0, std::abs(i_load / 7200.0) * 0.05);
     // Attitude with eq. 5 on Kelly-responding panels under albedo: the literature reports errors up

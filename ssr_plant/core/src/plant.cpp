@@ -121,16 +121,23 @@ bool comparator_armed(const Model& m, const DiscreteState& d) {
 //            down to v_connect and the bus can charge it with twice charge_end_current (Δ = 2 I_end (R_path +
 //            R_int + R_p)): no connecting in eclipse, and the connected indicator starts at +I_end, so the
 //            two never chatter;
-//            connected: I_charge − charge_end_current (full: the constant-voltage taper; or no more sun).
+//            connected: in the charger's constant-voltage phase I_charge − charge_end_current (full: the
+//            taper); below it, where the bus sets the current (weak sun), I_charge (disconnect when the bus no
+//            longer charges at all). Ending the charge at I_end in weak sun too made the switch chatter at
+//            every sunrise: connected, the panels' small surplus sank below I_end; disconnected, the bus rose
+//            again (35 switchings in 0.5 s of penumbra in leo_orbit). Without a voltage limit: I − I_end.
 double charge_switch_indicator(const Model& m, bool connected, const State& x) {
     const auto& b = m.parameters.battery;
     const double soc = x[state_soc], v_bus = x[state_v_bus];
     if (b.charge_control == ChargeControl::state_of_charge)
         return connected ? b.soc_disconnect - soc : soc - b.soc_connect;
     const BatteryPoint p = battery_operating_point(b, soc, v_bus, connected);
-    if (connected) return p.current - b.charge_end_current;
-    const double margin = 2.0 * b.charge_end_current *
-                          (b.charge_path_resistance + b.internal_resistance + charge_polarization_resistance(b, soc));
+    if (connected)
+        return b.charge_voltage > 0.0 && !charge_voltage_binds(b, soc, v_bus) ? p.current
+                                                                              : p.current - b.charge_end_current;
+    const double margin =
+        2.0 * b.charge_end_current *
+        (b.charge_path_resistance + battery_resistance(b, soc) + charge_polarization_resistance(b, soc));
     return std::max(p.terminal_voltage - b.v_connect, open_circuit_voltage(b, soc) + margin - v_bus);
 }
 
@@ -173,7 +180,8 @@ BusBalance bus_balance(const Model& m, const FaceDiodes& diode, const std::array
     i_in *= (1.0 - b.sigma);  // eq. 4: I_bus = (1 − D) I; σ ∈ {0, 1} when switching
     b.batt = battery_operating_point(p.battery, x[state_soc], v, d.charge_connected);
     b.dx[state_v_bus] = (i_in - v / p.load_resistance - b.batt.current) / p.bus_capacitance;  // C dv/dt = Σ i
-    b.dx[state_soc] = b.batt.current / p.battery.capacity;  // charge balance, coulombic efficiency 1
+    // Charge balance: only charge_efficiency of a charging current is stored (battery.hpp).
+    b.dx[state_soc] = stored_charge_rate(p.battery, b.batt.current) / p.battery.capacity;
     return b;
 }
 
@@ -225,7 +233,11 @@ Model make_model(const Parameters& p) {
     require(std::isfinite(p.bus_voltage_reference), "bus voltage reference must be finite");
     require(non_negative(p.controller_gain), "controller gain must be >= 0");
     const auto& b = p.battery;
+    require(b.chemistry == BatteryChemistry::lead_acid || b.chemistry == BatteryChemistry::lithium_ion,
+            "battery chemistry must be 0 (lead_acid) or 1 (lithium_ion)");
     require(positive(b.capacity), "battery capacity must be > 0");
+    require(positive(b.charge_efficiency) && b.charge_efficiency <= 1.0,
+            "battery charge efficiency must be within (0, 1]");
     require(positive(b.internal_resistance), "battery internal resistance must be > 0");
     require(positive(b.charge_path_resistance), "battery charge path resistance must be > 0");
     require(non_negative(b.diode_forward_voltage) && positive(b.diode_resistance),

@@ -50,19 +50,15 @@ struct SsrPlantData {
     double bus_voltage_reference = core_defaults.bus_voltage_reference;
     double controller_gain = core_defaults.controller_gain;
     // battery
+    // (the chemistry's published characteristic and charger settings: battery_preset(), battery.hpp)
+    BatteryChemistry battery_chemistry = core_defaults.battery.chemistry;
     double battery_capacity = core_defaults.battery.capacity;
-    std::array<double, 11> battery_ocv = core_defaults.battery.open_circuit_voltage;
-    double battery_internal_resistance = core_defaults.battery.internal_resistance;
     double charge_path_resistance = core_defaults.battery.charge_path_resistance;
     double battery_diode_forward_voltage = core_defaults.battery.diode_forward_voltage;
     double battery_diode_resistance = core_defaults.battery.diode_resistance;
     double soc_connect = core_defaults.battery.soc_connect;
     double soc_disconnect = core_defaults.battery.soc_disconnect;
     ChargeControl charge_control = core_defaults.battery.charge_control;
-    double v_connect = core_defaults.battery.v_connect;
-    double charge_end_current = core_defaults.battery.charge_end_current;
-    double charge_voltage = core_defaults.battery.charge_voltage;
-    double charge_polarization = core_defaults.battery.charge_polarization;
     // continuous states and derivatives
     double v_cap = 15.0;
     double soc_state = 0.9;

@@ -56,14 +56,28 @@ enum class ChargeControl : std::int32_t {
     state_of_charge = 1,
 };
 
-// A 12 V battery (assumed lead-acid): open-circuit voltage vs state of charge, tabulated at
-// soc = 0, 0.1, …, 1 (typical rested voltages of a 12 V lead-acid battery as in common published
-// charts; an assumption, the seed only says "12 V battery"). Linear between points, held outside [0, 1].
+// The battery's chemistry: which published characteristic gives its open-circuit voltage, its resistance and its
+// charge (coulombic) efficiency (battery.hpp; sources in ssr_plant/README.md and docs/references.md).
+enum class BatteryChemistry : std::int32_t {
+    // A 12 V lead-acid monobloc (6 cells): rested voltage vs state of charge from Trojan Battery Company's
+    // published table (consistent with Linden's rule OCV = specific gravity + 0.84 V per cell), the table below.
+    lead_acid = 0,
+    // Three lithium-ion cells in series (a 12 V-class pack): each cell the Chen & Rincón-Mora (2006) model of
+    // their TCL PL-383562 cell, its open-circuit voltage and its series and transient resistances as the
+    // published functions of the state of charge, the resistances scaled to a 2 Ah pack.
+    lithium_ion = 1,
+};
+
+// A 12 V-class battery. The defaults are the lead-acid one (= battery_preset(BatteryChemistry::lead_acid));
+// battery_preset() gives each chemistry's published values, and the FMU takes its battery from it.
 struct BatteryParameters {
+    BatteryChemistry chemistry = BatteryChemistry::lead_acid;
     double capacity = 7200.0;  // C (= 2 Ah, assumed)
+    // Lead-acid only: rested open-circuit voltage at soc = 0, 0.1, …, 1 (Trojan Battery Company's table for a
+    // 12 V battery, 10 … 100 %; the 0 % point 11.30 V extrapolates it). Linear between points, held outside [0, 1].
     std::array<double, 11> open_circuit_voltage = {11.30, 11.51, 11.66, 11.81, 11.96, 12.10,
                                                    12.24, 12.37, 12.50, 12.62, 12.73};  // V
-    double internal_resistance = 0.05;                                                  // Ω (assumed)
+    double internal_resistance = 0.05;  // Ω, lead-acid only (assumed); lithium-ion: Chen & Rincón-Mora's
     // Charge path bus → charge MOSFET → current-limiting resistor → battery. Without a limit the
     // 15 V bus against a 12.5 V battery would draw tens of amperes; 5 Ω gives about C/4 (assumed).
     double charge_path_resistance = 5.0;  // Ω
@@ -75,20 +89,23 @@ struct BatteryParameters {
     double soc_connect = 0.80;     // (assumed)
     double soc_disconnect = 1.00;  // "maximum charge" (seed)
     ChargeControl charge_control = ChargeControl::voltage;
-    // Voltage control (assumed values): connect at 12.50 V, the table's rested voltage at soc 0.8 (the soc
-    // controller's threshold); disconnect when the charge current tapers to C/20 = 0.1 A of a 2 Ah battery.
-    double v_connect = 12.50;         // V
-    double charge_end_current = 0.1;  // A
-    // Charge model. The charger holds the terminal voltage at most at charge_voltage (constant-voltage
-    // phase; 2.40 V per cell, a common lead-acid absorption voltage; 0 = no limit), and charging sees a
-    // polarization resistance that grows as the battery fills, R_p = K soc / (1 − soc + 0.01), the form of
-    // the Shepherd/Tremblay models (C. M. Shepherd, J. Electrochem. Soc. 112 (1965) 657; O. Tremblay, L.-A.
-    // Dessaint, A.-I. Dekkiche, IEEE VPPC 2007). With K = 0.2 Ω (assumed) the current from the 15 V bus
-    // through the 5 Ω path tapers from 0.55 A at soc 0.5 to 0.36 A at 0.9 and 0.15 A at 0.99; the 14.4 V
-    // limit takes over above soc 0.996 and the controller disconnects at 0.1 A (soc 0.998). K = 0: no
-    // overpotential (a constant ~0.5 A up to full, the earlier model). Discharge does not see it.
+    // Voltage control: connect when the terminal voltage has fallen to v_connect (lead-acid 12.50 V, the
+    // table's rested voltage at soc 0.8, assumed); disconnect when the charge current has tapered to
+    // charge_end_current (lead-acid C/50: 0.04 A of 2 Ah).
+    double v_connect = 12.50;          // V
+    double charge_end_current = 0.04;  // A
+    // Charge model. The charger holds the terminal voltage at most at charge_voltage (the constant-voltage
+    // phase; lead-acid 2.40 V per cell; 0 = no limit), and charging sees a polarization resistance that grows
+    // as the battery fills, R_p = K soc / (1 − soc + 0.01) (the Shepherd form: C. M. Shepherd, J. Electrochem.
+    // Soc. 112 (1965) 657; O. Tremblay, L.-A. Dessaint, World Electric Vehicle Journal 3 (2009)). Lead-acid:
+    // K = 2.9 Ω for 2 Ah, fitted so that the charge through the 5 Ω path from the 15 V bus reaches 14.4 V
+    // (2.40 V per cell) at soc 0.85, the middle of the published 80–90 % (battery.hpp); at half charge it
+    // then sits at 13.16 V (2.19 V per cell, 0.37 A). Discharge does not see it. K = 0: no overpotential.
     double charge_voltage = 14.4;      // V
-    double charge_polarization = 0.2;  // Ω (K)
+    double charge_polarization = 2.9;  // Ω (K)
+    // Charge (coulombic) efficiency: the fraction of the charging current that is stored (the rest drives
+    // side reactions: gassing in lead-acid). Lead-acid ~0.85, lithium-ion > 0.99 (battery.hpp).
+    double charge_efficiency = 0.85;
 };
 
 // How the switching plant's PWM turns the controller output into gate pulses (switching fidelity only).

@@ -35,7 +35,8 @@ using State = std::array<double, state_count>;
 // Event indicators (state events). First: the hysteresis charge controller's distance to its next switch,
 // by default on the battery's terminal voltage and charge current (ChargeControl::voltage):
 //   disconnected: max(v_terminal − v_connect, EMF + Δ − v_bus)  (falls to 0 → connect for charging)
-//   connected:    I_charge − charge_end_current                  (falls to 0 at full charge → disconnect)
+//   connected:    I_charge − charge_end_current in the charger's constant-voltage phase (falls to 0 at
+//                 full charge → disconnect), I_charge below it (falls to 0 when the bus stops charging)
 // or on the state of charge (ChargeControl::state_of_charge):
 //   disconnected: soc − soc_connect      (falls to 0 → connect for charging)
 //   connected:    soc_disconnect − soc   (falls to 0 at full charge → disconnect)
