@@ -7,7 +7,7 @@ namespace fmu {
 
 namespace {
 
-constexpr std::array<UnitDefinition, 28> units{{
+constexpr std::array<UnitDefinition, 29> units{{
     {.name = "1"},
     {.name = "s", .s = 1},
     {.name = "Hz", .s = -1},
@@ -30,6 +30,7 @@ constexpr std::array<UnitDefinition, 28> units{{
     {.name = "degC", .K = 1, .offset = 273.15},
     {.name = "1/K", .K = -1},
     {.name = "kg.m2", .kg = 1, .m = 2},
+    {.name = "A.m2", .m = 2, .A = 1},  // magnetic moment
     {.name = "V/A", .kg = 1, .m = 2, .s = -3, .A = -2},
     {.name = "%/V", .kg = -1, .m = -2, .s = 3, .A = 1, .factor = 0.01},
     {.name = "1/V", .kg = -1, .m = -2, .s = 3, .A = 1},

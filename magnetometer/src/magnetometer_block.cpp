@@ -1,6 +1,8 @@
 #include "magnetometer/magnetometer_block.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 #include "fmu/errors.hpp"
 #include "fmu/instant_clock.hpp"
@@ -14,6 +16,13 @@ void MagnetometerBlock::declare(fmu::Table<MagnetometerData>& t) {
     t.input("set_reset_command", &D::set_reset_command, "",
             "Last set/reset strap pulse commanded by the on-board computer: true = set, false = reset "
             "(set_reset_source = input; a change is a pulse)");
+    t.input("i_panel", &D::i_panel, "A",
+            "Each face's current into the bus (ssr_plant i_panel; +x, -x, +y, -y, +z, -z): its string's field");
+    t.input("i_shunt", &D::i_shunt, "A",
+            "Each face's current through its shunt switch (ssr_plant i_shunt): its string's and the shunt path's "
+            "field");
+    t.input("i_batt", &D::i_batt, "A", "Battery current, positive charging (ssr_plant i_batt): the battery loop");
+    t.input("i_load", &D::i_load, "A", "Load current (ssr_plant i_load): the load loop");
 
     t.parameter("sensitivity", &D::sensitivity, "V/T", "Sensitivity at 25 degC (datasheet: 1 V/gauss = 1e4 V/T)")
         .min(1e-3);
@@ -52,16 +61,43 @@ void MagnetometerBlock::declare(fmu::Table<MagnetometerData>& t) {
         .range(-0.01, 0.01);
     t.parameter("v_rail_low", &D::v_rail_low, "V", "Lower saturation rail of the outputs");
     t.parameter("v_rail_high", &D::v_rail_high, "V", "Upper saturation rail of the outputs (5 V supply)");
+    // The spacecraft's own field (spacecraft_field.hpp). Defaults: an assumed 3U layout (README).
+    t.parameter("sensor_position", &D::sensor_position, "m", "Position of the sensor, body axes (from the box centre)");
+    t.parameter("dipole_moment", &D::dipole_moment, "A.m2", "Residual magnetic dipole of the spacecraft, body axes")
+        .range(-100.0, 100.0);
+    t.parameter("dipole_position", &D::dipole_position, "m", "Position of the residual dipole, body axes");
+    t.parameter("string_loop_center", &D::string_loop_center, "m",
+                "Centre of each face's cell-string loop, 3 elements per face (+x, -x, +y, -y, +z, -z)");
+    t.parameter("string_loop_side_a", &D::string_loop_side_a, "m",
+                "First side of each face's string loop, 3 elements per face: the current runs along side_a, then "
+                "side_b; side_a x side_b is the loop's normal times its area (zero sides: no loop)");
+    t.parameter("string_loop_side_b", &D::string_loop_side_b, "m",
+                "Second side of each face's string loop, 3 elements per face");
+    t.parameter("shunt_loop_center", &D::shunt_loop_center, "m",
+                "Centre of the shunt switches' current loop (carries the sum of i_shunt)");
+    t.parameter("shunt_loop_side_a", &D::shunt_loop_side_a, "m", "First side of the shunt loop");
+    t.parameter("shunt_loop_side_b", &D::shunt_loop_side_b, "m", "Second side of the shunt loop");
+    t.parameter("battery_loop_center", &D::battery_loop_center, "m",
+                "Centre of the battery's current loop (carries i_batt)");
+    t.parameter("battery_loop_side_a", &D::battery_loop_side_a, "m", "First side of the battery loop");
+    t.parameter("battery_loop_side_b", &D::battery_loop_side_b, "m", "Second side of the battery loop");
+    t.parameter("load_loop_center", &D::load_loop_center, "m", "Centre of the load's current loop (carries i_load)");
+    t.parameter("load_loop_side_a", &D::load_loop_side_a, "m", "First side of the load loop");
+    t.parameter("load_loop_side_b", &D::load_loop_side_b, "m", "Second side of the load loop");
 
     t.state("b_filt", &D::b_filt, &D::der_b_filt, "T", "Field after the sensor's bandwidth filter, sensor axes")
         .nominal(1e-4)
         .calculated_start()
         .derivative_depends_elementwise({"b_filt"})
-        .derivative_depends_on({"mag_body"});
+        .derivative_depends_on({"mag_body", "i_panel", "i_shunt", "i_batt", "i_load"});
 
     t.output("v_out", &D::v_out, "V", "Output voltages X, Y, Z (0-5 V, v_ref at zero field)")
         .depends_elementwise({"b_filt"})
         .depends_on({"set_reset_command"});
+    t.output("mag_spacecraft", &D::mag_spacecraft, "T",
+             "The spacecraft's own field at the sensor, body axes: residual dipole and the plant's currents (read "
+             "by the sensor on top of mag_body)")
+        .depends_on({"i_panel", "i_shunt", "i_batt", "i_load"});
     t.output("v_ref", &D::v_ref, "V", "Zero-field reference voltage (+2.5 V pin)").depends_on({});
     t.output("set_polarity", &D::set_polarity, "", "True after a set pulse, false after a reset pulse")
         .depends_on({"set_reset_command"});
@@ -86,11 +122,51 @@ fmu::ModelInfo MagnetometerBlock::describe() {
         "<code>set_reset_period</code>), or not at all (none), plus seeded Gaussian noise held for "
         "<code>noise_sample_period</code> (a counter-based generator keyed by the seed, the hold interval "
         "and the axis, so the noise needs no time events and an FMU state reproduces it), and clamped to the rails.</p>"
+        "<p>The sensor reads the spacecraft's own field on top of <code>mag_body</code>: a residual dipole "
+        "(<code>dipole_moment</code> at <code>dipole_position</code>, the exact point-dipole field) and the "
+        "currents of the power system, each run around a rectangular loop of straight wires (Biot-Savart, closed "
+        "form per segment): each face's cell string (<code>i_panel + i_shunt</code> of the face), the shunt "
+        "switches' path (the sum of <code>i_shunt</code>), the battery (<code>i_batt</code>) and the load "
+        "(<code>i_load</code>). Positions in metres, body axes, from the box centre; the defaults are an assumed "
+        "3U layout with no dipole. <code>mag_spacecraft</code> shows that field at the sensor.</p>"
         "<p>Defaults are the datasheet's typical values; <code>bridge_offset</code>, <code>cross_axis</code> and "
         "<code>set_reset_period</code> are assumptions to be replaced by a calibration of the flight unit. "
         "Linearity error, hysteresis and the set/reset pulse's own transient are not modelled.</p>";
     info.default_experiment = {.start_time = 0.0, .stop_time = 5.0, .tolerance = 1e-6, .step_size = 1e-3};
     return info;
+}
+
+void MagnetometerBlock::configure() {
+    const auto& d = data();
+    SpacecraftLayout l;
+    l.sensor_position = d.sensor_position;
+    l.dipole_moment = d.dipole_moment;
+    l.dipole_position = d.dipole_position;
+    for (std::size_t k = 0; k < face_count; ++k) {
+        for (std::size_t i = 0; i < 3; ++i) {
+            l.string_loop[k].center[i] = d.string_loop_center[3 * k + i];
+            l.string_loop[k].side_a[i] = d.string_loop_side_a[3 * k + i];
+            l.string_loop[k].side_b[i] = d.string_loop_side_b[3 * k + i];
+        }
+    }
+    l.shunt_loop = {d.shunt_loop_center, d.shunt_loop_side_a, d.shunt_loop_side_b};
+    l.battery_loop = {d.battery_loop_center, d.battery_loop_side_a, d.battery_loop_side_b};
+    l.load_loop = {d.load_loop_center, d.load_loop_side_a, d.load_loop_side_b};
+    spacecraft_.reset();
+    try {
+        spacecraft_.emplace(l);
+    } catch (const std::invalid_argument& e) {
+        throw fmu::Error(std::string("magnetometer: ") + e.what());
+    }
+}
+
+Vec3 MagnetometerBlock::total_field() {
+    auto& d = data();
+    if (!spacecraft_) throw fmu::Error("magnetometer: used before configure()");  // the runtime configures first
+    d.mag_spacecraft =
+        spacecraft_->at_sensor({.panel = d.i_panel, .shunt = d.i_shunt, .battery = d.i_batt, .load = d.i_load});
+    return {d.mag_body[0] + d.mag_spacecraft[0], d.mag_body[1] + d.mag_spacecraft[1],
+            d.mag_body[2] + d.mag_spacecraft[2]};
 }
 
 void MagnetometerBlock::validate() const {
@@ -128,7 +204,7 @@ void MagnetometerBlock::update_noise(double t) {
 void MagnetometerBlock::initialize(double t) {
     auto& d = data();
     // The sensor has been powered long before the simulation starts: its filter is in steady state.
-    d.b_filt = multiply(sensor_matrix(d.cross_axis, d.misalignment), d.mag_body);
+    d.b_filt = multiply(sensor_matrix(d.cross_axis, d.misalignment), total_field());
     d.set_polarity = true;  // the first pulse at power-up is a set pulse
     d.next_set_reset = d.set_reset_source == SetResetSource::timer ? t + d.set_reset_period : fmu::no_time_event;
     d.noise_start = t;
@@ -138,7 +214,7 @@ void MagnetometerBlock::initialize(double t) {
 void MagnetometerBlock::evaluate(double t) {
     auto& d = data();
     update_noise(t);
-    const Vec3 sensed = multiply(sensor_matrix(d.cross_axis, d.misalignment), d.mag_body);
+    const Vec3 sensed = multiply(sensor_matrix(d.cross_axis, d.misalignment), total_field());
     d.der_b_filt = filter_derivative(sensed, d.b_filt, d.bandwidth);
     const OutputStage stage{.sensitivity = sensitivity_at(d.sensitivity, d.sensitivity_tempco, d.temperature),
                             .v_null = d.v_null,

@@ -352,6 +352,44 @@ TEST(SsrFmu, FaceSampleHoldTracksWhileTheGateIsOnAndHoldsWhileItIsOff) {
     }
 }
 
+// Each panel's shunt-switch current (the magnetometer's field of the currents): switching, the whole
+// shorted-panel current while the gate is on (the S/H tracks that same current) and nothing while it is off
+// (then the panel feeds the bus); averaged, the duty's share of it, the rest going to the bus.
+TEST(SsrFmu, ShuntCurrentIsTheShortedPanelsWhileTheGateIsOn) {
+    const double T = 1.0 / 5000.0, t0 = 0.1;
+    {
+        PlantRun run;
+        auto& d = run.data();
+        run.set_choice("fidelity", "switching");
+        run.set_choice("angular_response", "cosine");
+        d.sun_body = {0.0, 0.0, 1.0};
+        run.start();
+        run.step_to(t0 + 0.5 * T);  // D ≈ 0.79: gate on
+        ASSERT_TRUE(d.gate);
+        EXPECT_EQ(d.i_shunt, d.i_face_sh);
+        EXPECT_GT(d.i_shunt[4], 0.8);
+        for (double i : d.i_panel) EXPECT_EQ(i, 0.0);
+        run.step_to(t0 + 0.9 * T);
+        ASSERT_FALSE(d.gate);
+        for (double i : d.i_shunt) EXPECT_EQ(i, 0.0);
+        EXPECT_GT(d.i_panel[4], 0.8);
+    }
+    {
+        PlantRun run;
+        auto& d = run.data();
+        run.set_choice("fidelity", "averaged");
+        run.set_choice("angular_response", "cosine");
+        d.sun_body = {0.0, 0.0, 1.0};
+        run.start();
+        run.step_to(t0);
+        ASSERT_GT(d.duty, 0.5);
+        for (int k = 0; k < 6; ++k) EXPECT_DOUBLE_EQ(d.i_shunt[k], d.duty * d.i_face_sh[k]) << "face " << k;
+        // The bus takes the rest, and a panel at the bus voltage gives less than shorted.
+        EXPECT_GT(d.i_panel[4], 0.0);
+        EXPECT_LT(d.i_panel[4] + d.i_shunt[4], d.i_face_sh[4]);
+    }
+}
+
 // Ripple, by hand: over the on-time D T the load alone drains the 1500 µF capacitor, over the off-time the
 // panels refill it by as much: peak-to-peak i_load D T / C. Measured on one fixed sun direction, sampled
 // every 2 µs over 5 periods after the loop has settled.

@@ -83,6 +83,9 @@ struct Outputs {
     std::array<double, face_count> i_sc = {};       // A, each panel's true short-circuit current (V = 0)
     std::array<double, face_count> i_panel = {};    // A, each panel's current into the bus (period
                                                     // average in averaged mode)
+    std::array<double, face_count> i_shunt = {};    // A, each panel's current through its shunt switch (period
+                                                    // average in averaged mode): i_panel + i_shunt is the
+                                                    // current of the panel's cells
     double v_bus = 0.0;                             // V
     double v_batt = 0.0;                            // V, battery terminal voltage
     double i_batt = 0.0;                            // A, into the battery (+ charging)
