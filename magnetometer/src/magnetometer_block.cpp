@@ -16,11 +16,12 @@ void MagnetometerBlock::declare(fmu::Table<MagnetometerData>& t) {
     t.input("set_reset_command", &D::set_reset_command, "",
             "Last set/reset strap pulse commanded by the on-board computer: true = set, false = reset "
             "(set_reset_source = input; a change is a pulse)");
-    t.input("i_panel", &D::i_panel, "A",
-            "Each face's current into the bus (ssr_plant i_panel; +x, -x, +y, -y, +z, -z): its string's field");
+    t.input("i_string", &D::i_string, "A",
+            "Each face's cell current, PWM-period average (ssr_plant i_string; +x, -x, +y, -y, +z, -z): its string "
+            "loop");
     t.input("i_shunt", &D::i_shunt, "A",
-            "Each face's current through its shunt switch (ssr_plant i_shunt): its string's and the shunt path's "
-            "field");
+            "Each face's shunt-switch current, PWM-period average (ssr_plant i_shunt): their sum runs around the "
+            "shunt loop");
     t.input("i_batt", &D::i_batt, "A", "Battery current, positive charging (ssr_plant i_batt): the battery loop");
     t.input("i_load", &D::i_load, "A", "Load current (ssr_plant i_load): the load loop");
 
@@ -62,6 +63,9 @@ void MagnetometerBlock::declare(fmu::Table<MagnetometerData>& t) {
     t.parameter("v_rail_low", &D::v_rail_low, "V", "Lower saturation rail of the outputs");
     t.parameter("v_rail_high", &D::v_rail_high, "V", "Upper saturation rail of the outputs (5 V supply)");
     // The spacecraft's own field (spacecraft_field.hpp). Defaults: an assumed 3U layout (README).
+    t.parameter("read_spacecraft_field", &D::read_spacecraft_field, "",
+                "The sensor reads the spacecraft's own field (mag_spacecraft) on top of mag_body; false: a sensor "
+                "calibrated against it (mag_spacecraft is still computed and output)");
     t.parameter("sensor_position", &D::sensor_position, "m", "Position of the sensor, body axes (from the box centre)");
     t.parameter("dipole_moment", &D::dipole_moment, "A.m2", "Residual magnetic dipole of the spacecraft, body axes")
         .range(-100.0, 100.0);
@@ -89,15 +93,15 @@ void MagnetometerBlock::declare(fmu::Table<MagnetometerData>& t) {
         .nominal(1e-4)
         .calculated_start()
         .derivative_depends_elementwise({"b_filt"})
-        .derivative_depends_on({"mag_body", "i_panel", "i_shunt", "i_batt", "i_load"});
+        .derivative_depends_on({"mag_body"});
 
     t.output("v_out", &D::v_out, "V", "Output voltages X, Y, Z (0-5 V, v_ref at zero field)")
         .depends_elementwise({"b_filt"})
-        .depends_on({"set_reset_command"});
+        .depends_on({"set_reset_command", "i_string", "i_shunt", "i_batt", "i_load"});
     t.output("mag_spacecraft", &D::mag_spacecraft, "T",
              "The spacecraft's own field at the sensor, body axes: residual dipole and the plant's currents (read "
              "by the sensor on top of mag_body)")
-        .depends_on({"i_panel", "i_shunt", "i_batt", "i_load"});
+        .depends_on({"i_string", "i_shunt", "i_batt", "i_load"});
     t.output("v_ref", &D::v_ref, "V", "Zero-field reference voltage (+2.5 V pin)").depends_on({});
     t.output("set_polarity", &D::set_polarity, "", "True after a set pulse, false after a reset pulse")
         .depends_on({"set_reset_command"});
@@ -125,7 +129,7 @@ fmu::ModelInfo MagnetometerBlock::describe() {
         "<p>The sensor reads the spacecraft's own field on top of <code>mag_body</code>: a residual dipole "
         "(<code>dipole_moment</code> at <code>dipole_position</code>, the exact point-dipole field) and the "
         "currents of the power system, each run around a rectangular loop of straight wires (Biot-Savart, closed "
-        "form per segment): each face's cell string (<code>i_panel + i_shunt</code> of the face), the shunt "
+        "form per segment): each face's cell string (<code>i_string</code>), the shunt "
         "switches' path (the sum of <code>i_shunt</code>), the battery (<code>i_batt</code>) and the load "
         "(<code>i_load</code>). Positions in metres, body axes, from the box centre; the defaults are an assumed "
         "3U layout with no dipole. <code>mag_spacecraft</code> shows that field at the sensor.</p>"
@@ -160,13 +164,12 @@ void MagnetometerBlock::configure() {
     }
 }
 
-Vec3 MagnetometerBlock::total_field() {
+Vec3 MagnetometerBlock::spacecraft_field() {
     auto& d = data();
     if (!spacecraft_) throw fmu::Error("magnetometer: used before configure()");  // the runtime configures first
     d.mag_spacecraft =
-        spacecraft_->at_sensor({.panel = d.i_panel, .shunt = d.i_shunt, .battery = d.i_batt, .load = d.i_load});
-    return {d.mag_body[0] + d.mag_spacecraft[0], d.mag_body[1] + d.mag_spacecraft[1],
-            d.mag_body[2] + d.mag_spacecraft[2]};
+        spacecraft_->at_sensor({.string = d.i_string, .shunt = d.i_shunt, .battery = d.i_batt, .load = d.i_load});
+    return d.mag_spacecraft;
 }
 
 void MagnetometerBlock::validate() const {
@@ -204,7 +207,7 @@ void MagnetometerBlock::update_noise(double t) {
 void MagnetometerBlock::initialize(double t) {
     auto& d = data();
     // The sensor has been powered long before the simulation starts: its filter is in steady state.
-    d.b_filt = multiply(sensor_matrix(d.cross_axis, d.misalignment), total_field());
+    d.b_filt = multiply(sensor_matrix(d.cross_axis, d.misalignment), d.mag_body);
     d.set_polarity = true;  // the first pulse at power-up is a set pulse
     d.next_set_reset = d.set_reset_source == SetResetSource::timer ? t + d.set_reset_period : fmu::no_time_event;
     d.noise_start = t;
@@ -214,8 +217,13 @@ void MagnetometerBlock::initialize(double t) {
 void MagnetometerBlock::evaluate(double t) {
     auto& d = data();
     update_noise(t);
-    const Vec3 sensed = multiply(sensor_matrix(d.cross_axis, d.misalignment), total_field());
-    d.der_b_filt = filter_derivative(sensed, d.b_filt, d.bandwidth);
+    const Mat3 m = sensor_matrix(d.cross_axis, d.misalignment);
+    d.der_b_filt = filter_derivative(multiply(m, d.mag_body), d.b_filt, d.bandwidth);
+    // The spacecraft's own field joins after the bandwidth filter, as the noise does: the plant's currents
+    // reach the sensor as a Co-Simulation component's steps (1 ms in the seed systems), and through the
+    // filter every step would be an input discontinuity, an integrator restart (README: what it costs).
+    const Vec3 field_of_spacecraft = spacecraft_field();
+    const Vec3 own = d.read_spacecraft_field ? multiply(m, field_of_spacecraft) : Vec3{};
     const OutputStage stage{.sensitivity = sensitivity_at(d.sensitivity, d.sensitivity_tempco, d.temperature),
                             .v_null = d.v_null,
                             .offset = d.bridge_offset,
@@ -223,7 +231,7 @@ void MagnetometerBlock::evaluate(double t) {
                             .v_high = d.v_rail_high};
     if (d.set_reset_source == SetResetSource::input) d.set_polarity = d.set_reset_command;
     const double polarity = d.set_polarity ? 1.0 : -1.0;
-    for (int i = 0; i < 3; ++i) d.v_out[i] = output_voltage(stage, d.b_filt[i], d.noise[i], polarity);
+    for (int i = 0; i < 3; ++i) d.v_out[i] = output_voltage(stage, d.b_filt[i] + own[i], d.noise[i], polarity);
     d.v_ref = std::clamp(d.v_null, d.v_rail_low, d.v_rail_high);
 }
 

@@ -112,12 +112,12 @@ SpacecraftField::SpacecraftField(const SpacecraftLayout& layout) {
 }
 
 Vec3 SpacecraftField::at_sensor(const PlantCurrents& i) const {
-    // Each face's string carries the whole current of its cells: what goes to the bus and what the shunt
-    // switch takes; the shunt switches' common path carries the sum of the faces' shunt currents.
+    // Each face's string carries the whole current of its cells (what goes to the bus and what the shunt
+    // switch takes); the shunt switches' common path carries the sum of the faces' shunt currents.
     double shunt_total = 0.0;
     for (double s : i.shunt) shunt_total += s;
     Vec3 b = dipole_;
-    for (std::size_t k = 0; k < face_count; ++k) b = b + (i.panel[k] + i.shunt[k]) * per_amp_string_[k];
+    for (std::size_t k = 0; k < face_count; ++k) b = b + i.string[k] * per_amp_string_[k];
     b = b + shunt_total * per_amp_shunt_;
     b = b + i.battery * per_amp_battery_;
     b = b + i.load * per_amp_load_;

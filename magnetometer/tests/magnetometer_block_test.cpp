@@ -175,9 +175,9 @@ TEST(MagnetometerBlock, TableDeclaresEveryFieldOnceWithUnitsAndDescriptions) {
             EXPECT_FALSE(v.unit.empty()) << v.name;
         }
     }
-    EXPECT_EQ(table.by_name("v_out[2]").dependencies->size(), 2u);  // b_filt[2] and set_reset_command
-    // b_filt[1], mag_body[1..3] and the 14 currents (i_panel, i_shunt, i_batt, i_load)
-    EXPECT_EQ(table.by_name("der(b_filt[1])").dependencies->size(), 18u);
+    EXPECT_EQ(table.by_name("der(b_filt[1])").dependencies->size(), 4u);  // b_filt[1] and mag_body[1..3]
+    // b_filt[3], set_reset_command and the 14 currents (i_string, i_shunt, i_batt, i_load)
+    EXPECT_EQ(table.by_name("v_out[3]").dependencies->size(), 16u);
     EXPECT_EQ(table.by_name("mag_spacecraft[3]").dependencies->size(), 14u);
 }
 
@@ -216,10 +216,16 @@ TEST(MagnetometerBlock, ResidualDipoleAddsItsAxialField) {
     EXPECT_NEAR(d.mag_spacecraft[0], 0.0, 1e-20);
     EXPECT_NEAR(d.v_out[2], 2.5 + 0.2 + 1e4 * b_dipole, 1e-9);
     EXPECT_NEAR(d.v_out[0], 2.5 + 0.1, 1e-9);
+    // A sensor calibrated against it: the field is still shown, no longer read.
+    d.read_spacecraft_field = false;
+    sim.runner.mark_changed();
+    sim.advance_to(0.02);
+    EXPECT_NEAR(d.mag_spacecraft[2], b_dipole, 1e-15);
+    EXPECT_NEAR(d.v_out[2], 2.5 + 0.2, 1e-9);
 }
 
 // The +z string made a 60 mm square centred on the sensor's axis 50 mm above it, every other loop removed
-// (zero sides): the face's panel and shunt currents give the textbook on-axis field
+// (zero sides): the face's cell current gives the textbook on-axis field
 // μ0 I s² / (2π (z² + s²/4) √(z² + s²/2)), along +z (the loop's normal); it follows the inputs.
 TEST(MagnetometerBlock, FaceCurrentsGiveTheirStringLoopsField) {
     Simulation sim;
@@ -239,13 +245,13 @@ TEST(MagnetometerBlock, FaceCurrentsGiveTheirStringLoopsField) {
     d.string_loop_side_b[13] = s;
     sim.start();
     EXPECT_EQ(d.mag_spacecraft, (Vec3{0.0, 0.0, 0.0}));
-    d.i_panel[4] = 0.3;
-    d.i_shunt[4] = 0.2;
-    d.i_shunt[0] = 0.4;  // another face's shunt current: its loop and the shunt path are removed
+    d.i_string[4] = 0.5;
+    d.i_string[0] = 0.3;  // another face's string and the shunt path: their loops are removed
+    d.i_shunt[0] = 0.4;
     d.i_batt = 0.5;
     d.i_load = 0.2;
     sim.runner.mark_changed();
-    sim.advance_to(0.01);  // 10 filter time constants
+    sim.advance_to(0.01);
     const double mu0 = 4e-7 * std::numbers::pi;
     const double expected =
         mu0 * 0.5 * s * s / (2.0 * std::numbers::pi * (z * z + s * s / 4.0) * std::sqrt(z * z + s * s / 2.0));
@@ -256,7 +262,7 @@ TEST(MagnetometerBlock, FaceCurrentsGiveTheirStringLoopsField) {
 
 TEST(MagnetometerBlock, SensorOnAWireIsRefusedAtInitialization) {
     Simulation sim;
-    sim.data().sensor_position = {0.05, 0.005, 0.1};  // on the +x string loop's long wire (y = +5 mm)
+    sim.data().sensor_position = {0.05, 0.0025, 0.1};  // on the +x string loop's long wire (y = +2.5 mm)
     EXPECT_THROW(sim.start(), fmu::Error);
 }
 

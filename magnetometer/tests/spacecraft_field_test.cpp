@@ -86,8 +86,8 @@ TEST(SpacecraftField, SquareLoopOnAxisIsTheTextbookField) {
         EXPECT_NEAR(b[1], 0.0, 1e-12 * expected);
     }
     // Its centre: 2√2 μ0 I / (π s).
-    EXPECT_NEAR(loop_field(loop, current, {0.0, 0.0, 0.0})[2], 2.0 * std::sqrt(2.0) * mu0 * current / (std::numbers::pi * s),
-                1e-18);
+    EXPECT_NEAR(loop_field(loop, current, {0.0, 0.0, 0.0})[2],
+                2.0 * std::sqrt(2.0) * mu0 * current / (std::numbers::pi * s), 1e-18);
 }
 
 TEST(SpacecraftField, DipoleIsTheFarFieldOfASmallLoop) {
@@ -120,7 +120,7 @@ TEST(SpacecraftField, ZeroCurrentsAndNoDipoleGiveExactlyZero) {
     EXPECT_EQ(b, (Vec3{0.0, 0.0, 0.0}));
 }
 
-TEST(SpacecraftField, EachFaceStringCarriesItsPanelAndShuntCurrentAndTheShuntPathTheirSum) {
+TEST(SpacecraftField, EachFaceStringCarriesItsCellCurrentAndTheShuntPathTheShuntsSum) {
     // One loop at a time, the rest made zero-sized (no loop): the sensor's field is that loop's, by the
     // closed form checked above, times the current the model gives it.
     SpacecraftLayout l = default_layout();
@@ -128,7 +128,7 @@ TEST(SpacecraftField, EachFaceStringCarriesItsPanelAndShuntCurrentAndTheShuntPat
     for (auto& s : l.string_loop) s = {};
     l.shunt_loop = l.battery_loop = l.load_loop = {};
     PlantCurrents i;
-    i.panel = {0.1, 0.2, 0.3, 0.0, 0.5, 0.0};
+    i.string = {0.1, 0.2, 0.4, 0.0, 0.5, 0.0};
     i.shunt = {0.05, 0.0, 0.1, 0.2, 0.0, 0.0};
     i.battery = -0.3;
     i.load = 0.17;

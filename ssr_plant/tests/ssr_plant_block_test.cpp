@@ -352,10 +352,11 @@ TEST(SsrFmu, FaceSampleHoldTracksWhileTheGateIsOnAndHoldsWhileItIsOff) {
     }
 }
 
-// Each panel's shunt-switch current (the magnetometer's field of the currents): switching, the whole
-// shorted-panel current while the gate is on (the S/H tracks that same current) and nothing while it is off
-// (then the panel feeds the bus); averaged, the duty's share of it, the rest going to the bus.
-TEST(SsrFmu, ShuntCurrentIsTheShortedPanelsWhileTheGateIsOn) {
+// The currents a sensor slower than the PWM sees (the magnetometer's field of the currents): period
+// averages that do not jump at the PWM edges. Switching: D times the shorted panel's current for the shunt
+// switch, the shorted current for the cells, on both sides of an edge; averaged: the duty's share of the
+// shorted current, and the cells carry what goes to the bus plus what the shunt takes.
+TEST(SsrFmu, ShuntAndStringCurrentsArePwmPeriodAverages) {
     const double T = 1.0 / 5000.0, t0 = 0.1;
     {
         PlantRun run;
@@ -364,15 +365,19 @@ TEST(SsrFmu, ShuntCurrentIsTheShortedPanelsWhileTheGateIsOn) {
         run.set_choice("angular_response", "cosine");
         d.sun_body = {0.0, 0.0, 1.0};
         run.start();
-        run.step_to(t0 + 0.5 * T);  // D ≈ 0.79: gate on
+        run.step_to(t0 + 0.5 * T);  // D ≈ 0.79: gate on, the S/H tracks the shorted currents
         ASSERT_TRUE(d.gate);
-        EXPECT_EQ(d.i_shunt, d.i_face_sh);
-        EXPECT_GT(d.i_shunt[4], 0.8);
-        for (double i : d.i_panel) EXPECT_EQ(i, 0.0);
-        run.step_to(t0 + 0.9 * T);
+        const auto on_shunt = d.i_shunt;
+        const auto shorted = d.i_face_sh;
+        EXPECT_GT(shorted[4], 0.8);
+        for (int k = 0; k < 6; ++k) {
+            EXPECT_DOUBLE_EQ(d.i_shunt[k], d.duty * shorted[k]) << "face " << k;
+            EXPECT_EQ(d.i_string[k], shorted[k]) << "face " << k;
+        }
+        run.step_to(t0 + 0.9 * T);  // gate off: the same averages
         ASSERT_FALSE(d.gate);
-        for (double i : d.i_shunt) EXPECT_EQ(i, 0.0);
-        EXPECT_GT(d.i_panel[4], 0.8);
+        EXPECT_EQ(d.i_shunt, on_shunt);
+        EXPECT_EQ(d.i_string, shorted);
     }
     {
         PlantRun run;
@@ -383,10 +388,13 @@ TEST(SsrFmu, ShuntCurrentIsTheShortedPanelsWhileTheGateIsOn) {
         run.start();
         run.step_to(t0);
         ASSERT_GT(d.duty, 0.5);
-        for (int k = 0; k < 6; ++k) EXPECT_DOUBLE_EQ(d.i_shunt[k], d.duty * d.i_face_sh[k]) << "face " << k;
-        // The bus takes the rest, and a panel at the bus voltage gives less than shorted.
+        for (int k = 0; k < 6; ++k) {
+            EXPECT_DOUBLE_EQ(d.i_shunt[k], d.duty * d.i_face_sh[k]) << "face " << k;
+            EXPECT_DOUBLE_EQ(d.i_string[k], d.i_panel[k] + d.i_shunt[k]) << "face " << k;
+        }
+        // A panel at the bus voltage gives less than shorted.
         EXPECT_GT(d.i_panel[4], 0.0);
-        EXPECT_LT(d.i_panel[4] + d.i_shunt[4], d.i_face_sh[4]);
+        EXPECT_LT(d.i_string[4], d.i_face_sh[4]);
     }
 }
 

@@ -39,7 +39,7 @@ struct MagnetometerData {
     Vec3 mag_body{};                // T
     bool set_reset_command = true;  // the strap driver's last pulse (true: set, false: reset), source "input"
     // the plant's currents (ssr_plant's outputs of the same names), A: the spacecraft's own field
-    std::array<double, face_count> i_panel{};
+    std::array<double, face_count> i_string{};
     std::array<double, face_count> i_shunt{};
     double i_batt = 0.0;
     double i_load = 0.0;
@@ -63,6 +63,7 @@ struct MagnetometerData {
     double v_rail_low = 0.0;              // V
     double v_rail_high = 5.0;             // V
     // the spacecraft's own field (spacecraft_field.hpp): body axes, metres, A·m²; an assumed 3U layout
+    bool read_spacecraft_field = true;  // false: mag_spacecraft is computed and shown, not read
     Vec3 sensor_position = layout_defaults.sensor_position;
     Vec3 dipole_moment = layout_defaults.dipole_moment;
     Vec3 dipole_position = layout_defaults.dipole_position;
@@ -109,8 +110,8 @@ public:
 
 private:
     void update_noise(double t);
-    // The field at the sensor: the environment's plus the spacecraft's own (sets mag_spacecraft).
-    Vec3 total_field();
+    // The spacecraft's own field at the sensor, body axes (sets mag_spacecraft).
+    Vec3 spacecraft_field();
 
     std::optional<SpacecraftField> spacecraft_;  // derived from the parameters by configure()
 };

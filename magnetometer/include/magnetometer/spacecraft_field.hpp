@@ -40,40 +40,41 @@ struct SpacecraftLayout {
     Vec3 dipole_moment{};  // A·m²
     Vec3 dipole_position{};
     std::array<CurrentLoop, face_count> string_loop{};  // each face's cell string, its whole current
-    CurrentLoop shunt_loop{};                           // the shunt switches' path, the sum of the faces' shunt currents
-    CurrentLoop battery_loop{};                         // the battery's current path, positive charging
-    CurrentLoop load_loop{};                            // the bus to the load and back
+    CurrentLoop shunt_loop{};    // the shunt switches' path, the sum of the faces' shunt currents
+    CurrentLoop battery_loop{};  // the battery's current path, positive charging
+    CurrentLoop load_loop{};     // the bus to the load and back
 };
 
-// The currents of the plant (ssr_plant's outputs of the same names), amperes.
+// The currents of the plant (ssr_plant's outputs of the same names), amperes, averaged over the shunt
+// regulator's PWM period (5 kHz, above the sensor's 1 kHz bandwidth).
 struct PlantCurrents {
-    std::array<double, face_count> panel{};  // each face's current into the bus (i_panel)
-    std::array<double, face_count> shunt{};  // each face's current through its shunt switch (i_shunt)
-    double battery = 0.0;                    // into the battery, positive charging (i_batt)
-    double load = 0.0;                       // through the load (i_load)
+    std::array<double, face_count> string{};  // each face's cell current (i_string)
+    std::array<double, face_count> shunt{};   // each face's current through its shunt switch (i_shunt)
+    double battery = 0.0;                     // into the battery, positive charging (i_batt)
+    double load = 0.0;                        // through the load (i_load)
 };
 
 // An assumed 3U layout (100 × 100 × 340 mm, long axis z, origin at the box's centre; the magnetometer's
 // README has the sketch). Assumed, not from the papers. Residual dipole zero here (the bundled systems set
 // 0.05 A·m²).
-//  - each face's cell string: a back-wired string whose out and return legs leave a 10 mm wide loop down the
-//    middle of the face (long faces 300 × 10 mm, end faces 80 × 10 mm), in the face's plane, normal outward;
+//  - each face's cell string: a back-wired string whose out and return legs leave a 5 mm wide loop down the
+//    middle of the face (long faces 300 × 5 mm, end faces 80 × 5 mm), in the face's plane, normal outward;
 //  - the shunt switches: a 40 × 10 mm power-trace loop on the power board, a plane at z = −80 mm;
 //  - the battery: its current path, a 60 × 20 mm loop in an x–z plane at z = −120 mm, normal +y;
 //  - the load: an untwisted bus pair 10 mm apart from the power board up the stack to z = +40 mm, at x = 30 mm;
-//  - the magnetometer: at (20, 20, 110) mm, in the top unit, 60 mm below the +z face;
+//  - the magnetometer: at (10, 10, 110) mm, near the axis of the top unit, 60 mm below the +z face;
 //  - the dipole (when set): at the box's centre.
 inline constexpr SpacecraftLayout default_layout() {
     SpacecraftLayout l;
-    l.sensor_position = {0.02, 0.02, 0.11};
+    l.sensor_position = {0.01, 0.01, 0.11};
     l.dipole_position = {0.0, 0.0, 0.0};
     l.string_loop = {{
-        {{0.05, 0.0, 0.0}, {0.0, 0.0, 0.30}, {0.0, -0.01, 0.0}},   // +x: 300 mm along z, normal +x
-        {{-0.05, 0.0, 0.0}, {0.0, 0.0, 0.30}, {0.0, 0.01, 0.0}},   // −x
-        {{0.0, 0.05, 0.0}, {0.0, 0.0, 0.30}, {0.01, 0.0, 0.0}},    // +y
-        {{0.0, -0.05, 0.0}, {0.0, 0.0, 0.30}, {-0.01, 0.0, 0.0}},  // −y
-        {{0.0, 0.0, 0.17}, {0.08, 0.0, 0.0}, {0.0, 0.01, 0.0}},    // +z: 80 mm along x, normal +z
-        {{0.0, 0.0, -0.17}, {0.08, 0.0, 0.0}, {0.0, -0.01, 0.0}},  // −z
+        {{0.05, 0.0, 0.0}, {0.0, 0.0, 0.30}, {0.0, -0.005, 0.0}},   // +x: 300 mm along z, normal +x
+        {{-0.05, 0.0, 0.0}, {0.0, 0.0, 0.30}, {0.0, 0.005, 0.0}},   // −x
+        {{0.0, 0.05, 0.0}, {0.0, 0.0, 0.30}, {0.005, 0.0, 0.0}},    // +y
+        {{0.0, -0.05, 0.0}, {0.0, 0.0, 0.30}, {-0.005, 0.0, 0.0}},  // −y
+        {{0.0, 0.0, 0.17}, {0.08, 0.0, 0.0}, {0.0, 0.005, 0.0}},    // +z: 80 mm along x, normal +z
+        {{0.0, 0.0, -0.17}, {0.08, 0.0, 0.0}, {0.0, -0.005, 0.0}},  // −z
     }};
     l.shunt_loop = {{0.0, 0.0, -0.08}, {0.04, 0.0, 0.0}, {0.0, 0.01, 0.0}};
     l.battery_loop = {{0.0, 0.0, -0.12}, {0.0, 0.0, 0.02}, {0.06, 0.0, 0.0}};
