@@ -132,7 +132,9 @@ fmu::ModelInfo MagnetometerBlock::describe() {
         "form per segment): each face's cell string (<code>i_string</code>), the shunt "
         "switches' path (the sum of <code>i_shunt</code>), the battery (<code>i_batt</code>) and the load "
         "(<code>i_load</code>). Positions in metres, body axes, from the box centre; the defaults are an assumed "
-        "3U layout with no dipole. <code>mag_spacecraft</code> shows that field at the sensor.</p>"
+        "3U layout with no dipole. The currents are PWM-period averages, and their field joins after the bandwidth "
+        "filter (it changes on the plant's time scale). <code>mag_spacecraft</code> shows that field at the "
+        "sensor; <code>read_spacecraft_field</code> = false leaves it out of the reading.</p>"
         "<p>Defaults are the datasheet's typical values; <code>bridge_offset</code>, <code>cross_axis</code> and "
         "<code>set_reset_period</code> are assumptions to be replaced by a calibration of the flight unit. "
         "Linearity error, hysteresis and the set/reset pulse's own transient are not modelled.</p>";
