@@ -17,20 +17,11 @@ Standard library only.
 import argparse
 import csv
 import math
+import os
+import sys
 
-
-def angle_deg(qa, qb):
-    dot = abs(sum(a * b for a, b in zip(qa, qb)))
-    na = math.sqrt(sum(a * a for a in qa))
-    nb = math.sqrt(sum(b * b for b in qb))
-    return 2.0 * math.degrees(math.acos(min(1.0, dot / (na * nb))))
-
-
-def pct(values, p):
-    if not values:
-        return float("nan")
-    v = sorted(values)
-    return v[min(len(v) - 1, int(p * (len(v) - 1) + 0.5))]
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "attitude_estimator", "study"))
+from filter_stats import angle_deg, pct  # noqa: E402  (the estimator study's attitude error and percentile)
 
 
 def dipole_field(m, r):

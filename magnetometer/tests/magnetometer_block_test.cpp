@@ -197,15 +197,21 @@ TEST(MagnetometerBlock, NoCurrentsAndNoDipoleReadTheEarthFieldAlone) {
     for (int i = 0; i < 3; ++i) EXPECT_EQ(d.v_out[i], output_voltage(stage, sensed[i], 0.0, 1.0));
 }
 
+// No noise, offset or cross-axis coupling (the field reads 1 V/gauss straight), the sensor on the body's z
+// axis 120 mm above the centre.
+void make_ideal_on_axis(MagnetometerData& d) {
+    d.noise_rms = 0.0;
+    d.bridge_offset = 0.0;
+    d.cross_axis = 0.0;
+    d.sensor_position = {0.0, 0.0, 0.12};
+}
+
 // A residual dipole on the body's z axis, 120 mm below the sensor: B_z = 2 (μ0/4π) m / r³ by hand,
 // 2e-7 · 0.05 / 0.12³ = 5.787 µT, read on top of the Earth's field.
 TEST(MagnetometerBlock, ResidualDipoleAddsItsAxialField) {
     Simulation sim;
     auto& d = sim.data();
-    d.noise_rms = 0.0;
-    d.bridge_offset = 0.0;
-    d.cross_axis = 0.0;
-    d.sensor_position = {0.0, 0.0, 0.12};
+    make_ideal_on_axis(d);
     d.dipole_moment = {0.0, 0.0, 0.05};
     d.dipole_position = {0.0, 0.0, 0.0};
     d.mag_body = {0.1 * gauss, 0.0, 0.2 * gauss};
@@ -230,10 +236,7 @@ TEST(MagnetometerBlock, ResidualDipoleAddsItsAxialField) {
 TEST(MagnetometerBlock, FaceCurrentsGiveTheirStringLoopsField) {
     Simulation sim;
     auto& d = sim.data();
-    d.noise_rms = 0.0;
-    d.bridge_offset = 0.0;
-    d.cross_axis = 0.0;
-    d.sensor_position = {0.0, 0.0, 0.12};
+    make_ideal_on_axis(d);
     d.string_loop_side_a = {};
     d.string_loop_side_b = {};
     d.shunt_loop_side_a = d.battery_loop_side_a = d.load_loop_side_a = {};

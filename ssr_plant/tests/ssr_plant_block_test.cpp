@@ -358,13 +358,16 @@ TEST(SsrFmu, FaceSampleHoldTracksWhileTheGateIsOnAndHoldsWhileItIsOff) {
 // shorted current, and the cells carry what goes to the bus plus what the shunt takes.
 TEST(SsrFmu, ShuntAndStringCurrentsArePwmPeriodAverages) {
     const double T = 1.0 / 5000.0, t0 = 0.1;
+    const auto start_in_sun_on_z = [](PlantRun& run, const char* fidelity) {
+        run.set_choice("fidelity", fidelity);
+        run.set_choice("angular_response", "cosine");
+        run.data().sun_body = {0.0, 0.0, 1.0};
+        run.start();
+    };
     {
         PlantRun run;
         auto& d = run.data();
-        run.set_choice("fidelity", "switching");
-        run.set_choice("angular_response", "cosine");
-        d.sun_body = {0.0, 0.0, 1.0};
-        run.start();
+        start_in_sun_on_z(run, "switching");
         run.step_to(t0 + 0.5 * T);  // D ≈ 0.79: gate on, the S/H tracks the shorted currents
         ASSERT_TRUE(d.gate);
         const auto on_shunt = d.i_shunt;
@@ -382,10 +385,7 @@ TEST(SsrFmu, ShuntAndStringCurrentsArePwmPeriodAverages) {
     {
         PlantRun run;
         auto& d = run.data();
-        run.set_choice("fidelity", "averaged");
-        run.set_choice("angular_response", "cosine");
-        d.sun_body = {0.0, 0.0, 1.0};
-        run.start();
+        start_in_sun_on_z(run, "averaged");
         run.step_to(t0);
         ASSERT_GT(d.duty, 0.5);
         for (int k = 0; k < 6; ++k) {
