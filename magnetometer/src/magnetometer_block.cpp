@@ -1,6 +1,8 @@
 #include "magnetometer/magnetometer_block.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 #include "fmu/errors.hpp"
 #include "fmu/instant_clock.hpp"
@@ -14,6 +16,14 @@ void MagnetometerBlock::declare(fmu::Table<MagnetometerData>& t) {
     t.input("set_reset_command", &D::set_reset_command, "",
             "Last set/reset strap pulse commanded by the on-board computer: true = set, false = reset "
             "(set_reset_source = input; a change is a pulse)");
+    t.input("i_string", &D::i_string, "A",
+            "Each face's cell current, PWM-period average (ssr_plant i_string; +x, -x, +y, -y, +z, -z): its string "
+            "loop");
+    t.input("i_shunt", &D::i_shunt, "A",
+            "Each face's shunt-switch current, PWM-period average (ssr_plant i_shunt): their sum runs around the "
+            "shunt loop");
+    t.input("i_batt", &D::i_batt, "A", "Battery current, positive charging (ssr_plant i_batt): the battery loop");
+    t.input("i_load", &D::i_load, "A", "Load current (ssr_plant i_load): the load loop");
 
     t.parameter("sensitivity", &D::sensitivity, "V/T", "Sensitivity at 25 degC (datasheet: 1 V/gauss = 1e4 V/T)")
         .min(1e-3);
@@ -52,6 +62,32 @@ void MagnetometerBlock::declare(fmu::Table<MagnetometerData>& t) {
         .range(-0.01, 0.01);
     t.parameter("v_rail_low", &D::v_rail_low, "V", "Lower saturation rail of the outputs");
     t.parameter("v_rail_high", &D::v_rail_high, "V", "Upper saturation rail of the outputs (5 V supply)");
+    // The spacecraft's own field (spacecraft_field.hpp). Defaults: an assumed 3U layout (README).
+    t.parameter("read_spacecraft_field", &D::read_spacecraft_field, "",
+                "The sensor reads the spacecraft's own field (mag_spacecraft) on top of mag_body; false: a sensor "
+                "calibrated against it (mag_spacecraft is still computed and output)");
+    t.parameter("sensor_position", &D::sensor_position, "m", "Position of the sensor, body axes (from the box centre)");
+    t.parameter("dipole_moment", &D::dipole_moment, "A.m2", "Residual magnetic dipole of the spacecraft, body axes")
+        .range(-100.0, 100.0);
+    t.parameter("dipole_position", &D::dipole_position, "m", "Position of the residual dipole, body axes");
+    t.parameter("string_loop_center", &D::string_loop_center, "m",
+                "Centre of each face's cell-string loop, 3 elements per face (+x, -x, +y, -y, +z, -z)");
+    t.parameter("string_loop_side_a", &D::string_loop_side_a, "m",
+                "First side of each face's string loop, 3 elements per face: the current runs along side_a, then "
+                "side_b; side_a x side_b is the loop's normal times its area (zero sides: no loop)");
+    t.parameter("string_loop_side_b", &D::string_loop_side_b, "m",
+                "Second side of each face's string loop, 3 elements per face");
+    t.parameter("shunt_loop_center", &D::shunt_loop_center, "m",
+                "Centre of the shunt switches' current loop (carries the sum of i_shunt)");
+    t.parameter("shunt_loop_side_a", &D::shunt_loop_side_a, "m", "First side of the shunt loop");
+    t.parameter("shunt_loop_side_b", &D::shunt_loop_side_b, "m", "Second side of the shunt loop");
+    t.parameter("battery_loop_center", &D::battery_loop_center, "m",
+                "Centre of the battery's current loop (carries i_batt)");
+    t.parameter("battery_loop_side_a", &D::battery_loop_side_a, "m", "First side of the battery loop");
+    t.parameter("battery_loop_side_b", &D::battery_loop_side_b, "m", "Second side of the battery loop");
+    t.parameter("load_loop_center", &D::load_loop_center, "m", "Centre of the load's current loop (carries i_load)");
+    t.parameter("load_loop_side_a", &D::load_loop_side_a, "m", "First side of the load loop");
+    t.parameter("load_loop_side_b", &D::load_loop_side_b, "m", "Second side of the load loop");
 
     t.state("b_filt", &D::b_filt, &D::der_b_filt, "T", "Field after the sensor's bandwidth filter, sensor axes")
         .nominal(1e-4)
@@ -61,7 +97,11 @@ void MagnetometerBlock::declare(fmu::Table<MagnetometerData>& t) {
 
     t.output("v_out", &D::v_out, "V", "Output voltages X, Y, Z (0-5 V, v_ref at zero field)")
         .depends_elementwise({"b_filt"})
-        .depends_on({"set_reset_command"});
+        .depends_on({"set_reset_command", "i_string", "i_shunt", "i_batt", "i_load"});
+    t.output("mag_spacecraft", &D::mag_spacecraft, "T",
+             "The spacecraft's own field at the sensor, body axes: residual dipole and the plant's currents (read "
+             "by the sensor on top of mag_body)")
+        .depends_on({"i_string", "i_shunt", "i_batt", "i_load"});
     t.output("v_ref", &D::v_ref, "V", "Zero-field reference voltage (+2.5 V pin)").depends_on({});
     t.output("set_polarity", &D::set_polarity, "", "True after a set pulse, false after a reset pulse")
         .depends_on({"set_reset_command"});
@@ -86,11 +126,52 @@ fmu::ModelInfo MagnetometerBlock::describe() {
         "<code>set_reset_period</code>), or not at all (none), plus seeded Gaussian noise held for "
         "<code>noise_sample_period</code> (a counter-based generator keyed by the seed, the hold interval "
         "and the axis, so the noise needs no time events and an FMU state reproduces it), and clamped to the rails.</p>"
+        "<p>The sensor reads the spacecraft's own field on top of <code>mag_body</code>: a residual dipole "
+        "(<code>dipole_moment</code> at <code>dipole_position</code>, the exact point-dipole field) and the "
+        "currents of the power system, each run around a rectangular loop of straight wires (Biot-Savart, closed "
+        "form per segment): each face's cell string (<code>i_string</code>), the shunt "
+        "switches' path (the sum of <code>i_shunt</code>), the battery (<code>i_batt</code>) and the load "
+        "(<code>i_load</code>). Positions in metres, body axes, from the box centre; the defaults are an assumed "
+        "3U layout with no dipole. The currents are PWM-period averages, and their field joins after the bandwidth "
+        "filter (it changes on the plant's time scale). <code>mag_spacecraft</code> shows that field at the "
+        "sensor; <code>read_spacecraft_field</code> = false leaves it out of the reading.</p>"
         "<p>Defaults are the datasheet's typical values; <code>bridge_offset</code>, <code>cross_axis</code> and "
         "<code>set_reset_period</code> are assumptions to be replaced by a calibration of the flight unit. "
         "Linearity error, hysteresis and the set/reset pulse's own transient are not modelled.</p>";
     info.default_experiment = {.start_time = 0.0, .stop_time = 5.0, .tolerance = 1e-6, .step_size = 1e-3};
     return info;
+}
+
+void MagnetometerBlock::configure() {
+    const auto& d = data();
+    SpacecraftLayout l;
+    l.sensor_position = d.sensor_position;
+    l.dipole_moment = d.dipole_moment;
+    l.dipole_position = d.dipole_position;
+    for (std::size_t k = 0; k < face_count; ++k) {
+        for (std::size_t i = 0; i < 3; ++i) {
+            l.string_loop[k].center[i] = d.string_loop_center[3 * k + i];
+            l.string_loop[k].side_a[i] = d.string_loop_side_a[3 * k + i];
+            l.string_loop[k].side_b[i] = d.string_loop_side_b[3 * k + i];
+        }
+    }
+    l.shunt_loop = {d.shunt_loop_center, d.shunt_loop_side_a, d.shunt_loop_side_b};
+    l.battery_loop = {d.battery_loop_center, d.battery_loop_side_a, d.battery_loop_side_b};
+    l.load_loop = {d.load_loop_center, d.load_loop_side_a, d.load_loop_side_b};
+    spacecraft_.reset();
+    try {
+        spacecraft_.emplace(l);
+    } catch (const std::invalid_argument& e) {
+        throw fmu::Error(std::string("magnetometer: ") + e.what());
+    }
+}
+
+Vec3 MagnetometerBlock::spacecraft_field() {
+    auto& d = data();
+    if (!spacecraft_) throw fmu::Error("magnetometer: used before configure()");  // the runtime configures first
+    d.mag_spacecraft =
+        spacecraft_->at_sensor({.string = d.i_string, .shunt = d.i_shunt, .battery = d.i_batt, .load = d.i_load});
+    return d.mag_spacecraft;
 }
 
 void MagnetometerBlock::validate() const {
@@ -138,8 +219,13 @@ void MagnetometerBlock::initialize(double t) {
 void MagnetometerBlock::evaluate(double t) {
     auto& d = data();
     update_noise(t);
-    const Vec3 sensed = multiply(sensor_matrix(d.cross_axis, d.misalignment), d.mag_body);
-    d.der_b_filt = filter_derivative(sensed, d.b_filt, d.bandwidth);
+    const Mat3 m = sensor_matrix(d.cross_axis, d.misalignment);
+    d.der_b_filt = filter_derivative(multiply(m, d.mag_body), d.b_filt, d.bandwidth);
+    // The spacecraft's own field joins after the bandwidth filter, as the noise does: the plant's currents
+    // reach the sensor as a Co-Simulation component's steps (1 ms in the seed systems), and through the
+    // filter every step would be an input discontinuity, an integrator restart (README: what it costs).
+    const Vec3 field_of_spacecraft = spacecraft_field();
+    const Vec3 own = d.read_spacecraft_field ? multiply(m, field_of_spacecraft) : Vec3{};
     const OutputStage stage{.sensitivity = sensitivity_at(d.sensitivity, d.sensitivity_tempco, d.temperature),
                             .v_null = d.v_null,
                             .offset = d.bridge_offset,
@@ -147,7 +233,7 @@ void MagnetometerBlock::evaluate(double t) {
                             .v_high = d.v_rail_high};
     if (d.set_reset_source == SetResetSource::input) d.set_polarity = d.set_reset_command;
     const double polarity = d.set_polarity ? 1.0 : -1.0;
-    for (int i = 0; i < 3; ++i) d.v_out[i] = output_voltage(stage, d.b_filt[i], d.noise[i], polarity);
+    for (int i = 0; i < 3; ++i) d.v_out[i] = output_voltage(stage, d.b_filt[i] + own[i], d.noise[i], polarity);
     d.v_ref = std::clamp(d.v_null, d.v_rail_low, d.v_rail_high);
 }
 

@@ -175,8 +175,98 @@ TEST(MagnetometerBlock, TableDeclaresEveryFieldOnceWithUnitsAndDescriptions) {
             EXPECT_FALSE(v.unit.empty()) << v.name;
         }
     }
-    EXPECT_EQ(table.by_name("v_out[2]").dependencies->size(), 2u);        // b_filt[2] and set_reset_command
     EXPECT_EQ(table.by_name("der(b_filt[1])").dependencies->size(), 4u);  // b_filt[1] and mag_body[1..3]
+    // b_filt[3], set_reset_command and the 14 currents (i_string, i_shunt, i_batt, i_load)
+    EXPECT_EQ(table.by_name("v_out[3]").dependencies->size(), 16u);
+    EXPECT_EQ(table.by_name("mag_spacecraft[3]").dependencies->size(), 14u);
+}
+
+// With no currents and no dipole (the defaults) the sensor reads mag_body alone, bit for bit: the filter
+// starts at M · mag_body and the outputs are the HMC2003 chain's of it.
+TEST(MagnetometerBlock, NoCurrentsAndNoDipoleReadTheEarthFieldAlone) {
+    Simulation sim;
+    auto& d = sim.data();
+    d.noise_rms = 0.0;
+    d.mag_body = {0.21 * gauss, -0.13 * gauss, 0.37 * gauss};
+    sim.start();
+    sim.advance_to(0.05);
+    const Vec3 sensed = multiply(sensor_matrix(d.cross_axis, d.misalignment), d.mag_body);
+    EXPECT_EQ(d.b_filt, sensed);
+    EXPECT_EQ(d.mag_spacecraft, (Vec3{0.0, 0.0, 0.0}));
+    const OutputStage stage{.sensitivity = d.sensitivity, .v_null = 2.5, .offset = 0.02, .v_low = 0.0, .v_high = 5.0};
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(d.v_out[i], output_voltage(stage, sensed[i], 0.0, 1.0));
+}
+
+// No noise, offset or cross-axis coupling (the field reads 1 V/gauss straight), the sensor on the body's z
+// axis 120 mm above the centre.
+void make_ideal_on_axis(MagnetometerData& d) {
+    d.noise_rms = 0.0;
+    d.bridge_offset = 0.0;
+    d.cross_axis = 0.0;
+    d.sensor_position = {0.0, 0.0, 0.12};
+}
+
+// A residual dipole on the body's z axis, 120 mm below the sensor: B_z = 2 (μ0/4π) m / r³ by hand,
+// 2e-7 · 0.05 / 0.12³ = 5.787 µT, read on top of the Earth's field.
+TEST(MagnetometerBlock, ResidualDipoleAddsItsAxialField) {
+    Simulation sim;
+    auto& d = sim.data();
+    make_ideal_on_axis(d);
+    d.dipole_moment = {0.0, 0.0, 0.05};
+    d.dipole_position = {0.0, 0.0, 0.0};
+    d.mag_body = {0.1 * gauss, 0.0, 0.2 * gauss};
+    sim.start();
+    sim.advance_to(0.01);
+    const double b_dipole = 2e-7 * 0.05 / (0.12 * 0.12 * 0.12);
+    EXPECT_NEAR(d.mag_spacecraft[2], b_dipole, 1e-15);
+    EXPECT_NEAR(d.mag_spacecraft[0], 0.0, 1e-20);
+    EXPECT_NEAR(d.v_out[2], 2.5 + 0.2 + 1e4 * b_dipole, 1e-9);
+    EXPECT_NEAR(d.v_out[0], 2.5 + 0.1, 1e-9);
+    // A sensor calibrated against it: the field is still shown, no longer read.
+    d.read_spacecraft_field = false;
+    sim.runner.mark_changed();
+    sim.advance_to(0.02);
+    EXPECT_NEAR(d.mag_spacecraft[2], b_dipole, 1e-15);
+    EXPECT_NEAR(d.v_out[2], 2.5 + 0.2, 1e-9);
+}
+
+// The +z string made a 60 mm square centred on the sensor's axis 50 mm above it, every other loop removed
+// (zero sides): the face's cell current gives the textbook on-axis field
+// μ0 I s² / (2π (z² + s²/4) √(z² + s²/2)), along +z (the loop's normal); it follows the inputs.
+TEST(MagnetometerBlock, FaceCurrentsGiveTheirStringLoopsField) {
+    Simulation sim;
+    auto& d = sim.data();
+    make_ideal_on_axis(d);
+    d.string_loop_side_a = {};
+    d.string_loop_side_b = {};
+    d.shunt_loop_side_a = d.battery_loop_side_a = d.load_loop_side_a = {};
+    const double s = 0.06, z = 0.05;
+    d.string_loop_center[12] = 0.0;
+    d.string_loop_center[13] = 0.0;
+    d.string_loop_center[14] = 0.12 + z;
+    d.string_loop_side_a[12] = s;  // +z face: side_a along x, side_b along y, normal +z
+    d.string_loop_side_b[13] = s;
+    sim.start();
+    EXPECT_EQ(d.mag_spacecraft, (Vec3{0.0, 0.0, 0.0}));
+    d.i_string[4] = 0.5;
+    d.i_string[0] = 0.3;  // another face's string and the shunt path: their loops are removed
+    d.i_shunt[0] = 0.4;
+    d.i_batt = 0.5;
+    d.i_load = 0.2;
+    sim.runner.mark_changed();
+    sim.advance_to(0.01);
+    const double mu0 = 4e-7 * std::numbers::pi;
+    const double expected =
+        mu0 * 0.5 * s * s / (2.0 * std::numbers::pi * (z * z + s * s / 4.0) * std::sqrt(z * z + s * s / 2.0));
+    EXPECT_NEAR(d.mag_spacecraft[2], expected, 1e-12 * expected);
+    EXPECT_NEAR(std::hypot(d.mag_spacecraft[0], d.mag_spacecraft[1]), 0.0, 1e-12 * expected);
+    EXPECT_NEAR(d.v_out[2], 2.5 + 1e4 * expected, 1e-8);
+}
+
+TEST(MagnetometerBlock, SensorOnAWireIsRefusedAtInitialization) {
+    Simulation sim;
+    sim.data().sensor_position = {0.05, 0.0025, 0.1};  // on the +x string loop's long wire (y = +2.5 mm)
+    EXPECT_THROW(sim.start(), fmu::Error);
 }
 
 }  // namespace

@@ -122,6 +122,15 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
         .depends_on({"sun_body", "irradiance", "albedo_face", "panel_temperature"});
     t.output("i_panel", &D::i_panel, "A", "Each panel's current delivered to the bus (averaged over the PWM state)")
         .depends_on({"sun_body", "irradiance", "albedo_face", "panel_temperature", "v_cap"});
+    t.output("i_shunt", &D::i_shunt, "A",
+             "Each panel's current through its shunt switch averaged over the PWM period, D times the shorted "
+             "panel's current (switching: D sampled at the period's start); for the magnetometer's field")
+        .depends_on({"sun_body", "irradiance", "albedo_face", "panel_temperature", "v_cap"});
+    t.output("i_string", &D::i_string, "A",
+             "Each panel's cell current averaged over the PWM period: averaged fidelity i_panel + i_shunt; switching "
+             "fidelity the shorted panel's current (the bus-side current is not solved while the gate is on; the "
+             "panel works on the flat part of its curve); for the magnetometer's field")
+        .depends_on({"sun_body", "irradiance", "albedo_face", "panel_temperature", "v_cap"});
     t.output("v_bus", &D::v_bus, "V", "Bus voltage").depends_on({"v_cap"});
     t.output("v_batt", &D::v_batt, "V", "Battery terminal voltage").depends_on({"v_cap", "soc_state"});
     t.output("i_batt", &D::i_batt, "A", "Battery current, positive charging").depends_on({"v_cap", "soc_state"});
@@ -305,6 +314,8 @@ void SsrPlantBlock::evaluate(double t) {
     d.i_face_sh = y.i_face_sh;
     d.i_sc = y.i_sc;
     d.i_panel = y.i_panel;
+    d.i_shunt = y.i_shunt;
+    d.i_string = y.i_string;
     d.v_bus = y.v_bus;
     d.v_batt = y.v_batt;
     d.i_batt = y.i_batt;

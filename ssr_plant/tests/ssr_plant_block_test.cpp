@@ -350,6 +350,52 @@ TEST(SsrFmu, FaceSampleHoldTracksWhileTheGateIsOnAndHoldsWhileItIsOff) {
     }
 }
 
+// The currents a sensor slower than the PWM sees (the magnetometer's field of the currents): period
+// averages that do not jump at the PWM edges. Switching: D times the shorted panel's current for the shunt
+// switch, the shorted current for the cells, on both sides of an edge; averaged: the duty's share of the
+// shorted current, and the cells carry what goes to the bus plus what the shunt takes.
+TEST(SsrFmu, ShuntAndStringCurrentsArePwmPeriodAverages) {
+    const double T = 1.0 / 5000.0, t0 = 0.1;
+    const auto start_in_sun_on_z = [](PlantRun& run, const char* fidelity) {
+        run.set_choice("fidelity", fidelity);
+        run.set_choice("angular_response", "cosine");
+        run.data().sun_body = {0.0, 0.0, 1.0};
+        run.start();
+    };
+    {
+        PlantRun run;
+        auto& d = run.data();
+        start_in_sun_on_z(run, "switching");
+        run.step_to(t0 + 0.5 * T);  // D ≈ 0.79: gate on, the S/H tracks the shorted currents
+        ASSERT_TRUE(d.gate);
+        const auto on_shunt = d.i_shunt;
+        const auto shorted = d.i_face_sh;
+        EXPECT_GT(shorted[4], 0.8);
+        for (int k = 0; k < 6; ++k) {
+            EXPECT_DOUBLE_EQ(d.i_shunt[k], d.duty * shorted[k]) << "face " << k;
+            EXPECT_EQ(d.i_string[k], shorted[k]) << "face " << k;
+        }
+        run.step_to(t0 + 0.9 * T);  // gate off: the same averages
+        ASSERT_FALSE(d.gate);
+        EXPECT_EQ(d.i_shunt, on_shunt);
+        EXPECT_EQ(d.i_string, shorted);
+    }
+    {
+        PlantRun run;
+        auto& d = run.data();
+        start_in_sun_on_z(run, "averaged");
+        run.step_to(t0);
+        ASSERT_GT(d.duty, 0.5);
+        for (int k = 0; k < 6; ++k) {
+            EXPECT_DOUBLE_EQ(d.i_shunt[k], d.duty * d.i_face_sh[k]) << "face " << k;
+            EXPECT_DOUBLE_EQ(d.i_string[k], d.i_panel[k] + d.i_shunt[k]) << "face " << k;
+        }
+        // A panel at the bus voltage gives less than shorted.
+        EXPECT_GT(d.i_panel[4], 0.0);
+        EXPECT_LT(d.i_string[4], d.i_face_sh[4]);
+    }
+}
+
 // Ripple, by hand: over the on-time D T the load alone drains the 1500 µF capacitor, over the off-time the
 // panels refill it by as much: peak-to-peak i_load D T / C. Measured on one fixed sun direction, sampled
 // every 2 µs over 5 periods after the loop has settled.

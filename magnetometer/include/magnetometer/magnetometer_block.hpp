@@ -5,16 +5,29 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <optional>
 
 #include "fmu/block.hpp"
 #include "fmu/fixed_string.hpp"
 #include "magnetometer/held_noise.hpp"
 #include "magnetometer/hmc2003.hpp"
+#include "magnetometer/spacecraft_field.hpp"
 
 namespace magnetometer {
 
 // Marks `noise` as not yet drawn; noise_index() never returns it (its range is ±max_noise_index).
 inline constexpr std::int64_t no_noise_index = std::numeric_limits<std::int64_t>::min();
+
+inline constexpr SpacecraftLayout layout_defaults = default_layout();
+
+// One 3-vector of each face's string loop, face after face (+x, −x, +y, −y, +z, −z): the flat parameter
+// arrays string_loop_center, string_loop_side_a and string_loop_side_b.
+constexpr std::array<double, 3 * face_count> flat_strings(Vec3 CurrentLoop::*member) {
+    std::array<double, 3 * face_count> out{};
+    for (std::size_t k = 0; k < face_count; ++k)
+        for (std::size_t i = 0; i < 3; ++i) out[3 * k + i] = (layout_defaults.string_loop[k].*member)[i];
+    return out;
+}
 
 // Every variable of the block. Defaults are the HMC2003 datasheet's typical values where it gives
 // one (Honeywell, "HMC2003 Three-axis magnetic sensor hybrid"); the others are marked as assumptions.
@@ -25,6 +38,11 @@ struct MagnetometerData {
     // inputs
     Vec3 mag_body{};                // T
     bool set_reset_command = true;  // the strap driver's last pulse (true: set, false: reset), source "input"
+    // the plant's currents (ssr_plant's outputs of the same names), A: the spacecraft's own field
+    std::array<double, face_count> i_string{};
+    std::array<double, face_count> i_shunt{};
+    double i_batt = 0.0;
+    double i_load = 0.0;
     // parameters
     double sensitivity = 1.0 / tesla_per_gauss;  // V/T: datasheet 1 V/gauss
     double v_null = 2.5;                         // V: zero-field output and the reference pin
@@ -44,11 +62,29 @@ struct MagnetometerData {
     double sensitivity_tempco = -600e-6;  // 1/K: datasheet −600 ppm/°C
     double v_rail_low = 0.0;              // V
     double v_rail_high = 5.0;             // V
+    // the spacecraft's own field (spacecraft_field.hpp): body axes, metres, A·m²; an assumed 3U layout
+    bool read_spacecraft_field = true;  // false: mag_spacecraft is computed and shown, not read
+    Vec3 sensor_position = layout_defaults.sensor_position;
+    Vec3 dipole_moment = layout_defaults.dipole_moment;
+    Vec3 dipole_position = layout_defaults.dipole_position;
+    std::array<double, 3 * face_count> string_loop_center = flat_strings(&CurrentLoop::center);
+    std::array<double, 3 * face_count> string_loop_side_a = flat_strings(&CurrentLoop::side_a);
+    std::array<double, 3 * face_count> string_loop_side_b = flat_strings(&CurrentLoop::side_b);
+    Vec3 shunt_loop_center = layout_defaults.shunt_loop.center;
+    Vec3 shunt_loop_side_a = layout_defaults.shunt_loop.side_a;
+    Vec3 shunt_loop_side_b = layout_defaults.shunt_loop.side_b;
+    Vec3 battery_loop_center = layout_defaults.battery_loop.center;
+    Vec3 battery_loop_side_a = layout_defaults.battery_loop.side_a;
+    Vec3 battery_loop_side_b = layout_defaults.battery_loop.side_b;
+    Vec3 load_loop_center = layout_defaults.load_loop.center;
+    Vec3 load_loop_side_a = layout_defaults.load_loop.side_a;
+    Vec3 load_loop_side_b = layout_defaults.load_loop.side_b;
     // continuous states and derivatives
     Vec3 b_filt{};
     Vec3 der_b_filt{};
     // outputs
     Vec3 v_out{};
+    Vec3 mag_spacecraft{};  // T, body axes: the dipole's and the currents' field at the sensor
     double v_ref = 2.5;
     bool set_polarity = true;  // true after a set pulse, false after a reset pulse
     // discrete state (locals)
@@ -69,9 +105,15 @@ public:
     double next_time_event() const override;
     void validate() const override;
     void check_state() const override;
+    // Builds the spacecraft's field per ampere at the sensor from the layout parameters.
+    void configure() override;
 
 private:
     void update_noise(double t);
+    // The spacecraft's own field at the sensor, body axes (sets mag_spacecraft).
+    Vec3 spacecraft_field();
+
+    std::optional<SpacecraftField> spacecraft_;  // derived from the parameters by configure()
 };
 
 }  // namespace magnetometer

@@ -196,6 +196,11 @@ Evaluation evaluation(const Model& m, const Illumination& l, const DiscreteState
     Outputs& y = e.outputs;
     y.i_sc = l.i_sc;
     for (std::size_t k = 0; k < face_count; ++k) y.i_panel[k] = (1.0 - b.sigma) * b.i_pv[k];
+    const bool averaged = p.fidelity == Fidelity::averaged;
+    for (std::size_t k = 0; k < face_count; ++k) {
+        y.i_shunt[k] = (averaged ? b.sigma : d.duty) * l.i_shunt[k];
+        y.i_string[k] = averaged ? y.i_panel[k] + y.i_shunt[k] : l.i_shunt[k];
+    }
     // Seed 001 §3: the S/H samples while the shunts are on and holds while they are off.
     // Averaged: no S/H, the live currents. The per-axis value is the difference of the per-face ones in
     // both branches, computed the same way, so i_sh[k] == i_face_sh[2k] − i_face_sh[2k+1] bit for bit.

@@ -69,6 +69,8 @@ struct SsrPlantData {
     std::array<double, 6> i_face_sh{};
     std::array<double, 6> i_sc{};
     std::array<double, 6> i_panel{};
+    std::array<double, 6> i_shunt{};
+    std::array<double, 6> i_string{};
     double v_bus = 15.0;
     double v_batt = 0.0;
     double i_batt = 0.0;

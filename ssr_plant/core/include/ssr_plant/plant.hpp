@@ -84,13 +84,21 @@ struct Outputs {
     std::array<double, face_count> i_sc = {};       // A, each panel's true short-circuit current (V = 0)
     std::array<double, face_count> i_panel = {};    // A, each panel's current into the bus (period
                                                     // average in averaged mode)
-    double v_bus = 0.0;                             // V
-    double v_batt = 0.0;                            // V, battery terminal voltage
-    double i_batt = 0.0;                            // A, into the battery (+ charging)
-    double soc = 0.0;                               // 1
-    double duty = 0.0;                              // 1, shunt duty cycle
-    bool gate = false;                              // shunt MOSFETs on
-    double i_load = 0.0;                            // A, through the load resistor
+    // What a sensor slower than the PWM sees (the magnetometer's field of the currents), period averages in
+    // both fidelities, so that they do not jump at the PWM edges:
+    std::array<double, face_count> i_shunt = {};   // A, each panel's current through its shunt switch, D · I_short
+                                                   // (switching: D sampled at the period's start)
+    std::array<double, face_count> i_string = {};  // A, the current of each panel's cells: averaged fidelity
+                                                   // (1 − D) I_bus + D I_short = i_panel + i_shunt; switching,
+                                                   // whose bus-side current is not solved while the gate is on,
+                                                   // I_short (the panel on the flat part of its curve)
+    double v_bus = 0.0;                            // V
+    double v_batt = 0.0;                           // V, battery terminal voltage
+    double i_batt = 0.0;                           // A, into the battery (+ charging)
+    double soc = 0.0;                              // 1
+    double duty = 0.0;                             // 1, shunt duty cycle
+    bool gate = false;                             // shunt MOSFETs on
+    double i_load = 0.0;                           // A, through the load resistor
 };
 
 // Parameters plus what is derived from them once (the fitted panel circuit). Trivially copyable.
