@@ -2,14 +2,13 @@
 
 #include <cmath>
 
+#include "environment/almanac_formulas.hpp"
 #include "environment/constants.hpp"
 #include "environment/time_scales.hpp"
 
 namespace environment {
 
 namespace {
-constexpr double kArcsecToRad = kPi / (180.0 * 3600.0);
-
 // Passive (frame) rotations about z and y by angle a.
 Eigen::Matrix3d r3(double a) {
     Eigen::Matrix3d m;
@@ -24,12 +23,10 @@ Eigen::Matrix3d r2(double a) {
 }  // namespace
 
 Eigen::Vector3d precession_angles(double jd) {
-    // Lieske et al. (1977), IAU 1976 precession from J2000 (Vallado eq. 3-87), arcseconds, T in centuries.
-    const double t = (jd - kJulianDateJ2000) / 36525.0;
-    const double zeta = 2306.2181 * t + 0.30188 * t * t + 0.017998 * t * t * t;
-    const double theta = 2004.3109 * t - 0.42665 * t * t - 0.041833 * t * t * t;
-    const double z = 2306.2181 * t + 1.09468 * t * t + 0.018203 * t * t * t;
-    return Eigen::Vector3d(zeta, z, theta) * kArcsecToRad;
+    // Lieske et al. (1977), IAU 1976 precession from J2000 (Vallado eq. 3-87), shared with the on-board
+    // computer (almanac_formulas.hpp).
+    const auto a = formulas::precession_angles((jd - kJulianDateJ2000) / 36525.0);
+    return Eigen::Vector3d(a[0], a[1], a[2]);
 }
 
 Eigen::Matrix3d precession_matrix(double jd) {
