@@ -21,6 +21,8 @@ packages=(
   zip unzip
   clang-format        # one format for every C++ file (scripts/format.sh --check in scripts/test.sh)
   clang libclang-rt-14-dev   # libFuzzer with ASan and UBSan (scripts/fuzz.sh, fuzz/)
+  python3-sgp4        # orbit/ tests: the independent SGP4 (Brandon Rhodes' package) run at test time
+  liberfa-dev         # orbit/ tests: ERFA's IAU 1976/1980 precession and nutation, the independent TEME -> J2000
 )
 
 if [ "${1:-}" = "--firmware" ]; then

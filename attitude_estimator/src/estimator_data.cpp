@@ -92,6 +92,19 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
     m.reset_after = d.filter_reset_after;
     // The rate comes from two single-frame attitudes at most a few samples apart.
     m.max_init_gap = static_cast<T>(3.5 * d.sample_period);
+
+    s.reference_source = d.reference_source;
+    if (d.reference_source == ReferenceSource::onboard) {
+        const CalendarInstant epoch{.year = d.clock_epoch_year,
+                                    .month = d.clock_epoch_month,
+                                    .day = d.clock_epoch_day,
+                                    .hour = d.clock_epoch_hour,
+                                    .minute = d.clock_epoch_minute,
+                                    .second = d.clock_epoch_second};
+        // The status was checked when the elements were parsed (the block's configure()).
+        (void)make_reference_config(s.references, epoch, d.tle_elements, d.tle_epoch_julian_date, d.field_degree,
+                                    d.reference_period);
+    }
     return s;
 }
 
@@ -128,6 +141,8 @@ void store_outputs(EstimatorData& d, const OnboardOutputs<T>& out) {
     d.rate_mean = out.rate_mean;
     d.rate_window_time = out.rate_window_time;
     d.rate_valid = out.rate_valid;
+    d.ref_sun = from<3>(out.references.sun);
+    d.ref_mag = from<3>(out.references.field);
     if (d.filter == FilterKind::mekf) {
         d.q_filt = {out.q_filt.x, out.q_filt.y, out.q_filt.z, out.q_filt.w};
         d.omega_filt = from<3>(out.omega_filt);

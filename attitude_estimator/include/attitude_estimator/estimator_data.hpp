@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "attitude_estimator/onboard_computer.hpp"
+#include "fmu/fixed_string.hpp"  // a plain fixed-capacity string (the TLE lines; not sent to the firmware)
 
 namespace attitude_estimator {
 
@@ -91,6 +92,23 @@ struct EstimatorData {
     // magnetometer whose set_reset_command is not wired to mag_set_reset (its readings never flip).
     std::int32_t mag_set_reset_samples = 0;
     std::int32_t mag_offset_window = 20;
+    // The reference vectors (onboard_references.hpp): the inputs sun_ref, mag_ref, sun_distance, or the
+    // computer's own models from its element set at its clock.
+    ReferenceSource reference_source = ReferenceSource::inputs;
+    fmu::FixedString<80> tle_line1{};  // the computer's own two-line element set (uplinked)
+    fmu::FixedString<80> tle_line2{};
+    std::int32_t field_degree = 8;         // IGRF-14 truncated to this degree on board (1 = dipole … 13)
+    std::int32_t clock_epoch_year = 2026;  // the computer's clock: UTC at t = 0
+    std::int32_t clock_epoch_month = 3;
+    std::int32_t clock_epoch_day = 20;
+    std::int32_t clock_epoch_hour = 0;
+    std::int32_t clock_epoch_minute = 0;
+    double clock_epoch_second = 0.0;
+    double reference_period = 10.0;  // s between two evaluations of the on-board orbit, sun and field
+    // The element set's mean elements and epoch (Julian date, UTC), parsed from tle_line1/2 by the orbit
+    // library in the block's configure() (not declared: the block never parses text, the firmware has none).
+    orbit::MeanElements<double> tle_elements{};
+    double tle_epoch_julian_date = 0.0;
 
     // outputs (discrete: set at sample instants, held in between). Before the first sample: identity.
     std::array<double, 4> q_est{0.0, 0.0, 0.0, 1.0};                           // scalar-last [x, y, z, w], w >= 0
@@ -124,6 +142,8 @@ struct EstimatorData {
     std::int32_t filter_resets = 0;  // divergence resets so far
     bool mag_set_reset = true;       // the set/reset pulse commanded last: true set, false reset (to the sensor)
     Vec3d mag_offset{};              // V, the sensor offset estimated from set/reset pairs
+    Vec3d ref_sun{};                 // 1, the sun reference the last sample used (J2000)
+    Vec3d ref_mag{};                 // T, the field reference the last sample used (J2000)
 
     // discrete state
     double t_start = 0.0;  // s, the start time: sample k is due at t_start + k·sample_period

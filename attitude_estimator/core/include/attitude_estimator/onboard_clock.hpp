@@ -20,10 +20,10 @@ struct CalendarInstant {
 
 template <class T>
 struct OnboardClock {
-    T midnight_days = T(0);   // days from J2000.0 (JD 2451545.0) to 0 h UTC of the epoch's day (a half-integer)
-    T epoch_seconds = T(0);   // s: UTC seconds of that day at t = 0
-    T gmst_midnight = T(0);   // rad: Greenwich mean sidereal time at 0 h UTC of the epoch's day (UT1 = UTC)
-    T epoch_year = T(2026);   // decimal year at t = 0 (the field model's time argument)
+    T midnight_days = T(0);  // days from J2000.0 (JD 2451545.0) to 0 h UTC of the epoch's day (a half-integer)
+    T epoch_seconds = T(0);  // s: UTC seconds of that day at t = 0
+    T gmst_midnight = T(0);  // rad: Greenwich mean sidereal time at 0 h UTC of the epoch's day (UT1 = UTC)
+    T epoch_year = T(2026);  // decimal year at t = 0 (the field model's time argument)
     double epoch_julian_date = 2451545.0;  // JD (UTC) at t = 0, for set-up computations (double)
 };
 

@@ -1,9 +1,10 @@
 #pragma once
 // The published formulas the truth (environment) and the on-board computer (attitude_estimator/core, also
 // flashed onto the Cortex-M4F firmware) both evaluate: the Astronomical Almanac's low-precision sun, the
-// IAU 1976 precession angles, the IAU 1982 Greenwich mean sidereal time and the Julian day of a calendar
+// IAU 1982 Greenwich mean sidereal time and the Julian day of a calendar
 // date. Header-only, templated on the float type, no heap, no exceptions, no Eigen: one copy of each
-// formula, for double (the environment) and float (the firmware).
+// formula, for double (the environment) and float (the firmware). The IAU 1976 precession both use is
+// orbit/frames.hpp's (mod_from_j2000).
 #include <array>
 #include <cmath>
 
@@ -49,32 +50,6 @@ AlmanacSun<T> sun_almanac_of_date(T days) {
     s.direction = {std::cos(lambda), std::cos(eps) * std::sin(lambda), std::sin(eps) * std::sin(lambda)};
     s.distance_au = T(1.00014) - T(0.01671) * std::cos(g) - T(0.00014) * std::cos(T(2) * g);
     return s;
-}
-
-/// IAU 1976 precession angles zeta, z, theta (rad) from J2000 to the mean equator and equinox of date
-/// (Lieske et al. 1977; Vallado eq. 3-87); `centuries` = (JD - 2451545.0) / 36525.
-template <class T>
-std::array<T, 3> precession_angles(T centuries) {
-    constexpr T arcsec = T(3.14159265358979323846 / (180.0 * 3600.0));
-    const T t = centuries;
-    const T zeta = T(2306.2181) * t + T(0.30188) * t * t + T(0.017998) * t * t * t;
-    const T z = T(2306.2181) * t + T(1.09468) * t * t + T(0.018203) * t * t * t;
-    const T theta = T(2004.3109) * t - T(0.42665) * t * t - T(0.041833) * t * t * t;
-    return {zeta * arcsec, z * arcsec, theta * arcsec};
-}
-
-/// The precession matrix P (row-major) taking J2000 coordinates to mean-of-date ones:
-/// P = R3(-z) R2(theta) R3(-zeta), R_i the passive (frame) rotations.
-template <class T>
-std::array<T, 9> precession_matrix(T centuries) {
-    const auto a = precession_angles(centuries);
-    const T cz = std::cos(a[0]), sz = std::sin(a[0]);
-    const T cZ = std::cos(a[1]), sZ = std::sin(a[1]);
-    const T ct = std::cos(a[2]), st = std::sin(a[2]);
-    // Vallado eq. 3-89 written out.
-    return {cZ * ct * cz - sZ * sz,  -cZ * ct * sz - sZ * cz, -cZ * st,
-            sZ * ct * cz + cZ * sz,  -sZ * ct * sz + cZ * cz, -sZ * st,
-            st * cz,                 -st * sz,                ct};
 }
 
 /// IAU 1982 Greenwich mean sidereal time (Aoki et al. 1982; Vallado eq. 3-47) in seconds of time within

@@ -2,7 +2,8 @@
 // ECI (J2000 mean equator and equinox) <-> Earth-fixed rotation used for the geomagnetic field:
 //   r_ecef = R3(GMST) P(t) r_eci
 // P = IAU 1976 precession from J2000 to the mean equator and equinox of date (Lieske et al. 1977;
-// Vallado eq. 3-88): P = R3(-z) R2(theta) R3(-zeta), with R_i the passive (frame) rotations;
+// Vallado eq. 3-88): P = R3(-z) R2(theta) R3(-zeta), with R_i the passive (frame) rotations, computed by
+// orbit/frames.hpp (which the TEME -> J2000 rotation of the SGP4 orbit shares);
 // GMST = IAU 1982 (time_scales.hpp). Neglected: nutation (< 17.2" in longitude, 9.2" in obliquity) and the
 // equation of the equinoxes (< 1.2 s of time), polar motion (< 0.5"), UT1-UTC (< 0.9 s) and TT-UTC
 // in the precession argument (69 s): together below 0.01 deg of Earth orientation, i.e. < 5 nT of
