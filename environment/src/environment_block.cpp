@@ -10,6 +10,7 @@
 #include "environment/circular_orbit.hpp"
 #include "environment/constants.hpp"
 #include "fmu/errors.hpp"
+#include "orbit/tle.hpp"
 
 namespace environment {
 
@@ -42,6 +43,15 @@ EnvironmentParams environment_params(const EnvironmentData& d) {
     p.spin = SpinParams{
         .phi0 = d.spin_phi0, .theta0 = d.spin_theta0, .phi_dot = d.spin_phi_dot, .theta_dot = d.spin_theta_dot};
     p.rigid_body = RigidBodyParams{.inertia = d.inertia, .q0 = d.q0, .omega0 = d.omega0};
+    p.orbit_model = d.orbit_model;
+    if (d.orbit_model == OrbitModel::tle) {
+        try {
+            p.tle = orbit::parse_tle(d.tle_line1.view(), d.tle_line2.view());
+        } catch (const orbit::TleError& e) {
+            throw fmu::Error(std::string("environment: the element set in tle_line1, tle_line2 is refused: ") +
+                             e.what());
+        }
+    }
     p.orbit = OrbitParams{.altitude = d.orbit_altitude,
                           .inclination = d.orbit_inclination,
                           .raan = d.orbit_raan,
@@ -93,6 +103,14 @@ void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
                 "steps below 1/k")
         .range(0.0, 1e3);
     // Orbit.
+    t.choice("orbit_model", &D::orbit_model, {{"circular", OrbitModel::circular}, {"tle", OrbitModel::tle}},
+             "Truth orbit: circular (Kepler, from orbit_altitude, orbit_inclination, orbit_raan, "
+             "orbit_argument_of_latitude0) or tle (SGP4 from the element set tle_line1, tle_line2, TEME rotated to "
+             "J2000; its epoch may differ from the epoch_* parameters)");
+    t.parameter("tle_line1", &D::tle_line1, "",
+                "orbit_model tle: line 1 of the two-line element set (69 columns, checksum in column 69)");
+    t.parameter("tle_line2", &D::tle_line2, "",
+                "orbit_model tle: line 2 of the two-line element set (near-Earth: period below 225 min)");
     t.parameter("orbit_altitude", &D::orbit_altitude, "m",
                 "Circular orbit: altitude above the equatorial radius 6378.137 km (seed 004: about 570 km)")
         .range(1.0, 1e9);
@@ -168,7 +186,9 @@ void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
                 "Zonal model: reflectivity at the poles (assumed 0.6)")
         .range(0.0, 1.0)
         .tunable();
-    t.calculated_parameter("orbit_period", &D::orbit_period, "s", "Period of the circular orbit, 2 pi sqrt(a^3/mu)");
+    t.calculated_parameter("orbit_period", &D::orbit_period, "s",
+                           "Orbital period: the circular orbit's 2 pi sqrt(a^3/mu), or the element set's mean period "
+                           "at its epoch");
 
     // States: used in rigid_body mode only (derivatives 0 in spin mode).
     auto q = t.state("q", &D::q, &D::der_q, "1",
@@ -195,6 +215,7 @@ void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
         .depends_on({"q"});
     t.output("omega_body", &D::omega_body, "rad/s", "True angular velocity, body axes").depends_elementwise({"omega"});
     t.output("r_eci", &D::r_eci, "m", "Satellite position, ECI (J2000)").depends_on({});
+    t.output("v_eci", &D::v_eci, "m/s", "Satellite velocity, ECI (J2000)").depends_on({});
     t.output("nadir_body", &D::nadir_body, "1", "Unit vector satellite to the Earth's centre, body axes")
         .depends_on({"q"});
     t.output("orbit_radius_ratio", &D::orbit_radius_ratio, "1", "Orbit radius over the Earth's radius, r / R_E")
@@ -215,7 +236,8 @@ fmu::ModelInfo EnvironmentBlock::describe() {
     info.model_identifier = "environment";
     info.model_name = "environment";
     info.description =
-        "Truth for the sensors: attitude motion, circular orbit, sun and eclipse, geomagnetic field, Earth albedo";
+        "Truth for the sensors: attitude motion, orbit (circular or SGP4 from a TLE), sun and eclipse, geomagnetic "
+        "field, Earth albedo";
     info.documentation_html =
         "<p>Everything the sensors see and the truth the estimate is scored against. Inertial frame ECI (J2000); "
         "time t is seconds since the epoch parameters (UTC). Quaternions scalar-last [x, y, z, w], "
@@ -232,8 +254,12 @@ fmu::ModelInfo EnvironmentBlock::describe() {
         "omega[1..3] (initial values q0, omega0). The second term (k = <code>quaternion_norm_gain</code>, default "
         "0.01/s) is zero on |q| = 1 and pulls the norm back at the rate 2k under any integrator, so |q| does not "
         "drift (an explicit fixed-step host needs steps below 1/k = 100 s); outputs use q/|q|.</li>"
-        "<li><b>Orbit</b>: circular Kepler orbit from altitude, inclination, RAAN and argument of latitude at t = 0 "
-        "(defaults 570 km, 64.9&deg;, seed 004).</li>"
+        "<li><b>Orbit</b> (<code>orbit_model</code>): <code>circular</code> (default), a Kepler orbit from altitude, "
+        "inclination, RAAN and argument of latitude at t = 0 (defaults 570 km, 64.9&deg;, seed 004); or "
+        "<code>tle</code>, SGP4 (Vallado et al. 2006, WGS-72) from the two-line element set "
+        "<code>tle_line1</code>, <code>tle_line2</code> (checksums verified; near-Earth sets only), its TEME "
+        "state rotated to J2000 through the IAU 1980 nutation and IAU 1976 precession. The set's epoch may lie "
+        "before or after the <code>epoch_*</code> instant.</li>"
         "<li><b>Sun</b> (<code>sun_model</code>): the Astronomical Almanac's low-precision formula "
         "(<code>almanac</code>) or seed 002 eq. 21&ndash;23 (<code>seed002</code>, counted from the "
         "<code>equinox_*</code> date). Irradiance = solar_constant &middot; (1 AU/d)&sup2; &middot; &nu;, &nu; the "
@@ -248,7 +274,8 @@ fmu::ModelInfo EnvironmentBlock::describe() {
         "</ul>"
         "<p>Outputs: sun_body, sun_eci (unit), sun_distance (m), irradiance, albedo_face, mag_body, mag_eci (T), "
         "q_true, omega_body, "
-        "r_eci (m). In spin mode sun_body = A(q_true) sun_eci is the seed formula up to the sun's orbital parallax "
+        "r_eci (m), v_eci (m/s). In spin mode sun_body = A(q_true) sun_eci is the seed formula up to the sun's orbital "
+        "parallax "
         "(&lt; 5e-5 rad) and its motion of 2e-7 rad/s. Default experiment: the seed scenario, 10 s in 0.01 s "
         "steps.</p>";
     info.default_experiment = {.start_time = 0.0, .stop_time = 10.0, .tolerance = 1e-6, .step_size = 0.01};
@@ -287,8 +314,7 @@ void EnvironmentBlock::initialize(double) {
     const double n = std::sqrt(n2);
     for (int i = 0; i < 4; ++i) d.q[i] = n > 0.0 ? d.q0[i] / n : d.q0[i];
     d.omega = d.omega0;
-    const double a = kEarthRadius + d.orbit_altitude;
-    d.orbit_period = kTwoPi * std::sqrt(a * a * a / kEarthGravitationalParameter);
+    d.orbit_period = core().orbit_period();
 }
 
 void EnvironmentBlock::evaluate_derivatives(double) {
@@ -329,6 +355,7 @@ void EnvironmentBlock::evaluate(double t) {
     d.q_true = o.q_true;
     d.omega_body = o.omega_body;
     d.r_eci = o.r_eci;
+    d.v_eci = o.v_eci;
     d.sunlight_fraction = o.sunlight_fraction;
     d.sun_distance = o.sun_distance;
     d.nadir_body = o.nadir_body;

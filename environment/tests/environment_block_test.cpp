@@ -20,6 +20,9 @@
 #include "fmu/errors.hpp"
 #include "fmu/model_runner.hpp"
 #include "fmu/testing/block_driver.hpp"
+#include "orbit/frames.hpp"
+#include "orbit/sgp4.hpp"
+#include "orbit/tle.hpp"
 
 namespace environment {
 namespace {
@@ -391,6 +394,70 @@ TEST(EnvironmentFmu, ParametersTheCoreRefusesFailValidation) {
     EXPECT_NO_THROW(ok.start());
 }
 
+// orbit_model = tle: the block's position and velocity are the orbit library's SGP4 state, rotated to J2000,
+// in metres, at the time since the set's epoch; everything downstream sees that position.
+TEST(EnvironmentFmu, TleOrbitIsTheLibrarysPropagation) {
+    Simulation sim;
+    auto& d = sim.data();
+    d.orbit_model = OrbitModel::tle;
+    // The default set's epoch is day 79.0 of 2026 (2026-03-20 00:00 UTC); start the run 6 h later.
+    d.epoch_hour = 6;
+    sim.start();
+    const orbit::Tle tle = orbit::parse_tle(d.tle_line1.view(), d.tle_line2.view());
+    orbit::Sgp4<double> sgp4;
+    ASSERT_EQ(sgp4.initialize(tle.mean_elements<double>()), orbit::Sgp4Status::ok);
+    EXPECT_NEAR(d.orbit_period, 60.0 * sgp4.period_minutes(), 1e-9);
+    const double jd0 = 2461119.5 + 0.25;  // 2026-03-20 06:00 UTC (Meeus: 2026-03-20 00:00 is JD 2461119.5)
+    for (double t : {0.0, 1000.0, 4000.0}) {
+        sim.advance_to(t);
+        orbit::OrbitState<double> teme;
+        ASSERT_EQ(sgp4.propagate(360.0 + t / 60.0, teme), orbit::Sgp4Status::ok);
+        const orbit::OrbitState<double> j2000 = orbit::teme_to_j2000(teme, orbit::julian_centuries(jd0 + t / 86400.0));
+        const Vec3 r{1000.0 * j2000.position_km.x(), 1000.0 * j2000.position_km.y(), 1000.0 * j2000.position_km.z()};
+        const Vec3 v{1000.0 * j2000.velocity_km_s.x(), 1000.0 * j2000.velocity_km_s.y(),
+                     1000.0 * j2000.velocity_km_s.z()};
+        EXPECT_LT(distance(d.r_eci, r), 1e-6) << "t = " << t;  // metres
+        EXPECT_LT(distance(d.v_eci, v), 1e-9) << "t = " << t;
+        // Downstream: the radius ratio and the nadir are the TLE position's.
+        EXPECT_NEAR(d.orbit_radius_ratio, norm(r) / 6378137.0, 1e-12);
+        const Vec3 nadir = times(attitude(d.q_true), {-r[0] / norm(r), -r[1] / norm(r), -r[2] / norm(r)});
+        EXPECT_LT(distance(d.nadir_body, nadir), 1e-9);
+    }
+}
+
+// The circular orbit stays the default and keeps its v_eci = n x r.
+TEST(EnvironmentFmu, CircularOrbitVelocityIsPerpendicularToItsRadius) {
+    Simulation sim;
+    auto& d = sim.data();
+    sim.start();
+    sim.advance_to(100.0);
+    const double a = 6378137.0 + 570e3;
+    EXPECT_NEAR(norm(d.v_eci), std::sqrt(3.986004418e14 / a), 1e-6);
+    EXPECT_NEAR(dot(d.r_eci, d.v_eci), 0.0, 1e-3);
+}
+
+TEST(EnvironmentFmu, BadElementSetIsRefusedAtConfigureNamingTheParameterAndColumn) {
+    Simulation sim;
+    auto& d = sim.data();
+    d.orbit_model = OrbitModel::tle;
+    std::string line2(d.tle_line2.view());
+    line2[68] = line2[68] == '0' ? '1' : '0';  // a wrong checksum
+    d.tle_line2.assign(line2);
+    try {
+        sim.start();
+        FAIL() << "an element set with a wrong checksum was accepted";
+    } catch (const fmu::Error& e) {
+        const std::string what = e.what();
+        for (const char* part : {"tle_line1, tle_line2", "TLE line 2, column 69", "checksum"}) {
+            EXPECT_NE(what.find(part), std::string::npos) << what;
+        }
+    }
+    // The circular orbit does not read the lines.
+    Simulation circular;
+    circular.data().tle_line2.assign(line2);
+    EXPECT_NO_THROW(circular.start());
+}
+
 TEST(EnvironmentFmu, TableDeclaresEveryVariableWithUnitsAndDescriptions) {
     const auto& table = EnvironmentBlock::static_table();
     EXPECT_EQ(table.states().size(), 7u);
@@ -405,6 +472,8 @@ TEST(EnvironmentFmu, TableDeclaresEveryVariableWithUnitsAndDescriptions) {
         EXPECT_EQ(table.by_name(name).causality, fmu::Causality::output) << name;
     }
     EXPECT_EQ(table.by_name("attitude_mode").item_names(), "spin, rigid_body");
+    EXPECT_EQ(table.by_name("orbit_model").item_names(), "circular, tle");
+    EXPECT_EQ(table.by_name("tle_line1").type, fmu::ValueType::String);
     EXPECT_EQ(table.by_name("der(omega[1])").dependencies->size(), 3u);  // omega[1..3]
     EXPECT_EQ(table.by_name("der(q[1])").dependencies->size(), 7u);      // q[1..4], omega[1..3]
     EXPECT_TRUE(table.by_name("sun_eci[1]").dependencies->empty());

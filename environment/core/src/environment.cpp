@@ -34,6 +34,9 @@ void validate(const EnvironmentParams& p) {
     }
     if (!std::isfinite(p.seed002_elevation_amplitude))
         throw std::invalid_argument("Environment: seed002 amplitude not finite");
+    if (p.orbit_model == OrbitModel::tle && !(p.tle.mean_motion_rev_per_day > 0.0)) {
+        throw std::invalid_argument("Environment: orbit_model tle needs an element set (orbit::parse_tle)");
+    }
 }
 }  // namespace
 
@@ -42,6 +45,9 @@ Environment::Environment(const EnvironmentParams& params)
       jd0_(julian_date(params.epoch)),
       jd_equinox_(julian_date(params.vernal_equinox)),
       orbit_(params.orbit),
+      tle_orbit_(params.orbit_model == OrbitModel::tle
+                     ? std::optional<TleOrbit>(std::in_place, params.tle, params.epoch)
+                     : std::nullopt),
       rigid_body_(params.rigid_body),
       spin_(params.spin, sun_position_eci(jd0_)) {
     // Fail at construction, not at the first step, when the epoch lies outside IGRF-14's validity.
@@ -65,12 +71,22 @@ EnvironmentOutputs Environment::evaluate(double t, const RigidBodyState* state) 
     out.gmst = gmst(out.julian_date);
 
     // Orbit and sun.
-    const Eigen::Vector3d r = orbit_.position_eci(t);
+    Eigen::Vector3d r;
+    Eigen::Vector3d v;
+    if (tle_orbit_) {
+        const TleOrbit::State x = tle_orbit_->state_eci(t);
+        r = x.position;
+        v = x.velocity;
+    } else {
+        r = orbit_.position_eci(t);
+        v = orbit_.velocity_eci(t);
+    }
     const Eigen::Vector3d r_sun = sun_position_eci(out.julian_date);
     const Eigen::Vector3d to_sun = r_sun - r;
     const double d_sun = to_sun.norm();
     const Eigen::Vector3d s = to_sun / d_sun;
     out.r_eci = to_array(r);
+    out.v_eci = to_array(v);
     out.sun_eci = to_array(s);
     out.sun_distance = d_sun;
     out.sunlight_fraction = params_.eclipse_enabled ? sunlight_fraction(r, r_sun) : 1.0;

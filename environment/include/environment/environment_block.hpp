@@ -19,6 +19,7 @@
 
 #include "environment/environment.hpp"
 #include "fmu/block.hpp"
+#include "fmu/fixed_string.hpp"
 
 namespace environment {
 
@@ -35,6 +36,11 @@ struct EnvironmentData {
     std::array<double, 3> omega0 = RigidBodyParams{}.omega0;    // rad/s, body
     double quaternion_norm_gain = 0.01;                         // 1/s, k above (see its description)
     // --- parameters: orbit
+    OrbitModel orbit_model = EnvironmentParams{}.orbit_model;
+    // The element set for orbit_model = tle (69 columns each; parsed by orbit::parse_tle in configure()).
+    // Default: the bundled synthetic set matching the circular default (environment/README.md).
+    fmu::FixedString<80> tle_line1 = "1 90001U          26079.00000000  .00002000  00000-0  15000-3 0  9995";
+    fmu::FixedString<80> tle_line2 = "2 90001  64.9000   0.0000 0012000  90.0000 270.0000 14.98524078  1001";
     double orbit_altitude = OrbitParams{}.altitude;        // m
     double orbit_inclination = OrbitParams{}.inclination;  // rad
     double orbit_raan = 0.0;                               // rad
@@ -86,6 +92,7 @@ struct EnvironmentData {
     std::array<double, 4> q_true = {0.0, 0.0, 0.0, 1.0};
     std::array<double, 3> omega_body{};
     std::array<double, 3> r_eci{};
+    std::array<double, 3> v_eci{};
     std::array<double, 3> nadir_body{};
     double orbit_radius_ratio = 1.0;
     double albedo_source = 0.0;  // W/m2
@@ -94,7 +101,8 @@ struct EnvironmentData {
     double sun_distance = 0.0;  // m
 };
 
-/// The core's parameters as set in the block's data.
+/// The core's parameters as set in the block's data; with orbit_model = tle the element set is parsed by
+/// orbit::parse_tle (throws fmu::Error naming the parameter, line, column and reason).
 EnvironmentParams environment_params(const EnvironmentData& d);
 
 class EnvironmentBlock : public fmu::Block<EnvironmentBlock, EnvironmentData> {

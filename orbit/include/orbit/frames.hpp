@@ -49,8 +49,9 @@ struct Nutation {
 };
 
 /// IAU 1980 nutation from the first `terms` terms (1 to 106, clamped) of the series, largest first.
-/// Truncation costs at most the sum of the left-out amplitudes: 4 terms 0.16" in longitude (0.07" in
-/// obliquity), 13 terms 0.09"; the test measures the error over 2020-2035 against the full series.
+/// Truncation error over 2020-2035 against the full series (ERFA, measured in frames_test): the whole
+/// TEME -> J2000 rotation is off by 0.78" with 1 term, 0.25" with 2, 0.10" (3.5 m at 7000 km) with 4,
+/// 0.037" with 9, 0.019" with 13, 0.005" with 30 (dpsi itself: 1.75", 0.52", 0.26", 0.085", 0.034", 0.012").
 template <typename T>
 Nutation<T> nutation_iau1980(T t, int terms = kIau1980NutationTerms) noexcept;
 

@@ -35,9 +35,9 @@ Matrix3<T> r3(T a) noexcept {
 // A Delaunay argument: arcseconds polynomial plus whole revolutions per century, reduced to one turn
 // before the sum so that float keeps its precision (the revolutions term alone is 8e3 rad per century).
 template <typename T>
-T delaunay(T t, double c0, double c1, double c2, double c3, double turns_per_century) noexcept {
-    const T poly = ((static_cast<T>(c3) * t + static_cast<T>(c2)) * t + static_cast<T>(c1)) * t + static_cast<T>(c0);
-    const T turns = std::fmod(static_cast<T>(turns_per_century) * t, T(1));
+T delaunay(T t, T c0, T c1, T c2, T c3, T turns_per_century) noexcept {
+    const T poly = ((c3 * t + c2) * t + c1) * t + c0;
+    const T turns = std::fmod(turns_per_century * t, T(1));
     return std::fmod(poly * arcsec<T>, two_pi<T>) + turns * two_pi<T>;
 }
 }  // namespace frames_detail
@@ -62,21 +62,21 @@ template <typename T>
 Nutation<T> nutation_iau1980(T t, int terms) noexcept {
     using namespace frames_detail;
     // Fundamental arguments of the 1980 theory (Seidelmann 1982): arcseconds and revolutions per century.
-    const T l = delaunay(t, 485866.733, 715922.633, 31.310, 0.064, 1325.0);
-    const T lp = delaunay(t, 1287099.804, 1292581.224, -0.577, -0.012, 99.0);
-    const T f = delaunay(t, 335778.877, 295263.137, -13.257, 0.011, 1342.0);
-    const T d = delaunay(t, 1072261.307, 1105601.328, -6.891, 0.019, 1236.0);
-    const T om = delaunay(t, 450160.280, -482890.539, 7.455, 0.008, -5.0);
+    const T l = delaunay<T>(t, 485866.733, 715922.633, 31.310, 0.064, 1325.0);
+    const T lp = delaunay<T>(t, 1287099.804, 1292581.224, -0.577, -0.012, 99.0);
+    const T f = delaunay<T>(t, 335778.877, 295263.137, -13.257, 0.011, 1342.0);
+    const T d = delaunay<T>(t, 1072261.307, 1105601.328, -6.891, 0.019, 1236.0);
+    const T om = delaunay<T>(t, 450160.280, -482890.539, 7.455, 0.008, -5.0);
     const int n = std::clamp(terms, 1, kIau1980NutationTerms);
     // Smallest terms first, so that the sum loses the least to rounding.
     T dpsi = T(0);
     T deps = T(0);
     for (int i = n - 1; i >= 0; --i) {
-        const Iau1980NutationTerm& k = kIau1980Nutation[static_cast<std::size_t>(i)];
+        const Iau1980NutationTerm<T>& k = kIau1980NutationAs<T>[static_cast<std::size_t>(i)];
         const T arg = static_cast<T>(k.l) * l + static_cast<T>(k.lp) * lp + static_cast<T>(k.f) * f +
                       static_cast<T>(k.d) * d + static_cast<T>(k.om) * om;
-        dpsi += (static_cast<T>(k.a) + static_cast<T>(k.b) * t) * std::sin(arg);
-        deps += (static_cast<T>(k.c) + static_cast<T>(k.dt) * t) * std::cos(arg);
+        dpsi += (k.a + k.b * t) * std::sin(arg);
+        deps += (k.c + k.dt * t) * std::cos(arg);
     }
     Nutation<T> out;
     out.dpsi = dpsi * T(1.0e-4) * arcsec<T>;

@@ -4,20 +4,23 @@
 // Vallado's Fundamentals of Astrodynamics and Applications (appendix D), largest amplitude first, which is
 // what lets frames.hpp truncate the series by taking its first terms.
 #include <array>
+#include <cstddef>
+#include <cstdint>
 
 namespace orbit {
 
+template <typename T>
 struct Iau1980NutationTerm {
     // Multipliers of the Delaunay arguments: the Moon's mean anomaly l, the Sun's mean anomaly l', the
     // Moon's mean argument of latitude F, the mean elongation of the Moon from the Sun D, and the mean
     // longitude of the Moon's ascending node Omega.
-    int l, lp, f, d, om;
+    std::int8_t l, lp, f, d, om;
     // Longitude: (a + b T) sin(argument); obliquity: (c + d T) cos(argument); units 0.0001" and
     // 0.0001"/century, T in Julian centuries (TT) from J2000.
-    double a, b, c, dt;
+    T a, b, c, dt;
 };
 
-inline constexpr std::array<Iau1980NutationTerm, 106> kIau1980Nutation{{
+inline constexpr std::array<Iau1980NutationTerm<double>, 106> kIau1980Nutation{{
     {0, 0, 0, 0, 1, -171996.0, -174.2, 92025.0, 8.9},
     {0, 0, 2, -2, 2, -13187.0, -1.6, 5736.0, -3.1},
     {0, 0, 2, 0, 2, -2274.0, -0.2, 977.0, -0.5},
@@ -125,5 +128,24 @@ inline constexpr std::array<Iau1980NutationTerm, 106> kIau1980Nutation{{
     {-1, -1, 0, 2, 1, 1.0, 0.0, 0.0, 0.0},
     {0, 1, 0, 1, 0, 1.0, 0.0, 0.0, 0.0},
 }};
+
+/// The table in another floating type, converted at compile time (the float build reads floats from flash).
+template <typename T>
+inline constexpr std::array<Iau1980NutationTerm<T>, 106> kIau1980NutationAs = [] {
+    std::array<Iau1980NutationTerm<T>, 106> out{};
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        const Iau1980NutationTerm<double>& k = kIau1980Nutation[i];
+        out[i] = {k.l,
+                  k.lp,
+                  k.f,
+                  k.d,
+                  k.om,
+                  static_cast<T>(k.a),
+                  static_cast<T>(k.b),
+                  static_cast<T>(k.c),
+                  static_cast<T>(k.dt)};
+    }
+    return out;
+}();
 
 }  // namespace orbit

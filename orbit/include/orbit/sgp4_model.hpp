@@ -26,6 +26,12 @@ inline const char* describe(Sgp4Status status) noexcept {
 }
 
 namespace sgp4_detail {
+// Newton's square root, for constants (std::sqrt is not constexpr in C++20).
+constexpr double constexpr_sqrt(double x) noexcept {
+    double r = x > 1.0 ? x : 1.0;
+    for (int i = 0; i < 100; ++i) r = 0.5 * (r + x / r);
+    return r;
+}
 // Derived WGS-72 constants in the reference code's canonical units (Earth radii, minutes).
 template <typename T>
 struct Constants {
@@ -35,10 +41,10 @@ struct Constants {
     static constexpr T j3oj2 = static_cast<T>(Wgs72::j3 / Wgs72::j2);
     static constexpr T two_pi = static_cast<T>(6.283185307179586476925286766559);
     static constexpr T x2o3 = static_cast<T>(2.0) / static_cast<T>(3.0);
-    static T xke() noexcept {
-        return static_cast<T>(60.0 / std::sqrt(Wgs72::earth_radius_km * Wgs72::earth_radius_km *
-                                               Wgs72::earth_radius_km / Wgs72::mu_km3_s2));
-    }
+    // xke = 60 / sqrt(R^3 / mu), (Earth radii)^1.5 per minute, folded at compile time so that a float build
+    // does no double arithmetic (a Cortex-M4F has no double FPU).
+    static constexpr T xke = static_cast<T>(60.0 / constexpr_sqrt(Wgs72::earth_radius_km * Wgs72::earth_radius_km *
+                                                                  Wgs72::earth_radius_km / Wgs72::mu_km3_s2));
     // Kepler's equation: the reference code stops at 1e-12 rad; a float cannot resolve that, so it stops at
     // a few of its own ulps (the loop is capped at 10 iterations either way).
     static constexpr T kepler_tolerance = std::is_same_v<T, float> ? static_cast<T>(1e-6) : static_cast<T>(1e-12);
@@ -55,7 +61,7 @@ Sgp4Status Sgp4<T>::initialize(const MeanElements<T>& el) noexcept {
     using std::sqrt;
     initialized_ = false;
     elements_ = el;
-    const T xke = C::xke();
+    const T xke = C::xke;
     const T j2 = C::j2;
     const T ecco = el.eccentricity;
     const T inclo = el.inclination_rad;
@@ -173,7 +179,7 @@ Sgp4Status Sgp4<T>::propagate(T t, OrbitState<T>& state) const noexcept {
     using std::sin;
     using std::sqrt;
     if (!initialized_) return Sgp4Status::mean_motion;
-    const T xke = C::xke();
+    const T xke = C::xke;
     const T vkmpersec = C::radius * xke / T(60);
     const MeanElements<T>& el = elements_;
 

@@ -7,6 +7,7 @@
 //   // rigid_body mode: x = env.initial_state(); integrate env.derivative(x, dx) externally,
 //   // call RigidBody::renormalize(x) after each step, and evaluate(t, &x).
 #include <array>
+#include <optional>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross products
@@ -16,19 +17,25 @@
 #include "environment/rigid_body.hpp"
 #include "environment/spin_attitude.hpp"
 #include "environment/time_scales.hpp"
+#include "environment/tle_orbit.hpp"
+#include "orbit/tle.hpp"
 
 namespace environment {
 
 enum class AttitudeMode { spin = 0, rigid_body = 1 };
 enum class SunModel { almanac = 0, seed002 = 1 };
 enum class FieldModel { igrf14 = 0, dipole = 1 };
+/// The truth orbit: the circular Kepler orbit of `orbit`, or SGP4 from the element set `tle`.
+enum class OrbitModel { circular = 0, tle = 1 };
 
 struct EnvironmentParams {
     AttitudeMode attitude_mode = AttitudeMode::spin;
     SpinParams spin;
     RigidBodyParams rigid_body;
-    OrbitParams orbit;
-    UtcDate epoch;  // UTC at t = 0; default 2026-03-20 00:00:00 (inside IGRF-14's 2025-2030)
+    OrbitModel orbit_model = OrbitModel::circular;
+    OrbitParams orbit;  // circular
+    orbit::Tle tle;     // tle: the parsed set (orbit::parse_tle); its epoch may differ from `epoch`
+    UtcDate epoch;      // UTC at t = 0; default 2026-03-20 00:00:00 (inside IGRF-14's 2025-2030)
     SunModel sun_model = SunModel::almanac;
     /// seed002 model only: the vernal equinox it counts days from (UTC), and the elevation amplitude (rad).
     UtcDate vernal_equinox{2026, 3, 20, 14, 46, 0.0};
@@ -47,6 +54,7 @@ struct EnvironmentOutputs {
     std::array<double, 4> q_true{};       // [x, y, z, w], ECI -> body
     std::array<double, 3> omega_body{};   // rad/s
     std::array<double, 3> r_eci{};        // m
+    std::array<double, 3> v_eci{};        // m/s
     std::array<double, 3> sun_eci{};      // unit, satellite -> sun
     std::array<double, 3> sun_body{};     // unit
     double sun_distance = 0.0;            // m, satellite -> sun
@@ -77,6 +85,8 @@ public:
     const EnvironmentParams& params() const { return params_; }
     double epoch_julian_date() const { return jd0_; }
     const CircularOrbit& orbit() const { return orbit_; }
+    /// The orbital period (s): the circular orbit's, or the element set's mean period at its epoch.
+    double orbit_period() const { return tle_orbit_ ? tle_orbit_->period() : orbit_.period(); }
     const SpinAttitude& spin() const { return spin_; }
 
 private:
@@ -86,6 +96,7 @@ private:
     double jd0_;
     double jd_equinox_;
     CircularOrbit orbit_;
+    std::optional<TleOrbit> tle_orbit_;  // OrbitModel::tle only
     RigidBody rigid_body_;
     SpinAttitude spin_;
 };
