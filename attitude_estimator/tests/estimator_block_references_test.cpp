@@ -47,8 +47,8 @@ Expected expected_at(double t) {
     const Eigen::Vector3d r_teme = s.position_km * 1e3;
     const Eigen::Vector3d r_ecef(std::cos(g) * r_teme.x() + std::sin(g) * r_teme.y(),
                                  -std::sin(g) * r_teme.x() + std::cos(g) * r_teme.y(), r_teme.z());
-    const Eigen::Vector3d b_ecef = environment::spherical_harmonic_field(
-        environment::igrf_coefficients(environment::decimal_year(jd)), 8, r_ecef);
+    const Eigen::Vector3d b_ecef =
+        environment::spherical_harmonic_field(environment::igrf_coefficients(environment::decimal_year(jd)), 8, r_ecef);
     return {environment::sun_almanac_j2000(jd).direction_eci, environment::ecef_from_eci(jd).transpose() * b_ecef};
 }
 

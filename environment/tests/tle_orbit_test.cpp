@@ -32,8 +32,7 @@ TEST(EnvironmentCoreTleOrbit, TimeIsCountedFromTheEnvironmentsEpoch) {
     for (double t : {0.0, 600.0, 5000.0}) {
         orbit::OrbitState<double> teme;
         ASSERT_EQ(sgp4.propagate(1441.5 + t / 60.0, teme), orbit::Sgp4Status::ok);
-        const orbit::OrbitState<double> j2000 =
-            orbit::teme_to_j2000(teme, orbit::julian_centuries(jd0 + t / 86400.0));
+        const orbit::OrbitState<double> j2000 = orbit::teme_to_j2000(teme, orbit::julian_centuries(jd0 + t / 86400.0));
         const TleOrbit::State x = o.state_eci(t);
         EXPECT_LT((x.position - 1000.0 * j2000.position_km).norm(), 1e-6) << t;  // metres
         EXPECT_LT((x.velocity - 1000.0 * j2000.velocity_km_s).norm(), 1e-9) << t;

@@ -72,11 +72,11 @@ References<T> onboard_references(ReferenceState<T>& s, const OnboardReferenceCon
 }
 
 template orbit::Sgp4Status make_reference_config(OnboardReferenceConfig<float>&, const CalendarInstant&,
-                                                const orbit::MeanElements<double>&, double, std::int32_t,
-                                                double) noexcept;
+                                                 const orbit::MeanElements<double>&, double, std::int32_t,
+                                                 double) noexcept;
 template orbit::Sgp4Status make_reference_config(OnboardReferenceConfig<double>&, const CalendarInstant&,
-                                                const orbit::MeanElements<double>&, double, std::int32_t,
-                                                double) noexcept;
+                                                 const orbit::MeanElements<double>&, double, std::int32_t,
+                                                 double) noexcept;
 template ReferenceKnot<float> evaluate_references(const OnboardReferenceConfig<float>&, float) noexcept;
 template ReferenceKnot<double> evaluate_references(const OnboardReferenceConfig<double>&, double) noexcept;
 template References<float> onboard_references(ReferenceState<float>&, const OnboardReferenceConfig<float>&,

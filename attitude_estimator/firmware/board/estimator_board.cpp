@@ -30,7 +30,11 @@ std::size_t EstimatorBoard::configure(std::span<const std::uint8_t> frame, const
         const double x = bridge::frame_value(frame, i);
         if (!wire::parameter_accepts(p, x)) return refuse(Refusal::parameter_out_of_range);
         const bool single = x == static_cast<double>(Precision::single_precision);
-        if ((p == wire::kParameter_precision && !single) || (p == wire::kParameter_spin_window && x != 0.0))
+        // reference_source = onboard needs the element set, whose two text lines the numeric frames do not
+        // carry (firmware/README.md): refused rather than run without an orbit.
+        const bool onboard = x == static_cast<double>(ReferenceSource::onboard);
+        if ((p == wire::kParameter_precision && !single) || (p == wire::kParameter_spin_window && x != 0.0) ||
+            (p == wire::kParameter_reference_source && onboard))
             return refuse(Refusal::not_on_this_board);
     }
     for (std::size_t i = 0; i < h.count; ++i) {

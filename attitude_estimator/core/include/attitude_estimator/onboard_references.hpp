@@ -31,20 +31,20 @@ template <class T>
 struct OnboardReferenceConfig {
     OnboardClock<T> clock{};
     FieldModel<T> field{};
-    orbit::Sgp4<T> orbit{};              // initialized from the computer's own element set
-    T tle_minutes_at_midnight = T(0);    // min from the element set's epoch to 0 h UTC of the clock's epoch day
-    T period = T(10);                    // s between two evaluations of the models (> 0)
+    orbit::Sgp4<T> orbit{};            // initialized from the computer's own element set
+    T tle_minutes_at_midnight = T(0);  // min from the element set's epoch to 0 h UTC of the clock's epoch day
+    T period = T(10);                  // s between two evaluations of the models (> 0)
 };
 
 // The references at one instant of the clock.
 template <class T>
 struct ReferenceKnot {
-    T t = T(0);                // s, the block's time
-    Vec3<T> sun{};             // unit vector, J2000
-    T sun_distance = T(0);     // m
-    Vec3<T> field{};           // T, J2000
-    Vec3<T> position{};        // km, TEME (the on-board orbit, for the record)
-    bool valid = false;        // SGP4 propagated without error
+    T t = T(0);             // s, the block's time
+    Vec3<T> sun{};          // unit vector, J2000
+    T sun_distance = T(0);  // m
+    Vec3<T> field{};        // T, J2000
+    Vec3<T> position{};     // km, TEME (the on-board orbit, for the record)
+    bool valid = false;     // SGP4 propagated without error
 };
 
 // The two knots around the last sample (trivially copyable: part of the computer's state).
@@ -87,11 +87,11 @@ template <class T>
 References<T> onboard_references(ReferenceState<T>& state, const OnboardReferenceConfig<T>& config, T t) noexcept;
 
 extern template orbit::Sgp4Status make_reference_config(OnboardReferenceConfig<float>&, const CalendarInstant&,
-                                                       const orbit::MeanElements<double>&, double, std::int32_t,
-                                                       double) noexcept;
+                                                        const orbit::MeanElements<double>&, double, std::int32_t,
+                                                        double) noexcept;
 extern template orbit::Sgp4Status make_reference_config(OnboardReferenceConfig<double>&, const CalendarInstant&,
-                                                       const orbit::MeanElements<double>&, double, std::int32_t,
-                                                       double) noexcept;
+                                                        const orbit::MeanElements<double>&, double, std::int32_t,
+                                                        double) noexcept;
 extern template ReferenceKnot<float> evaluate_references(const OnboardReferenceConfig<float>&, float) noexcept;
 extern template ReferenceKnot<double> evaluate_references(const OnboardReferenceConfig<double>&, double) noexcept;
 extern template References<float> onboard_references(ReferenceState<float>&, const OnboardReferenceConfig<float>&,
