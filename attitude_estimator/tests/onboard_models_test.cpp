@@ -16,6 +16,8 @@
 #include "environment/earth_rotation.hpp"
 #include "environment/geomagnetic_field.hpp"
 #include "environment/time_scales.hpp"
+#include "orbit/sgp4.hpp"
+#include "orbit/tle.hpp"
 #include "test_support.hpp"
 
 namespace ae = attitude_estimator;
@@ -141,5 +143,46 @@ TEST(OnboardField, TruncationErrorFallsWithDegree) {
                     std::sqrt(sum_angle / points.size()) / kDeg);
         EXPECT_LT(rms, previous) << degree;
         previous = rms;
+    }
+}
+
+// The on-board element sets of the leo_orbit study (attitude_estimator/study/older_tle.py from the truth's
+// set, 24 h and 72 h older) propagated by SGP4 to the two orbits after the truth's epoch: the position
+// error the age makes (TEME, both). Printed for docs/onboard_references.md; bounded by the along-track
+// drift of a mean-motion error of the order of the set's ndot term over the age.
+TEST(OnboardOrbit, OlderElementSetsMissTheTruthByTheirAge) {
+    const auto sgp4 = [](const char* l1, const char* l2) {
+        orbit::Sgp4<double> s;
+        EXPECT_EQ(s.initialize(orbit::parse_tle(l1, l2).mean_elements<double>()), orbit::Sgp4Status::ok);
+        return s;
+    };
+    const auto truth = sgp4("1 90001U          26079.00000000  .00002000  00000-0  15000-3 0  9995",
+                            "2 90001  64.9000   0.0000 0012000  90.0000 270.0000 14.98524078  1001");
+    struct Older {
+        double hours;
+        orbit::Sgp4<double> set;
+    };
+    const Older older[] = {{24.0, sgp4("1 90001U          26078.00000000  .00002000  00000-0  15000-3 0  9994",
+                                       "2 90001  64.9000   3.1277 0012000  90.3760 275.3137 14.98524078  1006")},
+                           {72.0, sgp4("1 90001U          26076.00000000  .00002000  00000-0  15000-3 0  9992",
+                                       "2 90001  64.9000   9.3831 0012000  91.1280 285.9410 14.98524078  1007")}};
+    double previous = 0.0;
+    for (const Older& o : older) {
+        double worst = 0.0, sum = 0.0;
+        int n = 0;
+        for (double t = 0.0; t <= 11528.0; t += 60.0) {
+            orbit::OrbitState<double> a, b;
+            ASSERT_EQ(truth.propagate(t / 60.0, a), orbit::Sgp4Status::ok);
+            ASSERT_EQ(o.set.propagate(o.hours * 60.0 + t / 60.0, b), orbit::Sgp4Status::ok);
+            const double e = (a.position_km - b.position_km).norm();
+            worst = std::max(worst, e);
+            sum += e;
+            ++n;
+        }
+        std::printf("on-board set %2.0f h older: position error over two orbits mean %.2f km, worst %.2f km\n", o.hours,
+                    sum / n, worst);
+        EXPECT_GT(worst, previous);
+        EXPECT_LT(worst, 50.0);
+        previous = worst;
     }
 }
