@@ -133,7 +133,7 @@ int main(int argc, char** argv) {
     h << "// Indices of the parameters the firmware checks by name.\n";
     for (std::size_t i = 0; i < parameters.size(); ++i) {
         const auto& n = parameters[i]->name;
-        if (n == "precision" || n == "spin_window" || n == "reference_source")
+        if (n == "precision" || n == "spin_window")
             h << "inline constexpr std::size_t kParameter_" << n << " = " << i << ";\n";
     }
     h << "\n}  // namespace attitude_estimator::wire\n";

@@ -292,6 +292,10 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.parameter("tle_line1", &D::tle_line1, "",
                 "onboard: line 1 of the computer's own two-line element set (it may be older than the truth's)");
     t.parameter("tle_line2", &D::tle_line2, "", "onboard: line 2 of the computer's own two-line element set");
+    t.parameter("tle_elements", &D::tle_elements, "1",
+                "onboard, when tle_line1 and tle_line2 are empty: the element set as numbers in its own units: "
+                "epoch (Julian date, UTC), mean motion (rev/day), eccentricity, inclination, node, argument of "
+                "perigee, mean anomaly (deg), B* (1/Earth radii); the firmware gets its set this way");
     t.parameter("field_degree", &D::field_degree, "",
                 "onboard: degree of the on-board IGRF-14 field model, 1 (tilted dipole) to 13 (the whole model)")
         .range(1.0, static_cast<double>(kFieldMaxDegree));
@@ -399,8 +403,10 @@ void EstimatorBlock::validate() const {
     }
     if (d.reference_source == ReferenceSource::onboard) {
         check_calendar_day(d.clock_epoch_year, d.clock_epoch_month, d.clock_epoch_day);
-        if (d.tle_line1.view().empty() || d.tle_line2.view().empty())
-            throw fmu::Error("reference_source = onboard needs the computer's element set in tle_line1 and tle_line2");
+        if (d.tle_line1.view().empty() && d.tle_line2.view().empty() && !(d.tle_elements[0] > 0.0))
+            throw fmu::Error(
+                "reference_source = onboard needs the computer's element set: tle_line1 and tle_line2, "
+                "or its numbers in tle_elements (tle_elements[1], the epoch, is 0)");
     }
     if (d.spin_window != 0 && d.spin_window < 16) throw fmu::Error("spin_window must be 0 (off) or 16 to 2048");
     bool has_inertia = false;
@@ -467,15 +473,18 @@ SpinSpectrum& SpinWorkspace::get(double sample_period, std::int32_t window) {
 
 void EstimatorBlock::configure() {
     auto& d = data();
+    d.parsed_elements = {};
     if (d.reference_source == ReferenceSource::onboard) {
-        // The element set's text is parsed by the orbit library (it checks columns, checksums and ranges).
-        try {
-            const orbit::Tle tle = orbit::parse_tle(d.tle_line1.view(), d.tle_line2.view());
-            d.tle_elements = tle.mean_elements<double>();
-            d.tle_epoch_julian_date = tle.epoch_jd_utc;
-        } catch (const orbit::TleError& e) {
-            throw fmu::Error(std::string("reference_source = onboard: tle_line1/tle_line2: ") + e.what());
+        const bool text = !d.tle_line1.view().empty() || !d.tle_line2.view().empty();
+        if (text) {
+            // The element set's text is parsed by the orbit library (it checks columns, checksums and ranges).
+            try {
+                d.parsed_elements = numbers_from_tle(orbit::parse_tle(d.tle_line1.view(), d.tle_line2.view()));
+            } catch (const orbit::TleError& e) {
+                throw fmu::Error(std::string("reference_source = onboard: tle_line1/tle_line2: ") + e.what());
+            }
         }
+        const orbit::Tle tle = tle_from_numbers(text ? d.parsed_elements : d.tle_elements);
         OnboardReferenceConfig<double> check;
         const CalendarInstant epoch{.year = d.clock_epoch_year,
                                     .month = d.clock_epoch_month,
@@ -483,8 +492,8 @@ void EstimatorBlock::configure() {
                                     .hour = d.clock_epoch_hour,
                                     .minute = d.clock_epoch_minute,
                                     .second = d.clock_epoch_second};
-        const orbit::Sgp4Status status = make_reference_config(check, epoch, d.tle_elements, d.tle_epoch_julian_date,
-                                                               d.field_degree, d.reference_period);
+        const orbit::Sgp4Status status = make_reference_config(check, epoch, tle.mean_elements<double>(),
+                                                               tle.epoch_jd_utc, d.field_degree, d.reference_period);
         if (status != orbit::Sgp4Status::ok)
             throw fmu::Error(std::string("reference_source = onboard: the element set: ") + orbit::describe(status));
     }
@@ -544,6 +553,13 @@ void check_onboard_state(const OnboardState<T>& s, const std::string& name) {
                            r.last_reading[0],    r.last_reading[1],    r.last_reading[2],    r.last_polarity,
                            r.earlier_reading[0], r.earlier_reading[1], r.earlier_reading[2], r.earlier_polarity};
     for (const T x : set_reset) fmu::require_finite(static_cast<double>(x), name + ".set_reset");
+    fmu::require_bool(s.references.started, name + ".references.started");
+    for (const ReferenceKnot<T>* k : {&s.references.before, &s.references.after}) {
+        fmu::require_bool(k->valid, name + ".references.valid");
+        const T knot[] = {k->t,        k->sun[0],   k->sun[1],      k->sun[2],      k->sun_distance, k->field[0],
+                          k->field[1], k->field[2], k->position[0], k->position[1], k->position[2]};
+        for (const T x : knot) fmu::require_finite(static_cast<double>(x), name + ".references");
+    }
 }
 
 }  // namespace

@@ -101,8 +101,9 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
                                     .hour = d.clock_epoch_hour,
                                     .minute = d.clock_epoch_minute,
                                     .second = d.clock_epoch_second};
-        // The status was checked when the elements were parsed (the block's configure()).
-        (void)make_reference_config(s.references, epoch, d.tle_elements, d.tle_epoch_julian_date, d.field_degree,
+        // The status was checked in the block's configure(); the firmware's board checks the epoch.
+        const orbit::Tle tle = tle_from_numbers(d.parsed_elements[0] > 0.0 ? d.parsed_elements : d.tle_elements);
+        (void)make_reference_config(s.references, epoch, tle.mean_elements<double>(), tle.epoch_jd_utc, d.field_degree,
                                     d.reference_period);
     }
     return s;
@@ -117,6 +118,24 @@ OnboardInputs<T> onboard_inputs_from(const EstimatorData& d) {
                             .sun_ref = to<T>(d.sun_ref),
                             .mag_ref = to<T>(d.mag_ref),
                             .sun_distance = static_cast<T>(d.sun_distance)};
+}
+
+orbit::Tle tle_from_numbers(const std::array<double, kElementCount>& e) noexcept {
+    orbit::Tle t;
+    t.epoch_jd_utc = e[0];
+    t.mean_motion_rev_per_day = e[1];
+    t.eccentricity = e[2];
+    t.inclination_deg = e[3];
+    t.raan_deg = e[4];
+    t.arg_perigee_deg = e[5];
+    t.mean_anomaly_deg = e[6];
+    t.bstar_per_earth_radius = e[7];
+    return t;
+}
+
+std::array<double, kElementCount> numbers_from_tle(const orbit::Tle& t) noexcept {
+    return {t.epoch_jd_utc, t.mean_motion_rev_per_day, t.eccentricity,     t.inclination_deg,
+            t.raan_deg,     t.arg_perigee_deg,         t.mean_anomaly_deg, t.bstar_per_earth_radius};
 }
 
 template <class T>

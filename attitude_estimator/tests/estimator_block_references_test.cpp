@@ -102,6 +102,22 @@ TEST(EstimatorFmuReferences, TheChoiceSwitchesTheAttitude) {
     EXPECT_GT(diff, 1e-3);
 }
 
+TEST(EstimatorFmuReferences, TheSetAsNumbersIsTheSetAsText) {
+    // tle_elements, the firmware's way of getting the set, against the parsed lines: identical samples.
+    Simulation text, numbers;
+    set_onboard(text);
+    numbers.data().reference_source = ReferenceSource::onboard;
+    // Read off kLine1/kLine2 by hand: epoch 2026 day 79.0 = JD 2461119.5; n, e, i, node, perigee, M, B*.
+    numbers.data().tle_elements = {2461119.5, 14.98996383, 0.001, 64.9, 120.0, 90.0, 270.0, 3.0e-5};
+    text.start(0.0);
+    numbers.start(0.0);
+    text.advance_to(30.0);
+    numbers.advance_to(30.0);
+    EXPECT_EQ(text.data().ref_mag, numbers.data().ref_mag);
+    EXPECT_EQ(text.data().ref_sun, numbers.data().ref_sun);
+    EXPECT_EQ(text.data().q_est, numbers.data().q_est);
+}
+
 TEST(EstimatorFmuReferences, ABadElementSetIsRefusedWithItsReason) {
     Simulation sim;
     set_onboard(sim);

@@ -30,11 +30,7 @@ std::size_t EstimatorBoard::configure(std::span<const std::uint8_t> frame, const
         const double x = bridge::frame_value(frame, i);
         if (!wire::parameter_accepts(p, x)) return refuse(Refusal::parameter_out_of_range);
         const bool single = x == static_cast<double>(Precision::single_precision);
-        // reference_source = onboard needs the element set, whose two text lines the numeric frames do not
-        // carry (firmware/README.md): refused rather than run without an orbit.
-        const bool onboard = x == static_cast<double>(ReferenceSource::onboard);
-        if ((p == wire::kParameter_precision && !single) || (p == wire::kParameter_spin_window && x != 0.0) ||
-            (p == wire::kParameter_reference_source && onboard))
+        if ((p == wire::kParameter_precision && !single) || (p == wire::kParameter_spin_window && x != 0.0))
             return refuse(Refusal::not_on_this_board);
     }
     for (std::size_t i = 0; i < h.count; ++i) {
@@ -62,6 +58,10 @@ std::size_t EstimatorBoard::sample(std::span<const std::uint8_t> frame, const br
             if (configured_[p]) wire::set_parameter(data_, p, configuration_[p]);
         data_.precision = Precision::single_precision;
         data_.spin_window = 0;
+        // On-board references need the element set, which reaches the board as numbers (tle_elements: the
+        // text lines are not on the wire); without it there is no orbit to run.
+        if (data_.reference_source == ReferenceSource::onboard && !(data_.tle_elements[0] > 0.0))
+            return refuse(Refusal::not_on_this_board);
         settings_ = onboard_settings_from<float>(data_);
         onboard_start(data_.onboard_float, settings_);
     }

@@ -288,6 +288,12 @@ int main() {
          }},
         {"three_faces_qmethod", [](EstimatorData& d) { d.sun_method = SunMethod::three_faces; }},
         {"difference_qmethod_mekf", [](EstimatorData& d) { d.filter = FilterKind::mekf; }},
+        {"difference_qmethod_mekf_onboard_references",
+         [](EstimatorData& d) {
+             d.filter = FilterKind::mekf;
+             d.reference_source = ReferenceSource::onboard;  // degree 8, a knot every 10 s (200 samples)
+             d.tle_elements = {2461118.5, 14.98524078, 0.0012, 64.9, 3.1277, 90.376, 275.3137, 1.5e-4};
+         }},
         {"cones_qmethod_mekf_scale_setreset",
          [](EstimatorData& d) {
              d.sun_method = SunMethod::cones;
