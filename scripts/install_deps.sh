@@ -9,6 +9,7 @@ packages=(
   build-essential cmake pkg-config
   libsundials-dev     # CVODE: Co-Simulation inside each FMU (linked statically), the master's solver
   libeigen3-dev       # small fixed-size linear algebra (Q-method, rotations)
+  liberfa-dev         # ERFA (IAU SOFA): the independent sun the on-board ephemeris is tested against
   libxml2-dev         # modelDescription.xml writer and parser
   libzip-dev          # .fmu archives in the loader
   libcli11-dev libfmt-dev

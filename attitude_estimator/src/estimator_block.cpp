@@ -9,6 +9,7 @@
 #include "fmu/errors.hpp"
 #include "fmu/instant_clock.hpp"
 #include "fmu/state_check.hpp"
+#include "orbit/tle.hpp"
 
 namespace attitude_estimator {
 
@@ -282,6 +283,50 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
         .discrete()
         .depends_on({})
         .initial_depends_on({});  // no set/reset pair at the start sample
+    // The reference vectors (onboard_references.hpp, docs/onboard_references.md).
+    t.choice("reference_source", &D::reference_source,
+             {{"inputs", ReferenceSource::inputs}, {"onboard", ReferenceSource::onboard}},
+             "Where the reference vectors come from: inputs (sun_ref, mag_ref, sun_distance: a GPS receiver with "
+             "its own models, or the truth-fed study), or onboard (the computer's own SGP4 orbit from tle_line1/2, "
+             "almanac sun and IGRF-14 to field_degree, at its clock from the clock_epoch parameters)");
+    t.parameter("tle_line1", &D::tle_line1, "",
+                "onboard: line 1 of the computer's own two-line element set (it may be older than the truth's)");
+    t.parameter("tle_line2", &D::tle_line2, "", "onboard: line 2 of the computer's own two-line element set");
+    t.parameter("tle_elements", &D::tle_elements, "1",
+                "onboard, when tle_line1 and tle_line2 are empty: the element set as numbers in its own units: "
+                "epoch (Julian date, UTC), mean motion (rev/day), eccentricity, inclination, node, argument of "
+                "perigee, mean anomaly (deg), B* (1/Earth radii); the firmware gets its set this way");
+    t.parameter("field_degree", &D::field_degree, "",
+                "onboard: degree of the on-board IGRF-14 field model, 1 (tilted dipole) to 13 (the whole model)")
+        .range(1.0, static_cast<double>(kFieldMaxDegree));
+    t.parameter("clock_epoch_year", &D::clock_epoch_year, "",
+                "onboard: the computer's clock, UTC at t = 0: year (IGRF-14 covers 2025.0 to 2030.0)")
+        .range(2025.0, 2030.0);
+    t.parameter("clock_epoch_month", &D::clock_epoch_month, "", "onboard: the computer's clock at t = 0: month")
+        .range(1.0, 12.0);
+    t.parameter("clock_epoch_day", &D::clock_epoch_day, "", "onboard: the computer's clock at t = 0: day of the month")
+        .range(1.0, 31.0);
+    t.parameter("clock_epoch_hour", &D::clock_epoch_hour, "", "onboard: the computer's clock at t = 0: hour")
+        .range(0.0, 23.0);
+    t.parameter("clock_epoch_minute", &D::clock_epoch_minute, "", "onboard: the computer's clock at t = 0: minute")
+        .range(0.0, 59.0);
+    t.parameter("clock_epoch_second", &D::clock_epoch_second, "s",
+                "onboard: the computer's clock at t = 0: second of the minute")
+        .range(0.0, 60.999);
+    t.parameter("reference_period", &D::reference_period, "s",
+                "onboard: time between two evaluations of the on-board orbit, sun and field models (each sample "
+                "interpolates between the two around it)")
+        .range(0.01, 600.0);
+    // (Two of the bridge's 64 output slots per frame left after these: the on-board orbit's position and sun
+    // distance are not outputs.)
+    t.output("ref_sun", &D::ref_sun, "1",
+             "The sun reference (J2000) the last sample used: sun_ref, or the on-board one")
+        .discrete()
+        .depends_on({});
+    t.output("ref_mag", &D::ref_mag, "T",
+             "The field reference (J2000) the last sample used: mag_ref, or the on-board model's")
+        .discrete()
+        .depends_on({});
     t.local("t_start", &D::t_start, "s", "Start time: sample k is due at t_start + k*sample_period").discrete();
 }
 
@@ -327,6 +372,18 @@ fmu::ModelInfo EstimatorBlock::describe() {
     return info;
 }
 
+namespace {
+// The clock's epoch day must exist (30 February would be 2 March to the Julian-day formula).
+void check_calendar_day(std::int32_t year, std::int32_t month, std::int32_t day) {
+    const bool leap = (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
+    constexpr int days[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+    const int last = days[month - 1] + (month == 2 && leap ? 1 : 0);
+    if (day > last)
+        throw fmu::Error("clock_epoch_day " + std::to_string(day) + " does not exist in month " +
+                         std::to_string(month) + " of " + std::to_string(year));
+}
+}  // namespace
+
 void EstimatorBlock::validate() const {
     const auto& d = data();
     if (!(d.i_adc_max > d.i_adc_min)) throw fmu::Error("i_adc_max must be above i_adc_min");
@@ -343,6 +400,13 @@ void EstimatorBlock::validate() const {
             if (i >= 2 && d.kelly_value[i] > d.kelly_value[i - 1])
                 throw fmu::Error("kelly_value must not increase with the angle (the inverse needs a monotone curve)");
         }
+    }
+    if (d.reference_source == ReferenceSource::onboard) {
+        check_calendar_day(d.clock_epoch_year, d.clock_epoch_month, d.clock_epoch_day);
+        if (d.tle_line1.view().empty() && d.tle_line2.view().empty() && !(d.tle_elements[0] > 0.0))
+            throw fmu::Error(
+                "reference_source = onboard needs the computer's element set: tle_line1 and tle_line2, "
+                "or its numbers in tle_elements (tle_elements[1], the epoch, is 0)");
     }
     if (d.spin_window != 0 && d.spin_window < 16) throw fmu::Error("spin_window must be 0 (off) or 16 to 2048");
     bool has_inertia = false;
@@ -408,6 +472,31 @@ SpinSpectrum& SpinWorkspace::get(double sample_period, std::int32_t window) {
 }
 
 void EstimatorBlock::configure() {
+    auto& d = data();
+    d.parsed_elements = {};
+    if (d.reference_source == ReferenceSource::onboard) {
+        const bool text = !d.tle_line1.view().empty() || !d.tle_line2.view().empty();
+        if (text) {
+            // The element set's text is parsed by the orbit library (it checks columns, checksums and ranges).
+            try {
+                d.parsed_elements = numbers_from_tle(orbit::parse_tle(d.tle_line1.view(), d.tle_line2.view()));
+            } catch (const orbit::TleError& e) {
+                throw fmu::Error(std::string("reference_source = onboard: tle_line1/tle_line2: ") + e.what());
+            }
+        }
+        const orbit::Tle tle = tle_from_numbers(text ? d.parsed_elements : d.tle_elements);
+        OnboardReferenceConfig<double> check;
+        const CalendarInstant epoch{.year = d.clock_epoch_year,
+                                    .month = d.clock_epoch_month,
+                                    .day = d.clock_epoch_day,
+                                    .hour = d.clock_epoch_hour,
+                                    .minute = d.clock_epoch_minute,
+                                    .second = d.clock_epoch_second};
+        const orbit::Sgp4Status status = make_reference_config(check, epoch, tle.mean_elements<double>(),
+                                                               tle.epoch_jd_utc, d.field_degree, d.reference_period);
+        if (status != orbit::Sgp4Status::ok)
+            throw fmu::Error(std::string("reference_source = onboard: the element set: ") + orbit::describe(status));
+    }
     settings_ = onboard_settings_from<double>(data());
     settings_float_ = onboard_settings_from<float>(data());
 }
@@ -464,6 +553,13 @@ void check_onboard_state(const OnboardState<T>& s, const std::string& name) {
                            r.last_reading[0],    r.last_reading[1],    r.last_reading[2],    r.last_polarity,
                            r.earlier_reading[0], r.earlier_reading[1], r.earlier_reading[2], r.earlier_polarity};
     for (const T x : set_reset) fmu::require_finite(static_cast<double>(x), name + ".set_reset");
+    fmu::require_bool(s.references.started, name + ".references.started");
+    for (const ReferenceKnot<T>* k : {&s.references.before, &s.references.after}) {
+        fmu::require_bool(k->valid, name + ".references.valid");
+        const T knot[] = {k->t,        k->sun[0],   k->sun[1],      k->sun[2],      k->sun_distance, k->field[0],
+                          k->field[1], k->field[2], k->position[0], k->position[1], k->position[2]};
+        for (const T x : knot) fmu::require_finite(static_cast<double>(x), name + ".references");
+    }
 }
 
 }  // namespace

@@ -92,6 +92,20 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
     m.reset_after = d.filter_reset_after;
     // The rate comes from two single-frame attitudes at most a few samples apart.
     m.max_init_gap = static_cast<T>(3.5 * d.sample_period);
+
+    s.reference_source = d.reference_source;
+    if (d.reference_source == ReferenceSource::onboard) {
+        const CalendarInstant epoch{.year = d.clock_epoch_year,
+                                    .month = d.clock_epoch_month,
+                                    .day = d.clock_epoch_day,
+                                    .hour = d.clock_epoch_hour,
+                                    .minute = d.clock_epoch_minute,
+                                    .second = d.clock_epoch_second};
+        // The status was checked in the block's configure(); the firmware's board checks the epoch.
+        const orbit::Tle tle = tle_from_numbers(d.parsed_elements[0] > 0.0 ? d.parsed_elements : d.tle_elements);
+        (void)make_reference_config(s.references, epoch, tle.mean_elements<double>(), tle.epoch_jd_utc, d.field_degree,
+                                    d.reference_period);
+    }
     return s;
 }
 
@@ -104,6 +118,24 @@ OnboardInputs<T> onboard_inputs_from(const EstimatorData& d) {
                             .sun_ref = to<T>(d.sun_ref),
                             .mag_ref = to<T>(d.mag_ref),
                             .sun_distance = static_cast<T>(d.sun_distance)};
+}
+
+orbit::Tle tle_from_numbers(const std::array<double, kElementCount>& e) noexcept {
+    orbit::Tle t;
+    t.epoch_jd_utc = e[0];
+    t.mean_motion_rev_per_day = e[1];
+    t.eccentricity = e[2];
+    t.inclination_deg = e[3];
+    t.raan_deg = e[4];
+    t.arg_perigee_deg = e[5];
+    t.mean_anomaly_deg = e[6];
+    t.bstar_per_earth_radius = e[7];
+    return t;
+}
+
+std::array<double, kElementCount> numbers_from_tle(const orbit::Tle& t) noexcept {
+    return {t.epoch_jd_utc, t.mean_motion_rev_per_day, t.eccentricity,     t.inclination_deg,
+            t.raan_deg,     t.arg_perigee_deg,         t.mean_anomaly_deg, t.bstar_per_earth_radius};
 }
 
 template <class T>
@@ -128,6 +160,8 @@ void store_outputs(EstimatorData& d, const OnboardOutputs<T>& out) {
     d.rate_mean = out.rate_mean;
     d.rate_window_time = out.rate_window_time;
     d.rate_valid = out.rate_valid;
+    d.ref_sun = from<3>(out.references.sun);
+    d.ref_mag = from<3>(out.references.field);
     if (d.filter == FilterKind::mekf) {
         d.q_filt = {out.q_filt.x, out.q_filt.y, out.q_filt.z, out.q_filt.w};
         d.omega_filt = from<3>(out.omega_filt);

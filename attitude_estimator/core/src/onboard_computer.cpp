@@ -101,6 +101,27 @@ void update_rates(OnboardState<T>& s, const OnboardSettings<T>& settings, T t, c
     out.rate_valid = mean.valid && !step_aliases && !filter_aliases;
 }
 
+// The sample's inputs with the reference vectors the settings choose: the inputs' own, or the on-board
+// models' at time t (an element set SGP4 cannot propagate leaves the field zero: no field observation).
+template <class T>
+OnboardInputs<T> with_references(OnboardState<T>& s, const OnboardInputs<T>& given, const OnboardSettings<T>& settings,
+                                 T t, References<T>& used) {
+    if (settings.reference_source == ReferenceSource::inputs) {
+        used = References<T>{.sun = given.sun_ref,
+                             .sun_distance = given.sun_distance,
+                             .field = given.mag_ref,
+                             .position = {},
+                             .valid = true};
+        return given;
+    }
+    used = onboard_references(s.references, settings.references, t);
+    OnboardInputs<T> in = given;
+    in.sun_ref = used.sun;
+    in.sun_distance = used.sun_distance;
+    in.mag_ref = used.valid ? used.field : Vec3<T>{};
+    return in;
+}
+
 }  // namespace
 
 template <class T>
@@ -111,9 +132,10 @@ void onboard_start(OnboardState<T>& state, const OnboardSettings<T>& settings) n
 }
 
 template <class T>
-OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& in, const OnboardSettings<T>& settings,
+OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& given, const OnboardSettings<T>& settings,
                                  T t) noexcept {
     OnboardOutputs<T> out;
+    const OnboardInputs<T> in = with_references(s, given, settings, t, out.references);
     const EstimatorConfig<T> nominal = at_sun_distance(settings.estimator, in.sun_distance);
     EstimatorConfig<T> config = nominal;
     if (settings.filter == FilterKind::mekf && settings.filter_scale && s.filter.stage == 2) {

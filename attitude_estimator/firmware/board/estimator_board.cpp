@@ -58,6 +58,10 @@ std::size_t EstimatorBoard::sample(std::span<const std::uint8_t> frame, const br
             if (configured_[p]) wire::set_parameter(data_, p, configuration_[p]);
         data_.precision = Precision::single_precision;
         data_.spin_window = 0;
+        // On-board references need the element set, which reaches the board as numbers (tle_elements: the
+        // text lines are not on the wire); without it there is no orbit to run.
+        if (data_.reference_source == ReferenceSource::onboard && !(data_.tle_elements[0] > 0.0))
+            return refuse(Refusal::not_on_this_board);
         settings_ = onboard_settings_from<float>(data_);
         onboard_start(data_.onboard_float, settings_);
     }

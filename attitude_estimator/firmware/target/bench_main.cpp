@@ -9,9 +9,11 @@
 #include <cmath>
 #include <cstdint>
 
+#include "attitude_estimator/onboard_references.hpp"
 #include "bridge/frame_codec.hpp"
 #include "cmsdk_uart.hpp"
 #include "estimator_board.hpp"
+#include "orbit/tle.hpp"
 #include "stack_paint.hpp"
 
 namespace {
@@ -178,6 +180,83 @@ void run(const Case& c, std::uint32_t ticks_per_million) {
     print("\n");
 }
 
+// The on-board references (onboard_references.hpp) in float: one evaluation of each model and of all three
+// (what a sample that passes a knot of the reference grid adds, twice at the first sample), and the
+// per-sample interpolation between knots. The element set is leo_orbit's kind (570 km, 64.9°), given as
+// the numbers of its two lines (the board parses no text).
+template <class F>
+std::uint64_t instructions_of(F&& f, std::uint32_t ticks_per_million, int repeat) {
+    std::uint64_t worst = 0;
+    for (int k = 0; k < repeat; ++k) {
+        const std::uint32_t start = systick();
+        f(k);
+        const std::uint64_t n =
+            static_cast<std::uint64_t>(ticks_between(start, systick())) * 1000000u / ticks_per_million;
+        if (n > worst) worst = n;
+    }
+    return worst;
+}
+
+void bench_references(std::uint32_t ticks_per_million) {
+    using namespace attitude_estimator;
+    orbit::Tle tle;
+    tle.epoch_jd_utc = 2461119.5;  // 2026-03-20 00:00 UTC
+    tle.mean_motion_rev_per_day = 14.98996383;
+    tle.eccentricity = 0.001;
+    tle.inclination_deg = 64.9;
+    tle.raan_deg = 120.0;
+    tle.arg_perigee_deg = 90.0;
+    tle.mean_anomaly_deg = 270.0;
+    tle.bstar_per_earth_radius = 3.0e-5;
+    const CalendarInstant epoch{.year = 2026, .month = 3, .day = 21, .hour = 0, .minute = 0, .second = 0.0};
+    for (const std::int32_t degree : {1, 8, 13}) {
+        static OnboardReferenceConfig<float> config;
+        make_reference_config(config, epoch, tle.mean_elements<double>(), tle.epoch_jd_utc, degree, 10.0);
+        volatile float sink = 0.0f;
+        const std::uint64_t all =
+            instructions_of([&](int k) { sink = evaluate_references(config, 10.0f * static_cast<float>(k)).field[0]; },
+                            ticks_per_million, 20);
+        const std::uint64_t field = instructions_of(
+            [&](int k) {
+                const Vec3<float> r{6948e3f * std::cos(0.3f * k), 0.0f, 6948e3f * std::sin(0.3f * k)};
+                sink = field_ecef(config.field, r, 2026.2f)[0];
+            },
+            ticks_per_million, 20);
+        print("references_degree_");
+        print(static_cast<std::uint64_t>(degree));
+        print(" evaluation_max_instructions=");
+        print(all);
+        print(" field_max_instructions=");
+        print(field);
+        if (degree == 8) {
+            orbit::OrbitState<float> state;
+            const std::uint64_t sgp4 = instructions_of(
+                [&](int k) {
+                    config.orbit.propagate(1440.0f + 0.5f * static_cast<float>(k), state);
+                    sink = state.position_km[0];
+                },
+                ticks_per_million, 20);
+            const std::uint64_t sun = instructions_of(
+                [&](int k) { sink = onboard_sun(config.clock, 10.0f * static_cast<float>(k)).direction[0]; },
+                ticks_per_million, 20);
+            static ReferenceState<float> state_between;
+            onboard_references(state_between, config, 0.0f);
+            const std::uint64_t between = instructions_of(
+                [&](int k) {
+                    sink = onboard_references(state_between, config, 0.05f * static_cast<float>(k + 1)).sun[0];
+                },
+                ticks_per_million, 150);
+            print(" sgp4_max_instructions=");
+            print(sgp4);
+            print(" sun_max_instructions=");
+            print(sun);
+            print(" interpolation_max_instructions=");
+            print(between);
+        }
+        print("\n");
+    }
+}
+
 [[noreturn]] void semihosting_exit() {
     // SYS_EXIT with ADP_Stopped_ApplicationExit: QEMU (-semihosting-config enable=on) ends.
     register std::uint32_t r0 asm("r0") = 0x18;
@@ -209,6 +288,12 @@ int main() {
          }},
         {"three_faces_qmethod", [](EstimatorData& d) { d.sun_method = SunMethod::three_faces; }},
         {"difference_qmethod_mekf", [](EstimatorData& d) { d.filter = FilterKind::mekf; }},
+        {"difference_qmethod_mekf_onboard_references",
+         [](EstimatorData& d) {
+             d.filter = FilterKind::mekf;
+             d.reference_source = ReferenceSource::onboard;  // degree 8, a knot every 10 s (200 samples)
+             d.tle_elements = {2461118.5, 14.98524078, 0.0012, 64.9, 3.1277, 90.376, 275.3137, 1.5e-4};
+         }},
         {"cones_qmethod_mekf_scale_setreset",
          [](EstimatorData& d) {
              d.sun_method = SunMethod::cones;
@@ -218,6 +303,7 @@ int main() {
          }},
     };
     for (const Case& c : cases) run(c, ticks_per_million);
+    bench_references(ticks_per_million);
     print("stack_bytes=");
     print(static_cast<std::uint64_t>(firmware::stack_used()));
     print("\n");

@@ -166,6 +166,16 @@ INSTANTIATE_TEST_SUITE_P(Configurations, BoardVsEmulator,
                                                     d.sun_method = SunMethod::three_faces;
                                                     d.angular_response = AngularResponse::kelly;
                                                     d.adc_bits = 10;
+                                                }},
+                                           // The on-board references from the element set as numbers (the
+                                           // text lines do not cross the wire), a knot every second.
+                                           Case{"onboard_references",
+                                                [](EstimatorData& d) {
+                                                    d.reference_source = ReferenceSource::onboard;
+                                                    d.tle_elements = {2461118.5, 14.98524078, 0.0012,   64.9,
+                                                                      3.1277,    90.376,      275.3137, 1.5e-4};
+                                                    d.reference_period = 1.0;
+                                                    d.filter = FilterKind::mekf;
                                                 }}),
                          [](const auto& info) { return std::string(info.param.name); });
 

@@ -8,6 +8,8 @@
 #include <cstdint>
 
 #include "attitude_estimator/onboard_computer.hpp"
+#include "fmu/fixed_string.hpp"  // a plain fixed-capacity string (the TLE lines; not sent to the firmware)
+#include "orbit/tle.hpp"         // the Tle struct (its parser is called by the block only)
 
 namespace attitude_estimator {
 
@@ -17,6 +19,9 @@ using Faces = std::array<double, 6>;  // one value per face: +x, −x, +y, −y,
 // Longest sun-vector history the spin-rate FFT can analyse (samples; 102 s at 20 Hz). The history is part
 // of the FMU state, so it has a fixed size inside the data struct.
 inline constexpr std::int32_t kMaxSpinWindow = 2048;
+
+// The numbers of a two-line element set (tle_elements): epoch, n, e, i, node, perigee, M, B*.
+inline constexpr std::size_t kElementCount = 8;
 
 // The panels' angular response the sun methods invert (the `angular_response` choice).
 enum class AngularResponse : std::int32_t { cosine = 0, kelly = 1 };
@@ -91,6 +96,27 @@ struct EstimatorData {
     // magnetometer whose set_reset_command is not wired to mag_set_reset (its readings never flip).
     std::int32_t mag_set_reset_samples = 0;
     std::int32_t mag_offset_window = 20;
+    // The reference vectors (onboard_references.hpp): the inputs sun_ref, mag_ref, sun_distance, or the
+    // computer's own models from its element set at its clock.
+    ReferenceSource reference_source = ReferenceSource::inputs;
+    fmu::FixedString<80> tle_line1{};  // the computer's own two-line element set (uplinked)
+    fmu::FixedString<80> tle_line2{};
+    std::int32_t field_degree = 8;         // IGRF-14 truncated to this degree on board (1 = dipole … 13)
+    std::int32_t clock_epoch_year = 2026;  // the computer's clock: UTC at t = 0
+    std::int32_t clock_epoch_month = 3;
+    std::int32_t clock_epoch_day = 20;
+    std::int32_t clock_epoch_hour = 0;
+    std::int32_t clock_epoch_minute = 0;
+    double clock_epoch_second = 0.0;
+    double reference_period = 10.0;  // s between two evaluations of the on-board orbit, sun and field
+    // The same element set as numbers, in the set's own units: epoch (Julian date, UTC), mean motion
+    // (rev/day), eccentricity, inclination, right ascension of the node, argument of perigee, mean anomaly
+    // (deg), B* (1/Earth radii). Used when tle_line1 and tle_line2 are empty: the firmware gets its set this
+    // way, as the bridge's configure frames carry numbers only.
+    std::array<double, kElementCount> tle_elements{};
+    // The set the computer uses, parsed from tle_line1/2 by the orbit library in the block's configure()
+    // (not declared: the block never parses text; all zero on the firmware, which then uses tle_elements).
+    std::array<double, kElementCount> parsed_elements{};
 
     // outputs (discrete: set at sample instants, held in between). Before the first sample: identity.
     std::array<double, 4> q_est{0.0, 0.0, 0.0, 1.0};                           // scalar-last [x, y, z, w], w >= 0
@@ -124,6 +150,8 @@ struct EstimatorData {
     std::int32_t filter_resets = 0;  // divergence resets so far
     bool mag_set_reset = true;       // the set/reset pulse commanded last: true set, false reset (to the sensor)
     Vec3d mag_offset{};              // V, the sensor offset estimated from set/reset pairs
+    Vec3d ref_sun{};                 // 1, the sun reference the last sample used (J2000)
+    Vec3d ref_mag{};                 // T, the field reference the last sample used (J2000)
 
     // discrete state
     double t_start = 0.0;  // s, the start time: sample k is due at t_start + k·sample_period
@@ -143,6 +171,9 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d);
 // The inputs of a sample, in T.
 template <class T>
 OnboardInputs<T> onboard_inputs_from(const EstimatorData& d);
+// The element set's numbers as the orbit library holds them (tle.hpp's Tle: its units, its epoch).
+orbit::Tle tle_from_numbers(const std::array<double, kElementCount>& e) noexcept;
+std::array<double, kElementCount> numbers_from_tle(const orbit::Tle& t) noexcept;
 // A sample's outputs into the block's output variables (double).
 template <class T>
 void store_outputs(EstimatorData& d, const OnboardOutputs<T>& out);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "environment/almanac_formulas.hpp"
 #include "environment/constants.hpp"
 #include "environment/earth_rotation.hpp"
 
@@ -9,16 +10,11 @@ namespace environment {
 
 SunPosition sun_almanac(double jd) {
     // Astronomical Almanac, low-precision formulas for the Sun (valid 1950-2050, ~0.01 deg).
-    const double n = jd - kJulianDateJ2000;
-    const double L = (280.460 + 0.9856474 * n) * kDegToRad;
-    const double g = (357.528 + 0.9856003 * n) * kDegToRad;
-    const double lambda = L + (1.915 * std::sin(g) + 0.020 * std::sin(2.0 * g)) * kDegToRad;
-    const double eps = (23.439 - 0.0000004 * n) * kDegToRad;
-    const double r_au = 1.00014 - 0.01671 * std::cos(g) - 0.00014 * std::cos(2.0 * g);
+    // The formula is shared with the on-board computer (almanac_formulas.hpp).
+    const formulas::AlmanacSun<double> a = formulas::sun_almanac_of_date(jd - kJulianDateJ2000);
     SunPosition s;
-    s.direction_eci =
-        Eigen::Vector3d(std::cos(lambda), std::cos(eps) * std::sin(lambda), std::sin(eps) * std::sin(lambda));
-    s.distance = r_au * kAstronomicalUnit;
+    s.direction_eci = Eigen::Vector3d(a.direction[0], a.direction[1], a.direction[2]);
+    s.distance = a.distance_au * kAstronomicalUnit;
     return s;
 }
 

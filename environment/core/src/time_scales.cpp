@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "environment/almanac_formulas.hpp"
 #include "environment/constants.hpp"
 
 namespace environment {
@@ -19,25 +20,15 @@ double julian_date(const UtcDate& d) {
         throw std::invalid_argument("julian_date: calendar field out of range");
     }
     // Meeus, Astronomical Algorithms (2nd ed.), eq. 7.1, Gregorian calendar.
-    int y = d.year;
-    int m = d.month;
-    if (m <= 2) {
-        y -= 1;
-        m += 12;
-    }
-    const int a = y / 100;
-    const int b = 2 - a + a / 4;
+    // (almanac_formulas.hpp, shared with the on-board computer)
     const double day_fraction = (d.hour + (d.minute + d.second / 60.0) / 60.0) / 24.0;
-    return std::floor(365.25 * (y + 4716)) + std::floor(30.6001 * (m + 1)) + d.day + b - 1524.5 + day_fraction;
+    return formulas::julian_date_at_midnight(d.year, d.month, d.day) + day_fraction;
 }
 
 double gmst(double jd_ut1) {
     // IAU 1982 GMST (Vallado eq. 3-47), seconds of time; T in Julian centuries of UT1 from J2000.
-    const double t = (jd_ut1 - kJulianDateJ2000) / 36525.0;
-    double seconds = 67310.54841 + (876600.0 * 3600.0 + 8640184.812866) * t + 0.093104 * t * t - 6.2e-6 * t * t * t;
-    seconds = std::fmod(seconds, kSecondsPerDay);
-    if (seconds < 0.0) seconds += kSecondsPerDay;
-    return seconds / kSecondsPerDay * 2.0 * kPi;
+    // (almanac_formulas.hpp, shared with the on-board computer)
+    return formulas::gmst_seconds((jd_ut1 - kJulianDateJ2000) / 36525.0) / kSecondsPerDay * 2.0 * kPi;
 }
 
 double decimal_year(double jd) {

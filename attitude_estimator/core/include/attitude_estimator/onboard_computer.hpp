@@ -13,6 +13,7 @@
 #include "attitude_estimator/angular_rate.hpp"
 #include "attitude_estimator/estimator.hpp"
 #include "attitude_estimator/mekf.hpp"
+#include "attitude_estimator/onboard_references.hpp"
 #include "attitude_estimator/set_reset.hpp"
 
 namespace attitude_estimator {
@@ -33,6 +34,10 @@ struct OnboardSettings {
     MekfConfig<T> mekf{};
     T sample_period = T(0.05);  // s
     T rate_interval = T(2);     // s, rate.min_interval
+    // The reference vectors: the inputs' (sun_ref, mag_ref, sun_distance), or computed on board from the
+    // computer's own element set, sun ephemeris and field model (onboard_references.hpp).
+    ReferenceSource reference_source = ReferenceSource::inputs;
+    OnboardReferenceConfig<T> references{};
 };
 
 template <class T>
@@ -60,6 +65,7 @@ struct OnboardState {
     bool has_last = false;
     T step_turn = T(0);  // rad per sample (exponential average)
     std::int32_t samples = 0;
+    ReferenceState<T> references{};  // the on-board models' last two evaluations
 };
 
 template <class T>
@@ -78,6 +84,7 @@ struct OnboardOutputs {
     T attitude_bound = T(0);    // rad, 3σ
     bool filter_valid = false;
     std::int32_t filter_resets = 0;
+    References<T> references{};  // the reference vectors this sample used (the inputs', or the on-board ones)
 };
 
 // Power-up: nothing remembered, the sensor set, and no pulse at the first sample (a host re-reads the

@@ -1,0 +1,145 @@
+// The block's `reference_source` choice: the inputs' reference vectors, or the computer's own from its
+// element set, sun ephemeris and field model at its clock. The on-board values are checked against an
+// independent chain: the environment's truth functions (almanac sun in J2000, IAU 1982 GMST, IGRF-14 at
+// degree 8, its Earth-fixed rotation) at the position SGP4 gives for the same element set.
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+#include <cmath>
+#include <string>
+
+#include "block_simulation.hpp"
+#include "environment/earth_rotation.hpp"
+#include "environment/geomagnetic_field.hpp"
+#include "environment/sun_ephemeris.hpp"
+#include "environment/time_scales.hpp"
+#include "fmu/errors.hpp"
+#include "orbit/sgp4.hpp"
+#include "orbit/tle.hpp"
+
+namespace attitude_estimator {
+namespace {
+
+using test::Simulation;
+
+// A 570 km, 64.9° orbit (the bundled leo_orbit's) with its epoch at the clock's default, 2026-03-20 00:00
+// UTC (day 79); checksums computed by hand from the modulo-10 rule.
+const std::string kLine1 = "1 99999U 26001A   26079.00000000  .00000500  00000-0  30000-4 0  9990";
+const std::string kLine2 = "2 99999  64.9000 120.0000 0010000  90.0000 270.0000 14.98996383    19";
+
+Eigen::Vector3d eig(const Vec3d& v) {
+    return {v[0], v[1], v[2]};
+}
+
+// The truth's chain at the block's time t (s after 2026-03-20 00:00 UTC), degree-8 field.
+struct Expected {
+    Eigen::Vector3d sun, field;
+};
+Expected expected_at(double t) {
+    const orbit::Tle tle = orbit::parse_tle(kLine1, kLine2);
+    orbit::Sgp4<double> sgp4;
+    EXPECT_EQ(sgp4.initialize(tle.mean_elements<double>()), orbit::Sgp4Status::ok);
+    orbit::OrbitState<double> s;
+    EXPECT_EQ(sgp4.propagate(t / 60.0, s), orbit::Sgp4Status::ok);
+    const double jd = environment::julian_date(environment::UtcDate{2026, 3, 20, 0, 0, 0.0}) + t / 86400.0;
+    // TEME → Earth-fixed by GMST; the field there; back to J2000 by the environment's rotation.
+    const double g = environment::gmst(jd);
+    const Eigen::Vector3d r_teme = s.position_km * 1e3;
+    const Eigen::Vector3d r_ecef(std::cos(g) * r_teme.x() + std::sin(g) * r_teme.y(),
+                                 -std::sin(g) * r_teme.x() + std::cos(g) * r_teme.y(), r_teme.z());
+    const Eigen::Vector3d b_ecef =
+        environment::spherical_harmonic_field(environment::igrf_coefficients(environment::decimal_year(jd)), 8, r_ecef);
+    return {environment::sun_almanac_j2000(jd).direction_eci, environment::ecef_from_eci(jd).transpose() * b_ecef};
+}
+
+void set_onboard(Simulation& sim) {
+    sim.data().reference_source = ReferenceSource::onboard;
+    sim.data().tle_line1.assign(kLine1);
+    sim.data().tle_line2.assign(kLine2);
+}
+
+TEST(EstimatorFmuReferences, InputsAreUsedByDefault) {
+    Simulation sim;
+    sim.data().sun_ref = {0.6, 0.8, 0.0};
+    sim.data().mag_ref = {1e-5, -2e-5, 3e-5};
+    sim.start(0.0);
+    EXPECT_EQ(sim.data().ref_sun, (Vec3d{0.6, 0.8, 0.0}));
+    EXPECT_EQ(sim.data().ref_mag, (Vec3d{1e-5, -2e-5, 3e-5}));
+}
+
+TEST(EstimatorFmuReferences, OnboardComputesItsOwnAndIgnoresTheInputs) {
+    for (const bool single : {false, true}) {
+        Simulation sim;
+        set_onboard(sim);
+        if (single) sim.data().precision = Precision::single_precision;
+        sim.data().sun_ref = {0.6, 0.8, 0.0};  // what the truth-fed wiring would give: ignored
+        sim.data().mag_ref = {1e-5, -2e-5, 3e-5};
+        sim.start(0.0);
+        // float: the position to ~1 m in 7e6, the field's direction to ~1e-6.
+        const double tol = single ? 2e-5 : 1e-9;
+        for (const double t : {0.0, 25.0, 1000.0}) {
+            if (t > 0.0) sim.advance_to(t);
+            const Expected e = expected_at(t);
+            const auto& d = sim.data();
+            EXPECT_LT(eig(d.ref_sun).normalized().cross(e.sun).norm(), tol) << t;
+            // Between two knots 10 s apart the field is interpolated: ω²Δ²/8 of its turn, 6e-5 rad at most.
+            const double knot_tol = std::fmod(t, 10.0) == 0.0 ? tol : 1e-4;
+            EXPECT_LT((eig(d.ref_mag) - e.field).norm() / e.field.norm(), knot_tol) << t;
+        }
+    }
+}
+
+TEST(EstimatorFmuReferences, TheChoiceSwitchesTheAttitude) {
+    // The same sensor readings give another attitude when the references change.
+    Simulation inputs, onboard;
+    set_onboard(onboard);
+    inputs.start(0.0);
+    onboard.start(0.0);
+    ASSERT_TRUE(inputs.data().valid);
+    ASSERT_TRUE(onboard.data().valid);
+    double diff = 0.0;
+    for (std::size_t k = 0; k < 4; ++k) diff += std::abs(inputs.data().q_est[k] - onboard.data().q_est[k]);
+    EXPECT_GT(diff, 1e-3);
+}
+
+TEST(EstimatorFmuReferences, TheSetAsNumbersIsTheSetAsText) {
+    // tle_elements, the firmware's way of getting the set, against the parsed lines: identical samples.
+    Simulation text, numbers;
+    set_onboard(text);
+    numbers.data().reference_source = ReferenceSource::onboard;
+    // Read off kLine1/kLine2 by hand: epoch 2026 day 79.0 = JD 2461119.5; n, e, i, node, perigee, M, B*.
+    numbers.data().tle_elements = {2461119.5, 14.98996383, 0.001, 64.9, 120.0, 90.0, 270.0, 3.0e-5};
+    text.start(0.0);
+    numbers.start(0.0);
+    text.advance_to(30.0);
+    numbers.advance_to(30.0);
+    EXPECT_EQ(text.data().ref_mag, numbers.data().ref_mag);
+    EXPECT_EQ(text.data().ref_sun, numbers.data().ref_sun);
+    EXPECT_EQ(text.data().q_est, numbers.data().q_est);
+}
+
+TEST(EstimatorFmuReferences, ABadElementSetIsRefusedWithItsReason) {
+    Simulation sim;
+    set_onboard(sim);
+    std::string line2 = kLine2;
+    line2.back() = '8';  // wrong checksum
+    sim.data().tle_line2.assign(line2);
+    try {
+        sim.start(0.0);
+        FAIL() << "a wrong checksum was accepted";
+    } catch (const fmu::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("tle_line"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("checksum"), std::string::npos) << e.what();
+    }
+    Simulation empty;
+    empty.data().reference_source = ReferenceSource::onboard;
+    EXPECT_THROW(empty.start(0.0), fmu::Error);
+    Simulation day;
+    set_onboard(day);
+    day.data().clock_epoch_month = 2;
+    day.data().clock_epoch_day = 30;
+    EXPECT_THROW(day.start(0.0), fmu::Error);
+}
+
+}  // namespace
+}  // namespace attitude_estimator
