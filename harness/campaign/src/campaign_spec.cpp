@@ -343,6 +343,13 @@ CampaignSpec parse_spec(const std::string& text, const std::filesystem::path& fi
 }
 
 CampaignSpec read_spec(const std::filesystem::path& file) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec))
+        throw CampaignError("campaign spec " + file.string() + ": not a regular file");
+    if (const auto size = std::filesystem::file_size(file, ec); !ec && size > max_spec_bytes)
+        throw CampaignError("campaign spec " + file.string() + " is " + std::to_string(size) +
+                            " bytes, more than the limit of " + std::to_string(max_spec_bytes) +
+                            " bytes (max_spec_bytes)");
     std::ifstream in(file);
     if (!in) throw CampaignError("cannot read campaign spec " + file.string());
     std::stringstream text;

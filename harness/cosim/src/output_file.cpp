@@ -13,7 +13,8 @@ namespace cosim {
 namespace fs = std::filesystem;
 
 bool same_file(const fs::path& a, const fs::path& b) {
-    struct stat sa {}, sb {};
+    struct stat sa {
+    }, sb{};
     if (::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0)
         return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
     std::error_code ea, eb;
@@ -41,11 +42,12 @@ PendingFile::PendingFile(const fs::path& target) : target_(target) {
     std::string pattern = (folder / ("." + target.filename().string() + ".XXXXXX")).string();
     const int fd = ::mkstemp(pattern.data());
     if (fd < 0) throw CosimError("cannot write " + target.string() + ": " + std::strerror(errno));
-    ::fchmod(fd, 0644 & ~[] {
-        const mode_t m = ::umask(0);
-        ::umask(m);
-        return m;
-    }());
+    ::fchmod(
+        fd, 0644 & ~[] {
+            const mode_t m = ::umask(0);
+            ::umask(m);
+            return m;
+        }());
     ::close(fd);
     temporary_ = pattern;
 }
