@@ -333,9 +333,11 @@ TEST(CosimHostile, ASecondSignalAbortsWithItsOwnCodeAndRemovesTheFolders) {
     ::kill(child.pid, SIGHUP);
     const int status = child.wait_status();
     ASSERT_TRUE(WIFEXITED(status)) << "killed by the signal";
-    // Either the first was noticed and the run stopped cleanly before the second came, or it aborted.
+    // Either one was noticed and the run stopped cleanly before the other came (pending signals arrive
+    // in either order), or the second aborted it.
     const int code = WEXITSTATUS(status);
-    EXPECT_TRUE(code == 130 || code == aborted_exit_code) << code << "; " << slurp(s.root / "err");
+    EXPECT_TRUE(code == 128 + SIGINT || code == 128 + SIGHUP || code == aborted_exit_code)
+        << code << "; " << slurp(s.root / "err");
     EXPECT_TRUE(fs::is_empty(s.root / "tmp")) << "an extraction directory was left behind";
     EXPECT_EQ(read_csv(csv).rows(), 1u) << "the row flushed before the signal was lost";
 }
