@@ -273,3 +273,25 @@ TEST(Campaign, OversizedOrNonRegularSpecsAreRefused) {
     }
     std::filesystem::remove_all(dir);
 }
+
+// A value of the wrong type (a text where a Real is, 1.5 where an Integer is) fails the campaign
+// before any run (issue 24): it used to fail every run, one after the other, and exit 0.
+TEST(Campaign, ValuesOfTheWrongTypeAreRefusedBeforeAnyRun) {
+    const auto dir = fresh_dir("types");
+    for (const char* setting : {"est.sample_period=fast", "est.solver=no_such_item"}) {
+        auto o = options_for("leo_short.toml", dir);
+        o.runs = 2;
+        o.stop_time = 5.0;
+        o.figures = false;
+        o.settings = {setting};
+        std::ostringstream out;
+        try {
+            run_campaign(o, out);
+            ADD_FAILURE() << setting << " was run";
+        } catch (const std::exception& e) {
+            EXPECT_NE(std::string(e.what()).find("[set]"), std::string::npos) << e.what();
+        }
+        EXPECT_FALSE(std::filesystem::exists(dir / "results.csv"));
+    }
+    std::filesystem::remove_all(dir);
+}
