@@ -360,10 +360,35 @@ TEST(Udp, RealtimeClockStartsAfterTheBoardIsConfigured) {
 // A sample period that the instants' tolerance cannot resolve, told to a board that takes it (issue 24):
 // the master used to count its instants one at a time, for ever. It is refused before the board is
 // configured, naming the limit of the count.
+// A board that acknowledges any configuration (the sampler's emulator would refuse a period below its
+// declared minimum) and answers requests with zeros.
+struct AcknowledgingBoard {
+    std::unique_ptr<bridge::UdpLink> server = free_udp();
+    std::atomic<bool> stop{false};
+    std::thread thread;
+    AcknowledgingBoard() {
+        thread = std::thread([this] {
+            while (!stop) {
+                const auto bytes = server->receive(bridge::Clock::now() + std::chrono::milliseconds(100));
+                if (!bytes) continue;
+                bridge::Frame frame = bridge::decode(*bytes);
+                frame.type = frame.type == bridge::FrameType::configure ? bridge::FrameType::configured
+                                                                        : bridge::FrameType::reply;
+                if (frame.type == bridge::FrameType::reply) frame.values.assign(4, 0.0);
+                if (frame.type == bridge::FrameType::configured) frame.values.clear();
+                server->send(bridge::encode(frame));
+            }
+        });
+    }
+    ~AcknowledgingBoard() {
+        stop = true;
+        thread.join();
+    }
+};
+
 TEST(Udp, UnresolvableSamplePeriodIsRefusedNotCounted) {
-    auto link = free_udp();
-    const int port = link->port();
-    Board board(std::move(link), {});
+    AcknowledgingBoard board;
+    const int port = board.server->port();
     for (const char* period : {"s.sample_period=1e-300", "s.sample_period=1e-13"}) {
         try {
             run(annotation(R"(port="1" timeout_ms="2000")"), port, false, {period});
