@@ -169,7 +169,8 @@ int run_campaign(const CampaignOptions& options, std::ostream& out) {
         return campaign_on_rank0(setup, options, mpi.size(), out);
     } catch (const std::exception& e) {
         std::cerr << "cosim campaign (rank " << mpi.rank() << "): " << e.what() << "\n";
-        mpi.abort(1);
+        // A signal ends the job as it ends a single process: 128 + signal.
+        mpi.abort(cosim::interrupt_signal() ? 128 + cosim::interrupt_signal() : 1);
     }
 }
 

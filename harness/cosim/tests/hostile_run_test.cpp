@@ -256,6 +256,20 @@ TEST(CosimHostile, RunOutputOverAnInputIsRefused) {
     expect_unchanged(s.root / "test_ball.fmu", fmu);
 }
 
+TEST(CosimHostile, SimulateOutputOverItsFmuIsRefused) {
+    Scratch s;
+    fs::copy_file(fmu_dir / "test_ball.fmu", s.root / "ball.fmu");
+    const std::string fmu = slurp(s.root / "ball.fmu");
+    Child child({"simulate", (s.root / "ball.fmu").string(), "--output", (s.root / "ball.fmu").string()},
+                s.root / "out", s.root / "err", s.root / "tmp");
+    ASSERT_GT(child.pid, 0);
+    const int status = child.wait_status();
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_NE(WEXITSTATUS(status), 0);
+    EXPECT_NE(slurp(s.root / "err").find("same file as the input"), std::string::npos) << slurp(s.root / "err");
+    expect_unchanged(s.root / "ball.fmu", fmu);
+}
+
 TEST(CosimHostile, ARefusedRunLeavesAnExistingCsvAlone) {
     Scratch s;
     const fs::path csv = s.root / "results.csv";
