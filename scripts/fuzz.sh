@@ -14,9 +14,14 @@ jobs=${PVATT_FUZZ_JOBS:-2}
 CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPVATT_FUZZ=ON -DPVATT_BENCHMARKS=OFF \
   ${CMAKE_CXX_COMPILER_LAUNCHER:+-DCMAKE_CXX_COMPILER_LAUNCHER=$CMAKE_CXX_COMPILER_LAUNCHER} \
   ${CMAKE_C_COMPILER_LAUNCHER:+-DCMAKE_C_COMPILER_LAUNCHER=$CMAKE_C_COMPILER_LAUNCHER} >/dev/null
-cmake --build "$build" --target fuzzers -j"$jobs"
-
 targets=("$@")
+# Only the targets named (all of them when none is): a state fuzzer builds a whole block with ASan.
+if [ ${#targets[@]} -eq 0 ]; then
+  cmake --build "$build" --target fuzzers -j"$jobs"
+else
+  cmake --build "$build" --target "${targets[@]}" -j"$jobs"
+fi
+
 if [ ${#targets[@]} -eq 0 ]; then
   for f in "$build"/fuzzers/fuzz_*; do targets+=("$(basename "$f")"); done
 fi

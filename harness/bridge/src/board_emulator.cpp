@@ -20,6 +20,11 @@ std::vector<const fmu::Variable*> by_causality(const fmu::TableBase& table, fmu:
     return out;
 }
 
+// An Integer or Enumeration from an f64: only a whole number in the 32-bit range (1.4 is not item 1).
+bool exact_int32(double x) {
+    return x == std::floor(x) && x >= -2147483648.0 && x <= 2147483647.0;
+}
+
 // Every value on the wire is an f64: Integers travel exactly up to 2^53, Booleans as 0 or 1.
 void write_value(std::span<std::byte> data, const fmu::Variable& v, double x) {
     switch (v.type) {
@@ -27,11 +32,13 @@ void write_value(std::span<std::byte> data, const fmu::Variable& v, double x) {
             fmu::write_real(data, v, x);
             break;
         case fmu::ValueType::Integer:
-            fmu::write_integer(data, v, static_cast<std::int32_t>(std::lround(x)));
+            if (!exact_int32(x)) throw fmu::Error(v.name + " = " + std::to_string(x) + " is not a 32-bit integer");
+            fmu::write_integer(data, v, static_cast<std::int32_t>(x));
             break;
         case fmu::ValueType::Enumeration: {
-            const auto value = static_cast<std::int32_t>(std::lround(x));
-            if (!v.item_valued(value)) throw fmu::Error(v.name + " = " + std::to_string(value) + " is not an item");
+            if (!exact_int32(x) || !v.item_valued(static_cast<std::int32_t>(x)))
+                throw fmu::Error(v.name + " = " + std::to_string(x) + " is not the value of one of its items");
+            const auto value = static_cast<std::int32_t>(x);
             fmu::write_integer(data, v, value);
             break;
         }
@@ -116,7 +123,8 @@ Frame BoardEmulator::configure(const Frame& frame) {
         const fmu::Variable& v = *parameters_[frame.sequence + i];
         const double x = frame.values[i];
         if (!std::isfinite(x) || (v.min && x < *v.min) || (v.max && x > *v.max) ||
-            (v.type == fmu::ValueType::Enumeration && !v.item_valued(static_cast<std::int32_t>(std::lround(x)))))
+            ((v.type == fmu::ValueType::Integer || v.type == fmu::ValueType::Enumeration) && !exact_int32(x)) ||
+            (v.type == fmu::ValueType::Enumeration && !v.item_valued(static_cast<std::int32_t>(x))))
             throw FrameError("configuration: " + v.name + " = " + std::to_string(x) + " is not a value it takes");
     }
     if (configuration_.size() != parameters_.size()) {

@@ -5,6 +5,7 @@
 // for "identical results".
 #include <gtest/gtest.h>
 
+#include <signal.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -16,6 +17,8 @@
 #include "bridge/board_emulator.hpp"
 #include "cosim_error.hpp"
 #include "execution.hpp"
+#include "hardware_bridge.hpp"
+#include "interrupt.hpp"
 #include "system.hpp"
 #include "system_description.hpp"
 
@@ -352,6 +355,72 @@ TEST(Udp, RealtimeClockStartsAfterTheBoardIsConfigured) {
                   0.05 * static_cast<double>(k))
             << "frame " << k;
     EXPECT_EQ(hw.link.answered, 11);
+}
+
+// A sample period that the instants' tolerance cannot resolve, told to a board that takes it (issue 24):
+// the master used to count its instants one at a time, for ever. It is refused before the board is
+// configured, naming the limit of the count.
+// A board that acknowledges any configuration (the sampler's emulator would refuse a period below its
+// declared minimum) and answers requests with zeros.
+struct AcknowledgingBoard {
+    std::unique_ptr<bridge::UdpLink> server = free_udp();
+    std::atomic<bool> stop{false};
+    std::thread thread;
+    AcknowledgingBoard() {
+        thread = std::thread([this] {
+            while (!stop) {
+                const auto bytes = server->receive(bridge::Clock::now() + std::chrono::milliseconds(100));
+                if (!bytes) continue;
+                bridge::Frame frame = bridge::decode(*bytes);
+                frame.type = frame.type == bridge::FrameType::configure ? bridge::FrameType::configured
+                                                                        : bridge::FrameType::reply;
+                if (frame.type == bridge::FrameType::reply) frame.values.assign(4, 0.0);
+                if (frame.type == bridge::FrameType::configured) frame.values.clear();
+                server->send(bridge::encode(frame));
+            }
+        });
+    }
+    ~AcknowledgingBoard() {
+        stop = true;
+        thread.join();
+    }
+};
+
+TEST(Udp, UnresolvableSamplePeriodIsRefusedNotCounted) {
+    AcknowledgingBoard board;
+    const int port = board.server->port();
+    for (const char* period : {"s.sample_period=1e-300", "s.sample_period=1e-13"}) {
+        try {
+            run(annotation(R"(port="1" timeout_ms="2000")"), port, false, {period});
+            ADD_FAILURE() << period << " was run";
+        } catch (const CosimError& e) {
+            EXPECT_NE(std::string(e.what()).find("max_sample_index"), std::string::npos) << e.what();
+        }
+    }
+    // The limit is the blocks' own (fmu::max_instant_index): a period it allows over the run still runs.
+    EXPECT_EQ(max_sample_index, 1e11);
+}
+
+// Waiting for a board is interruptible (issue 24): a signal during a long timeout_ms ends the wait at
+// once with Interrupted, not after the timeout with a link error.
+TEST(Udp, SignalEndsTheWaitForASilentBoard) {
+    install_interrupt_handlers();
+    clear_interrupt();
+    auto silent = free_udp();
+    std::thread signaller([] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        ::kill(::getpid(), SIGINT);
+    });
+    try {
+        run(annotation(R"(port="1" timeout_ms="60000")"), silent->port());
+        ADD_FAILURE() << "the run should have been interrupted";
+    } catch (const Interrupted& e) {
+        EXPECT_EQ(e.signal(), SIGINT);
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "not an interruption: " << e.what();
+    }
+    signaller.join();
+    clear_interrupt();
 }
 
 // The emulator's side: a bad frame is refused with a reason and the next good one still answered.

@@ -31,4 +31,19 @@ TEST(EstimatorBoard, FrameAtAHugeTimeIsRefusedAndTheNextAnswered) {
     EXPECT_EQ(board.answer(request(3, 0.05, n)).sequence, 3u);
 }
 
+// An Enumeration takes its items' values exactly (issue 24): 1.4 used to be rounded to item 1, 1e300
+// converted out of range.
+TEST(EstimatorBoard, EnumerationValuesThatAreNoExactItemAreRefused) {
+    for (const char* setting : {"solver=1.4", "solver=1e300", "solver=-0.5"}) {
+        try {
+            bridge::BoardEmulator board(std::make_unique<attitude_estimator::EstimatorBlock>(), {setting});
+            ADD_FAILURE() << setting << " was taken";
+        } catch (const std::exception& e) {
+            EXPECT_NE(std::string(e.what()).find("solver"), std::string::npos) << e.what();
+        }
+    }
+    EXPECT_NO_THROW(
+        bridge::BoardEmulator(std::make_unique<attitude_estimator::EstimatorBlock>(), {"solver=1"}));  // fast
+}
+
 }  // namespace

@@ -1,8 +1,12 @@
 #include "campaign_command.hpp"
 
+#include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 
 #include "campaign_error.hpp"
@@ -10,13 +14,51 @@
 #include "campaign_run.hpp"
 #include "collector.hpp"
 #include "drivers.hpp"
+#include "interrupt.hpp"
 #include "mpi_session.hpp"
+#include "output_file.hpp"
 #include "results_table.hpp"
+#include "ssp_archive.hpp"
 #include "summary.hpp"
+#include "system_description.hpp"
 
 namespace campaign {
 
 namespace {
+
+// An advisory lock (flock) on the campaign's output folder, held while the campaign writes its table: a
+// second campaign (a --resume started while the first runs) on the same folder is refused instead of
+// interleaving its rows. The folder, not results.csv, is locked: the table is replaced by its sorted copy.
+class FolderLock {
+public:
+    explicit FolderLock(const std::filesystem::path& folder) {
+        fd_ = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+        if (fd_ < 0) throw CampaignError("cannot open " + folder.string() + ": " + std::strerror(errno));
+        if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+            const int error = errno;
+            ::close(fd_);
+            throw CampaignError(folder.string() + (error == EWOULDBLOCK
+                                                       ? " is in use by another campaign (its lock is held): wait "
+                                                         "for it to end, or give another --output"
+                                                       : ": cannot lock: " + std::string(std::strerror(error))));
+        }
+    }
+    ~FolderLock() { ::close(fd_); }
+    FolderLock(const FolderLock&) = delete;
+    FolderLock& operator=(const FolderLock&) = delete;
+
+private:
+    int fd_ = -1;
+};
+
+// Nothing the campaign writes in its folder may be one of the files it reads (the spec, the system,
+// its FMUs and parameter files): `--output .` beside a spec named results.csv, a system named summary.md.
+void refuse_overwriting_inputs(const CampaignSetup& setup, const std::vector<std::filesystem::path>& outputs) {
+    std::vector<std::filesystem::path> inputs{setup.spec.file};
+    const auto more = cosim::system_inputs(setup.description, setup.options.fmu_dirs);
+    inputs.insert(inputs.end(), more.begin(), more.end());
+    for (const auto& output : outputs) cosim::refuse_overwriting_inputs("--output", output, inputs);
+}
 
 CampaignSetup setup_from(const CampaignOptions& options) {
     CampaignSpec spec = read_spec(options.spec);
@@ -37,6 +79,7 @@ int replay(const CampaignSetup& setup, long index, std::ostream& out) {
     std::filesystem::create_directories(setup.spec.output);
     const auto csv = setup.spec.output / ("run_" + std::to_string(index) + ".csv");
     const auto row_file = setup.spec.output / ("run_" + std::to_string(index) + ".row.csv");
+    refuse_overwriting_inputs(setup, {csv, row_file});
     const RunResult r = run_one(setup, index, csv);
     std::filesystem::remove(row_file);
     ResultsWriter(row_file, table_header(setup.spec), false).append(format_row(r));
@@ -46,13 +89,15 @@ int replay(const CampaignSetup& setup, long index, std::ostream& out) {
     for (std::size_t i = 1; i + trailing_columns < header.size(); ++i)
         out << "  " << header[i] << " = " << cells[i] << "\n";
     out << "full CSV: " << csv.string() << "\nits row: " << row_file.string() << "\n";
-    return 0;
+    return r.status == "failed" ? 1 : 0;  // a replayed failure is a failure of the command
 }
 
 int campaign_on_rank0(const CampaignSetup& setup, const CampaignOptions& options, int ranks, std::ostream& out) {
     const auto& spec = setup.spec;
     std::filesystem::create_directories(spec.output);
+    const FolderLock lock(spec.output);
     const auto table_file = spec.output / "results.csv";
+    refuse_overwriting_inputs(setup, {table_file, spec.output / "campaign.txt", spec.output / "summary.md"});
     const auto header = table_header(spec);
     std::map<long, std::string> rows;
     const bool append = options.resume && std::filesystem::exists(table_file);
@@ -62,9 +107,7 @@ int campaign_on_rank0(const CampaignSetup& setup, const CampaignOptions& options
     record_identity(spec.output, campaign_identity(setup), append);
     if (append) rows = read_results(table_file, header, spec.runs);
     ResultsWriter writer(table_file, header, append);
-    std::vector<long> to_do;
-    for (long i = 0; i < spec.runs; ++i)
-        if (!rows.contains(i)) to_do.push_back(i);
+    RunQueue to_do(spec.runs, rows);
     if (append)
         out << "resuming: " << rows.size() << " runs in " << table_file.string() << ", " << to_do.size() << " to do\n";
 
@@ -73,7 +116,7 @@ int campaign_on_rank0(const CampaignSetup& setup, const CampaignOptions& options
         progress = Progress::terminal;
     else if (options.progress && options.progress_lines)
         progress = Progress::log;
-    Collector collector(writer, rows, static_cast<long>(to_do.size()), ranks, progress);
+    Collector collector(writer, rows, to_do.size(), ranks, progress);
 #ifdef PVATT_MPI
     if (ranks > 1)
         run_distributed(setup, to_do, collector, ranks);
@@ -126,7 +169,8 @@ int run_campaign(const CampaignOptions& options, std::ostream& out) {
         return campaign_on_rank0(setup, options, mpi.size(), out);
     } catch (const std::exception& e) {
         std::cerr << "cosim campaign (rank " << mpi.rank() << "): " << e.what() << "\n";
-        mpi.abort(1);
+        // A signal ends the job as it ends a single process: 128 + signal.
+        mpi.abort(cosim::interrupt_signal() ? 128 + cosim::interrupt_signal() : 1);
     }
 }
 

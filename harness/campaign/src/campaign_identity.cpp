@@ -46,7 +46,12 @@ std::string campaign_identity(const CampaignSetup& s) {
 
 void record_identity(const std::filesystem::path& dir, const std::string& identity, bool resume) {
     const auto file = dir / "campaign.txt";
-    if (resume && std::filesystem::exists(file)) {
+    // A table without its identity was made by something else (or its campaign.txt lost): resuming it
+    // would add rows drawn under another seed or other settings to it.
+    if (resume && !std::filesystem::exists(file))
+        throw CampaignError("--resume: " + dir.string() + " has a results table but no " + file.filename().string() +
+                            " saying which campaign made it: refusing to add rows to it (use another --output)");
+    if (resume) {
         std::ifstream in(file);
         std::stringstream text;
         text << in.rdbuf();

@@ -41,6 +41,20 @@ void check_variable(const cosim::System& system, const std::string& name, const 
         throw CampaignError(what + ": '" + name + "' is computed by its FMU and cannot be set");
 }
 
+// The value a setting gives must fit its variable's type (a Real where an Integer is, a text that is
+// no item of an Enumeration): refused before any run instead of failing every run.
+void check_value(const cosim::System& system, const std::string& setting, const std::string& what) {
+    const cosim::Setting s = cosim::parse_setting(setting, true);
+    const auto& c = system.components()[system.component_index(s.component)];
+    const auto* v = c.description().find_variable(s.variable);
+    if (!v) return;  // check_variable names it
+    try {
+        cosim::typed_value(c.description(), *v, s, what);
+    } catch (const std::exception& e) {
+        throw CampaignError(what + ": " + e.what());
+    }
+}
+
 }  // namespace
 
 CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path>& fmu_dirs,
@@ -64,6 +78,11 @@ CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path
     for (const auto& setting : s.options.settings) check_variable(system, setting_variable(setting), "[set]");
     for (const auto& d : spec.draws)
         for (const auto& v : drawn_variables(d)) check_variable(system, v, "draw of " + d.target);
+    for (const auto& setting : s.options.settings) check_value(system, setting, "[set] " + setting);
+    // Every value a list draws, and one run's draws of every other kind (their type does not vary).
+    for (const auto& d : spec.draws)
+        for (const auto& value : d.values) check_value(system, d.target + "=" + value.text, "draw of " + d.target);
+    for (const auto& setting : draw_run(spec, 0).settings) check_value(system, setting, "draw " + setting);
     const MetricObserver check_metrics(spec.metrics, system);
 
     s.start_time = s.description.start_time.value_or(0.0);

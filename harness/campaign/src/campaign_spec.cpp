@@ -122,6 +122,8 @@ Draw read_draw(const Context& cx, const toml::table& t, std::size_t index) {
         d.max = number(cx, required(cx, t, hi, where), where + ": '" + hi + "'");
         if (allow_equal ? d.max < d.min : d.max <= d.min)
             cx.fail(t, where + ": '" + hi + "' must be " + (allow_equal ? "at least" : "above") + " '" + lo + "'");
+        // A draw computes min + (max - min) u: the span must be a double too.
+        if (!std::isfinite(d.max - d.min)) cx.fail(t, where + ": '" + hi + "' - '" + lo + "' overflows a double");
     };
     if (kind == "uniform") {
         only_keys(cx, t, where, {"kind", "target", "figure", "min", "max"});
@@ -133,6 +135,9 @@ Draw read_draw(const Context& cx, const toml::table& t, std::size_t index) {
         d.mean = number(cx, required(cx, t, "mean", where), where + ": 'mean'");
         d.sd = number(cx, required(cx, t, "sd", where), where + ": 'sd'");
         if (d.sd <= 0.0) cx.fail(t, where + ": 'sd' must be positive");
+        // Draws reach mean +- 40 sd at most (a 64-bit generator's tail): they must stay doubles.
+        if (!std::isfinite(std::abs(d.mean) + 40.0 * d.sd))
+            cx.fail(t, where + ": 'mean' and 'sd' give draws beyond the range of a double");
         d.truncated_below = t.contains("min");
         d.truncated_above = t.contains("max");
         d.min = d.truncated_below ? number(cx, *t.get("min"), where + ": 'min'") : -INFINITY;
@@ -164,6 +169,7 @@ Draw read_draw(const Context& cx, const toml::table& t, std::size_t index) {
             double sum = 0.0;
             for (double x : d.weights) sum += x;
             if (sum <= 0.0) cx.fail(*w, where + ": the weights must not all be zero");
+            if (!std::isfinite(sum)) cx.fail(*w, where + ": the weights' sum overflows a double");
         }
     } else if (kind == "grid" || kind == "list") {
         only_keys(cx, t, where, {"kind", "target", "figure", "values"});
@@ -343,6 +349,13 @@ CampaignSpec parse_spec(const std::string& text, const std::filesystem::path& fi
 }
 
 CampaignSpec read_spec(const std::filesystem::path& file) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec))
+        throw CampaignError("campaign spec " + file.string() + ": not a regular file");
+    if (const auto size = std::filesystem::file_size(file, ec); !ec && size > max_spec_bytes)
+        throw CampaignError("campaign spec " + file.string() + " is " + std::to_string(size) +
+                            " bytes, more than the limit of " + std::to_string(max_spec_bytes) +
+                            " bytes (max_spec_bytes)");
     std::ifstream in(file);
     if (!in) throw CampaignError("cannot read campaign spec " + file.string());
     std::stringstream text;

@@ -63,6 +63,8 @@ struct CampaignSpec {
 
 // Limits, named in the errors that enforce them.
 inline constexpr long max_runs = 100'000'000;
+// The largest spec read (1 MiB: the bundled specs are about 2 kB).
+inline constexpr std::uintmax_t max_spec_bytes = std::uintmax_t{1} << 20;
 inline constexpr double min_truncated_normal_mass = 1e-3;  // rejection sampling stays cheap
 
 CampaignSpec read_spec(const std::filesystem::path& file);

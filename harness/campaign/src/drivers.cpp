@@ -1,5 +1,6 @@
 #include "drivers.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <deque>
@@ -9,6 +10,7 @@
 #include <utility>
 
 #include "campaign_error.hpp"
+#include "interrupt.hpp"
 
 #ifdef PVATT_MPI
 #include <mpi.h>
@@ -16,8 +18,28 @@
 
 namespace campaign {
 
-void run_sequential(const CampaignSetup& setup, const std::vector<long>& to_do, Collector& collector) {
-    for (long index : to_do) collector.accept(0, format_row(run_one(setup, index)));
+RunQueue::RunQueue(long runs, const std::map<long, std::string>& done)
+    : runs_(runs),
+      size_(runs - static_cast<long>(std::count_if(
+                       done.begin(), done.end(), [&](const auto& row) { return row.first >= 0 && row.first < runs; }))),
+      done_(done) {}
+
+long RunQueue::next() {
+    std::lock_guard lock(mutex_);
+    while (next_ < runs_ && done_.contains(next_)) ++next_;
+    return next_ < runs_ ? next_++ : -1;
+}
+
+void RunQueue::clear() {
+    std::lock_guard lock(mutex_);
+    next_ = runs_;
+}
+
+void run_sequential(const CampaignSetup& setup, RunQueue& to_do, Collector& collector) {
+    for (long index = to_do.next(); index >= 0; index = to_do.next()) {
+        cosim::throw_if_interrupted();
+        collector.accept(0, format_row(run_one(setup, index)));
+    }
 }
 
 #ifdef PVATT_MPI
@@ -29,19 +51,12 @@ constexpr int tag_assign = 2;  // 0 -> worker: a run index, or -1 meaning "stop"
 
 }  // namespace
 
-void run_distributed(const CampaignSetup& setup, const std::vector<long>& to_do, Collector& collector, int ranks) {
+void run_distributed(const CampaignSetup& setup, RunQueue& queue, Collector& collector, int ranks) {
     std::mutex mutex;
-    std::deque<long> queue(to_do.begin(), to_do.end());
     std::deque<std::string> local_rows;
     std::exception_ptr local_error;
     std::atomic<bool> local_done = false;
-    auto next = [&]() -> long {
-        std::lock_guard lock(mutex);
-        if (queue.empty()) return -1;
-        const long index = queue.front();
-        queue.pop_front();
-        return index;
-    };
+    auto next = [&]() -> long { return cosim::interrupt_signal() ? -1 : queue.next(); };
     // Rank 0 computes too: on a small machine a dispatcher that only waits would waste a core. It
     // never calls MPI; the main thread below does, and sleeps while there is nothing to do.
     std::thread local([&] {
@@ -61,6 +76,7 @@ void run_distributed(const CampaignSetup& setup, const std::vector<long>& to_do,
     bool local_finished = false;  // the thread has ended and its last row is taken
     try {
         while (stopped < ranks - 1 || !local_finished) {
+            cosim::throw_if_interrupted();
             bool busy = false;
             int flag = 0;
             MPI_Status status;
@@ -90,10 +106,7 @@ void run_distributed(const CampaignSetup& setup, const std::vector<long>& to_do,
         }
     } catch (...) {
         // The caller aborts the job; the local thread must not outlive its captures.
-        {
-            std::lock_guard lock(mutex);
-            queue.clear();
-        }
+        queue.clear();
         local.join();
         throw;
     }

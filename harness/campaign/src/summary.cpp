@@ -6,11 +6,14 @@
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
+#include <iostream>
 #include <set>
 #include <sstream>
 
 #include "campaign_error.hpp"
+#include "cosim_error.hpp"
 #include "draws.hpp"
+#include "gnuplot.hpp"
 #include "metric_observer.hpp"
 #include "results_table.hpp"
 #include "statistics.hpp"
@@ -49,46 +52,30 @@ ResultRows split_rows(const std::vector<std::string>& header, const std::map<lon
 
 namespace {
 
-// gnuplot single-quoted strings end at a quote; file names keep letters, digits, '-' and '_'.
-std::string gp_string(const std::string& text) {
-    std::string out = "'";
-    for (char c : text) out += c == '\'' ? std::string("''") : std::string(1, c);
-    return out + "'";
-}
+using cosim::gnuplot_string;
 
 std::string file_name(const std::string& text) {
-    std::string out;
-    for (char c : text) out += std::isalnum(static_cast<unsigned char>(c)) || c == '-' ? c : '_';
-    return out;
+    return cosim::safe_file_name(text);
 }
 
-// gnuplot's own remarks (an empty range adjusted, ...) go to a log beside the figure, shown only
-// when it fails; the campaign's output stays the campaign's.
-void run_gnuplot(const std::string& script, const std::filesystem::path& png) {
-    const auto log = std::filesystem::path(png.string() + ".gnuplot.log");
-    const std::string command = "gnuplot > '" + log.string() + "' 2>&1";
-    if (log.string().find('\'') != std::string::npos)
-        throw CampaignError("a quote in the output folder's name: " + log.string());
-    FILE* gp = popen(command.c_str(), "w");
-    if (!gp) throw CampaignError("cannot start gnuplot (install the Debian package gnuplot-nox)");
-    std::fputs(script.c_str(), gp);
-    const int rc = pclose(gp);
-    if (rc != 0 || !std::filesystem::exists(png)) {
-        std::ifstream in(log);
-        std::stringstream text;
-        text << in.rdbuf();
-        std::error_code ignored;
-        std::filesystem::remove(log, ignored);
-        throw CampaignError("gnuplot failed drawing " + png.string() + ": " + text.str());
+// gnuplot runs in the campaign's folder and the script names files there by their names alone
+// (cosim::run_gnuplot): the folder's own name never reaches gnuplot. A figure that fails is a
+// message on stderr, leaves no PNG and does not stop the others: false.
+bool run_gnuplot(const std::string& script, const std::filesystem::path& png) {
+    try {
+        cosim::run_gnuplot(png.parent_path(), script, png.filename().string());
+        return true;
+    } catch (const cosim::CosimError& e) {
+        std::cerr << "cosim campaign: " << e.what() << "\n";
+        return false;
     }
-    std::filesystem::remove(log);
 }
 
 std::string preamble(const std::filesystem::path& png, const std::string& title, const std::string& xlabel,
                      const std::string& ylabel) {
-    return "set terminal pngcairo noenhanced size 1000,650 font 'sans,11'\nset output " + gp_string(png.string()) +
-           "\nset title " + gp_string(title) + "\nset xlabel " + gp_string(xlabel) + "\nset ylabel " +
-           gp_string(ylabel) + "\nset grid\nset key bottom right\n";
+    return "set terminal pngcairo noenhanced size 1000,650 font 'sans,11'\nset output " +
+           gnuplot_string(png.filename().string()) + "\nset title " + gnuplot_string(title) + "\nset xlabel " +
+           gnuplot_string(xlabel) + "\nset ylabel " + gnuplot_string(ylabel) + "\nset grid\nset key bottom right\n";
 }
 
 // The data files of the figures: removed when the figures are drawn, or when drawing fails.
@@ -132,14 +119,15 @@ std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir
             data_files.push_back(dir / ("cdf_" + file_name(m.name) + "_" + file_name(s) + ".dat"));
             temporary.files.push_back(data_files.back());
             write_data(data_files.back(), text.str());
-            plots += std::string(plots.empty() ? "plot " : ", ") + gp_string(data_files.back().string()) +
-                     " using 1:2 with steps lw 2 title " + gp_string("per-run " + s);
+            plots += std::string(plots.empty() ? "plot " : ", ") +
+                     gnuplot_string(data_files.back().filename().string()) + " using 1:2 with steps lw 2 title " +
+                     gnuplot_string("per-run " + s);
         }
         if (!plots.empty()) {
-            run_gnuplot(preamble(png, m.name + ": distribution over runs", "degrees", "fraction of runs") +
-                            "set yrange [0:1]\n" + plots + "\n",
-                        png);
-            written.push_back(png);
+            if (run_gnuplot(preamble(png, m.name + ": distribution over runs", "degrees", "fraction of runs") +
+                                "set yrange [0:1]\n" + plots + "\n",
+                            png))
+                written.push_back(png);
         }
         for (const auto& f : data_files) std::filesystem::remove(f);
 
@@ -167,15 +155,16 @@ std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir
                 files.push_back(dir / ("cdf_by_" + file_name(m.name) + "_" + file_name(value.text) + ".dat"));
                 temporary.files.push_back(files.back());
                 write_data(files.back(), text.str());
-                lines += std::string(lines.empty() ? "plot " : ", ") + gp_string(files.back().string()) +
-                         " using 1:2 with steps lw 2 title " + gp_string(value.text);
+                lines += std::string(lines.empty() ? "plot " : ", ") +
+                         gnuplot_string(files.back().filename().string()) + " using 1:2 with steps lw 2 title " +
+                         gnuplot_string(value.text);
             }
             if (!lines.empty()) {
-                run_gnuplot(preamble(by, stat_column + " by " + grid->target + ": distribution over runs", "degrees",
-                                     "fraction of runs") +
-                                "set yrange [0:1]\n" + lines + "\n",
-                            by);
-                written.push_back(by);
+                if (run_gnuplot(preamble(by, stat_column + " by " + grid->target + ": distribution over runs",
+                                         "degrees", "fraction of runs") +
+                                    "set yrange [0:1]\n" + lines + "\n",
+                                by))
+                    written.push_back(by);
             }
             for (const auto& f : files) std::filesystem::remove(f);
         }
@@ -216,13 +205,12 @@ std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir
             if (!numeric) {
                 script += "set xrange [-0.5:" + std::to_string(categories.size() - 0.5) + "]\nset xtics (";
                 for (std::size_t i = 0; i < categories.size(); ++i)
-                    script += (i ? ", " : "") + gp_string(categories[i]) + " " + std::to_string(i);
+                    script += (i ? ", " : "") + gnuplot_string(categories[i]) + " " + std::to_string(i);
                 script += ")\n";
             }
-            script += "plot " + gp_string(data.string()) + " using 1:2 with points pt 7 ps 0.8\n";
-            run_gnuplot(script, scatter);
+            script += "plot " + gnuplot_string(data.filename().string()) + " using 1:2 with points pt 7 ps 0.8\n";
+            if (run_gnuplot(script, scatter)) written.push_back(scatter);
             std::filesystem::remove(data);
-            written.push_back(scatter);
         }
     }
     return written;

@@ -3,6 +3,8 @@
 // recomputed here from the CSV; a failing run is recorded and the campaign goes on.
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -11,6 +13,8 @@
 #include <sstream>
 
 #include "campaign_command.hpp"
+#include "campaign_error.hpp"
+#include "campaign_spec.hpp"
 #include "csv_table.hpp"
 #include "results_table.hpp"
 
@@ -143,6 +147,14 @@ TEST(Campaign, AFailingRunIsRecordedAndTheCampaignGoesOn) {
     EXPECT_NE(text.str().find("## Failed runs"), std::string::npos);
     EXPECT_TRUE(std::filesystem::exists(dir / "cdf_attitude_error.png"));
     EXPECT_TRUE(std::filesystem::exists(dir / "attitude_error_vs_mag_bridge_offset.png"));
+    // --run K of a failed run is a failed command (issue 24): it used to exit 0.
+    for (std::size_t i = 1; i < table.size(); ++i) {
+        const auto row = split_csv_line(table[i]);
+        auto o = options_for("seed_spin_failing.toml", dir);
+        o.replay = static_cast<long>(i - 1);
+        std::ostringstream replay_out;
+        EXPECT_EQ(run_campaign(o, replay_out), row[row.size() - 2] == "failed" ? 1 : 0) << table[i];
+    }
     std::filesystem::remove_all(dir);
 }
 
@@ -186,5 +198,100 @@ TEST(Campaign, ResumeRefusesAnotherCampaignAndExtendsThisOne) {
     ASSERT_EQ(run_campaign(o, out), 0);
     EXPECT_NE(out.str().find("resuming: 2 runs"), std::string::npos) << out.str();
     EXPECT_EQ(lines_of(dir / "results.csv").size(), 4u);
+    std::filesystem::remove_all(dir);
+}
+
+// Two campaigns on one table (issue 24): while one holds the folder's lock, a --resume of the same
+// campaign is refused with a message instead of writing rows into the same table.
+TEST(Campaign, ASecondCampaignOnTheSameFolderIsRefused) {
+    const auto dir = fresh_dir("locked");
+    auto o = options_for("leo_short.toml", dir);
+    o.runs = 2;
+    o.stop_time = 5.0;
+    o.figures = false;
+    std::ostringstream out;
+    ASSERT_EQ(run_campaign(o, out), 0);
+    const auto table = lines_of(dir / "results.csv");
+    const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
+    ASSERT_GE(fd, 0);
+    ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);  // the first campaign, still running
+    o.resume = true;
+    o.runs = 3;
+    try {
+        run_campaign(o, out);
+        ADD_FAILURE() << "the second campaign ran";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("in use by another campaign"), std::string::npos) << e.what();
+    }
+    ::close(fd);
+    EXPECT_EQ(lines_of(dir / "results.csv"), table);
+    std::filesystem::remove_all(dir);
+}
+
+// A table whose campaign.txt is gone is not resumed (under whatever seed this invocation has).
+TEST(Campaign, ATableWithoutItsIdentityIsNotResumed) {
+    const auto dir = fresh_dir("anonymous");
+    auto o = options_for("leo_short.toml", dir);
+    o.runs = 2;
+    o.stop_time = 5.0;
+    o.figures = false;
+    std::ostringstream out;
+    ASSERT_EQ(run_campaign(o, out), 0);
+    std::filesystem::remove(dir / "campaign.txt");
+    const auto table = lines_of(dir / "results.csv");
+    o.resume = true;
+    o.runs = 3;
+    try {
+        run_campaign(o, out);
+        ADD_FAILURE() << "resumed a table of unknown origin";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("campaign.txt"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(lines_of(dir / "results.csv"), table);
+    std::filesystem::remove_all(dir);
+}
+
+// A spec is bounded before it is read: a huge file, or a device that never ends.
+TEST(Campaign, OversizedOrNonRegularSpecsAreRefused) {
+    const auto dir = fresh_dir("bigspec");
+    std::filesystem::create_directories(dir);
+    const auto spec = dir / "big.toml";
+    {
+        std::ifstream in(std::string(CAMPAIGN_TEST_SPECS) + "/leo_short.toml");
+        std::ofstream big(spec);
+        big << in.rdbuf() << "\n" << std::string(max_spec_bytes, '#') << "\n";
+    }
+    for (const std::filesystem::path& file : {spec, std::filesystem::path("/dev/zero")}) {
+        try {
+            read_spec(file);
+            ADD_FAILURE() << file << " was read";
+        } catch (const CampaignError& e) {
+            EXPECT_TRUE(std::string(e.what()).find("max_spec_bytes") != std::string::npos ||
+                        std::string(e.what()).find("not a regular file") != std::string::npos)
+                << e.what();
+        }
+    }
+    std::filesystem::remove_all(dir);
+}
+
+// A value of the wrong type (a text where a Real is, 1.5 where an Integer is) fails the campaign
+// before any run (issue 24): it used to fail every run, one after the other, and exit 0.
+TEST(Campaign, ValuesOfTheWrongTypeAreRefusedBeforeAnyRun) {
+    const auto dir = fresh_dir("types");
+    for (const char* setting : {"est.sample_period=fast", "est.solver=no_such_item"}) {
+        auto o = options_for("leo_short.toml", dir);
+        o.runs = 2;
+        o.stop_time = 5.0;
+        o.figures = false;
+        o.settings = {setting};
+        std::ostringstream out;
+        try {
+            run_campaign(o, out);
+            ADD_FAILURE() << setting << " was run";
+        } catch (const std::exception& e) {
+            EXPECT_NE(std::string(e.what()).find("[set]"), std::string::npos) << e.what();
+        }
+        EXPECT_FALSE(std::filesystem::exists(dir / "results.csv"));
+    }
     std::filesystem::remove_all(dir);
 }

@@ -129,3 +129,21 @@ TEST(Spec, MistakesAreErrorsWithTheirPlace) {
         std::string::npos);
     EXPECT_NE(error_of(head + "x = [").find("test.toml:4"), std::string::npos);  // a TOML syntax error, with its line
 }
+
+// Draws whose arithmetic would leave the doubles (issue 24): refused in the spec, not drawn as inf.
+TEST(Spec, DrawsThatOverflowAreRefused) {
+    EXPECT_NE(error_of(head + "[[draw]]\nkind = \"uniform\"\ntarget = \"a.x\"\nmin = -1e308\nmax = 1e308\n")
+                  .find("overflows a double"),
+              std::string::npos);
+    EXPECT_NE(error_of(head + "[[draw]]\nkind = \"tumble\"\ntarget = \"a.w\"\nmin = 0\nmax = 1.7e308\n" +
+                       "[[draw]]\nkind = \"uniform\"\ntarget = \"a.y\"\nmin = -1.7e308\nmax = 1.7e308\n")
+                  .find("overflows a double"),
+              std::string::npos);
+    EXPECT_NE(error_of(head + "[[draw]]\nkind = \"normal\"\ntarget = \"a.x\"\nmean = 0\nsd = 1e307\n")
+                  .find("beyond the range of a double"),
+              std::string::npos);
+    EXPECT_NE(
+        error_of(head + "[[draw]]\nkind = \"choice\"\ntarget = \"a.x\"\nvalues = [1, 2]\nweights = [1e308, 1e308]\n")
+            .find("overflows a double"),
+        std::string::npos);
+}

@@ -11,6 +11,7 @@
 #include "cosim_error.hpp"
 #include "integrator/cvode_integrator.hpp"
 #include "integrator/indicator_bisection.hpp"
+#include "interrupt.hpp"
 
 namespace cosim {
 
@@ -303,7 +304,7 @@ struct Execution::Impl {
             // Components that talk to hardware act at their instants' wall time, not only at output points.
             for (auto& c : system.components())
                 c.instance->set_pacer([wall_origin, start](double time) {
-                    std::this_thread::sleep_until(wall_due(*wall_origin, time - start));
+                    sleep_until_or_interrupted(wall_due(*wall_origin, time - start));
                 });
         }
 
@@ -321,6 +322,8 @@ struct Execution::Impl {
         long k_out = 0;
         const double tiny = 1e-12 * std::max(1.0, std::abs(stop));
         while (!terminate && t < stop - tiny) {
+            throw_if_interrupted();  // between integrator steps and events, not only at output points
+            for (auto* o : observers) o->between_steps();
             const double t_out = std::min(start + static_cast<double>(k_out + 1) * h_out, stop);
             // The reference execution stops at every instant.
             const double t_soft = next_soft_time(t_out);
@@ -409,7 +412,7 @@ struct Execution::Impl {
         const double behind = std::chrono::duration<double>(std::chrono::steady_clock::now() - due).count();
         stats.realtime_max_behind = std::max(stats.realtime_max_behind, behind);
         if (behind > options.realtime_tolerance) ++stats.late_realtime_points;
-        if (behind < 0.0) std::this_thread::sleep_until(due);
+        if (behind < 0.0) sleep_until_or_interrupted(due);
     }
 };
 

@@ -7,6 +7,7 @@
 
 #include "bridge/frame.hpp"
 #include "cosim_error.hpp"
+#include "interrupt.hpp"
 #include "value_text.hpp"
 
 namespace cosim {
@@ -96,8 +97,9 @@ std::size_t HardwareBridge::slot(Kind kind, fmi2ValueReference vr) const {
     return it->second;
 }
 
-void HardwareBridge::setup_experiment(double start_time, std::optional<double>, std::optional<double>) {
+void HardwareBridge::setup_experiment(double start_time, std::optional<double> stop_time, std::optional<double>) {
     start_time_ = time_ = start_time;
+    stop_time_ = stop_time;
     next_sample_ = 0;
     bridge::LinkSettings link;
     link.transport = settings_.transport;
@@ -116,6 +118,15 @@ void HardwareBridge::exit_initialization_mode() {
     period_ = values_[period_slot_ - 1];
     if (!(period_ > 0.0) || !std::isfinite(period_))
         throw CosimError(name_ + ": sample_period must be positive, got " + format_real(period_));
+    // Instants the tolerance cannot tell apart, or more of them than the count holds, are refused
+    // before the board is told anything: the master would otherwise count them one at a time.
+    const double resolution = 1e-12 * std::max(1.0, std::abs(start_time_));
+    const double span = stop_time_ ? *stop_time_ - start_time_ : 0.0;
+    if (period_ <= resolution || (std::isfinite(span) && span / period_ > max_sample_index))
+        throw CosimError(name_ + ": sample_period " + format_real(period_) + " s makes more than " +
+                         format_real(max_sample_index) + " sample instants" +
+                         (stop_time_ ? " over the run's " + format_real(span) + " s" : "") +
+                         " (the limit of the master's sample count, max_sample_index)");
     // The parameters are final here: the board gets them now, before the run's wall clock starts and
     // before the first exchange (samples come only after initialization).
     configure_board();
@@ -167,7 +178,7 @@ fmi2EventInfo HardwareBridge::new_discrete_states() {
     // One exchange per sample instant, however many rounds the master's event iteration takes.
     if (period_ > 0.0 && reached(time_, next_sample_time())) {
         exchange();
-        while (reached(time_, next_sample_time())) ++next_sample_;
+        advance_sample_count();
     }
     fmi2EventInfo info{};
     info.newDiscreteStatesNeeded = fmi2False;
@@ -178,6 +189,35 @@ fmi2EventInfo HardwareBridge::new_discrete_states() {
     info.nextEventTimeDefined = fmi2True;
     info.nextEventTime = next;
     return info;
+}
+
+void HardwareBridge::advance_sample_count() {
+    // As fmu::next_instant_index: the quotient first (in double, it can be beyond any integer), then at
+    // most a few steps for rounding and reached()'s tolerance.
+    const double periods = std::floor((time_ - start_time_) / period_);
+    const auto beyond = [&] {
+        return CosimError(name_ + ": t = " + format_real(time_) + " s is more than " + format_real(max_sample_index) +
+                          " sample periods of " + format_real(period_) +
+                          " s after the start (the limit of the master's sample count, max_sample_index)");
+    };
+    if (!(periods < max_sample_index)) throw beyond();
+    long k = std::max(next_sample_ + 1, static_cast<long>(std::max(periods, 0.0)));
+    for (int step = 0; step < 4 && reached(time_, start_time_ + static_cast<double>(k) * period_); ++step) ++k;
+    if (static_cast<double>(k) > max_sample_index || reached(time_, start_time_ + static_cast<double>(k) * period_))
+        throw beyond();
+    next_sample_ = k;
+}
+
+std::optional<std::vector<std::uint8_t>> HardwareBridge::receive(bridge::Clock::time_point deadline) {
+    for (;;) {
+        throw_if_interrupted();
+        const auto slice = std::min(deadline, bridge::Clock::now() + wait_slice);
+        if (auto bytes = link_->receive(slice)) return bytes;
+        if (slice >= deadline) {
+            throw_if_interrupted();
+            return std::nullopt;
+        }
+    }
 }
 
 void HardwareBridge::configure_board() {
@@ -193,7 +233,7 @@ void HardwareBridge::configure_board() {
         const auto deadline = bridge::Clock::now() + std::chrono::milliseconds(settings_.timeout_ms);
         bool taken = false;
         while (!taken) {
-            const auto bytes = link_->receive(deadline);
+            const auto bytes = receive(deadline);
             if (!bytes) break;
             bridge::Frame ack;
             try {
@@ -245,7 +285,7 @@ void HardwareBridge::exchange() {
         stats_.malformed += link_->framing_errors() - framing_before;
         last_error_ = link_->last_framing_error();
     };
-    while (auto bytes = link_->receive(deadline)) {
+    while (auto bytes = receive(deadline)) {
         bridge::Frame reply;
         try {
             reply = bridge::decode(*bytes);

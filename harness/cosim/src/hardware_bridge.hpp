@@ -18,6 +18,11 @@
 
 namespace cosim {
 
+// The most sample periods the master counts from the start, as the blocks count theirs
+// (fmu::max_instant_index): beyond it consecutive instants are closer than the 1e-12 relative tolerance
+// of an instant, and a period that small would make the master count samples for ever.
+inline constexpr double max_sample_index = 1e11;
+
 class HardwareBridge final : public ComponentInstance {
 public:
     HardwareBridge(const fmi_loader::ModelDescription& description, std::string name, BridgeDescription settings);
@@ -62,6 +67,12 @@ private:
     std::size_t slot(Kind kind, fmi2ValueReference vr) const;
     double next_sample_time() const { return start_time_ + static_cast<double>(next_sample_) * period_; }
     void exchange();
+    // The first sample instant the current time has not reached: bounded steps, never a count of
+    // every instant skipped; CosimError past max_sample_index.
+    void advance_sample_count();
+    // One frame from the board before the deadline, or none; waits in slices so that a signal
+    // (SIGINT, SIGTERM, SIGHUP) ends the wait within wait_slice, throwing Interrupted.
+    std::optional<std::vector<std::uint8_t>> receive(bridge::Clock::time_point deadline);
     // Sends the block's parameter values (configure frames) and waits for the board to take each; throws
     // CosimError when it does not within the bridge's timeout_ms, or has other parameters.
     void configure_board();
@@ -76,6 +87,7 @@ private:
     std::vector<std::size_t> inputs_, outputs_;  // value-reference order
     std::size_t period_slot_ = 0;
     double start_time_ = 0.0, time_ = 0.0, period_ = 0.0;
+    std::optional<double> stop_time_;
     long next_sample_ = 0;
     std::unique_ptr<bridge::Link> link_;
     std::uint32_t sequence_ = 0;

@@ -118,6 +118,7 @@ int main(int argc, char** argv) {
 
     CLI11_PARSE(app, argc, argv);
     cosim::install_interrupt_handlers();
+    cosim::use_private_temp_directory();
     try {
         if (*info) cosim::print_info(info_path, std::cout);
         if (*pack) {

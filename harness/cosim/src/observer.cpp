@@ -14,8 +14,7 @@ std::string io_reason() {
 }
 
 CsvWriter::CsvWriter(const std::filesystem::path& file, const System& system, const std::vector<std::string>& columns)
-    : path_(file), out_(file) {
-    if (!out_) throw CosimError("cannot write " + file.string() + ": " + std::strerror(errno));
+    : path_(file) {
     const auto& comps = system.components();
     if (columns.empty()) {
         for (std::size_t i = 0; i < comps.size(); ++i)
@@ -31,6 +30,10 @@ CsvWriter::CsvWriter(const std::filesystem::path& file, const System& system, co
             columns_.push_back({i, v});
         }
     }
+    pending_ = std::make_unique<PendingFile>(file);
+    out_.open(pending_->path());
+    if (!out_) throw CosimError("cannot write " + file.string() + ": " + std::strerror(errno));
+    last_flush_ = std::chrono::steady_clock::now();
     out_ << "time";
     for (const auto& c : columns_) out_ << "," << csv_field(comps[c.component].name + "." + c.variable->name);
     out_ << "\n";
@@ -45,7 +48,20 @@ void CsvWriter::sample(double t, System& system) {
     }
     out_ << "\n";
     ++rows_;
+    if (!pending_->committed()) pending_->commit();
+    unflushed_ = true;
+    between_steps();
     check();
+}
+
+void CsvWriter::between_steps() {
+    if (!unflushed_) return;
+    if (const auto now = std::chrono::steady_clock::now(); now - last_flush_ >= csv_flush_interval) {
+        out_.flush();
+        last_flush_ = now;
+        unflushed_ = false;
+        check();
+    }
 }
 
 void CsvWriter::check() {

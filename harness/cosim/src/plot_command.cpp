@@ -12,6 +12,7 @@
 
 #include "cosim_error.hpp"
 #include "csv_table.hpp"
+#include "gnuplot.hpp"
 
 namespace cosim {
 
@@ -63,38 +64,40 @@ std::string flat_range(const std::vector<Series>& series, std::size_t first_row)
     return buf;
 }
 
-// One figure: writes the data and a gnuplot script, runs gnuplot, returns the PNG.
+// One figure: writes the data and a gnuplot script, runs gnuplot in out_dir (no path in the script),
+// returns the PNG.
 std::filesystem::path draw(const std::filesystem::path& out_dir, const std::string& name, const std::string& title,
                            const std::string& ylabel, const std::vector<double>& time,
                            const std::vector<Series>& series, std::size_t first_row = 0) {
-    const auto data = out_dir / (name + ".dat");
+    const std::string data = name + ".dat", png = name + ".png";
+    struct Remove {
+        std::filesystem::path file;
+        ~Remove() {
+            std::error_code ec;
+            std::filesystem::remove(file, ec);
+        }
+    } remove_data{out_dir / data};
     {
-        std::ofstream d(data);
+        std::ofstream d(out_dir / data);
         for (std::size_t r = first_row; r < time.size(); ++r) {
             d << time[r];
             for (const auto& s : series) d << ' ' << s.values[r];
             d << '\n';
         }
         d.flush();
-        if (!d) throw CosimError("cannot write " + data.string());
+        if (!d) throw CosimError("cannot write " + (out_dir / data).string());
     }
-    const auto png = out_dir / (name + ".png");
-    std::string script = "set terminal pngcairo noenhanced size 1100,600 font 'sans,11'\nset output '" + png.string() +
-                         "'\nset title '" + title + "'\nset xlabel 'time (s)'\nset ylabel '" + ylabel +
-                         "'\nset grid\nset key outside right\nset datafile missing 'nan'\n" +
-                         flat_range(series, first_row) + "plot ";
+    std::string script =
+        "set terminal pngcairo noenhanced size 1100,600 font 'sans,11'\nset output " + gnuplot_string(png) +
+        "\nset title " + gnuplot_string(title) + "\nset xlabel 'time (s)'\nset ylabel " + gnuplot_string(ylabel) +
+        "\nset grid\nset key outside right\nset datafile missing 'nan'\n" + flat_range(series, first_row) + "plot ";
     for (std::size_t i = 0; i < series.size(); ++i)
-        script += (i ? ", " : "") + std::string("'") + data.string() + "' using 1:" + std::to_string(i + 2) +
-                  (series[i].points ? " with points pt 7 ps 0.7" : " with lines lw 2") + " title '" + series[i].title +
-                  "'";
+        script += (i ? ", " : "") + gnuplot_string(data) + " using 1:" + std::to_string(i + 2) +
+                  (series[i].points ? " with points pt 7 ps 0.7" : " with lines lw 2") + " title " +
+                  gnuplot_string(series[i].title);
     script += "\n";
-    FILE* gp = popen("gnuplot 2>&1", "w");
-    if (!gp) throw CosimError("cannot start gnuplot (install the Debian package gnuplot-nox)");
-    std::fputs(script.c_str(), gp);
-    const int rc = pclose(gp);
-    std::filesystem::remove(data);
-    if (rc != 0 || !std::filesystem::exists(png)) throw CosimError("gnuplot failed drawing " + png.string());
-    return png;
+    run_gnuplot(out_dir, script, png);
+    return out_dir / png;
 }
 
 // Rows where the estimate changed (the on-board computer took a sample) while it was valid: where an error
@@ -174,6 +177,16 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
     const auto& time = table.columns[*time_col];
     std::vector<std::filesystem::path> written;
     std::ostringstream summary;
+    // A figure that fails is reported and the others are drawn; the command fails at the end.
+    int failed = 0;
+    auto add = [&](auto&& make) {
+        try {
+            written.push_back(make());
+        } catch (const CosimError& e) {
+            ++failed;
+            notes << e.what() << "\n";
+        }
+    };
     auto column = [&](const std::string& name) -> const std::vector<double>* {
         const auto i = table.find(name);
         return i ? &table.columns[*i] : nullptr;
@@ -195,9 +208,11 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
         Series acquired{std::string("acquired s") + axis[i - 1], std::vector<double>(time.size(), std::nan("")), true};
         for (std::size_t r = 0; r < time.size(); ++r)
             if (use[r]) acquired.values[r] = (*meas)[r];
-        written.push_back(draw(out_dir, std::string("sun_vector_") + axis[i - 1],
-                               std::string("Sun vector, body ") + axis[i - 1] + ": real and acquired (seed 000 fig. 8)",
-                               "component", time, {{std::string("real s") + axis[i - 1], *real}, acquired}));
+        add([&] {
+            return draw(out_dir, std::string("sun_vector_") + axis[i - 1],
+                        std::string("Sun vector, body ") + axis[i - 1] + ": real and acquired (seed 000 fig. 8)",
+                        "component", time, {{std::string("real s") + axis[i - 1], *real}, acquired});
+        });
     }
     if (!close_up && sun_meas.size() == 3) {
         std::vector<double> error(time.size());
@@ -213,22 +228,27 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
                            : 0.0;
         }
         const auto use = update_rows(sun_meas, column("sun_valid"));
-        written.push_back(draw(out_dir, "sun_error", "Sun vector error at the estimator samples (while valid)",
-                               "degrees", time, {error_series("sun vector error", error, use, summary)}));
+        add([&] {
+            return draw(out_dir, "sun_error", "Sun vector error at the estimator samples (while valid)", "degrees",
+                        time, {error_series("sun vector error", error, use, summary)});
+        });
     } else if (!close_up) {
         notes << "no sun_body / sun_meas columns: sun vector figures skipped\n";
     }
 
     if (const auto* v = column("v_bus")) {
         if (!close_up)
-            written.push_back(
-                draw(out_dir, "bus_voltage", "Bus voltage (seed 000 fig. 9)", "V", time, {{"v_bus", *v}}));
+            add([&] {
+                return draw(out_dir, "bus_voltage", "Bus voltage (seed 000 fig. 9)", "V", time, {{"v_bus", *v}});
+            });
         // The ripple: the last millisecond (five PWM periods at 5 kHz) of a close-up CSV.
         if (close_up) {
             std::size_t first = time.size() - 1;
             while (first > 0 && time.back() - time[first - 1] <= 1e-3) --first;
-            written.push_back(draw(out_dir, "bus_ripple", "Bus voltage ripple over the last millisecond (PWM at 5 kHz)",
-                                   "V", time, {{"v_bus", *v}}, first));
+            add([&] {
+                return draw(out_dir, "bus_ripple", "Bus voltage ripple over the last millisecond (PWM at 5 kHz)", "V",
+                            time, {{"v_bus", *v}}, first);
+            });
         }
     } else {
         notes << "no v_bus column: bus voltage figure skipped\n";
@@ -253,18 +273,22 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
             error[r] = attitude_error_degrees(a, b);
         }
         const auto use = update_rows(q_est, column("valid"));
-        written.push_back(draw(out_dir, "attitude_error", "Attitude error at the estimator samples (while valid)",
-                               "degrees", time, {error_series("attitude error", error, use, summary)}));
+        add([&] {
+            return draw(out_dir, "attitude_error", "Attitude error at the estimator samples (while valid)", "degrees",
+                        time, {error_series("attitude error", error, use, summary)});
+        });
     } else if (!close_up) {
         notes << "no q_true / q_est columns: attitude error figure skipped\n";
     }
 
     if (const auto* soc = column("soc"); soc && !close_up)
-        written.push_back(draw(out_dir, "battery_soc", "Battery state of charge", "1", time, {{"soc", *soc}}));
+        add([&] { return draw(out_dir, "battery_soc", "Battery state of charge", "1", time, {{"soc", *soc}}); });
     else if (!close_up)
         notes << "no soc column: battery figure skipped\n";
     write_index(out_dir, csv, summary.str());
     written.push_back(out_dir / "index.html");
+    if (failed)
+        throw CosimError(std::to_string(failed) + " figure(s) failed (above); the others are in " + out_dir.string());
     return written;
 }
 

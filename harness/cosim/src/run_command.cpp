@@ -14,6 +14,8 @@
 
 #include "cosim_error.hpp"
 #include "interrupt.hpp"
+#include "output_file.hpp"
+#include "ssp_archive.hpp"
 #include "value_text.hpp"
 
 namespace cosim {
@@ -123,6 +125,8 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
     throw_if_interrupted();
     const SystemDescription description = read_system_description(options.ssd);
     check_co_simulation_names(description, options.system.co_simulation);
+    if (options.csv)
+        refuse_overwriting_inputs("--output", *options.csv, system_inputs(description, options.system.fmu_dirs));
     SystemOptions system_options = options.system;
     if (options.tolerance) system_options.tolerance = options.tolerance;
     if (options.communication_step) system_options.communication_step = options.communication_step;

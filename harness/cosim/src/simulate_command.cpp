@@ -9,11 +9,13 @@
 #include "csv_table.hpp"
 #include "fmi2_instance.hpp"
 #include "interrupt.hpp"
+#include "output_file.hpp"
 #include "value_text.hpp"
 
 namespace cosim {
 
 void simulate(const SimulateOptions& options, std::ostream& out) {
+    if (options.csv) refuse_overwriting_inputs("--output", *options.csv, {options.fmu});
     fmi_loader::Fmu fmu(options.fmu);
     const auto& md = fmu.description();
     if (!md.co_simulation) throw CosimError(options.fmu.string() + " has no CoSimulation interface");

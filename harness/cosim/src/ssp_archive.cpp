@@ -13,12 +13,15 @@
 #include "cosim_error.hpp"
 #include "fmi_loader/fmu_archive.hpp"
 #include "fmi_loader/model_description.hpp"
+#include "output_file.hpp"
 #include "value_text.hpp"
 
 namespace cosim {
 
 std::filesystem::path resolve_fmu(const SystemDescription& description, const std::string& source,
                                   const std::vector<std::filesystem::path>& fmu_dirs) {
+    // An .ssp is a closed world: its FMUs are inside it or the system is refused, never taken elsewhere.
+    if (description.archive) return inside_archive(*description.archive, source, "component source");
     std::filesystem::path p = source;
     if (source.starts_with("file:")) p = source.substr(source.starts_with("file://") ? 7 : 5);
     std::vector<std::filesystem::path> tried;
@@ -38,6 +41,15 @@ std::filesystem::path resolve_fmu(const SystemDescription& description, const st
     std::string where;
     for (const auto& t : tried) where += "\n  " + t.string();
     throw CosimError(description.file.string() + ": FMU '" + source + "' not found; looked at:" + where);
+}
+
+std::vector<std::filesystem::path> system_inputs(const SystemDescription& description,
+                                                 const std::vector<std::filesystem::path>& fmu_dirs) {
+    if (description.archive) return {description.archive->fmu_path()};  // the rest is unpacked from it
+    std::vector<std::filesystem::path> inputs{description.file};
+    for (const auto& c : description.components) inputs.push_back(resolve_fmu(description, c.source, fmu_dirs));
+    inputs.insert(inputs.end(), description.parameter_files.begin(), description.parameter_files.end());
+    return inputs;
 }
 
 namespace {
@@ -143,6 +155,11 @@ void add_omsimulator_annotation(xmlNode* system_annotations, xmlNs* ssc, double 
         xmlAddChild(system_annotations, a);
 }
 
+// The archive entry of a parameter file the .ssd binds: resources/<its file name>.
+std::string parameter_entry(const SystemDescription& description, const std::string& source) {
+    return "resources/" + (description.file.parent_path() / source).filename().string();
+}
+
 // Rewrites the parsed .ssd of `description` for the archive (see pack_system).
 void make_portable(xmlDoc* doc, const SystemDescription& description,
                    const std::map<std::string, std::string>& source_of,
@@ -156,6 +173,9 @@ void make_portable(xmlDoc* doc, const SystemDescription& description,
             xmlSetProp(component, x("source"), x(it->second.c_str()));
         if (const auto it = model_of.find(name); it != model_of.end())
             bind_enumerations_by_value(component, it->second, description.file.string() + ": component " + name);
+        for (xmlNode* binding : element_children(element_child(component, "ParameterBindings"), "ParameterBinding"))
+            if (const auto source = property(binding, "source"))
+                xmlSetProp(binding, x("source"), x(parameter_entry(description, *source).c_str()));
     }
     xmlNs* ssc = xmlSearchNsByHref(doc, root, x(ssc_namespace));
     if (!ssc) ssc = xmlNewNs(root, x(ssc_namespace), x("ssc"));
@@ -181,6 +201,9 @@ void pack_system(const std::filesystem::path& ssd, const std::filesystem::path& 
     const auto& fmu_dirs = options.fmu_dirs;
     const SystemDescription description = read_system_description(ssd);
     if (description.archive) throw CosimError(ssd.string() + " is an SSP archive already");
+    refuse_overwriting_inputs("-o", ssp, system_inputs(description, fmu_dirs));
+    if (std::error_code ec; std::filesystem::exists(ssp, ec) && !std::filesystem::is_regular_file(ssp, ec))
+        throw CosimError("-o " + ssp.string() + ": not a regular file (an archive is written beside it and renamed)");
     // The FMUs by the name they get in the archive; two different files of one name would collide.
     std::map<std::string, std::string> source_of;                  // component -> resources/<file>
     std::map<std::string, std::filesystem::path> file_of_entry;    // resources/<file> -> FMU on disk
@@ -198,10 +221,19 @@ void pack_system(const std::filesystem::path& ssd, const std::filesystem::path& 
             step = std::min(step.value_or(*c.execution->communication_step), *c.execution->communication_step);
         const std::string entry = "resources/" + fmu.filename().string();
         const auto [it, inserted] = file_of_entry.emplace(entry, fmu);
-        if (!inserted && std::filesystem::canonical(it->second) != std::filesystem::canonical(fmu))
+        if (!inserted && !same_file(it->second, fmu))
             throw CosimError(ssd.string() + ": two different FMUs are named " + fmu.filename().string() + " (" +
                              it->second.string() + ", " + fmu.string() + ")");
         source_of[c.name] = entry;
+    }
+
+    // The parameter files travel too, under the name make_portable() gives their bindings.
+    for (const auto& ssv : description.parameter_files) {
+        const std::string entry = "resources/" + ssv.filename().string();
+        const auto [it, inserted] = file_of_entry.emplace(entry, ssv);
+        if (!inserted && !same_file(it->second, ssv))
+            throw CosimError(ssd.string() + ": two different files are named " + ssv.filename().string() + " (" +
+                             it->second.string() + ", " + ssv.string() + ")");
     }
 
     if (!step) step = smallest_fmu_step;
@@ -219,10 +251,10 @@ void pack_system(const std::filesystem::path& ssd, const std::filesystem::path& 
     if (!text || size <= 0) throw CosimError(ssd.string() + ": cannot be serialized");
     const std::unique_ptr<xmlChar, XmlFree> xml(text);
 
-    const auto partial = std::filesystem::path(ssp.string() + ".partial");
-    std::filesystem::remove(partial);
+    PendingFile pending(ssp);
+    const auto& partial = pending.path();
     int error = 0;
-    zip_t* z = zip_open(partial.c_str(), ZIP_CREATE | ZIP_EXCL, &error);
+    zip_t* z = zip_open(partial.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error);
     if (!z) {
         zip_error_t e;
         zip_error_init_with_code(&e, error);
@@ -233,7 +265,6 @@ void pack_system(const std::filesystem::path& ssd, const std::filesystem::path& 
     auto fail = [&](const std::string& what) {
         const std::string reason = zip_reason(z);
         zip_discard(z);
-        std::filesystem::remove(partial);
         throw CosimError(ssp.string() + ": " + what + ": " + reason);
     };
     zip_source_t* src = zip_source_buffer(z, xml.get(), static_cast<zip_uint64_t>(size), 0);
@@ -248,19 +279,15 @@ void pack_system(const std::filesystem::path& ssd, const std::filesystem::path& 
             if (f) zip_source_free(f);
             fail("cannot add " + file.string());
         }
-        if (zip_set_file_compression(z, static_cast<zip_uint64_t>(index), ZIP_CM_STORE, 0) < 0)
+        if (entry.ends_with(".fmu") &&
+            zip_set_file_compression(z, static_cast<zip_uint64_t>(index), ZIP_CM_STORE, 0) < 0)
             fail("cannot store " + entry);
         out << "  " << entry << "  <- " << file.string() << "\n";
     }
     // zip_close writes everything (and reports a full disk); the buffer above lives until it returns.
     if (zip_close(z) < 0) fail("writing the archive failed");
-    std::error_code ec;
-    std::filesystem::rename(partial, ssp, ec);
-    if (ec) {
-        std::filesystem::remove(partial);
-        throw CosimError("cannot move " + partial.string() + " to " + ssp.string() + ": " + ec.message());
-    }
-    out << ssp.string() << ": SystemStructure.ssd and " << file_of_entry.size() << " FMUs (OMSimulator step "
+    pending.commit();
+    out << ssp.string() << ": SystemStructure.ssd and " << file_of_entry.size() << " files (OMSimulator step "
         << format_real(*step) << " s)\n";
 }
 

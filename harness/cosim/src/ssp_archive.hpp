@@ -17,6 +17,10 @@ namespace cosim {
 std::filesystem::path resolve_fmu(const SystemDescription& description, const std::string& source,
                                   const std::vector<std::filesystem::path>& fmu_dirs);
 
+// Every file a run of the system reads: the .ssd and its FMUs and parameter files, or the .ssp alone.
+std::vector<std::filesystem::path> system_inputs(const SystemDescription& description,
+                                                 const std::vector<std::filesystem::path>& fmu_dirs);
+
 struct PackOptions {
     std::vector<std::filesystem::path> fmu_dirs;
     // Fixed communication step written for OMSimulator's weakly coupled master (the org.openmodelica

@@ -16,6 +16,16 @@ namespace {
 using fmi_loader::Causality;
 using fmi_loader::VariableType;
 
+// The bytes unpacked below a folder (regular files only).
+std::uint64_t unpacked_bytes(const std::filesystem::path& folder) {
+    std::uint64_t total = 0;
+    std::error_code ec;
+    for (auto it = std::filesystem::recursive_directory_iterator(folder, ec);
+         !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec))
+        if (it->is_regular_file(ec)) total += it->file_size(ec);
+    return total;
+}
+
 std::string kind_name(ConnectorKind k) {
     switch (k) {
         case ConnectorKind::input:
@@ -90,13 +100,35 @@ std::filesystem::path System::resolve_source(const std::string& source, const Sy
 
 void System::load_components(const SystemOptions& options) {
     std::size_t states = 0, indicators = 0;
+    // Each FMU file is unpacked once and shared by the components made from it (unless it may be
+    // instantiated only once per process); the loader's max_total_bytes counts the whole system: the
+    // .ssp's own unpacked bytes and every FMU's.
+    std::map<std::filesystem::path, std::shared_ptr<fmi_loader::Fmu>> unpacked;
+    fmi_loader::Limits budget;
+    if (description_.archive)
+        budget.max_total_bytes -= std::min(budget.max_total_bytes, unpacked_bytes(description_.archive->directory()));
     for (const auto& cd : description_.components) {
         for (const auto& other : components_)
             if (other.name == cd.name)
                 throw CosimError(description_.file.string() + ": two components named '" + cd.name + "'");
         Component c;
         c.name = cd.name;
-        c.fmu = std::make_unique<fmi_loader::Fmu>(resolve_source(cd.source, options));
+        const auto source = resolve_source(cd.source, options);
+        std::error_code ec;
+        auto key = std::filesystem::canonical(source, ec);
+        if (ec) key = source;
+        auto& shared = unpacked[key];
+        const auto once = [](const fmi_loader::ModelDescription& d) {
+            return (d.model_exchange && d.model_exchange->can_be_instantiated_only_once_per_process) ||
+                   (d.co_simulation && d.co_simulation->can_be_instantiated_only_once_per_process);
+        };
+        if (shared && !once(shared->description())) {
+            c.fmu = shared;
+        } else {
+            c.fmu = std::make_shared<fmi_loader::Fmu>(source, budget);
+            budget.max_total_bytes -= std::min(budget.max_total_bytes, unpacked_bytes(c.fmu->archive().directory()));
+            shared = c.fmu;
+        }
         const auto& md = c.fmu->description();
         const bool asked_cs = std::find(options.co_simulation.begin(), options.co_simulation.end(), cd.name) !=
                               options.co_simulation.end();

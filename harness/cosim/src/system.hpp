@@ -21,7 +21,7 @@ enum class Interface { model_exchange, co_simulation };
 
 struct Component {
     std::string name;
-    std::unique_ptr<fmi_loader::Fmu> fmu;         // its modelDescription; its binary too unless bridged
+    std::shared_ptr<fmi_loader::Fmu> fmu;         // its modelDescription; its binary too unless bridged
     std::unique_ptr<ComponentInstance> instance;  // Fmi2Instance, or HardwareBridge when bridged
     Interface interface = Interface::model_exchange;
     std::size_t state_offset = 0, state_count = 0;          // slice of the ME state vector

@@ -13,6 +13,29 @@
 
 namespace cosim {
 
+std::filesystem::path inside_archive(const fmi_loader::FmuArchive& archive, const std::string& reference,
+                                     const std::string& what) {
+    namespace fs = std::filesystem;
+    const auto refuse = [&](const std::string& why) {
+        return CosimError(archive.fmu_path().string() + ": " + what + " '" + reference + "' refused: " + why +
+                          " (an .ssp reads only relative references inside itself)");
+    };
+    const auto colon = reference.find(':'), slash = reference.find('/');
+    if (colon != std::string::npos && (slash == std::string::npos || colon < slash))
+        throw refuse("a URI with a scheme");
+    const fs::path p(reference);
+    if (reference.empty() || p.is_absolute()) throw refuse("an absolute or empty path");
+    const fs::path normal = p.lexically_normal();
+    if (normal.empty() || *normal.begin() == ".." || normal == ".") throw refuse("it climbs out of the archive");
+    const fs::path candidate = archive.directory() / normal;
+    std::error_code ec, ec_root;
+    const fs::path real = fs::weakly_canonical(candidate, ec), root = fs::canonical(archive.directory(), ec_root);
+    const auto [end, _] = std::mismatch(root.begin(), root.end(), real.begin(), real.end());
+    if (ec || ec_root || end != root.end()) throw refuse("it resolves outside the archive");
+    if (!fs::is_regular_file(real)) throw refuse("no such file in the archive");
+    return candidate;
+}
+
 namespace {
 
 struct DocDeleter {
@@ -25,6 +48,10 @@ using Doc = std::unique_ptr<xmlDoc, DocDeleter>;
 // The size is bounded before parsing (max_ssd_bytes) so that a huge file is not read into memory.
 Doc parse_file(const std::filesystem::path& path) {
     std::error_code ec;
+    // Not a device, a pipe or a folder: /dev/stdin would block, /dev/zero never end.
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw CosimError(path.string() + ": not a regular file (" + (ec ? ec.message() : "a device, pipe or folder") +
+                         ")");
     const auto size = std::filesystem::file_size(path, ec);
     if (!ec && size > max_ssd_bytes)
         throw CosimError(path.string() + " is " + std::to_string(size) + " bytes, more than the limit of " +
@@ -97,7 +124,8 @@ void read_parameter_set(const xmlNode* set, const std::filesystem::path& file, s
     });
 }
 
-void read_bindings(const xmlNode* component, const std::filesystem::path& file, std::vector<ParameterValue>& out) {
+void read_bindings(const xmlNode* component, const std::filesystem::path& file, const fmi_loader::FmuArchive* archive,
+                   std::vector<ParameterValue>& out, std::vector<std::filesystem::path>& parameter_files) {
     for_children(first_child(component, "ParameterBindings"), "ParameterBinding", [&](const xmlNode* binding) {
         if (auto prefix = attribute(binding, "prefix"); prefix && !prefix->empty())
             throw CosimError(file.string() + ":" + std::to_string(binding->line) +
@@ -106,7 +134,9 @@ void read_bindings(const xmlNode* component, const std::filesystem::path& file, 
             for_children(inline_values, "ParameterSet",
                          [&](const xmlNode* set) { read_parameter_set(set, file, out); });
         } else if (auto source = attribute(binding, "source")) {
-            const auto ssv = file.parent_path() / *source;
+            const auto ssv =
+                archive ? inside_archive(*archive, *source, "parameter file") : file.parent_path() / *source;
+            parameter_files.push_back(ssv);
             const Doc doc = parse_file(ssv);
             const xmlNode* root = xmlDocGetRootElement(doc.get());
             if (!is(root, "ParameterSet"))
@@ -261,7 +291,7 @@ SystemDescription read_system_description(const std::filesystem::path& path) {
             }
             c.connectors.push_back(std::move(conn));
         });
-        read_bindings(e, ssd, c.parameters);
+        read_bindings(e, ssd, out.archive.get(), c.parameters, out.parameter_files);
         c.bridge = read_bridge(e, ssd);
         c.execution = read_execution(e, ssd);
         out.components.push_back(std::move(c));

@@ -75,6 +75,7 @@ struct SystemDescription {
     // An SSP archive (.ssp) read from: unpacked in a private directory kept while any copy of this
     // description lives; `file` is its SystemStructure.ssd, the FMUs lie beside it under resources/.
     std::shared_ptr<const fmi_loader::FmuArchive> archive;
+    std::vector<std::filesystem::path> parameter_files;  // the .ssv files its bindings read
     std::string name;
     std::vector<ComponentDescription> components;
     std::vector<ConnectionDescription> connections;
@@ -87,5 +88,12 @@ struct SystemDescription {
 // (fmi_loader/limits.hpp: entries, sizes, compression ratio, no path leaving the archive).
 // Throws CosimError naming the file, line and cause for anything malformed or unsupported.
 SystemDescription read_system_description(const std::filesystem::path& ssd);
+
+// A file an .ssp names (a component's source, a parameter file): an .ssp is a closed world, so only a
+// relative reference that stays inside the unpacked archive is taken (resolved against its root, where
+// SystemStructure.ssd is). Refused with CosimError: a URI with a scheme (file:, http:, ...), an absolute
+// path, a path that climbs out with '..', or one that leaves the archive through a link.
+std::filesystem::path inside_archive(const fmi_loader::FmuArchive& archive, const std::string& reference,
+                                     const std::string& what);
 
 }  // namespace cosim

@@ -22,7 +22,9 @@
 
 #include "cosim_error.hpp"
 #include "csv_table.hpp"
+#include "interrupt.hpp"
 #include "run_command.hpp"
+#include "ssp_archive.hpp"
 #include "system_description.hpp"
 
 extern char** environ;
@@ -223,6 +225,147 @@ TEST(CosimHostile, SigtermClosesTheCsvPrintsStatisticsAndRemovesExtractionDirect
     const CsvTable table = read_csv(csv);
     EXPECT_GE(table.rows(), 1u);
     EXPECT_TRUE(fs::is_empty(s.root / "tmp")) << "an extraction directory was left behind";
+}
+
+// --- issue 24: outputs never destroy inputs, and signals act at once ---
+
+// The file's bytes, to compare before and after a refused command.
+void expect_unchanged(const fs::path& file, const std::string& before) {
+    EXPECT_TRUE(fs::is_regular_file(file)) << file;
+    EXPECT_EQ(slurp(file), before) << file << " was changed";
+}
+
+TEST(CosimHostile, RunOutputOverAnInputIsRefused) {
+    Scratch s;
+    const fs::path ssd = s.ssd(ball);
+    const std::string system = slurp(ssd);
+    auto o = options_for(ssd);
+    o.csv = ssd;  // cosim run sys.ssd --output sys.ssd
+    expect_refused(o, "same file as the input");
+    expect_unchanged(ssd, system);
+    // Through another name of the same file (a hard link): compared by device and inode.
+    fs::create_hard_link(ssd, s.root / "alias.csv");
+    o.csv = s.root / "alias.csv";
+    expect_refused(o, "same file as the input");
+    expect_unchanged(ssd, system);
+    // One of its FMUs, found beside the .ssd.
+    fs::copy_file(fmu_dir / "test_ball.fmu", s.root / "test_ball.fmu");
+    const std::string fmu = slurp(s.root / "test_ball.fmu");
+    o.csv = s.root / "test_ball.fmu";
+    expect_refused(o, "same file as the input");
+    expect_unchanged(s.root / "test_ball.fmu", fmu);
+}
+
+TEST(CosimHostile, SimulateOutputOverItsFmuIsRefused) {
+    Scratch s;
+    fs::copy_file(fmu_dir / "test_ball.fmu", s.root / "ball.fmu");
+    const std::string fmu = slurp(s.root / "ball.fmu");
+    Child child({"simulate", (s.root / "ball.fmu").string(), "--output", (s.root / "ball.fmu").string()},
+                s.root / "out", s.root / "err", s.root / "tmp");
+    ASSERT_GT(child.pid, 0);
+    const int status = child.wait_status();
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_NE(WEXITSTATUS(status), 0);
+    EXPECT_NE(slurp(s.root / "err").find("same file as the input"), std::string::npos) << slurp(s.root / "err");
+    expect_unchanged(s.root / "ball.fmu", fmu);
+}
+
+TEST(CosimHostile, ARefusedRunLeavesAnExistingCsvAlone) {
+    Scratch s;
+    const fs::path csv = s.root / "results.csv";
+    std::ofstream(csv) << "time,ball.h\n0,1\n";
+    const std::string before = slurp(csv);
+    auto o = options_for(s.ssd(ball));
+    o.csv = csv;
+    o.columns = {"ball.hh"};  // a typo
+    expect_refused(o, "no variable 'hh'");
+    expect_unchanged(csv, before);
+    EXPECT_EQ(std::distance(fs::directory_iterator(s.root), fs::directory_iterator()), 3)
+        << "a temporary file was left beside the CSV";  // system.ssd, results.csv, tmp/
+}
+
+TEST(CosimHostile, PackNeverReplacesItsInputs) {
+    Scratch s;
+    fs::copy_file(fmu_dir / "test_ball.fmu", s.root / "test_ball.fmu");
+    const fs::path ssd = s.ssd(ball);
+    const std::string system = slurp(ssd), fmu = slurp(s.root / "test_ball.fmu");
+    PackOptions options;
+    options.oms_step = 0.01;
+    for (const fs::path& target : {ssd, s.root / "test_ball.fmu"}) {
+        std::ostringstream out;
+        try {
+            pack_system(ssd, target, options, out);
+            ADD_FAILURE() << "-o " << target << " was accepted";
+        } catch (const CosimError& e) {
+            EXPECT_NE(std::string(e.what()).find("same file as the input"), std::string::npos) << e.what();
+        }
+    }
+    expect_unchanged(ssd, system);
+    expect_unchanged(s.root / "test_ball.fmu", fmu);
+}
+
+// A run whose only output point after the start is its end, with many events before it (the ball's
+// 0.25 s ticks and its bounces): a signal used to wait for that output point.
+std::vector<std::string> long_run(const Scratch& s, const fs::path& csv) {
+    return {"run",   s.ssd(ball).string(),       "--fmu-dir", fmu_dir.string(), "--stop-time",
+            "1e6",   "--output-interval",        "1e6",       "--set",          "ball.e=1",
+            "--set", "ball.max_bounces=1000000", "--output",  csv.string()};
+}
+
+void wait_for_rows(const fs::path& csv) {
+    // The CSV takes its name at its first row; flushed within about a second after.
+    for (int i = 0; i < 600 && (!fs::exists(csv) || fs::file_size(csv) == 0); ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+}
+
+TEST(CosimHostile, SignalsActBetweenOutputPoints) {
+    for (const int sig : {SIGTERM, SIGHUP, SIGINT}) {
+        Scratch s;
+        const fs::path csv = s.root / "out.csv";
+        Child child(long_run(s, csv), s.root / "out", s.root / "err", s.root / "tmp");
+        ASSERT_GT(child.pid, 0);
+        wait_for_rows(csv);
+        ::kill(child.pid, sig);
+        const int status = child.wait_status();
+        ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << sig << " instead of stopping";
+        EXPECT_EQ(WEXITSTATUS(status), 128 + sig) << slurp(s.root / "err");
+        EXPECT_NE(slurp(s.root / "out").find("interrupted"), std::string::npos) << slurp(s.root / "out");
+        const CsvTable table = read_csv(csv);
+        EXPECT_EQ(table.rows(), 1u);  // the start; the next output point is the end
+        EXPECT_TRUE(fs::is_empty(s.root / "tmp")) << "an extraction directory was left behind";
+    }
+}
+
+TEST(CosimHostile, ASecondSignalAbortsWithItsOwnCodeAndRemovesTheFolders) {
+    Scratch s;
+    const fs::path csv = s.root / "out.csv";
+    Child child(long_run(s, csv), s.root / "out", s.root / "err", s.root / "tmp");
+    ASSERT_GT(child.pid, 0);
+    wait_for_rows(csv);
+    // Two signals at once: the second may come before the run has unwound from the first.
+    ::kill(child.pid, SIGINT);
+    ::kill(child.pid, SIGHUP);
+    const int status = child.wait_status();
+    ASSERT_TRUE(WIFEXITED(status)) << "killed by the signal";
+    // Either one was noticed and the run stopped cleanly before the other came (pending signals arrive
+    // in either order), or the second aborted it.
+    const int code = WEXITSTATUS(status);
+    EXPECT_TRUE(code == 128 + SIGINT || code == 128 + SIGHUP || code == aborted_exit_code)
+        << code << "; " << slurp(s.root / "err");
+    EXPECT_TRUE(fs::is_empty(s.root / "tmp")) << "an extraction directory was left behind";
+    EXPECT_EQ(read_csv(csv).rows(), 1u) << "the row flushed before the signal was lost";
+}
+
+TEST(CosimHostile, RowsAreOnDiskBeforeASigkill) {
+    Scratch s;
+    const fs::path csv = s.root / "out.csv";
+    Child child(long_run(s, csv), s.root / "out", s.root / "err", s.root / "tmp");
+    ASSERT_GT(child.pid, 0);
+    wait_for_rows(csv);  // without the flush the first row stays in the stream's buffer until the end
+    ::kill(child.pid, SIGKILL);
+    child.wait_status();
+    const CsvTable table = read_csv(csv);
+    EXPECT_EQ(table.rows(), 1u);
 }
 
 }  // namespace

@@ -44,5 +44,59 @@ TEST(CosimPlot, ErrorsAtTheEstimateUpdatesWhileValid) {
     std::filesystem::remove_all(dir);
 }
 
+// A CSV with the attitude columns (drawn) and a battery column of no number (a figure gnuplot refuses).
+void write_two_figure_csv(const std::filesystem::path& csv) {
+    std::ofstream out(csv);
+    out << "time,env.q_true[1],env.q_true[2],env.q_true[3],env.q_true[4],est.q_est[1],est.q_est[2],est.q_est[3],"
+           "est.q_est[4],est.valid,bat.soc\n";
+    for (int k = 0; k <= 20; ++k)
+        out << 0.01 * k << ",0,0,0,1,0,0," << std::sin(0.001 * k) << "," << std::cos(0.001 * k) << ",1,nan\n";
+}
+
+// Issue 24: the output folder's name used to be pasted into gnuplot's script: a folder named
+// x';system('touch pwned');' ran the shell command, an apostrophe broke every figure.
+TEST(CosimPlot, AFolderNameIsNeverGnuplotCode) {
+    const auto root = std::filesystem::temp_directory_path() /
+                      ("cosim_plot_names_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+    const auto hostile = root / "x';system('touch pwned');'";
+    const auto quoted = root / "it's here";
+    std::filesystem::create_directories(hostile);
+    std::filesystem::create_directories(quoted);
+    const auto csv = root / "run.csv";
+    write_two_figure_csv(csv);
+    for (const auto& dir : {hostile, quoted}) {
+        std::ostringstream notes;
+        try {
+            plot_results(csv, dir, notes);
+        } catch (const std::exception&) {
+            // the battery figure fails (see below); the attitude figure must be drawn
+        }
+        EXPECT_TRUE(std::filesystem::exists(dir / "attitude_error.png")) << dir << ": " << notes.str();
+        EXPECT_FALSE(std::filesystem::exists(dir / "pwned"));
+        EXPECT_FALSE(std::filesystem::exists("pwned")) << "a shell command ran from a folder's name";
+        EXPECT_FALSE(std::filesystem::exists(root / "pwned"));
+    }
+    std::filesystem::remove_all(root);
+}
+
+// A figure gnuplot cannot draw fails alone, with its message, and leaves no (empty) PNG behind.
+TEST(CosimPlot, AFailingFigureFailsAloneAndLeavesNoPng) {
+    const auto dir = std::filesystem::temp_directory_path() /
+                     ("cosim_plot_fail_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+    std::filesystem::create_directories(dir);
+    write_two_figure_csv(dir / "run.csv");
+    std::ostringstream notes;
+    try {
+        plot_results(dir / "run.csv", dir, notes);
+        ADD_FAILURE() << "a failed figure went unreported";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("failed"), std::string::npos) << e.what();
+    }
+    EXPECT_NE(notes.str().find("battery_soc.png"), std::string::npos) << notes.str();
+    EXPECT_TRUE(std::filesystem::exists(dir / "attitude_error.png"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "battery_soc.png")) << "an empty PNG was left";
+    std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace cosim

@@ -4,6 +4,7 @@
 #include <zip.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -106,6 +107,120 @@ TEST(CosimSsp, BrokenArchivesAreRefused) {
     EXPECT_THROW(read_system_description(escape), CosimError);
     EXPECT_THROW(read_system_description(not_zip), CosimError);
     for (const auto& p : {no_ssd, escape, not_zip}) std::filesystem::remove(p);
+}
+
+// --- issue 24: an .ssp is a closed world ---
+
+std::string slurp_file(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// A system of one gain whose source and optional parameter binding are as given.
+std::string one_gain_ssd(const std::string& source, const std::string& binding = "") {
+    return R"(<?xml version="1.0" encoding="UTF-8"?>
+<ssd:SystemStructureDescription xmlns:ssd="http://ssp-standard.org/SSP1/SystemStructureDescription"
+    xmlns:ssc="http://ssp-standard.org/SSP1/SystemStructureCommon" version="1.0" name="g">
+  <ssd:System name="g"><ssd:Elements><ssd:Component name="gain" source=")" +
+           source + R"(">)" + binding + R"(</ssd:Component></ssd:Elements></ssd:System>
+  <ssd:DefaultExperiment startTime="0" stopTime="1"/>
+</ssd:SystemStructureDescription>
+)";
+}
+
+const std::string gain_params = R"(<?xml version="1.0" encoding="UTF-8"?>
+<ssv:ParameterSet xmlns:ssv="http://ssp-standard.org/SSP1/SystemStructureParameterValues" version="1.0" name="p">
+  <ssv:Parameters><ssv:Parameter name="k"><ssv:Real value="-0.5"/></ssv:Parameter></ssv:Parameters>
+</ssv:ParameterSet>
+)";
+
+TEST(CosimSsp, AnArchiveReadsNothingOutsideItself) {
+    const auto outside_ssv = temp("outside.ssv");
+    std::ofstream(outside_ssv) << gain_params;
+    const std::string fmu = (fmu_dir / "test_gain.fmu").string();
+    const std::string in_archive = "resources/test_gain.fmu";
+    const std::string binding_to = R"(<ssd:ParameterBindings><ssd:ParameterBinding source=")";
+    const std::string binding_end = R"("/></ssd:ParameterBindings>)";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"absolute source", one_gain_ssd(fmu)},
+        {"file: URI", one_gain_ssd("file://" + fmu)},
+        {"climbing source", one_gain_ssd("resources/../../" + fmu_dir.filename().string() + "/test_gain.fmu")},
+        {"http: URI", one_gain_ssd("http://example.org/test_gain.fmu")},
+        {"not in the archive (the build folder has it)", one_gain_ssd("test_gain.fmu")},
+        {"absolute parameter file", one_gain_ssd(in_archive, binding_to + outside_ssv.string() + binding_end)},
+        {"parameter file from stdin", one_gain_ssd(in_archive, binding_to + "/dev/stdin" + binding_end)},
+        {"climbing parameter file",
+         one_gain_ssd(in_archive, binding_to + "../" + outside_ssv.filename().string() + binding_end)},
+    };
+    const std::string gain_fmu = slurp_file(fmu);
+    for (const auto& [what, ssd] : cases) {
+        const auto ssp = temp("closed.ssp");
+        write_zip(ssp, {{"SystemStructure.ssd", ssd}, {in_archive, gain_fmu}});
+        try {
+            SystemOptions o;
+            o.fmu_dirs = {fmu_dir};  // where the build keeps test_gain.fmu: an archive must not look there
+            System system(read_system_description(ssp), o);
+            ADD_FAILURE() << what << ": accepted";
+        } catch (const CosimError& e) {
+            EXPECT_NE(std::string(e.what()).find("refused"), std::string::npos) << what << ": " << e.what();
+        }
+        std::filesystem::remove(ssp);
+    }
+    std::filesystem::remove(outside_ssv);
+}
+
+// Components of one FMU share one unpacked copy (a 2.4 MB archive used to write 2.6 GB).
+TEST(CosimSsp, EachFmuIsUnpackedOncePerSystem) {
+    const auto folder = temp("unpack_once"), ssd = temp("five.ssd");
+    std::filesystem::create_directories(folder);
+    const char* old_tmp = std::getenv("TMPDIR");
+    const std::string saved = old_tmp ? old_tmp : "";
+    ::setenv("TMPDIR", folder.c_str(), 1);
+    std::string elements;
+    for (int i = 0; i < 5; ++i)
+        elements += R"(<ssd:Component name="g)" + std::to_string(i) + R"(" source="test_gain.fmu"/>)";
+    std::ofstream(ssd) << R"(<?xml version="1.0" encoding="UTF-8"?>
+<ssd:SystemStructureDescription xmlns:ssd="http://ssp-standard.org/SSP1/SystemStructureDescription" version="1.0" name="f">
+  <ssd:System name="f"><ssd:Elements>)"
+                       << elements << R"(</ssd:Elements></ssd:System></ssd:SystemStructureDescription>
+)";
+    {
+        SystemOptions o;
+        o.fmu_dirs = {fmu_dir};
+        System system(read_system_description(ssd), o);
+        EXPECT_EQ(std::distance(std::filesystem::directory_iterator(folder), std::filesystem::directory_iterator()), 1);
+    }
+    if (old_tmp)
+        ::setenv("TMPDIR", saved.c_str(), 1);
+    else
+        ::unsetenv("TMPDIR");
+    std::filesystem::remove(ssd);
+    std::filesystem::remove_all(folder);
+}
+
+// pack takes the parameter files a system binds: the archive runs without them beside it.
+TEST(CosimSsp, PackCarriesParameterFiles) {
+    const auto folder = temp("with_ssv");
+    std::filesystem::create_directories(folder);
+    const auto ssd = folder / "loop.ssd", ssp = temp("with_ssv.ssp");
+    write_ssd(ssd);
+    std::string text = slurp_file(ssd);
+    const std::string inline_binding =
+        text.substr(text.find("<ssd:ParameterBindings>"),
+                    text.find("</ssd:ParameterBindings>") + 24 - text.find("<ssd:ParameterBindings>"));
+    text.replace(text.find(inline_binding), inline_binding.size(),
+                 R"(<ssd:ParameterBindings><ssd:ParameterBinding source="gain.ssv"/></ssd:ParameterBindings>)");
+    std::ofstream(ssd) << text;
+    std::ofstream(folder / "gain.ssv") << gain_params;
+    std::ostringstream log;
+    pack_system(ssd, ssp, {.fmu_dirs = {fmu_dir}, .oms_step = {}}, log);
+    std::filesystem::remove_all(folder);  // nothing beside the archive any more
+    const auto y = run_y(ssp);
+    ASSERT_EQ(y.size(), 5u);
+    for (std::size_t k = 0; k < y.size(); ++k) EXPECT_NEAR(y[k], std::exp(-0.5 * 0.25 * k), 1e-6);
+    std::filesystem::remove(ssp);
 }
 
 }  // namespace
