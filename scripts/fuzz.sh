@@ -11,7 +11,7 @@ shift || true
 build=${PVATT_FUZZ_BUILD_DIR:-build-fuzz}
 jobs=${PVATT_FUZZ_JOBS:-2}
 
-CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPVATT_FUZZ=ON -DPVATT_BENCHMARKS=OFF \
+cmake --preset fuzz -B "$build" \
   ${CMAKE_CXX_COMPILER_LAUNCHER:+-DCMAKE_CXX_COMPILER_LAUNCHER=$CMAKE_CXX_COMPILER_LAUNCHER} \
   ${CMAKE_C_COMPILER_LAUNCHER:+-DCMAKE_C_COMPILER_LAUNCHER=$CMAKE_C_COMPILER_LAUNCHER} >/dev/null
 targets=("$@")
