@@ -35,6 +35,14 @@ struct MekfConfig {
     T sun_sigma = T(0.02);    // rad: sun unit vector
     T mag_sigma = T(0.3e-6);  // T: field vector (noise, quantization, field-model error)
     T face_sigma = T(0.01);   // relative response of one face (face update for the panel scale)
+    // The sun vector's error is not white: a face geometry and an albedo pattern persist for minutes. An
+    // error of 1σ sun_sigma correlated over sun_correlation_time (s) carries, over a time t ≫ that, the
+    // information of t/(2 τ) independent vectors, so each update is weighted as one of σ² max(1, 2τ/Δt)
+    // (Δt the time since the previous sun update). 0: white (each vector independent).
+    T sun_correlation_time = T(0);
+    // 1σ per axis of the reference field model (the on-board model against the real field), T: adds in
+    // quadrature to mag_sigma.
+    T mag_ref_sigma = T(0);
     // --- initial uncertainty (at the Q-method initialisation)
     T init_attitude_sigma = T(0.05);  // rad, per axis
     T init_rate_sigma = T(0.02);      // rad/s, per axis, after the two-sample rate
@@ -71,6 +79,8 @@ struct MekfState {
     T t_last = T(0);                  // time of the last propagation
     std::int32_t refused_in_row = 0;  // consecutive samples whose every update was refused
     std::int32_t resets = 0;          // divergence resets so far
+    T t_sun = T(0);                   // time of the last sun update (sun_correlation_time)
+    std::int32_t has_sun = 0;         // 1 once a sun update was offered since the start
 };
 
 // The outcome of one measurement update.
