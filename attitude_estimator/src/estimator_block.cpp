@@ -152,6 +152,9 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.parameter("filter_mag_ref_sigma", &D::filter_mag_ref_sigma, "T",
                 "mekf: 1-sigma error per axis of the reference field model (adds to filter_mag_sigma in quadrature)")
         .range(0.0, 1e-4);
+    t.parameter("filter_mag_sigma_calibrated", &D::filter_mag_sigma_calibrated, "T",
+                "mekf: filter_mag_sigma once the in-flight magnetometer calibration applies (0 = filter_mag_sigma)")
+        .range(0.0, 1e-4);
     t.parameter("filter_rate_noise", &D::filter_rate_noise, "rad/s",
                 "mekf: 1-sigma unpredictable change of the body rate over 1 s (a random walk: it grows as the "
                 "square root of time; the rate random-walk density in rad/s per root second)")

@@ -5,7 +5,8 @@
 // env.q_true and env.omega_body. docs/filter.md lists the runs and the columns they record.
 //
 //   attitude_estimator_mekf_replay run.csv [--from T] [--trace out.csv] [key=value ...]
-//   keys: sun_sigma, sun_correlation (s), mag_sigma (T), mag_ref_sigma (T), rate_noise, attitude_noise, offset (0/1), polarity (plus | column:
+//   keys: sun_sigma, sun_correlation (s), mag_sigma (T), mag_ref_sigma (T), mag_sigma_calibrated (T: from the rows where
+//   est.mag_cal_valid, when recorded), rate_noise, attitude_noise, offset (0/1), polarity (plus | column:
 //   est.mag_set_reset of the row before), euler (0/1: the environment's default inertia), inertia_diag (Jxx,Jyy,Jzz), reset_after,
 //   scale (0/1: face update from plant.i_face_sh with the Kelly law), face_sigma, i_face_norm (A, at 1 AU),
 //   face_min (smallest relative response of a face used for the scale)
@@ -80,6 +81,8 @@ Options parse(int argc, char** argv, std::string& file) {
             f.sun_correlation_time = std::stod(v);
         else if (k == "mag_ref_sigma")
             f.mag_ref_sigma = std::stod(v);
+        else if (k == "mag_sigma_calibrated")
+            f.mag_sigma_calibrated = std::stod(v);
         else if (k == "rate_noise")
             f.rate_noise = std::stod(v);
         else if (k == "attitude_noise")
@@ -191,6 +194,7 @@ int main(int argc, char** argv) try {
     // est.mag_set_reset of a row is the pulse commanded after that sample: the polarity of the next reading.
     const std::vector<double>* polarity = o.column_polarity ? &col("est.mag_set_reset") : nullptr;
     const std::vector<double>* irradiance = have_irradiance ? &col("env.irradiance") : nullptr;
+    const std::vector<double>* calibrated = has("est.mag_cal_valid") ? &col("est.mag_cal_valid") : nullptr;
     const std::vector<double>* distance = nullptr;
     const std::vector<double>* lit_faces = nullptr;
     const std::vector<double>* rejected_faces = nullptr;
@@ -213,6 +217,7 @@ int main(int argc, char** argv) try {
             in.mag_ref[k] = (*mag_ref[k])[r];
             in.mag_body[k] = (*mag_field[k])[r];
         }
+        in.mag_calibrated = calibrated && (*calibrated)[r] > 0.5;
         in.polarity = (polarity && r > 0) ? ((*polarity)[r - 1] > 0.5 ? 1.0 : -1.0) : 1.0;
         if (o.filter.estimate_scale) {
             const double au = kAu / (*distance)[r];

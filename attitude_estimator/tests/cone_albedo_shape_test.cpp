@@ -41,8 +41,8 @@ TEST(EstimatorCoreConeAlbedo, CosineTableMatchesTheClosedFormViewFactor) {
     double worst = 0.0;
     for (int i = 0; i <= 400; ++i) {
         const double c = -1.0 + i * 0.005;
-        worst = std::max(worst, std::abs(cone_albedo_shape(table, c, kSinRadius) -
-                                         cone_albedo_shape_cosine(c, kSinRadius)));
+        worst = std::max(worst,
+                         std::abs(cone_albedo_shape(table, c, kSinRadius) - cone_albedo_shape_cosine(c, kSinRadius)));
     }
     EXPECT_LT(worst, 2e-3);
     EXPECT_NEAR(cone_albedo_shape_cosine(1.0, kSinRadius), 1.0, 1e-15);

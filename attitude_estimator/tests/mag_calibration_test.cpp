@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -15,7 +16,7 @@ namespace {
 using namespace attitude_estimator;
 
 struct Truth {
-    Eigen::Matrix3d m;      // reading = M B + p b_sensor
+    Eigen::Matrix3d m;  // reading = M B + p b_sensor
     Eigen::Vector3d b_sensor;
 };
 
@@ -33,6 +34,7 @@ MagCalibrationState<T> calibrate(const Truth& t, int equations, double noise, bo
     cfg.every = 1;
     cfg.min_equations = equations;
     cfg.solve_every = equations;
+    cfg.sigma = T(std::max(noise, 1e-9));  // the readings' noise, as the block's mag_calibration_sigma states it
     MagCalibrationState<T> s;
     std::mt19937 gen(seed);
     std::normal_distribution<double> n01(0.0, 1.0);

@@ -83,9 +83,9 @@ T cone_albedo_shape(const ConeAlbedoShape<T>& table, T cos_t, T sin_radius) noex
     return table.g[k] + f * (table.g[k + 1] - table.g[k]);
 }
 
-#define ATTITUDE_ESTIMATOR_CONE_ALBEDO_INSTANTIATE(T)                                                             \
-    template T cone_albedo_shape_cosine(T, T) noexcept;                                                           \
-    template ConeAlbedoShape<T> cone_albedo_shape_table(const panel_response::Response<T>&, T) noexcept;          \
+#define ATTITUDE_ESTIMATOR_CONE_ALBEDO_INSTANTIATE(T)                                                    \
+    template T cone_albedo_shape_cosine(T, T) noexcept;                                                  \
+    template ConeAlbedoShape<T> cone_albedo_shape_table(const panel_response::Response<T>&, T) noexcept; \
     template T cone_albedo_shape(const ConeAlbedoShape<T>&, T, T) noexcept;
 ATTITUDE_ESTIMATOR_CONE_ALBEDO_INSTANTIATE(float)
 ATTITUDE_ESTIMATOR_CONE_ALBEDO_INSTANTIATE(double)

@@ -38,13 +38,14 @@ void mag_calibration_offer(MagCalibrationState<T>& s, const Vec3<T>& field, T po
     if (!(h2 > T(0)) || !std::isfinite(h2) || !std::isfinite(r) || !(sigma > T(0))) return;
     s.countdown = config.every > 1 ? config.every - 1 : 0;
     // z = 2 Hᵀc − Hᵀ E H − μ; var z ≈ 4 σ² |H|² (the field noise along H).
-    const T l[kMagCalUnknowns] = {T(2) * h[0],      T(2) * h[1],       T(2) * h[2],       -h[0] * h[0],
-                                  -h[1] * h[1],     -h[2] * h[2],      -T(2) * h[0] * h[1], -T(2) * h[0] * h[2],
+    const T l[kMagCalUnknowns] = {T(2) * h[0],         T(2) * h[1],  T(2) * h[2],         -h[0] * h[0],
+                                  -h[1] * h[1],        -h[2] * h[2], -T(2) * h[0] * h[1], -T(2) * h[0] * h[2],
                                   -T(2) * h[1] * h[2], T(-1)};
     const T z = h2 - r * r;
     const T w = T(1) / (T(4) * sigma * sigma * h2);
     for (int i = 0; i < kMagCalUnknowns; ++i) {
-        for (int j = i; j < kMagCalUnknowns; ++j) s.info[static_cast<std::size_t>(packed_index(i, j))] += w * l[i] * l[j];
+        for (int j = i; j < kMagCalUnknowns; ++j)
+            s.info[static_cast<std::size_t>(packed_index(i, j))] += w * l[i] * l[j];
         s.rhs[static_cast<std::size_t>(i)] += w * l[i] * z;
     }
     ++s.equations;
@@ -75,6 +76,13 @@ bool mag_calibration_solve(MagCalibrationState<T>& s, const MagCalibrationConfig
     if (!(pivots.minCoeff() > T(1e-6) * pivots.maxCoeff())) return false;
     const VecN<T> x = d.asDiagonal() * ldlt.solve(d.asDiagonal() * y);
     if (!x.allFinite()) return false;
+    // The solution's covariance is the inverse normal matrix: refuse it until it is well determined.
+    const MatN<T> cov = d.asDiagonal() * ldlt.solve(MatN<T>::Identity()) * d.asDiagonal();
+    const T u = kFieldUnit<T>;
+    for (int i = 0; i < 3; ++i)
+        if (!(std::sqrt(cov(i, i)) * u <= config.max_offset_sigma)) return false;
+    for (int i = 3; i < 9; ++i)
+        if (!(std::sqrt(cov(i, i)) <= T(2) * config.max_gain_sigma)) return false;
     Eigen::Matrix<T, 3, 3> e;
     e << x(3), x(6), x(7), x(6), x(4), x(8), x(7), x(8), x(5);
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<T, 3, 3>> eig(Eigen::Matrix<T, 3, 3>::Identity() + e);
@@ -99,15 +107,15 @@ Vec3<T> mag_calibration_apply(const MagCalibrationState<T>& s, const Vec3<T>& fi
     const T p = polarity < T(0) ? T(-1) : T(1);
     Vec3<T> out{};
     for (std::size_t i = 0; i < 3; ++i)
-        out[i] = s.gain[3 * i] * field[0] + s.gain[3 * i + 1] * field[1] + s.gain[3 * i + 2] * field[2] -
-                 p * s.offset[i];
+        out[i] =
+            s.gain[3 * i] * field[0] + s.gain[3 * i + 1] * field[1] + s.gain[3 * i + 2] * field[2] - p * s.offset[i];
     return out;
 }
 
-#define ATTITUDE_ESTIMATOR_MAG_CAL_INSTANTIATE(T)                                                                  \
-    template void mag_calibration_offer(MagCalibrationState<T>&, const Vec3<T>&, T, T,                             \
-                                        const MagCalibrationConfig<T>&) noexcept;                                  \
-    template bool mag_calibration_solve(MagCalibrationState<T>&, const MagCalibrationConfig<T>&) noexcept;        \
+#define ATTITUDE_ESTIMATOR_MAG_CAL_INSTANTIATE(T)                                                          \
+    template void mag_calibration_offer(MagCalibrationState<T>&, const Vec3<T>&, T, T,                     \
+                                        const MagCalibrationConfig<T>&) noexcept;                          \
+    template bool mag_calibration_solve(MagCalibrationState<T>&, const MagCalibrationConfig<T>&) noexcept; \
     template Vec3<T> mag_calibration_apply(const MagCalibrationState<T>&, const Vec3<T>&, T) noexcept;
 ATTITUDE_ESTIMATOR_MAG_CAL_INSTANTIATE(float)
 ATTITUDE_ESTIMATOR_MAG_CAL_INSTANTIATE(double)

@@ -350,7 +350,9 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
         accepted += result.sun.accepted;
     }
     if (in.mag_valid) {
-        result.mag = mekf_update_field(s, in.mag_ref, in.mag_body, in.polarity, c);
+        MekfConfig<T> mag_config = c;
+        if (in.mag_calibrated && c.mag_sigma_calibrated > T(0)) mag_config.mag_sigma = c.mag_sigma_calibrated;
+        result.mag = mekf_update_field(s, in.mag_ref, in.mag_body, in.polarity, mag_config);
         ++offered;
         accepted += result.mag.accepted;
     }

@@ -62,6 +62,7 @@ void update_filter(OnboardState<T>& s, const OnboardInputs<T>& in, const Onboard
     // offset state is what is left of the offset, with the sign of this reading's polarity.
     f.mag_body = r.mag_field;
     f.polarity = polarity;
+    f.mag_calibrated = settings.mag_calibration && s.mag_cal.valid;
     if (settings.filter_scale && nominal.sun.method != SunMethod::difference) {
         // Relative responses against the nominal normalization: the filter's model is (1 + ε) R(cos β).
         for (std::size_t k = 0; k < 6; ++k) {

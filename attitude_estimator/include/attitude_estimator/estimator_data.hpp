@@ -83,14 +83,15 @@ struct EstimatorData {
     // (rad; 0: filter_sun_sigma) and the error's correlation time (s; 0: white). docs/filter.md.
     std::array<double, 4> filter_sun_sigma_method{};
     std::array<double, 4> filter_sun_correlation{};
-    double filter_mag_ref_sigma = 0.0;     // T: 1σ per axis of the reference field model's error
-    double filter_rate_noise = 2e-5;       // rad/s: 1σ rate change over 1 s (random walk density, rad/s/√s)
-    double filter_attitude_noise = 1e-6;   // rad: 1σ attitude drift over 1 s (random walk density, rad/√s)
-    bool filter_offset = true;             // estimate the magnetometer offset (3 states)
-    bool filter_scale = false;             // estimate a common panel scale (face-based sun methods)
-    double filter_face_sigma = 0.02;       // 1: relative face response noise and model error, 1σ
-    std::array<double, 9> inertia{};       // kg m², row-major; all zero = kinematic rate model
-    std::int32_t filter_reset_after = 40;  // samples with every update refused before a reset
+    double filter_mag_ref_sigma = 0.0;         // T: 1σ per axis of the reference field model's error
+    double filter_mag_sigma_calibrated = 0.0;  // T: filter_mag_sigma once mag_calibration applies (0: the same)
+    double filter_rate_noise = 2e-5;           // rad/s: 1σ rate change over 1 s (random walk density, rad/s/√s)
+    double filter_attitude_noise = 1e-6;       // rad: 1σ attitude drift over 1 s (random walk density, rad/√s)
+    bool filter_offset = true;                 // estimate the magnetometer offset (3 states)
+    bool filter_scale = false;                 // estimate a common panel scale (face-based sun methods)
+    double filter_face_sigma = 0.02;           // 1: relative face response noise and model error, 1σ
+    std::array<double, 9> inertia{};           // kg m², row-major; all zero = kinematic rate model
+    std::int32_t filter_reset_after = 40;      // samples with every update refused before a reset
     // HMC2003 set/reset (set_reset.hpp): pulse every this many samples and average the offset over this
     // many set/reset pairs. 0 (default): no pulses, the offset stays in the field — the safe default for a
     // magnetometer whose set_reset_command is not wired to mag_set_reset (its readings never flip).
@@ -100,7 +101,7 @@ struct EstimatorData {
     // offset against the reference field's magnitude; an equation every this many samples, applied once
     // this many equations are in; σ per axis of one field reading.
     bool mag_calibration = false;
-    double mag_calibration_sigma = 0.1e-6;    // T
+    double mag_calibration_sigma = 0.05e-6;   // T (the 12-bit steps alone: 0.035 µT rms)
     std::int32_t mag_calibration_every = 20;  // samples
     std::int32_t mag_calibration_min = 600;   // equations
 

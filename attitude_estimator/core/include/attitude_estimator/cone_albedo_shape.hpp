@@ -19,8 +19,8 @@ inline constexpr int kConeAlbedoShapePoints = 129;
 
 template <class T>
 struct ConeAlbedoShape {
-    bool valid = false;    // false: use the cosine closed form
-    T sin_radius = T(0);   // sin λ the table was built for
+    bool valid = false;                         // false: use the cosine closed form
+    T sin_radius = T(0);                        // sin λ the table was built for
     std::array<T, kConeAlbedoShapePoints> g{};  // G at cos θ = −sin λ + i (1 + sin λ)/(N − 1)
 };
 
@@ -37,8 +37,8 @@ ConeAlbedoShape<T> cone_albedo_shape_table(const panel_response::Response<T>& re
 template <class T>
 T cone_albedo_shape(const ConeAlbedoShape<T>& table, T cos_t, T sin_radius) noexcept;
 
-#define ATTITUDE_ESTIMATOR_CONE_ALBEDO_EXTERN(T)                                                               \
-    extern template T cone_albedo_shape_cosine(T, T) noexcept;                                                 \
+#define ATTITUDE_ESTIMATOR_CONE_ALBEDO_EXTERN(T)                                                                \
+    extern template T cone_albedo_shape_cosine(T, T) noexcept;                                                  \
     extern template ConeAlbedoShape<T> cone_albedo_shape_table(const panel_response::Response<T>&, T) noexcept; \
     extern template T cone_albedo_shape(const ConeAlbedoShape<T>&, T, T) noexcept;
 ATTITUDE_ESTIMATOR_CONE_ALBEDO_EXTERN(float)

@@ -28,23 +28,29 @@ inline constexpr int kMagCalPacked = kMagCalUnknowns * (kMagCalUnknowns + 1) / 2
 
 template <class T>
 struct MagCalibrationConfig {
-    T sigma = T(0.1e-6);              // T: 1σ per axis of the field (noise, quantization, reference model)
-    std::int32_t every = 20;          // samples between equations (20: 1 Hz at 20 Hz; neighbours add little)
+    T sigma = T(0.05e-6);              // T: 1σ per axis of the field (noise, quantization, reference model)
+    std::int32_t every = 20;           // samples between equations (20: 1 Hz at 20 Hz; neighbours add little)
     std::int32_t min_equations = 600;  // equations before a solution is applied (10 min at 1 Hz)
-    std::int32_t solve_every = 60;    // equations between solves
-    T max_distortion = T(0.05);       // largest |D_ij| accepted (larger: not enough rotation seen, or bad data)
-    T max_offset = T(20e-6);          // T: largest |b| accepted
+    std::int32_t solve_every = 60;     // equations between solves
+    T max_distortion = T(0.05);        // largest |D_ij| accepted (larger: not enough rotation seen, or bad data)
+    T max_offset = T(20e-6);           // T: largest |b| accepted
+    // A solution is applied only once the equations pin it down: the 1σ of every element of E = 2D + D²
+    // (from the inverse of the normal matrix, with `sigma` the readings' noise) below twice this, and of
+    // every offset component below max_offset_sigma. Early on (a few hundred equations over a fraction of
+    // an orbit) the field's magnitude varies too little to separate scale, offset and μ.
+    T max_gain_sigma = T(1e-4);
+    T max_offset_sigma = T(10e-9);  // T
 };
 
 template <class T>
 struct MagCalibrationState {
-    std::array<T, kMagCalPacked> info{};  // upper triangle of Σ w L Lᵀ, row by row (fields in units of 10 µT)
+    std::array<T, kMagCalPacked> info{};   // upper triangle of Σ w L Lᵀ, row by row (fields in units of 10 µT)
     std::array<T, kMagCalUnknowns> rhs{};  // Σ w L z
     std::int32_t equations = 0;
-    std::int32_t countdown = 0;            // samples until the next equation
-    bool valid = false;                    // a solution is applied
+    std::int32_t countdown = 0;                          // samples until the next equation
+    bool valid = false;                                  // a solution is applied
     Matrix3RowMajor<T> gain{1, 0, 0, 0, 1, 0, 0, 0, 1};  // I + D
-    Vec3<T> offset{};                      // b, T
+    Vec3<T> offset{};                                    // b, T
 };
 
 // Offers one reading: H (T, body axes, polarity p = ±1 it was taken in) and the reference field's magnitude
@@ -62,9 +68,9 @@ bool mag_calibration_solve(MagCalibrationState<T>& s, const MagCalibrationConfig
 template <class T>
 Vec3<T> mag_calibration_apply(const MagCalibrationState<T>& s, const Vec3<T>& field, T polarity) noexcept;
 
-#define ATTITUDE_ESTIMATOR_MAG_CAL_EXTERN(T)                                                                   \
-    extern template void mag_calibration_offer(MagCalibrationState<T>&, const Vec3<T>&, T, T,                  \
-                                               const MagCalibrationConfig<T>&) noexcept;                       \
+#define ATTITUDE_ESTIMATOR_MAG_CAL_EXTERN(T)                                                                      \
+    extern template void mag_calibration_offer(MagCalibrationState<T>&, const Vec3<T>&, T, T,                     \
+                                               const MagCalibrationConfig<T>&) noexcept;                          \
     extern template bool mag_calibration_solve(MagCalibrationState<T>&, const MagCalibrationConfig<T>&) noexcept; \
     extern template Vec3<T> mag_calibration_apply(const MagCalibrationState<T>&, const Vec3<T>&, T) noexcept;
 ATTITUDE_ESTIMATOR_MAG_CAL_EXTERN(float)

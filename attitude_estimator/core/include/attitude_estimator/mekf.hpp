@@ -43,6 +43,10 @@ struct MekfConfig {
     // 1σ per axis of the reference field model (the on-board model against the real field), T: adds in
     // quadrature to mag_sigma.
     T mag_ref_sigma = T(0);
+    // mag_sigma once the field comes calibrated in flight (MekfSampleInputs::mag_calibrated; 0: mag_sigma):
+    // an uncalibrated HMC2003 carries its 0.3 % cross-axis coupling (0.1 µT), a calibrated one little more
+    // than its 12-bit steps (0.12 µT / √12).
+    T mag_sigma_calibrated = T(0);
     // --- initial uncertainty (at the Q-method initialisation)
     T init_attitude_sigma = T(0.05);  // rad, per axis
     T init_rate_sigma = T(0.02);      // rad/s, per axis, after the two-sample rate
@@ -136,9 +140,10 @@ struct MekfSampleInputs {
     Vec3<T> sun_ref{};   // any length
     Vec3<T> sun_body{};  // unit
     bool mag_valid = false;
-    Vec3<T> mag_ref{};   // T
-    Vec3<T> mag_body{};  // T
-    T polarity = T(1);   // set/reset sign of this field reading
+    Vec3<T> mag_ref{};            // T
+    Vec3<T> mag_body{};           // T
+    T polarity = T(1);            // set/reset sign of this field reading
+    bool mag_calibrated = false;  // mag_body comes through the in-flight calibration (mag_sigma_calibrated)
     // Face update (only with config.estimate_scale): relative responses and the faces to use.
     std::array<T, 6> face_r{};
     std::array<T, 6> face_albedo{};  // relative albedo on each face (cones' fit), taken out of face_r's model
