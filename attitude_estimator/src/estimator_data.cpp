@@ -66,7 +66,10 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
     c.sun.cone_earth_sin_radius = static_cast<T>(kEarthMeanRadius / (kEarthMeanRadius + d.orbit_altitude));
     c.sun.cone_fit_tolerance = static_cast<T>(d.cone_fit_tolerance);
     c.sun.cone_albedo_max = static_cast<T>(d.cone_albedo_max);
-    c.sun.cone_albedo_shape = cone_albedo_shape_table(c.sun.response, c.sun.cone_earth_sin_radius);
+    // The cones method's albedo model through the panels' response: a configure-time integral (1e6 response
+    // evaluations), so only for the method that uses it.
+    if (d.sun_method == SunMethod::cones)
+        c.sun.cone_albedo_shape = cone_albedo_shape_table(c.sun.response, c.sun.cone_earth_sin_radius);
     c.face_adc.fill(adc<T>(d.adc_bits, 0.0, d.i_face_adc_max));
 
     s.set_reset = SetResetConfig{.period_samples = d.mag_set_reset_samples, .offset_window = d.mag_offset_window};

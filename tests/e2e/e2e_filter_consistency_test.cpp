@@ -92,9 +92,10 @@ TEST_P(E2eLeoFilterConsistency, NormalizedErrorNearOneSunlitAndInEclipse) {
     ex.output_interval = 1.0;  // every 20th estimator sample: the mean over 5764 of them
     Consistency c(system);
     cosim::Execution(system, ex).run({&c});
-    std::printf("leo_orbit, sun_method %s, second orbit: NEES/dof sunlit %.3f (%d rows), eclipse %.3f (%d rows); "
-                "3-sigma coverage sunlit %.2f %%, eclipse %.2f %%\n",
-                GetParam(), c.nees(0), c.rows[0], c.nees(1), c.rows[1], c.coverage(0), c.coverage(1));
+    std::printf(
+        "leo_orbit, sun_method %s, second orbit: NEES/dof sunlit %.3f (%d rows), eclipse %.3f (%d rows); "
+        "3-sigma coverage sunlit %.2f %%, eclipse %.2f %%\n",
+        GetParam(), c.nees(0), c.rows[0], c.nees(1), c.rows[1], c.coverage(0), c.coverage(1));
     RecordProperty("nees_sunlit", std::to_string(c.nees(0)));
     RecordProperty("nees_eclipse", std::to_string(c.nees(1)));
     RecordProperty("coverage_sunlit_percent", std::to_string(c.coverage(0)));

@@ -44,7 +44,8 @@ TEST(E2eLeoMagCalibration, RecoversTheCrossAxisCouplingFromTheFieldMagnitude) {
             worst = std::max(worst, std::abs(g - (i == j ? diag : off)));
         }
     double offset = 0.0;
-    for (int i = 1; i <= 3; ++i) offset = std::hypot(offset, rec["est.mag_cal_offset[" + std::to_string(i) + "]"][last]);
+    for (int i = 1; i <= 3; ++i)
+        offset = std::hypot(offset, rec["est.mag_cal_offset[" + std::to_string(i) + "]"][last]);
     std::printf("leo_orbit, one orbit at 1 Hz: calibration gain within %.2e of M^-1 (coupling %.4f), offset %.2e T\n",
                 worst, c, offset);
     // Within 15 % of the coupling after one orbit of 1 Hz equations (0.3e-3 at 20 Hz over two orbits,

@@ -68,21 +68,43 @@ bool mag_calibration_solve(MagCalibrationState<T>& s, const MagCalibrationConfig
         if (!(a(i, i) > T(0))) return false;
         d(i) = T(1) / std::sqrt(a(i, i));
     }
-    const MatN<T> as = d.asDiagonal() * a * d.asDiagonal();
-    const Eigen::LDLT<MatN<T>> ldlt(as);
-    if (ldlt.info() != Eigen::Success || !ldlt.isPositive()) return false;
-    // A near-singular system (too little rotation seen): its smallest pivot tells.
-    const auto pivots = ldlt.vectorD();
-    if (!(pivots.minCoeff() > T(1e-6) * pivots.maxCoeff())) return false;
-    const VecN<T> x = d.asDiagonal() * ldlt.solve(d.asDiagonal() * y);
+    MatN<T> l = d.asDiagonal() * a * d.asDiagonal();
+    // Cholesky in place (lower), by hand: Eigen's factorizations take a blocked, heap-using path for some
+    // right-hand sides on the firmware's compiler. A pivot below 1e-6 (relative to the unit diagonal) means
+    // a nearly singular system: too little rotation or magnitude variation seen.
+    for (int j = 0; j < kMagCalUnknowns; ++j) {
+        T p = l(j, j);
+        for (int k = 0; k < j; ++k) p -= l(j, k) * l(j, k);
+        if (!(p > T(1e-6))) return false;
+        l(j, j) = std::sqrt(p);
+        for (int i = j + 1; i < kMagCalUnknowns; ++i) {
+            T v = l(i, j);
+            for (int k = 0; k < j; ++k) v -= l(i, k) * l(j, k);
+            l(i, j) = v / l(j, j);
+        }
+    }
+    // Solves (scaled A) z = rhs by forward and back substitution.
+    const auto solve = [&l](VecN<T> z) {
+        for (int i = 0; i < kMagCalUnknowns; ++i) {
+            for (int k = 0; k < i; ++k) z(i) -= l(i, k) * z(k);
+            z(i) /= l(i, i);
+        }
+        for (int i = kMagCalUnknowns - 1; i >= 0; --i) {
+            for (int k = i + 1; k < kMagCalUnknowns; ++k) z(i) -= l(k, i) * z(k);
+            z(i) /= l(i, i);
+        }
+        return z;
+    };
+    const VecN<T> x = d.asDiagonal() * solve(d.asDiagonal() * y);
     if (!x.allFinite()) return false;
     // The solution's covariance is the inverse normal matrix: refuse it until it is well determined.
-    const MatN<T> cov = d.asDiagonal() * ldlt.solve(MatN<T>::Identity()) * d.asDiagonal();
+    VecN<T> var;
+    for (int i = 0; i < kMagCalUnknowns; ++i) var(i) = solve(VecN<T>::Unit(i))(i) * d(i) * d(i);
     const T u = kFieldUnit<T>;
     for (int i = 0; i < 3; ++i)
-        if (!(std::sqrt(cov(i, i)) * u <= config.max_offset_sigma)) return false;
+        if (!(std::sqrt(var(i)) * u <= config.max_offset_sigma)) return false;
     for (int i = 3; i < 9; ++i)
-        if (!(std::sqrt(cov(i, i)) <= T(2) * config.max_gain_sigma)) return false;
+        if (!(std::sqrt(var(i)) <= T(2) * config.max_gain_sigma)) return false;
     Eigen::Matrix<T, 3, 3> e;
     e << x(3), x(6), x(7), x(6), x(4), x(8), x(7), x(8), x(5);
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<T, 3, 3>> eig(Eigen::Matrix<T, 3, 3>::Identity() + e);
@@ -90,7 +112,7 @@ bool mag_calibration_solve(MagCalibrationState<T>& s, const MagCalibrationConfig
     const Eigen::Matrix<T, 3, 3> gain =
         eig.eigenvectors() * eig.eigenvalues().cwiseSqrt().asDiagonal() * eig.eigenvectors().transpose();
     const Eigen::Matrix<T, 3, 1> c(x(0), x(1), x(2));
-    const Eigen::Matrix<T, 3, 1> b = gain.ldlt().solve(c) * kFieldUnit<T>;
+    const Eigen::Matrix<T, 3, 1> b = gain.inverse() * c * kFieldUnit<T>;
     const T distortion = (gain - Eigen::Matrix<T, 3, 3>::Identity()).cwiseAbs().maxCoeff();
     if (!(distortion <= config.max_distortion) || !(b.norm() <= config.max_offset) || !b.allFinite()) return false;
     for (int i = 0; i < 3; ++i) {
