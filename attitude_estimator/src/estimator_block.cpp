@@ -267,13 +267,6 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.output("mag_cal_valid", &D::mag_cal_valid, "", "mag_calibration: a calibration is solved and applied")
         .discrete()
         .depends_on({});
-    t.output("mag_cal_gain", &D::mag_cal_gain, "1",
-             "mag_calibration: I + D, row-major: the field used is this times the reading minus p times the offset")
-        .discrete()
-        .depends_on({});
-    t.output("mag_cal_offset", &D::mag_cal_offset, "T", "mag_calibration: the offset b, body axes")
-        .discrete()
-        .depends_on({});
     t.output("q_filt", &D::q_filt, "1", "mekf: filter attitude quaternion, scalar-last [x, y, z, w], w >= 0")
         .discrete()
         .depends_on({});
@@ -291,8 +284,9 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
         .discrete()
         .depends_on({});
     t.output("attitude_cov_sqrt", &D::attitude_cov_sqrt, "rad",
-             "mekf: lower Cholesky factor L of the filter's attitude error covariance P = L L' (body axes, "
-             "row-major): |inv(L) dtheta|^2 / 3 is the normalized error per degree of freedom of an error dtheta")
+             "mekf: lower Cholesky factor L of the filter's attitude error covariance P = L L' (body axes), its "
+             "lower triangle by rows: L11, L21, L22, L31, L32, L33; |inv(L) dtheta|^2 / 3 is the normalized error "
+             "per degree of freedom of an error dtheta")
         .discrete()
         .depends_on({});
     t.output("filter_valid", &D::filter_valid, "",

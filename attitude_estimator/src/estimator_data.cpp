@@ -176,15 +176,14 @@ void store_outputs(EstimatorData& d, const OnboardOutputs<T>& out) {
     d.ref_sun = from<3>(out.references.sun);
     d.ref_mag = from<3>(out.references.field);
     d.mag_cal_valid = out.mag_cal_valid;
-    d.mag_cal_gain = from<9>(out.mag_cal_gain);
-    d.mag_cal_offset = from<3>(out.mag_cal_offset);
     if (d.filter == FilterKind::mekf) {
         d.q_filt = {out.q_filt.x, out.q_filt.y, out.q_filt.z, out.q_filt.w};
         d.omega_filt = from<3>(out.omega_filt);
         d.mag_offset_filt = from<3>(out.mag_offset_filt);
         d.panel_scale_filt = out.panel_scale_filt;
         d.attitude_bound = out.attitude_bound;
-        d.attitude_cov_sqrt = from<9>(out.attitude_cov_sqrt);
+        const auto& l = out.attitude_cov_sqrt;  // row-major 3 × 3, lower
+        d.attitude_cov_sqrt = {l[0], l[3], l[4], l[6], l[7], l[8]};
         d.filter_valid = out.filter_valid;
         d.filter_resets = out.filter_resets;
     }

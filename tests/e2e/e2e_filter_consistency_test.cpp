@@ -36,7 +36,7 @@ struct Consistency : cosim::Observer {
     Consistency(cosim::System& system) {
         std::vector<std::string> names = e2e::vec("env.q_true", 4);
         for (const auto& n : e2e::vec("est.q_filt", 4)) names.push_back(n);
-        for (const auto& n : e2e::vec("est.attitude_cov_sqrt", 9)) names.push_back(n);
+        for (const auto& n : e2e::vec("est.attitude_cov_sqrt", 6)) names.push_back(n);
         names.push_back("env.irradiance");
         names.push_back("est.attitude_bound");
         for (const auto& n : names) {
@@ -50,15 +50,15 @@ struct Consistency : cosim::Observer {
 
     void sample(double t, cosim::System& system) override {
         if (t < kOrbit - 1e-9) return;
-        double x[20];
+        double x[17];
         for (std::size_t i = 0; i < refs.size(); ++i)
             x[i] = system.components()[refs[i].component].instance->get_real(refs[i].vr);
         const double* qt = x;
         const double* qf = x + 4;
-        const double* l = x + 8;  // row-major lower Cholesky factor of P_θθ
-        const int k = x[17] > 0.0 ? 0 : 1;
+        const double* l = x + 8;  // lower Cholesky factor of P_θθ by rows: L11, L21, L22, L31, L32, L33
+        const int k = x[14] > 0.0 ? 0 : 1;
         ++rows[k];
-        if (!(l[0] > 0 && l[4] > 0 && l[8] > 0)) {
+        if (!(l[0] > 0 && l[2] > 0 && l[5] > 0)) {
             ++invalid;
             return;
         }
@@ -71,10 +71,10 @@ struct Consistency : cosim::Observer {
         for (double& v : d) v *= s;
         // |L⁻¹ δθ|² by forward substitution.
         const double z0 = d[0] / l[0];
-        const double zz1 = (d[1] - l[3] * z0) / l[4];
-        const double zz2 = (d[2] - l[6] * z0 - l[7] * zz1) / l[8];
+        const double zz1 = (d[1] - l[1] * z0) / l[2];
+        const double zz2 = (d[2] - l[3] * z0 - l[4] * zz1) / l[5];
         nees_sum[k] += (z0 * z0 + zz1 * zz1 + zz2 * zz2) / 3.0;
-        covered[k] += std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) <= x[18];
+        covered[k] += std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) <= x[15];
     }
     double nees(int k) const { return rows[k] ? nees_sum[k] / rows[k] : NAN; }
     double coverage(int k) const { return rows[k] ? 100.0 * covered[k] / rows[k] : NAN; }

@@ -159,7 +159,7 @@ struct EstimatorData {
     Vec3d mag_offset_filt{};        // V: the filter's estimate of the offset left after mag_offset is taken out
     double panel_scale_filt = 0.0;  // 1: estimated common panel scale error ε (currents (1 + ε) × nominal)
     double attitude_bound = 0.0;    // rad: 3σ bound on the filter's attitude error
-    std::array<double, 9> attitude_cov_sqrt{};  // rad: L of P_θθ = L Lᵀ, row-major lower (normalized errors)
+    std::array<double, 6> attitude_cov_sqrt{};  // rad: L of P_θθ = L Lᵀ, lower triangle by rows
     bool filter_valid = false;
     std::int32_t filter_resets = 0;  // divergence resets so far
     bool mag_set_reset = true;       // the set/reset pulse commanded last: true set, false reset (to the sensor)
@@ -167,8 +167,6 @@ struct EstimatorData {
     Vec3d ref_sun{};                 // 1, the sun reference the last sample used (J2000)
     Vec3d ref_mag{};                 // T, the field reference the last sample used (J2000)
     bool mag_cal_valid = false;      // an in-flight calibration is applied
-    std::array<double, 9> mag_cal_gain{1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0};  // I + D, row-major
-    Vec3d mag_cal_offset{};  // T, b: the field used is mag_cal_gain · B − p · b
 
     // discrete state
     double t_start = 0.0;  // s, the start time: sample k is due at t_start + k·sample_period
