@@ -142,6 +142,20 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.parameter("filter_mag_sigma", &D::filter_mag_sigma, "T",
                 "mekf: 1-sigma error of one field vector per axis (noise, quantization, field-model error)")
         .range(1e-10, 1e-4);
+    t.parameter("filter_sun_sigma_method", &D::filter_sun_sigma_method, "rad",
+                "mekf: 1-sigma error of one sun vector per axis for each sun_method (difference, "
+                "inverse_response, cones, three_faces); 0 = filter_sun_sigma")
+        .range(0.0, 100.0);
+    t.parameter("filter_sun_correlation", &D::filter_sun_correlation, "s",
+                "mekf: correlation time of the sun vector's error for each sun_method (same order): an update "
+                "counts as white noise of sigma^2 max(1, 2 tau / dt); 0 = white")
+        .range(0.0, 1e5);
+    t.parameter("filter_mag_ref_sigma", &D::filter_mag_ref_sigma, "T",
+                "mekf: 1-sigma error per axis of the reference field model (adds to filter_mag_sigma in quadrature)")
+        .range(0.0, 1e-4);
+    t.parameter("filter_mag_sigma_calibrated", &D::filter_mag_sigma_calibrated, "T",
+                "mekf: filter_mag_sigma once the in-flight magnetometer calibration applies (0 = filter_mag_sigma)")
+        .range(0.0, 1e-4);
     t.parameter("filter_rate_noise", &D::filter_rate_noise, "rad/s",
                 "mekf: 1-sigma unpredictable change of the body rate over 1 s (a random walk: it grows as the "
                 "square root of time; the rate random-walk density in rad/s per root second)")
@@ -160,6 +174,18 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.parameter("inertia", &D::inertia, "kg.m2",
                 "mekf: inertia matrix, body axes, row-major; all zero (default) = kinematic rate model, else "
                 "Euler's torque-free equations propagate the rate");
+    t.parameter("mag_calibration", &D::mag_calibration, "",
+                "Calibrate the magnetometer in flight (scale, non-orthogonality, offset against the reference "
+                "field's magnitude; Alonso and Shuster 2002) and correct the field with it once solved");
+    t.parameter("mag_calibration_sigma", &D::mag_calibration_sigma, "T",
+                "mag_calibration: 1-sigma error of one field reading per axis (weights the equations)")
+        .range(1e-10, 1e-4);
+    t.parameter("mag_calibration_every", &D::mag_calibration_every, "",
+                "mag_calibration: samples between two calibration equations")
+        .range(1.0, 1e6);
+    t.parameter("mag_calibration_min", &D::mag_calibration_min, "",
+                "mag_calibration: equations before the first solution is applied")
+        .range(10.0, 1e8);
     t.parameter("filter_reset_after", &D::filter_reset_after, "",
                 "mekf: samples in a row whose every update fails the innovation test before the filter resets "
                 "to the single-frame attitude")
@@ -238,6 +264,9 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
         .discrete()
         .depends_on({});
 
+    t.output("mag_cal_valid", &D::mag_cal_valid, "", "mag_calibration: a calibration is solved and applied")
+        .discrete()
+        .depends_on({});
     t.output("q_filt", &D::q_filt, "1", "mekf: filter attitude quaternion, scalar-last [x, y, z, w], w >= 0")
         .discrete()
         .depends_on({});
@@ -252,6 +281,12 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
         .depends_on({});
     t.output("attitude_bound", &D::attitude_bound, "rad",
              "mekf: 3-sigma bound on the filter's attitude error angle, 3 sqrt(trace of its attitude covariance)")
+        .discrete()
+        .depends_on({});
+    t.output("attitude_cov_sqrt", &D::attitude_cov_sqrt, "rad",
+             "mekf: lower Cholesky factor L of the filter's attitude error covariance P = L L' (body axes), its "
+             "lower triangle by rows: L11, L21, L22, L31, L32, L33; |inv(L) dtheta|^2 / 3 is the normalized error "
+             "per degree of freedom of an error dtheta")
         .discrete()
         .depends_on({});
     t.output("filter_valid", &D::filter_valid, "",

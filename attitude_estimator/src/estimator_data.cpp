@@ -66,6 +66,10 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
     c.sun.cone_earth_sin_radius = static_cast<T>(kEarthMeanRadius / (kEarthMeanRadius + d.orbit_altitude));
     c.sun.cone_fit_tolerance = static_cast<T>(d.cone_fit_tolerance);
     c.sun.cone_albedo_max = static_cast<T>(d.cone_albedo_max);
+    // The cones method's albedo model through the panels' response: a configure-time integral (1e6 response
+    // evaluations), so only for the method that uses it.
+    if (d.sun_method == SunMethod::cones)
+        c.sun.cone_albedo_shape = cone_albedo_shape_table(c.sun.response, c.sun.cone_earth_sin_radius);
     c.face_adc.fill(adc<T>(d.adc_bits, 0.0, d.i_face_adc_max));
 
     s.set_reset = SetResetConfig{.period_samples = d.mag_set_reset_samples, .offset_window = d.mag_offset_window};
@@ -81,7 +85,12 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
     s.filter = d.filter;
     s.filter_scale = d.filter_scale;
     MekfConfig<T>& m = s.mekf;
-    m.sun_sigma = static_cast<T>(d.filter_sun_sigma);
+    const auto method = static_cast<std::size_t>(d.sun_method);
+    m.sun_sigma = static_cast<T>(d.filter_sun_sigma_method[method] > 0.0 ? d.filter_sun_sigma_method[method]
+                                                                         : d.filter_sun_sigma);
+    m.sun_correlation_time = static_cast<T>(d.filter_sun_correlation[method]);
+    m.mag_ref_sigma = static_cast<T>(d.filter_mag_ref_sigma);
+    m.mag_sigma_calibrated = static_cast<T>(d.filter_mag_sigma_calibrated);
     m.mag_sigma = static_cast<T>(d.filter_mag_sigma);
     m.rate_noise = static_cast<T>(d.filter_rate_noise);
     m.attitude_noise = static_cast<T>(d.filter_attitude_noise);
@@ -90,6 +99,10 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
     m.face_sigma = static_cast<T>(d.filter_face_sigma);
     m.inertia = to<T>(d.inertia);
     m.reset_after = d.filter_reset_after;
+    s.mag_calibration = d.mag_calibration;
+    s.mag_cal.sigma = static_cast<T>(d.mag_calibration_sigma);
+    s.mag_cal.every = d.mag_calibration_every;
+    s.mag_cal.min_equations = d.mag_calibration_min;
     // The rate comes from two single-frame attitudes at most a few samples apart.
     m.max_init_gap = static_cast<T>(3.5 * d.sample_period);
 
@@ -162,12 +175,15 @@ void store_outputs(EstimatorData& d, const OnboardOutputs<T>& out) {
     d.rate_valid = out.rate_valid;
     d.ref_sun = from<3>(out.references.sun);
     d.ref_mag = from<3>(out.references.field);
+    d.mag_cal_valid = out.mag_cal_valid;
     if (d.filter == FilterKind::mekf) {
         d.q_filt = {out.q_filt.x, out.q_filt.y, out.q_filt.z, out.q_filt.w};
         d.omega_filt = from<3>(out.omega_filt);
         d.mag_offset_filt = from<3>(out.mag_offset_filt);
         d.panel_scale_filt = out.panel_scale_filt;
         d.attitude_bound = out.attitude_bound;
+        const auto& l = out.attitude_cov_sqrt;  // row-major 3 × 3, lower
+        d.attitude_cov_sqrt = {l[0], l[3], l[4], l[6], l[7], l[8]};
         d.filter_valid = out.filter_valid;
         d.filter_resets = out.filter_resets;
     }

@@ -5,7 +5,8 @@
 // env.q_true and env.omega_body. docs/filter.md lists the runs and the columns they record.
 //
 //   attitude_estimator_mekf_replay run.csv [--from T] [--trace out.csv] [key=value ...]
-//   keys: sun_sigma, mag_sigma (T), rate_noise, attitude_noise, offset (0/1), polarity (plus | column:
+//   keys: sun_sigma, sun_correlation (s), mag_sigma (T), mag_ref_sigma (T), mag_sigma_calibrated (T: from the rows where
+//   est.mag_cal_valid, when recorded), rate_noise, attitude_noise, offset (0/1), polarity (plus | column:
 //   est.mag_set_reset of the row before), euler (0/1: the environment's default inertia), inertia_diag (Jxx,Jyy,Jzz), reset_after,
 //   scale (0/1: face update from plant.i_face_sh with the Kelly law), face_sigma, i_face_norm (A, at 1 AU),
 //   face_min (smallest relative response of a face used for the scale)
@@ -76,6 +77,12 @@ Options parse(int argc, char** argv, std::string& file) {
             f.sun_sigma = std::stod(v);
         else if (k == "mag_sigma")
             f.mag_sigma = std::stod(v);
+        else if (k == "sun_correlation")
+            f.sun_correlation_time = std::stod(v);
+        else if (k == "mag_ref_sigma")
+            f.mag_ref_sigma = std::stod(v);
+        else if (k == "mag_sigma_calibrated")
+            f.mag_sigma_calibrated = std::stod(v);
         else if (k == "rate_noise")
             f.rate_noise = std::stod(v);
         else if (k == "attitude_noise")
@@ -106,6 +113,41 @@ Options parse(int argc, char** argv, std::string& file) {
     return o;
 }
 
+// The attitude error δθ of the estimate q against the truth qt (A_true = (I − [δθ×]) Â, body axes) and its
+// normalized square δθᵀ P_θθ⁻¹ δθ / 3 (the normalized estimation error squared per degree of freedom).
+double nees_per_dof(const double* qt, const ae::MekfState<double>& s) {
+    const ae::Quaternion<double> t{qt[0], qt[1], qt[2], qt[3]};
+    // δq = q_true ⊗ q̂⁻¹ (Shuster's order: A(δq) = A_true Âᵀ); δθ = 2 vec(δq) sign-fixed by its scalar part.
+    const double x1 = t.x, y1 = t.y, z1 = t.z, w1 = t.w;
+    const double x2 = -s.q.x, y2 = -s.q.y, z2 = -s.q.z, w2 = s.q.w;
+    // Shuster's product p ⊗ q = [p4 q + q4 p − p × q; p4 q4 − p·q] with p = q_true, q = q̂⁻¹.
+    double d[3] = {w1 * x2 + w2 * x1 - (y1 * z2 - z1 * y2), w1 * y2 + w2 * y1 - (z1 * x2 - x1 * z2),
+                   w1 * z2 + w2 * z1 - (x1 * y2 - y1 * x2)};
+    const double dw = w1 * w2 - (x1 * x2 + y1 * y2 + z1 * z2);
+    const double sign = dw < 0 ? -2.0 : 2.0;
+    for (double& v : d) v *= sign;
+    // Solve P_θθ x = δθ by Cholesky.
+    double l[3][3] = {};
+    for (int j = 0; j < 3; ++j) {
+        double a = s.p[ae::kMekfStates * j + j];
+        for (int k = 0; k < j; ++k) a -= l[j][k] * l[j][k];
+        if (!(a > 0)) return NAN;
+        l[j][j] = std::sqrt(a);
+        for (int i = j + 1; i < 3; ++i) {
+            double b = s.p[ae::kMekfStates * i + j];
+            for (int k = 0; k < j; ++k) b -= l[i][k] * l[j][k];
+            l[i][j] = b / l[j][j];
+        }
+    }
+    double z[3];
+    for (int i = 0; i < 3; ++i) {
+        double b = d[i];
+        for (int k = 0; k < i; ++k) b -= l[i][k] * z[k];
+        z[i] = b / l[i][i];
+    }
+    return (z[0] * z[0] + z[1] * z[1] + z[2] * z[2]) / 3.0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) try {
@@ -122,7 +164,7 @@ int main(int argc, char** argv) try {
     const bool have_irradiance = has("env.irradiance");
     const auto kelly = panel_response::kelly<double>();
     ae::MekfState<double> s;
-    std::vector<double> single_lit, filt_lit, filt_dark, rate_err;
+    std::vector<double> single_lit, filt_lit, filt_dark, rate_err, nees_lit, nees_dark;
     std::size_t rows = 0, covered = 0, filter_valid = 0;
     std::FILE* trace = o.trace.empty() ? nullptr : std::fopen(o.trace.c_str(), "w");
     if (trace) std::fprintf(trace, "time,error_deg,bound_deg,single_deg,lit\n");
@@ -152,6 +194,7 @@ int main(int argc, char** argv) try {
     // est.mag_set_reset of a row is the pulse commanded after that sample: the polarity of the next reading.
     const std::vector<double>* polarity = o.column_polarity ? &col("est.mag_set_reset") : nullptr;
     const std::vector<double>* irradiance = have_irradiance ? &col("env.irradiance") : nullptr;
+    const std::vector<double>* calibrated = has("est.mag_cal_valid") ? &col("est.mag_cal_valid") : nullptr;
     const std::vector<double>* distance = nullptr;
     const std::vector<double>* lit_faces = nullptr;
     const std::vector<double>* rejected_faces = nullptr;
@@ -174,6 +217,7 @@ int main(int argc, char** argv) try {
             in.mag_ref[k] = (*mag_ref[k])[r];
             in.mag_body[k] = (*mag_field[k])[r];
         }
+        in.mag_calibrated = calibrated && (*calibrated)[r] > 0.5;
         in.polarity = (polarity && r > 0) ? ((*polarity)[r - 1] > 0.5 ? 1.0 : -1.0) : 1.0;
         if (o.filter.estimate_scale) {
             const double au = kAu / (*distance)[r];
@@ -198,6 +242,7 @@ int main(int argc, char** argv) try {
         if (res.valid) {
             ++filter_valid;
             (lit ? filt_lit : filt_dark).push_back(err);
+            (lit ? nees_lit : nees_dark).push_back(nees_per_dof(qt, s));
         }
         covered += s.stage == 2 && err <= bound;
         double w2 = 0;
@@ -218,6 +263,12 @@ int main(int argc, char** argv) try {
                 filt_dark.size());
     std::printf("3-sigma bound covers the error in %.2f %% of rows\n",
                 100.0 * static_cast<double>(covered) / static_cast<double>(std::max<std::size_t>(rows, 1)));
+    auto mean = [](const std::vector<double>& v) {
+        double m = 0;
+        for (double x : v) m += x;
+        return v.empty() ? NAN : m / static_cast<double>(v.size());
+    };
+    std::printf("normalized error per dof (NEES/3): sunlit %.3f, eclipse %.3f\n", mean(nees_lit), mean(nees_dark));
     std::printf("rate error median %.4f p95 %.4f deg/s\n", pct(rate_err, 0.5), pct(rate_err, 0.95));
     std::printf("offset %.3e %.3e %.3e T, panel scale %.4f\n", s.mag_offset[0], s.mag_offset[1], s.mag_offset[2],
                 s.panel_scale);

@@ -100,6 +100,7 @@ attitude_estimator::SunMethodConfig<double> method_config(const SceneConfig& sce
     c.i_face_norm.fill(i_face_norm);
     c.response = scene.response == ssr_plant::AngularResponse::kelly ? panel_response::kelly<double>()
                                                                      : panel_response::cosine<double>();
+    c.cone_albedo_shape = attitude_estimator::cone_albedo_shape_table(c.response, c.cone_earth_sin_radius);
     return c;
 }
 

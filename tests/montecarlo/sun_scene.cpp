@@ -71,6 +71,10 @@ Scene SceneGenerator::next() {
     if (config_.albedo) {
         environment::AlbedoParams albedo;
         albedo.reflectivity = config_.reflectivity;
+        // The Earth's light reaches the panels through their own response, as in leo_orbit (environment
+        // albedo_response = kelly for Kelly panels).
+        albedo.response = config_.response == ssr_plant::AngularResponse::kelly ? environment::AlbedoResponse::kelly
+                                                                                : environment::AlbedoResponse::cosine;
         s.albedo = environment::earth_albedo(albedo, r_sat, kSunEci, config_.irradiance, body_from_eci);
     }
 

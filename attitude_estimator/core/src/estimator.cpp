@@ -1,5 +1,7 @@
 #include "attitude_estimator/estimator.hpp"
 
+#include "attitude_estimator/vec3_math.hpp"
+
 #include <cmath>
 
 namespace attitude_estimator {
@@ -32,6 +34,21 @@ void measure_sun(const SampleInputs<T>& in, const EstimatorConfig<T>& config, Su
     r.cube_state = sun.cube_state;
 }
 
+// The in-flight calibration's correction, gain · B − p · offset (identity and zero when none is applied);
+// the unit vector and the minimum-field test follow the corrected field.
+template <class T>
+void calibrate_field(const SampleInputs<T>& in, T min_field, FieldMeasurement<T>& mag) noexcept {
+    if (mag.at_rail) return;
+    const T p = in.mag_polarity < T(0) ? T(-1) : T(1);
+    const Vec3<T> b = mag.field;
+    for (std::size_t i = 0; i < 3; ++i)
+        mag.field[i] = in.mag_gain[3 * i] * b[0] + in.mag_gain[3 * i + 1] * b[1] + in.mag_gain[3 * i + 2] * b[2] -
+                       p * in.mag_cal_offset[i];
+    const T n = std::sqrt(squared_norm(mag.field));
+    mag.valid = mag.valid && n >= min_field && n > T(0);
+    mag.unit = mag.valid ? scaled(mag.field, T(1) / n) : Vec3<T>{};
+}
+
 }  // namespace
 
 template <class T>
@@ -51,9 +68,11 @@ SampleResult<T> estimate_sample(const SampleInputs<T>& in, const EstimatorConfig
         rail_low[k] = config.mag_adc[k].min;  // a saturated sensor shows up at its converter's range ends
         rail_high[k] = config.mag_adc[k].max;
     }
-    const FieldMeasurement<T> mag =
+    FieldMeasurement<T> mag =
         field_vector_from_set_reset(v_digital, v_ref_digital, config.mag_sensitivity, in.mag_polarity, in.mag_offset,
                                     rail_low, rail_high, config.mag_rail_margin, config.min_field);
+    r.mag_field_uncalibrated = mag.field;
+    calibrate_field(in, config.min_field, mag);
     r.mag_reading_usable = !mag.at_rail && std::isfinite(v_ref_digital);
     for (int k = 0; k < 3; ++k) {
         r.mag_reading[k] = v_digital[k] - v_ref_digital;

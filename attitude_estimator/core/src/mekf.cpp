@@ -254,8 +254,8 @@ MekfUpdate<T> mekf_update_field(MekfState<T>& s, const Vec3<T>& field_ref, const
     Eigen::Matrix<T, 3, kMekfStates> h = Eigen::Matrix<T, 3, kMekfStates>::Zero();
     h.template block<3, 3>(0, kMekfAttitude) = skew<T>(micro * predicted_field);
     h.template block<3, 3>(0, kMekfOffset) = micro * polarity * Mat3<T>::Identity();
-    const T sigma = micro * c.mag_sigma;
-    const Mat3<T> r = sigma * sigma * Mat3<T>::Identity();
+    const T sigma = micro * c.mag_sigma, ref_sigma = micro * c.mag_ref_sigma;
+    const Mat3<T> r = (sigma * sigma + ref_sigma * ref_sigma) * Mat3<T>::Identity();
     return linear_update<T, 3>(s, y, h, r, c.gate);
 }
 
@@ -336,12 +336,23 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
 
     int offered = 0, accepted = 0;
     if (in.sun_valid) {
-        result.sun = mekf_update_sun(s, in.sun_ref, in.sun_body, c);
+        // A correlated sun error enters as the white noise of the same information (MekfConfig).
+        MekfConfig<T> sun_config = c;
+        if (c.sun_correlation_time > T(0)) {
+            const T dt = s.has_sun ? in.t - s.t_sun : T(0);
+            const T ratio = dt > T(0) ? T(2) * c.sun_correlation_time / dt : T(1);
+            if (ratio > T(1)) sun_config.sun_sigma *= std::sqrt(ratio);
+        }
+        s.t_sun = in.t;
+        s.has_sun = 1;
+        result.sun = mekf_update_sun(s, in.sun_ref, in.sun_body, sun_config);
         ++offered;
         accepted += result.sun.accepted;
     }
     if (in.mag_valid) {
-        result.mag = mekf_update_field(s, in.mag_ref, in.mag_body, in.polarity, c);
+        MekfConfig<T> mag_config = c;
+        if (in.mag_calibrated && c.mag_sigma_calibrated > T(0)) mag_config.mag_sigma = c.mag_sigma_calibrated;
+        result.mag = mekf_update_field(s, in.mag_ref, in.mag_body, in.polarity, mag_config);
         ++offered;
         accepted += result.mag.accepted;
     }

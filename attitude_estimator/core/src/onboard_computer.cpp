@@ -25,6 +25,27 @@ EstimatorConfig<T> at_sun_distance(EstimatorConfig<T> c, T sun_distance) {
     return c;
 }
 
+// The lower Cholesky factor of P_θθ (zeros where a pivot is not positive).
+template <class T>
+Matrix3RowMajor<T> attitude_covariance_sqrt(const MekfState<T>& m) {
+    const auto p = [&](std::size_t i, std::size_t j) {
+        return m.p[kMekfStates * (kMekfAttitude + i) + kMekfAttitude + j];
+    };
+    Matrix3RowMajor<T> l{};
+    for (std::size_t j = 0; j < 3; ++j) {
+        T d = p(j, j);
+        for (std::size_t k = 0; k < j; ++k) d -= l[3 * j + k] * l[3 * j + k];
+        if (!(d > T(0))) return Matrix3RowMajor<T>{};
+        l[3 * j + j] = std::sqrt(d);
+        for (std::size_t i = j + 1; i < 3; ++i) {
+            T s = p(i, j);
+            for (std::size_t k = 0; k < j; ++k) s -= l[3 * i + k] * l[3 * j + k];
+            l[3 * i + j] = s / l[3 * j + j];
+        }
+    }
+    return l;
+}
+
 template <class T>
 void update_filter(OnboardState<T>& s, const OnboardInputs<T>& in, const OnboardSettings<T>& settings, T t,
                    const SampleResult<T>& r, const EstimatorConfig<T>& nominal, T polarity, OnboardOutputs<T>& out) {
@@ -41,6 +62,7 @@ void update_filter(OnboardState<T>& s, const OnboardInputs<T>& in, const Onboard
     // offset state is what is left of the offset, with the sign of this reading's polarity.
     f.mag_body = r.mag_field;
     f.polarity = polarity;
+    f.mag_calibrated = settings.mag_calibration && s.mag_cal.valid;
     if (settings.filter_scale && nominal.sun.method != SunMethod::difference) {
         // Relative responses against the nominal normalization: the filter's model is (1 + ε) R(cos β).
         for (std::size_t k = 0; k < 6; ++k) {
@@ -62,6 +84,7 @@ void update_filter(OnboardState<T>& s, const OnboardInputs<T>& in, const Onboard
     for (std::size_t k = 0; k < 3; ++k) out.mag_offset_filt[k] = m.mag_offset[k] * settings.estimator.mag_sensitivity;
     out.panel_scale_filt = m.panel_scale;
     out.attitude_bound = running ? result.bound : T(0);
+    if (running) out.attitude_cov_sqrt = attitude_covariance_sqrt(m);
     out.filter_valid = running && result.valid;
     out.filter_resets = m.resets;
 }
@@ -153,8 +176,19 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
                                     .sun_ref = in.sun_ref,
                                     .mag_ref = in.mag_ref,
                                     .mag_polarity = reading_polarity,
-                                    .mag_offset = applied_offset(s.set_reset, settings.set_reset)};
+                                    .mag_offset = applied_offset(s.set_reset, settings.set_reset),
+                                    .mag_gain = s.mag_cal.gain,
+                                    .mag_cal_offset = s.mag_cal.offset};
     out.sample = estimate_sample(sample_in, config, s.sun);
+    if (settings.mag_calibration && out.sample.mag_reading_usable) {
+        // Against the reference field's magnitude only: no attitude needed (the next sample applies it).
+        const T ref =
+            std::sqrt(in.mag_ref[0] * in.mag_ref[0] + in.mag_ref[1] * in.mag_ref[1] + in.mag_ref[2] * in.mag_ref[2]);
+        mag_calibration_offer(s.mag_cal, out.sample.mag_field_uncalibrated, reading_polarity, ref, settings.mag_cal);
+    }
+    out.mag_cal_valid = s.mag_cal.valid;
+    out.mag_cal_gain = s.mag_cal.gain;
+    out.mag_cal_offset = s.mag_cal.offset;
     if (s.samples < std::numeric_limits<std::int32_t>::max()) ++s.samples;
     out.samples = s.samples;
     // The next reading is taken in the polarity commanded here.

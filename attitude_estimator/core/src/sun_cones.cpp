@@ -182,32 +182,14 @@ SunMethodResult<T> cones_candidates(const FaceReadings<T>& fr, const SunMethodCo
 
 // ---- The albedo model: the Earth as a uniformly bright sphere seen from the orbit ----
 //
-// A face with unit normal n whose angle to the nadir d is θ receives from a uniformly bright sphere of
-// angular radius λ (sin λ = 1/H = R_E/(R_E + h)) the irradiance of a face squarely toward it times
-// G(cos θ) = H² F(θ), F the differential-plate-to-sphere view factor (Howell's catalogue):
-//   cos θ ≥ 1/H (sphere wholly above the face's horizon):  G = cos θ
-//   cos θ ≤ −1/H (wholly below):                           G = 0
-//   otherwise, with X = √(H² − 1):
-//   G = H² (1/2 − asin(X / (H sin θ))/π) + (cos θ acos(−X cot θ) − X √(1 − H² cos²θ))/π.
-// G(c) − G(−c) = c (the net flux is linear in the normal); a face at 90° to the nadir still gets
-// G(0) ≈ 0.30 at 570 km: several faces share the Earth's light, which is what ties them to one nadir.
+// A face whose normal is at θ to the nadir d receives α G(cos θ), α the albedo of a face squarely toward
+// the Earth (relative to full sun) and G the sphere's light weighed by the panels' response
+// (cone_albedo_shape.hpp: the closed-form view factor for cosine panels, the configured table otherwise).
+// A face at 90° to the nadir still gets G(0) ≈ 0.30 (cosine, 570 km): several faces share the Earth's
+// light, which is what ties them to one nadir.
 template <class T>
-T clamp_unit(T x) noexcept {
-    return x < T(-1) ? T(-1) : (x > T(1) ? T(1) : x);
-}
-
-template <class T>
-T albedo_shape(T cos_t, T inv_h) noexcept {
-    if (cos_t >= inv_h) return cos_t;
-    if (cos_t <= -inv_h) return T(0);
-    constexpr T pi = T(3.14159265358979323846);
-    const T h = T(1) / inv_h, h2 = h * h;
-    const T x = std::sqrt(h2 - T(1));
-    const T sin_t = std::sqrt(std::max(T(0), T(1) - cos_t * cos_t));
-    const T a = T(0.5) - std::asin(clamp_unit(x / (h * sin_t))) / pi;
-    const T b =
-        cos_t * std::acos(clamp_unit(-x * cos_t / sin_t)) - x * std::sqrt(std::max(T(0), T(1) - h2 * cos_t * cos_t));
-    return h2 * a + b / pi;
+T albedo_shape(const SunMethodConfig<T>& cfg, T cos_t, T inv_h) noexcept {
+    return cone_albedo_shape(cfg.cone_albedo_shape, cos_t, inv_h);
 }
 
 template <class T>
@@ -246,7 +228,7 @@ void model_residuals(const ModelFit<T>& m, const FaceReadings<T>& fr, const SunM
     for (int k = 0; k < 6; ++k) {
         const T sg = T(face_sign(k));
         e[k] = panel_response::response_from_cos(cfg.response, sg * m.s[face_axis(k)]) +
-               m.alpha * albedo_shape(sg * m.d[face_axis(k)], inv_h) - fr.r[k];
+               m.alpha * albedo_shape(cfg, sg * m.d[face_axis(k)], inv_h) - fr.r[k];
     }
     e[6] = std::max(T(0), dot(m.s, m.d) - cos_lambda);
     e[7] = std::max(T(0), m.alpha - cfg.cone_albedo_max);
@@ -364,7 +346,7 @@ void settle_dark_axes(ModelFit<T>& m, const FaceReadings<T>& fr, const SunMethod
     const T dark = panel_response::dark_cos(cfg.response, cfg.dark_threshold);
     for (int ax = 0; ax < 3; ++ax) {
         if (std::abs(m.s[ax]) > dark) continue;
-        const T ap = m.alpha * albedo_shape(m.d[ax], inv_h), am = m.alpha * albedo_shape(-m.d[ax], inv_h);
+        const T ap = m.alpha * albedo_shape(cfg, m.d[ax], inv_h), am = m.alpha * albedo_shape(cfg, -m.d[ax], inv_h);
         const T fade = std::min(cfg.dark_threshold / T(2), std::max(cfg.dark_threshold / T(20), (ap + am) / T(4)));
         const T ep = fr.r[2 * ax] - ap;
         const T em = fr.r[2 * ax + 1] - am;
@@ -480,7 +462,7 @@ bool cones_albedo_model(const FaceReadings<T>& fr, const SunMethodConfig<T>& cfg
     std::uint8_t rejected = 0;
     T n2 = T(0);
     for (int k = 0; k < 6; ++k) {
-        const T earth = m.alpha * albedo_shape(T(face_sign(k)) * m.d[face_axis(k)], inv_h);
+        const T earth = m.alpha * albedo_shape(cfg, T(face_sign(k)) * m.d[face_axis(k)], inv_h);
         out.face_albedo[static_cast<std::size_t>(k)] = earth;
         if (!(fr.lit & face_bit(k))) continue;
         const T sun = panel_response::response_from_cos(cfg.response, T(face_sign(k)) * m.s[face_axis(k)]);

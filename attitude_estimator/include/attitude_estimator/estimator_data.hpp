@@ -84,13 +84,19 @@ struct EstimatorData {
     Precision precision = Precision::double_precision;  // double, or float as on the Cortex-M firmware
     double filter_sun_sigma = 0.02;                     // rad: sun vector noise and model error, 1σ per axis
     double filter_mag_sigma = 0.3e-6;                   // T: field vector noise and model error, 1σ per axis
-    double filter_rate_noise = 2e-5;       // rad/s: 1σ rate change over 1 s (random walk density, rad/s/√s)
-    double filter_attitude_noise = 1e-6;   // rad: 1σ attitude drift over 1 s (random walk density, rad/√s)
-    bool filter_offset = true;             // estimate the magnetometer offset (3 states)
-    bool filter_scale = false;             // estimate a common panel scale (face-based sun methods)
-    double filter_face_sigma = 0.02;       // 1: relative face response noise and model error, 1σ
-    std::array<double, 9> inertia{};       // kg m², row-major; all zero = kinematic rate model
-    std::int32_t filter_reset_after = 40;  // samples with every update refused before a reset
+    // The sun's noise model per sun method (difference, inverse_response, cones, three_faces): 1σ per axis
+    // (rad; 0: filter_sun_sigma) and the error's correlation time (s; 0: white). docs/filter.md.
+    std::array<double, 4> filter_sun_sigma_method{};
+    std::array<double, 4> filter_sun_correlation{};
+    double filter_mag_ref_sigma = 0.0;         // T: 1σ per axis of the reference field model's error
+    double filter_mag_sigma_calibrated = 0.0;  // T: filter_mag_sigma once mag_calibration applies (0: the same)
+    double filter_rate_noise = 2e-5;           // rad/s: 1σ rate change over 1 s (random walk density, rad/s/√s)
+    double filter_attitude_noise = 1e-6;       // rad: 1σ attitude drift over 1 s (random walk density, rad/√s)
+    bool filter_offset = true;                 // estimate the magnetometer offset (3 states)
+    bool filter_scale = false;                 // estimate a common panel scale (face-based sun methods)
+    double filter_face_sigma = 0.02;           // 1: relative face response noise and model error, 1σ
+    std::array<double, 9> inertia{};           // kg m², row-major; all zero = kinematic rate model
+    std::int32_t filter_reset_after = 40;      // samples with every update refused before a reset
     // HMC2003 set/reset (set_reset.hpp): pulse every this many samples and average the offset over this
     // many set/reset pairs. 0 (default): no pulses, the offset stays in the field — the safe default for a
     // magnetometer whose set_reset_command is not wired to mag_set_reset (its readings never flip).
@@ -117,6 +123,13 @@ struct EstimatorData {
     // The set the computer uses, parsed from tle_line1/2 by the orbit library in the block's configure()
     // (not declared: the block never parses text; all zero on the firmware, which then uses tle_elements).
     std::array<double, kElementCount> parsed_elements{};
+    // In-flight magnetometer calibration (mag_calibration.hpp, docs/filter.md): scale, non-orthogonality and
+    // offset against the reference field's magnitude; an equation every this many samples, applied once
+    // this many equations are in; σ per axis of one field reading.
+    bool mag_calibration = false;
+    double mag_calibration_sigma = 0.05e-6;   // T (the 12-bit steps alone: 0.035 µT rms)
+    std::int32_t mag_calibration_every = 20;  // samples
+    std::int32_t mag_calibration_min = 600;   // equations
 
     // outputs (discrete: set at sample instants, held in between). Before the first sample: identity.
     std::array<double, 4> q_est{0.0, 0.0, 0.0, 1.0};                           // scalar-last [x, y, z, w], w >= 0
@@ -146,12 +159,14 @@ struct EstimatorData {
     Vec3d mag_offset_filt{};        // V: the filter's estimate of the offset left after mag_offset is taken out
     double panel_scale_filt = 0.0;  // 1: estimated common panel scale error ε (currents (1 + ε) × nominal)
     double attitude_bound = 0.0;    // rad: 3σ bound on the filter's attitude error
+    std::array<double, 6> attitude_cov_sqrt{};  // rad: L of P_θθ = L Lᵀ, lower triangle by rows
     bool filter_valid = false;
     std::int32_t filter_resets = 0;  // divergence resets so far
     bool mag_set_reset = true;       // the set/reset pulse commanded last: true set, false reset (to the sensor)
     Vec3d mag_offset{};              // V, the sensor offset estimated from set/reset pairs
     Vec3d ref_sun{};                 // 1, the sun reference the last sample used (J2000)
     Vec3d ref_mag{};                 // T, the field reference the last sample used (J2000)
+    bool mag_cal_valid = false;      // an in-flight calibration is applied
 
     // discrete state
     double t_start = 0.0;  // s, the start time: sample k is due at t_start + k·sample_period

@@ -61,6 +61,10 @@ struct SampleInputs {
     // sample), not anything the sensor reports. It multiplies the field term of the reading.
     T mag_polarity = T(1);
     Vec3<T> mag_offset{};  // V, the sensor offset to take out (SetResetState::offset; 0: none known)
+    // The in-flight calibration (mag_calibration.hpp): the field becomes mag_gain · B − mag_polarity ·
+    // mag_cal_offset (T). Identity and zero (default): none.
+    Matrix3RowMajor<T> mag_gain{1, 0, 0, 0, 1, 0, 0, 0, 1};
+    Vec3<T> mag_cal_offset{};
 };
 
 template <class T>
@@ -70,6 +74,7 @@ struct SampleResult {
     Vec3<T> sun_meas{};                               // unit sun vector in body axes (zero when sun_valid is false)
     Vec3<T> mag_meas{};                               // unit field vector in body axes (zero when mag_valid is false)
     Vec3<T> mag_field{};                              // field in body axes, T
+    Vec3<T> mag_field_uncalibrated{};                 // the same before the in-flight calibration, T
     Vec3<T> mag_reading{};  // V, digitized v_mag − v_mag_ref, offset and polarity still in (for set_reset.hpp)
     bool mag_reading_usable = false;  // every channel finite and off its rails
     T sun_norm = T(0);                // |s| of 000 eq. 5 before normalization

@@ -35,6 +35,18 @@ struct MekfConfig {
     T sun_sigma = T(0.02);    // rad: sun unit vector
     T mag_sigma = T(0.3e-6);  // T: field vector (noise, quantization, field-model error)
     T face_sigma = T(0.01);   // relative response of one face (face update for the panel scale)
+    // The sun vector's error is not white: a face geometry and an albedo pattern persist for minutes. An
+    // error of 1σ sun_sigma correlated over sun_correlation_time (s) carries, over a time t ≫ that, the
+    // information of t/(2 τ) independent vectors, so each update is weighted as one of σ² max(1, 2τ/Δt)
+    // (Δt the time since the previous sun update). 0: white (each vector independent).
+    T sun_correlation_time = T(0);
+    // 1σ per axis of the reference field model (the on-board model against the real field), T: adds in
+    // quadrature to mag_sigma.
+    T mag_ref_sigma = T(0);
+    // mag_sigma once the field comes calibrated in flight (MekfSampleInputs::mag_calibrated; 0: mag_sigma):
+    // an uncalibrated HMC2003 carries its 0.3 % cross-axis coupling (0.1 µT), a calibrated one little more
+    // than its 12-bit steps (0.12 µT / √12).
+    T mag_sigma_calibrated = T(0);
     // --- initial uncertainty (at the Q-method initialisation)
     T init_attitude_sigma = T(0.05);  // rad, per axis
     T init_rate_sigma = T(0.02);      // rad/s, per axis, after the two-sample rate
@@ -71,6 +83,8 @@ struct MekfState {
     T t_last = T(0);                  // time of the last propagation
     std::int32_t refused_in_row = 0;  // consecutive samples whose every update was refused
     std::int32_t resets = 0;          // divergence resets so far
+    T t_sun = T(0);                   // time of the last sun update (sun_correlation_time)
+    std::int32_t has_sun = 0;         // 1 once a sun update was offered since the start
 };
 
 // The outcome of one measurement update.
@@ -126,9 +140,10 @@ struct MekfSampleInputs {
     Vec3<T> sun_ref{};   // any length
     Vec3<T> sun_body{};  // unit
     bool mag_valid = false;
-    Vec3<T> mag_ref{};   // T
-    Vec3<T> mag_body{};  // T
-    T polarity = T(1);   // set/reset sign of this field reading
+    Vec3<T> mag_ref{};            // T
+    Vec3<T> mag_body{};           // T
+    T polarity = T(1);            // set/reset sign of this field reading
+    bool mag_calibrated = false;  // mag_body comes through the in-flight calibration (mag_sigma_calibrated)
     // Face update (only with config.estimate_scale): relative responses and the faces to use.
     std::array<T, 6> face_r{};
     std::array<T, 6> face_albedo{};  // relative albedo on each face (cones' fit), taken out of face_r's model

@@ -12,6 +12,7 @@
 
 #include "attitude_estimator/angular_rate.hpp"
 #include "attitude_estimator/estimator.hpp"
+#include "attitude_estimator/mag_calibration.hpp"
 #include "attitude_estimator/mekf.hpp"
 #include "attitude_estimator/onboard_references.hpp"
 #include "attitude_estimator/set_reset.hpp"
@@ -32,6 +33,8 @@ struct OnboardSettings {
     FilterKind filter = FilterKind::none;
     bool filter_scale = false;  // the filter's panel-scale estimate corrects the normalizations
     MekfConfig<T> mekf{};
+    bool mag_calibration = false;  // calibrate the magnetometer in flight (mag_calibration.hpp) and apply it
+    MagCalibrationConfig<T> mag_cal{};
     T sample_period = T(0.05);  // s
     T rate_interval = T(2);     // s, rate.min_interval
     // The reference vectors: the inputs' (sun_ref, mag_ref, sun_distance), or computed on board from the
@@ -54,10 +57,11 @@ struct OnboardInputs {
 // Everything the computer remembers between samples: trivially copyable (an FMU state is its bytes).
 template <class T>
 struct OnboardState {
-    SunMethodState<T> sun{};       // cones' panel-cube tracking
-    MeanAngularRate<T> rate{};     // eq. 4 increments
-    MekfState<T> filter{};         // the recursive filter
-    SetResetState<T> set_reset{};  // the polarity commanded last, the offset estimate
+    SunMethodState<T> sun{};           // cones' panel-cube tracking
+    MeanAngularRate<T> rate{};         // eq. 4 increments
+    MekfState<T> filter{};             // the recursive filter
+    SetResetState<T> set_reset{};      // the polarity commanded last, the offset estimate
+    MagCalibrationState<T> mag_cal{};  // the in-flight magnetometer calibration
     // The turn between successive valid estimates one sample apart, smoothed: the mean rate's increments
     // span rate_interval and alias when the turn over one of them nears π.
     Quaternion<T> last_q{};
@@ -82,9 +86,15 @@ struct OnboardOutputs {
     Vec3<T> mag_offset_filt{};  // V, the filter's offset left after mag_offset, as read after a set pulse
     T panel_scale_filt = T(0);  // 1
     T attitude_bound = T(0);    // rad, 3σ
+    // rad: the lower Cholesky factor L of the filter's attitude error covariance, P_θθ = L Lᵀ (row-major, 0
+    // until it runs): |L⁻¹ δθ|²/3 is the normalized error per degree of freedom of an error δθ.
+    Matrix3RowMajor<T> attitude_cov_sqrt{};
     bool filter_valid = false;
     std::int32_t filter_resets = 0;
     References<T> references{};  // the reference vectors this sample used (the inputs', or the on-board ones)
+    bool mag_cal_valid = false;                                  // an in-flight calibration is applied
+    Matrix3RowMajor<T> mag_cal_gain{1, 0, 0, 0, 1, 0, 0, 0, 1};  // its I + D
+    Vec3<T> mag_cal_offset{};                                    // its b, T
 };
 
 // Power-up: nothing remembered, the sensor set, and no pulse at the first sample (a host re-reads the

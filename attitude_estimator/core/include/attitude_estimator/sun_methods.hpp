@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 
+#include "attitude_estimator/cone_albedo_shape.hpp"
 #include "attitude_estimator/types.hpp"
 #include "panel_response/kelly.hpp"
 
@@ -99,6 +100,10 @@ struct SunMethodConfig {
     T cone_earth_sin_radius = T(0.91788);
     T cone_fit_tolerance = T(0.01);
     T cone_albedo_max = T(0.4);
+    // cones, albedo model: the sphere's light as the faces' response weighs it. Invalid (default): the
+    // cosine closed form; build it with cone_albedo_shape_table(response, cone_earth_sin_radius) whenever
+    // the response is not the cosine (the Kelly panels see the grazing part of the disc weaker).
+    ConeAlbedoShape<T> cone_albedo_shape{};
 };
 
 // Caller-owned memory between samples (cones' cube state). Default-constructed = after darkness.

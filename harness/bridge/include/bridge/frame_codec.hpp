@@ -15,8 +15,8 @@ inline constexpr std::uint16_t frame_magic = 0x5650;  // bytes 'P' 'V' on the wi
 inline constexpr std::uint8_t frame_version = 2;
 inline constexpr std::size_t header_size = 24;  // values start 8-byte aligned
 inline constexpr std::size_t crc_size = 2;
-inline constexpr std::size_t max_values = 64;
-inline constexpr std::size_t max_frame_size = header_size + 8 * max_values + crc_size;  // 538 bytes
+inline constexpr std::size_t max_values = 128;
+inline constexpr std::size_t max_frame_size = header_size + 8 * max_values + crc_size;  // 1050 bytes
 
 // request/reply: one sample. configure (master -> board, before the first request of a run): the bridged
 // block's parameter values, as many frames as they need; configured (board -> master): the board took one.

@@ -1,0 +1,80 @@
+// Attitude-independent magnetometer calibration in flight: scale, non-orthogonality (a symmetric 3 × 3
+// correction) and offset, from the measured field against the reference field's magnitude only — no
+// attitude needed, so it runs before, and independently of, the attitude it improves.
+//
+// Model (Alonso and Shuster 2002, docs/references.md): the reading H relates to the true field B (body
+// axes, up to a rotation the magnitude cannot see) by B = (I + D) H − b, D symmetric. With E = 2D + D²
+// and c = (I + D) b, every sample gives one equation linear in (c, E, μ):
+//   z = |H|² − |B_ref|² = 2 Hᵀ c − Hᵀ E H − μ,   μ = |b|² (taken as a free constant: the linear, "centered"
+// first step of TWOSTEP; the constraint μ = |b|² is not imposed, its effect is second order in b).
+// The normal equations are accumulated in a fixed 10 × 10 array (information form, weights 1/(4 σ² |H|²),
+// the variance of z from a field noise σ per axis) and solved by LDLᵀ; I + D = √(I + E) (the symmetric
+// square root), b = (I + D)⁻¹ c. The set/reset polarity p the reading was taken in is handled by
+// calibrating p H: the field term flips with p, an offset left by the set/reset estimate does not, and
+// |p B| = |B|; the corrected field is then (I + D) H − p b.
+// Fixed sizes, no heap, no exceptions, float and double; the block runs it in its sample
+// (docs/filter.md, "Magnetometer calibration").
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "attitude_estimator/types.hpp"
+
+namespace attitude_estimator {
+
+inline constexpr int kMagCalUnknowns = 10;  // c (3), E (6: xx, yy, zz, xy, xz, yz), μ
+inline constexpr int kMagCalPacked = kMagCalUnknowns * (kMagCalUnknowns + 1) / 2;
+
+template <class T>
+struct MagCalibrationConfig {
+    T sigma = T(0.05e-6);              // T: 1σ per axis of the field (noise, quantization, reference model)
+    std::int32_t every = 20;           // samples between equations (20: 1 Hz at 20 Hz; neighbours add little)
+    std::int32_t min_equations = 600;  // equations before a solution is applied (10 min at 1 Hz)
+    std::int32_t solve_every = 60;     // equations between solves
+    T max_distortion = T(0.05);        // largest |D_ij| accepted (larger: not enough rotation seen, or bad data)
+    T max_offset = T(20e-6);           // T: largest |b| accepted
+    // A solution is applied only once the equations pin it down: the 1σ of every element of E = 2D + D²
+    // (from the inverse of the normal matrix, with `sigma` the readings' noise) below twice this, and of
+    // every offset component below max_offset_sigma. Early on (a few hundred equations over a fraction of
+    // an orbit) the field's magnitude varies too little to separate scale, offset and μ.
+    T max_gain_sigma = T(1e-4);
+    T max_offset_sigma = T(10e-9);  // T
+};
+
+template <class T>
+struct MagCalibrationState {
+    std::array<T, kMagCalPacked> info{};   // upper triangle of Σ w L Lᵀ, row by row (fields in units of 10 µT)
+    std::array<T, kMagCalUnknowns> rhs{};  // Σ w L z
+    std::int32_t equations = 0;
+    std::int32_t countdown = 0;                          // samples until the next equation
+    bool valid = false;                                  // a solution is applied
+    Matrix3RowMajor<T> gain{1, 0, 0, 0, 1, 0, 0, 0, 1};  // I + D
+    Vec3<T> offset{};                                    // b, T
+};
+
+// Offers one reading: H (T, body axes, polarity p = ±1 it was taken in) and the reference field's magnitude
+// (T). Takes an equation every config.every offers, solves every config.solve_every equations once
+// config.min_equations are in, and applies the solution when it is within the config's bounds.
+template <class T>
+void mag_calibration_offer(MagCalibrationState<T>& s, const Vec3<T>& field, T polarity, T ref_magnitude,
+                           const MagCalibrationConfig<T>& config) noexcept;
+
+// Solves the accumulated equations into (I + D, b); false (state unchanged) when singular or out of bounds.
+template <class T>
+bool mag_calibration_solve(MagCalibrationState<T>& s, const MagCalibrationConfig<T>& config) noexcept;
+
+// The corrected field (I + D) H − p b (H itself while no solution is applied).
+template <class T>
+Vec3<T> mag_calibration_apply(const MagCalibrationState<T>& s, const Vec3<T>& field, T polarity) noexcept;
+
+#define ATTITUDE_ESTIMATOR_MAG_CAL_EXTERN(T)                                                                      \
+    extern template void mag_calibration_offer(MagCalibrationState<T>&, const Vec3<T>&, T, T,                     \
+                                               const MagCalibrationConfig<T>&) noexcept;                          \
+    extern template bool mag_calibration_solve(MagCalibrationState<T>&, const MagCalibrationConfig<T>&) noexcept; \
+    extern template Vec3<T> mag_calibration_apply(const MagCalibrationState<T>&, const Vec3<T>&, T) noexcept;
+ATTITUDE_ESTIMATOR_MAG_CAL_EXTERN(float)
+ATTITUDE_ESTIMATOR_MAG_CAL_EXTERN(double)
+#undef ATTITUDE_ESTIMATOR_MAG_CAL_EXTERN
+
+}  // namespace attitude_estimator
