@@ -34,16 +34,15 @@ void measure_sun(const SampleInputs<T>& in, const EstimatorConfig<T>& config, Su
     r.cube_state = sun.cube_state;
 }
 
-// The in-flight calibration's correction, gain · B − p · offset (identity and zero when none is applied);
+// The in-flight calibration's correction, gain · B − offset (identity and zero when none is applied);
 // the unit vector and the minimum-field test follow the corrected field.
 template <class T>
 void calibrate_field(const SampleInputs<T>& in, T min_field, FieldMeasurement<T>& mag) noexcept {
     if (mag.at_rail) return;
-    const T p = in.mag_polarity < T(0) ? T(-1) : T(1);
     const Vec3<T> b = mag.field;
     for (std::size_t i = 0; i < 3; ++i)
         mag.field[i] = in.mag_gain[3 * i] * b[0] + in.mag_gain[3 * i + 1] * b[1] + in.mag_gain[3 * i + 2] * b[2] -
-                       p * in.mag_cal_offset[i];
+                       in.mag_cal_offset[i];
     const T n = std::sqrt(squared_norm(mag.field));
     mag.valid = mag.valid && n >= min_field && n > T(0);
     mag.unit = mag.valid ? scaled(mag.field, T(1) / n) : Vec3<T>{};

@@ -23,15 +23,14 @@ constexpr int packed_index(int i, int j) noexcept {  // i ≤ j, upper triangle 
 }  // namespace
 
 template <class T>
-void mag_calibration_offer(MagCalibrationState<T>& s, const Vec3<T>& field, T polarity, T ref_magnitude,
+void mag_calibration_offer(MagCalibrationState<T>& s, const Vec3<T>& field, T ref_magnitude,
                            const MagCalibrationConfig<T>& config) noexcept {
     if (s.countdown > 0) {
         --s.countdown;
         return;
     }
     const T u = kFieldUnit<T>;
-    const T p = polarity < T(0) ? T(-1) : T(1);
-    const T h[3] = {p * field[0] / u, p * field[1] / u, p * field[2] / u};
+    const T h[3] = {field[0] / u, field[1] / u, field[2] / u};
     const T h2 = h[0] * h[0] + h[1] * h[1] + h[2] * h[2];
     const T r = ref_magnitude / u;
     const T sigma = config.sigma / u;
@@ -124,21 +123,19 @@ bool mag_calibration_solve(MagCalibrationState<T>& s, const MagCalibrationConfig
 }
 
 template <class T>
-Vec3<T> mag_calibration_apply(const MagCalibrationState<T>& s, const Vec3<T>& field, T polarity) noexcept {
+Vec3<T> mag_calibration_apply(const MagCalibrationState<T>& s, const Vec3<T>& field) noexcept {
     if (!s.valid) return field;
-    const T p = polarity < T(0) ? T(-1) : T(1);
     Vec3<T> out{};
     for (std::size_t i = 0; i < 3; ++i)
-        out[i] =
-            s.gain[3 * i] * field[0] + s.gain[3 * i + 1] * field[1] + s.gain[3 * i + 2] * field[2] - p * s.offset[i];
+        out[i] = s.gain[3 * i] * field[0] + s.gain[3 * i + 1] * field[1] + s.gain[3 * i + 2] * field[2] - s.offset[i];
     return out;
 }
 
 #define ATTITUDE_ESTIMATOR_MAG_CAL_INSTANTIATE(T)                                                          \
-    template void mag_calibration_offer(MagCalibrationState<T>&, const Vec3<T>&, T, T,                     \
+    template void mag_calibration_offer(MagCalibrationState<T>&, const Vec3<T>&, T,                        \
                                         const MagCalibrationConfig<T>&) noexcept;                          \
     template bool mag_calibration_solve(MagCalibrationState<T>&, const MagCalibrationConfig<T>&) noexcept; \
-    template Vec3<T> mag_calibration_apply(const MagCalibrationState<T>&, const Vec3<T>&, T) noexcept;
+    template Vec3<T> mag_calibration_apply(const MagCalibrationState<T>&, const Vec3<T>&) noexcept;
 ATTITUDE_ESTIMATOR_MAG_CAL_INSTANTIATE(float)
 ATTITUDE_ESTIMATOR_MAG_CAL_INSTANTIATE(double)
 #undef ATTITUDE_ESTIMATOR_MAG_CAL_INSTANTIATE

@@ -157,6 +157,22 @@ bool finite(const MekfState<T>& s) {
     return true;
 }
 
+// The field's correction changed (the in-flight calibration started or stopped applying): the offset state
+// holds what the old field needed, which may be the hard iron the calibration now takes out (a constant
+// field the polarity-following state can only hold by refusing the other polarity's readings). It starts
+// again from zero with its initial uncertainty and no correlation to the other states.
+template <class T>
+void restart_offset(MekfState<T>& s, const MekfConfig<T>& c) noexcept {
+    MatN<T> p = map_p(s);
+    for (int i = 0; i < 3; ++i) {
+        s.mag_offset[static_cast<std::size_t>(i)] = T(0);
+        p.row(kMekfOffset + i).setZero();
+        p.col(kMekfOffset + i).setZero();
+        p(kMekfOffset + i, kMekfOffset + i) = c.init_offset_sigma * c.init_offset_sigma;
+    }
+    store_p<T>(s, p);
+}
+
 }  // namespace
 
 template <class T>
@@ -350,6 +366,9 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
         accepted += result.sun.accepted;
     }
     if (in.mag_valid) {
+        const std::int32_t calibrated = in.mag_calibrated ? 1 : 0;
+        if (calibrated != s.mag_calibrated && c.estimate_offset) restart_offset(s, c);
+        s.mag_calibrated = calibrated;
         MekfConfig<T> mag_config = c;
         if (in.mag_calibrated && c.mag_sigma_calibrated > T(0)) mag_config.mag_sigma = c.mag_sigma_calibrated;
         result.mag = mekf_update_field(s, in.mag_ref, in.mag_body, in.polarity, mag_config);

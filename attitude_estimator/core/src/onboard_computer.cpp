@@ -184,7 +184,7 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
         // Against the reference field's magnitude only: no attitude needed (the next sample applies it).
         const T ref =
             std::sqrt(in.mag_ref[0] * in.mag_ref[0] + in.mag_ref[1] * in.mag_ref[1] + in.mag_ref[2] * in.mag_ref[2]);
-        mag_calibration_offer(s.mag_cal, out.sample.mag_field_uncalibrated, reading_polarity, ref, settings.mag_cal);
+        mag_calibration_offer(s.mag_cal, out.sample.mag_field_uncalibrated, ref, settings.mag_cal);
     }
     out.mag_cal_valid = s.mag_cal.valid;
     out.mag_cal_gain = s.mag_cal.gain;

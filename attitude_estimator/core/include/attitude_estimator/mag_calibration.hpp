@@ -9,9 +9,12 @@
 // first step of TWOSTEP; the constraint μ = |b|² is not imposed, its effect is second order in b).
 // The normal equations are accumulated in a fixed 10 × 10 array (information form, weights 1/(4 σ² |H|²),
 // the variance of z from a field noise σ per axis) and solved by LDLᵀ; I + D = √(I + E) (the symmetric
-// square root), b = (I + D)⁻¹ c. The set/reset polarity p the reading was taken in is handled by
-// calibrating p H: the field term flips with p, an offset left by the set/reset estimate does not, and
-// |p B| = |B|; the corrected field is then (I + D) H − p b.
+// square root), b = (I + D)⁻¹ c. H is the reading with the set/reset offset estimate taken out, so b is
+// what stays fixed in body axes in it: the spacecraft's own field at the sensor (its residual dipole, the
+// hard iron), which the set/reset pulses flip together with the earth's field and so cannot remove. What
+// is left of the sensor's own offset changes sign with the polarity; it is not modelled here (with the
+// equations taken at one polarity it would join b and come back doubled at the other) but left to the
+// filter's offset state, whose sign follows the polarity. The corrected field is (I + D) H − b.
 // Fixed sizes, no heap, no exceptions, float and double; the block runs it in its sample
 // (docs/filter.md, "Magnetometer calibration").
 #pragma once
@@ -53,26 +56,26 @@ struct MagCalibrationState {
     Vec3<T> offset{};                                    // b, T
 };
 
-// Offers one reading: H (T, body axes, polarity p = ±1 it was taken in) and the reference field's magnitude
+// Offers one reading: H (T, body axes, the set/reset offset estimate taken out) and the reference field's magnitude
 // (T). Takes an equation every config.every offers, solves every config.solve_every equations once
 // config.min_equations are in, and applies the solution when it is within the config's bounds.
 template <class T>
-void mag_calibration_offer(MagCalibrationState<T>& s, const Vec3<T>& field, T polarity, T ref_magnitude,
+void mag_calibration_offer(MagCalibrationState<T>& s, const Vec3<T>& field, T ref_magnitude,
                            const MagCalibrationConfig<T>& config) noexcept;
 
 // Solves the accumulated equations into (I + D, b); false (state unchanged) when singular or out of bounds.
 template <class T>
 bool mag_calibration_solve(MagCalibrationState<T>& s, const MagCalibrationConfig<T>& config) noexcept;
 
-// The corrected field (I + D) H − p b (H itself while no solution is applied).
+// The corrected field (I + D) H − b (H itself while no solution is applied).
 template <class T>
-Vec3<T> mag_calibration_apply(const MagCalibrationState<T>& s, const Vec3<T>& field, T polarity) noexcept;
+Vec3<T> mag_calibration_apply(const MagCalibrationState<T>& s, const Vec3<T>& field) noexcept;
 
 #define ATTITUDE_ESTIMATOR_MAG_CAL_EXTERN(T)                                                                      \
-    extern template void mag_calibration_offer(MagCalibrationState<T>&, const Vec3<T>&, T, T,                     \
+    extern template void mag_calibration_offer(MagCalibrationState<T>&, const Vec3<T>&, T,                        \
                                                const MagCalibrationConfig<T>&) noexcept;                          \
     extern template bool mag_calibration_solve(MagCalibrationState<T>&, const MagCalibrationConfig<T>&) noexcept; \
-    extern template Vec3<T> mag_calibration_apply(const MagCalibrationState<T>&, const Vec3<T>&, T) noexcept;
+    extern template Vec3<T> mag_calibration_apply(const MagCalibrationState<T>&, const Vec3<T>&) noexcept;
 ATTITUDE_ESTIMATOR_MAG_CAL_EXTERN(float)
 ATTITUDE_ESTIMATOR_MAG_CAL_EXTERN(double)
 #undef ATTITUDE_ESTIMATOR_MAG_CAL_EXTERN

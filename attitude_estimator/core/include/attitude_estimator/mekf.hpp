@@ -85,6 +85,7 @@ struct MekfState {
     std::int32_t resets = 0;          // divergence resets so far
     T t_sun = T(0);                   // time of the last sun update (sun_correlation_time)
     std::int32_t has_sun = 0;         // 1 once a sun update was offered since the start
+    std::int32_t mag_calibrated = 0;  // 1 when the last field offered came with the in-flight calibration
 };
 
 // The outcome of one measurement update.
