@@ -24,8 +24,8 @@ TEST_P(ConformanceCallPath, GetSetAndStepAllocateNothingWithLoggingOff) {
     if (!md().co_simulation) GTEST_SKIP() << "no Co-Simulation";
     const auto& f = fmu().library(FmuKind::co_simulation).functions();
     const fmi2CallbackFunctions callbacks{quiet_logger, calloc, free, nullptr, nullptr};
-    fmi2Component c = f.fmi2Instantiate("call_path", fmi2CoSimulation, md().guid.c_str(), "", &callbacks, fmi2False,
-                                        fmi2False);
+    fmi2Component c =
+        f.fmi2Instantiate("call_path", fmi2CoSimulation, md().guid.c_str(), "", &callbacks, fmi2False, fmi2False);
     ASSERT_NE(c, nullptr);
     const Experiment ex = experiment_of(md());
     ASSERT_LE(f.fmi2SetupExperiment(c, fmi2False, 0.0, ex.start, fmi2False, 0.0), fmi2Warning);

@@ -92,7 +92,7 @@ struct OnboardOutputs {
     bool filter_valid = false;
     std::int32_t filter_resets = 0;
     References<T> references{};  // the reference vectors this sample used (the inputs', or the on-board ones)
-    bool mag_cal_valid = false;                                  // an in-flight calibration is applied
+    bool mag_cal_valid = false;  // an in-flight calibration is applied
     Matrix3RowMajor<T> mag_cal_gain{1, 0, 0, 0, 1, 0, 0, 0, 1};  // its I + D
     Vec3<T> mag_cal_offset{};                                    // its b, T
 };
