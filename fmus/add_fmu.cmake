@@ -18,7 +18,9 @@ function(add_fmu name)
 
   add_library(${name}_model STATIC ${ARG_SOURCES})
   target_link_libraries(${name}_model PUBLIC pvatt::fmu_model ${ARG_LIBRARIES})
-  set_target_properties(${name}_model PROPERTIES CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)
+  # Linked into the FMU's shared library: position-independent whatever the including project sets.
+  set_target_properties(${name}_model PROPERTIES CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON
+    POSITION_INDEPENDENT_CODE ON)
 
   add_library(${name} SHARED $<TARGET_OBJECTS:pvatt::fmu_runtime_objects>)
   target_link_libraries(${name} PRIVATE ${name}_model)
