@@ -11,6 +11,18 @@
 
 namespace fmu {
 
+// A text longer than a FixedString holds. Code built without exceptions (the estimator's data and its
+// firmware) never assigns text at run time, the FMU's checked setter refusing a long string first: there it
+// is a programming error and traps.
+[[noreturn]] inline void refuse_long_string(std::size_t capacity) {
+#if defined(__cpp_exceptions)
+    throw Error("string longer than " + std::to_string(capacity) + " characters");
+#else
+    (void)capacity;
+    __builtin_trap();
+#endif
+}
+
 template <std::size_t Capacity>
 struct FixedString {
     std::array<char, Capacity + 1> chars{};
@@ -23,7 +35,7 @@ struct FixedString {
     }
 
     constexpr void assign(std::string_view text) {
-        if (text.size() > Capacity) throw Error("string longer than " + std::to_string(Capacity) + " characters");
+        if (text.size() > Capacity) refuse_long_string(Capacity);
         std::size_t i = 0;
         for (; i < text.size(); ++i) chars[i] = text[i];
         for (; i <= Capacity; ++i) chars[i] = '\0';
