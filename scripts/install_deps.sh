@@ -9,7 +9,7 @@ packages=(
   build-essential cmake pkg-config
   libsundials-dev     # CVODE: Co-Simulation inside each FMU (linked statically), the master's solver
   libeigen3-dev       # small fixed-size linear algebra (Q-method, rotations)
-  liberfa-dev         # ERFA (IAU SOFA): the independent sun the on-board ephemeris is tested against
+  liberfa-dev         # ERFA (IAU SOFA), at test time: the independent sun, precession and nutation (orbit/, on-board)
   libxml2-dev         # modelDescription.xml writer and parser
   libzip-dev          # .fmu archives in the loader
   libcli11-dev libfmt-dev
@@ -22,7 +22,6 @@ packages=(
   clang-format        # one format for every C++ file (scripts/format.sh --check in scripts/test.sh)
   clang libclang-rt-14-dev   # libFuzzer with ASan and UBSan (scripts/fuzz.sh, fuzz/)
   python3-sgp4        # orbit/ tests: the independent SGP4 (Brandon Rhodes' package) run at test time
-  liberfa-dev         # orbit/ tests: ERFA's IAU 1976/1980 precession and nutation, the independent TEME -> J2000
 )
 
 if [ "${1:-}" = "--firmware" ]; then
