@@ -1,31 +1,21 @@
 // The .ssp reader: any bytes as an SSP archive give a SystemDescription or a CosimError, and every
 // component source of an accepted archive resolves inside it or is refused (an .ssp is a closed
 // world: no fallback folder is given). The reader takes a path, so the input goes through a file.
-#include <unistd.h>
-
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
-#include <string>
 
 #include "cosim_error.hpp"
+#include "input_file.hpp"
 #include "ssp_archive.hpp"
 #include "system_description.hpp"
 
 namespace {
-const std::filesystem::path file =
-    std::filesystem::temp_directory_path() / ("fuzz_ssp_" + std::to_string(::getpid()) + ".ssp");
-struct Remove {
-    ~Remove() { std::filesystem::remove(file); }
-} remove_at_exit;
+const fuzz::InputFile input("fuzz_ssp", ".ssp");
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    {
-        std::ofstream out(file, std::ios::binary | std::ios::trunc);
-        out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
-    }
+    const auto& file = input.write(data, size);
     try {
         const cosim::SystemDescription description = cosim::read_system_description(file);
         const auto root = std::filesystem::canonical(description.archive->directory());
