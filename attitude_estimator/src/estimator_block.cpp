@@ -352,8 +352,8 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
                 "onboard: time between two evaluations of the on-board orbit, sun and field models (each sample "
                 "interpolates between the two around it)")
         .range(0.01, 600.0);
-    // (Two of the bridge's 64 output slots per frame left after these: the on-board orbit's position and sun
-    // distance are not outputs.)
+    // (The on-board orbit's position and sun distance are not outputs: the block has 70, a bridge frame carries
+    // up to 128.)
     t.output("ref_sun", &D::ref_sun, "1",
              "The sun reference (J2000) the last sample used: sun_ref, or the on-board one")
         .discrete()
