@@ -136,6 +136,10 @@ pvatt_status pvatt_system_open(const char* path, const char* const* fmu_dirs, si
             handle->options.fmu_dirs.emplace_back(required(fmu_dirs[i], "fmu_dirs[i]"));
         handle->description = file.extension() == ".fmu" ? single_fmu_system(file, handle->options)
                                                          : cosim::read_system_description(file);
+        // Every run builds its System from the FMUs loaded here: unpacked and dlopen'ed once per handle
+        // (an FMU with libstdc++ linked in keeps ~70 kB of its runtime's at each dlopen, never given back).
+        handle->options.loaded_fmus =
+            std::make_shared<std::map<std::filesystem::path, std::shared_ptr<fmi_loader::Fmu>>>();
         handle->loaded = std::make_unique<cosim::System>(handle->description, handle->options);
         handle->variable_strings.resize(handle->loaded->components().size());
         for (std::size_t i = 0; i < handle->variable_strings.size(); ++i)
