@@ -6,9 +6,10 @@ matplotlib where a user wants them). See docs/python.md.
 """
 
 from ._lib import CallbackError, PvattError
+from .campaign import CampaignResult, run_campaign
 from .fmu import Fmu
 from .result import Result
 from .system import PythonComponent, Simulation, System, Variable
 
-__all__ = ["System", "Simulation", "Result", "Variable", "PythonComponent", "Fmu", "PvattError", "CallbackError"]
+__all__ = ["run_campaign", "CampaignResult", "System", "Simulation", "Result", "Variable", "PythonComponent", "Fmu", "PvattError", "CallbackError"]
 __version__ = "0.1.0"

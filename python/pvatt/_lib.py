@@ -134,6 +134,31 @@ _sig(
 _sig("pvatt_simulation_result", _status, _p, ctypes.POINTER(_p))
 _sig("pvatt_simulation_free", None, _p)
 
+class CampaignOptions(ctypes.Structure):
+    _fields_ = [
+        ("runs", ctypes.c_long),
+        ("stop_time", ctypes.c_double),
+        ("output_dir", ctypes.c_char_p),
+        ("figures", ctypes.c_int),
+        ("resume", ctypes.c_int),
+    ]
+
+
+_sig("pvatt_campaign_options_init", None, ctypes.POINTER(CampaignOptions))
+_sig(
+    "pvatt_campaign_run",
+    _status,
+    ctypes.c_char_p,
+    ctypes.POINTER(CampaignOptions),
+    c_char_pp,
+    ctypes.c_size_t,
+    c_char_pp,
+    ctypes.c_size_t,
+    ctypes.c_char_p,
+    ctypes.c_size_t,
+    ctypes.POINTER(ctypes.c_size_t),
+)
+
 # SIGINT during a run sets the library's interrupt flag (the run stops at its next check and returns
 # PVATT_INTERRUPTED, raised here as KeyboardInterrupt); Python's own handler is back after each call.
 lib.pvatt_catch_sigint(1)

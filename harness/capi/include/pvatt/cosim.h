@@ -162,6 +162,26 @@ PVATT_API pvatt_status pvatt_simulation_result(const pvatt_simulation* simulatio
 /* Ends the run (terminating its components) and frees it; NULL is fine. */
 PVATT_API void pvatt_simulation_free(pvatt_simulation* simulation);
 
+/* ---- Campaigns (harness/campaign/README.md: a TOML spec of draws and metrics over many runs) ---- */
+
+typedef struct pvatt_campaign_options {
+    long runs;              /* <= 0: the spec's */
+    double stop_time;       /* NaN: the spec's */
+    const char* output_dir; /* NULL: the spec's */
+    int figures;            /* non-zero: draw the summary's figures (gnuplot) */
+    int resume;             /* non-zero: keep the rows of an earlier, unfinished campaign in output_dir */
+} pvatt_campaign_options;
+
+PVATT_API void pvatt_campaign_options_init(pvatt_campaign_options* options); /* the spec's values, no figures */
+
+/* Runs a campaign in this process (as `cosim campaign SPEC`) with the settings ("comp.var=value", after
+ * the spec's [set]) and FMU folders given; writes the path of its results table (results.csv: one
+ * row per run) into the caller's buffer. Failed runs are rows of the table, not errors. */
+PVATT_API pvatt_status pvatt_campaign_run(const char* spec, const pvatt_campaign_options* options,
+                                          const char* const* settings, size_t setting_count,
+                                          const char* const* fmu_dirs, size_t fmu_dir_count, char* table_path,
+                                          size_t size, size_t* needed);
+
 #ifdef __cplusplus
 }
 #endif
