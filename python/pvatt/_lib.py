@@ -139,7 +139,6 @@ class CampaignOptions(ctypes.Structure):
         ("runs", ctypes.c_long),
         ("stop_time", ctypes.c_double),
         ("output_dir", ctypes.c_char_p),
-        ("figures", ctypes.c_int),
         ("resume", ctypes.c_int),
     ]
 

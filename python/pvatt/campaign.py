@@ -44,10 +44,10 @@ class CampaignResult:
         return f"<pvatt.CampaignResult {len(self)} runs x {len(self.names)} columns from {self.path}>"
 
 
-def run_campaign(spec, runs=None, stop_time=None, output=None, settings=None, fmu_dirs=None, figures=False,
-                 resume=False):
-    """Runs the campaign of a TOML spec in this process, as `cosim campaign SPEC` (the spec's values unless
-    given here; settings {"comp.var": value} after the spec's [set]), and returns its results table."""
+def run_campaign(spec, runs=None, stop_time=None, output=None, settings=None, fmu_dirs=None, resume=False):
+    """Runs the campaign of a TOML spec in this process, its runs one after the other (the spec's values
+    unless given here; settings {"comp.var": value} after the spec's [set]), and returns its results
+    table, the one `cosim campaign SPEC` writes (results.csv in the output folder; no summary, no figures)."""
     o = CampaignOptions()
     lib.pvatt_campaign_options_init(ctypes.byref(o))
     if runs is not None:
@@ -56,7 +56,7 @@ def run_campaign(spec, runs=None, stop_time=None, output=None, settings=None, fm
         o.stop_time = float(stop_time)
     if output is not None:
         o.output_dir = str(output).encode()
-    o.figures, o.resume = int(bool(figures)), int(bool(resume))
+    o.resume = int(bool(resume))
     texts = [f"{k}={v}" for k, v in (settings or {}).items()]
     dirs = [str(d) for d in (default_fmu_dirs() if fmu_dirs is None else fmu_dirs)]
     settings_array, keep1 = names_array(texts)

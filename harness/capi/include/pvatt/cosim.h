@@ -168,15 +168,15 @@ typedef struct pvatt_campaign_options {
     long runs;              /* <= 0: the spec's */
     double stop_time;       /* NaN: the spec's */
     const char* output_dir; /* NULL: the spec's */
-    int figures;            /* non-zero: draw the summary's figures (gnuplot) */
     int resume;             /* non-zero: keep the rows of an earlier, unfinished campaign in output_dir */
 } pvatt_campaign_options;
 
-PVATT_API void pvatt_campaign_options_init(pvatt_campaign_options* options); /* the spec's values, no figures */
+PVATT_API void pvatt_campaign_options_init(pvatt_campaign_options* options); /* the spec's values */
 
-/* Runs a campaign in this process (as `cosim campaign SPEC`) with the settings ("comp.var=value", after
- * the spec's [set]) and FMU folders given; writes the path of its results table (results.csv: one
- * row per run) into the caller's buffer. Failed runs are rows of the table, not errors. */
+/* Runs a campaign in this process, its runs one after the other, with the settings ("comp.var=value",
+ * after the spec's [set]) and FMU folders given; writes the path of its results table (results.csv in
+ * the output folder, one row per run, as `cosim campaign SPEC` writes it; no summary nor figures) into
+ * the caller's buffer. Failed runs are rows of the table, not errors. */
 PVATT_API pvatt_status pvatt_campaign_run(const char* spec, const pvatt_campaign_options* options,
                                           const char* const* settings, size_t setting_count,
                                           const char* const* fmu_dirs, size_t fmu_dir_count, char* table_path,
