@@ -24,22 +24,27 @@ VOLTS_PER_TESLA = 1e4  # the HMC2003's 1 V/gauss
 
 
 def unit(v):
-    return v / np.linalg.norm(v)
+    return v / np.sqrt(v @ v)
+
+
+def cross(a, b):  # numpy's np.cross costs ~50 us on 3-vectors (axis handling); this 2 us
+    return np.array([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]])
 
 
 def adc(v, lo, hi, bits=12):
     """The estimator's converters (its adc_bits, i_adc_min/max, v_adc_min/max): what the FMU reads."""
     step = (hi - lo) / (2**bits - 1)
-    return lo + np.round((np.clip(v, lo, hi) - lo) / step) * step
+    return lo + np.round((np.minimum(np.maximum(v, lo), hi) - lo) / step) * step
 
 
 def triad(t, x):
     """TRIAD (Black 1964): the sun as the exact direction, the field fixing the rotation about it."""
-    i_sh, v_mag, v_ref = adc(x["i_sh"], -1.2, 1.2), adc(x["v_mag"], 0.0, 5.0), adc(x["v_mag_ref"], 0.0, 5.0)
-    b1, b2 = unit(i_sh / I_SC0), unit((v_mag - v_ref) / VOLTS_PER_TESLA)
+    i_sh, v = adc(x["i_sh"], -1.2, 1.2), adc(np.append(x["v_mag"], x["v_mag_ref"]), 0.0, 5.0)
+    b1, b2 = unit(i_sh / I_SC0), unit((v[:3] - v[3]) / VOLTS_PER_TESLA)
     r1, r2 = unit(x["sun_ref"]), unit(x["mag_ref"])
-    body = np.column_stack([b1, unit(np.cross(b1, b2)), np.cross(b1, unit(np.cross(b1, b2)))])
-    ref = np.column_stack([r1, unit(np.cross(r1, r2)), np.cross(r1, unit(np.cross(r1, r2)))])
+    b3, r3 = unit(cross(b1, b2)), unit(cross(r1, r2))
+    body = np.array([b1, b3, cross(b1, b3)]).T
+    ref = np.array([r1, r3, cross(r1, r3)]).T
     A = body @ ref.T  # w_body = A v_ref
     return {"A_est": A.ravel(), "q_est": quaternion(A), "valid": 1.0}
 
@@ -81,7 +86,7 @@ def main():
     print(f"seed_spin, {args.stop_time:g} s, {len(qmethod)} samples at {1 / period:g} Hz: attitude error (deg)")
     print("| on-board computer | median | p95 | max |")
     print("| --- | --- | --- | --- |")
-    for name, r in (("attitude_estimator.fmu (Q-method)", qmethod), ("Python TRIAD (sun exact)", python)):
+    for name, r in (("attitude_estimator.fmu (Q-method)", qmethod), ("Python TRIAD (numpy, in the loop)", python)):
         ok = r["est.valid"] > 0.5
         e = angle_deg(r["est.q_est"][ok], r["env.q_true"][ok])
         print(f"| {name} | {np.median(e):.3f} | {np.percentile(e, 95):.3f} | {e.max():.3f} |")
