@@ -3,6 +3,8 @@ component called (its ctypes callback and arrays), a stepped run started and aba
 
 import os
 
+import pytest
+
 import pvatt
 
 
@@ -11,6 +13,8 @@ def rss_kib():
         return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE") // 1024
 
 
+# ASan keeps freed memory in its quarantine (up to 256 MB): RSS grows by design in that build.
+@pytest.mark.skipif(os.environ.get("PVATT_SANITIZED") == "1", reason="AddressSanitizer's quarantine grows RSS")
 def test_rss_is_stable_over_1000_runs(chain_ssd):
     system = pvatt.System(chain_ssd)
     system.set("integ.u", 1.0)
