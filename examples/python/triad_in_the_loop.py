@@ -11,6 +11,7 @@ vectors) and answers with the FMU's outputs q_est and A_est. Both runs' attitude
 """
 
 import argparse
+import math
 import pathlib
 import sys
 
@@ -34,13 +35,15 @@ def cross(a, b):  # numpy's np.cross costs ~50 us on 3-vectors (axis handling); 
 def adc(v, lo, hi, bits=12):
     """The estimator's converters (its adc_bits, i_adc_min/max, v_adc_min/max): what the FMU reads."""
     step = (hi - lo) / (2**bits - 1)
+    if isinstance(v, float):
+        return lo + round((min(max(v, lo), hi) - lo) / step) * step
     return lo + np.round((np.minimum(np.maximum(v, lo), hi) - lo) / step) * step
 
 
 def triad(t, x):
     """TRIAD (Black 1964): the sun as the exact direction, the field fixing the rotation about it."""
-    i_sh, v = adc(x["i_sh"], -1.2, 1.2), adc(np.append(x["v_mag"], x["v_mag_ref"]), 0.0, 5.0)
-    b1, b2 = unit(i_sh / I_SC0), unit((v[:3] - v[3]) / VOLTS_PER_TESLA)
+    i_sh, v_mag, v_ref = adc(x["i_sh"], -1.2, 1.2), adc(x["v_mag"], 0.0, 5.0), adc(x["v_mag_ref"], 0.0, 5.0)
+    b1, b2 = unit(i_sh / I_SC0), unit((v_mag - v_ref) / VOLTS_PER_TESLA)
     r1, r2 = unit(x["sun_ref"]), unit(x["mag_ref"])
     b3, r3 = unit(cross(b1, b2)), unit(cross(r1, r2))
     body = np.array([b1, b3, cross(b1, b3)]).T
@@ -51,16 +54,18 @@ def triad(t, x):
 
 def quaternion(A):
     """Scalar-last [x, y, z, w], w >= 0, of the attitude matrix A (w_body = A v_ref), as the FMU's."""
-    w = 0.5 * np.sqrt(max(1.0 + np.trace(A), 0.0))
-    if w > 1e-3:
-        q = np.array([A[1, 2] - A[2, 1], A[2, 0] - A[0, 2], A[0, 1] - A[1, 0], 4 * w * w]) / (4 * w)
-    else:  # a half-turn: the largest diagonal term's axis
-        i = int(np.argmax(np.diag(A)))
-        e = np.sqrt(np.maximum((np.diag(A) + 1.0) / 2.0 - w * w, 0.0))
-        e *= np.sign(A[i] + A[:, i])  # signs relative to the axis i (A + A^T = 2 e e^T off the diagonal)
-        e[i] = np.sqrt(max((A[i, i] + 1.0) / 2.0 - w * w, 0.0))
-        q = np.append(e, w)
-    return q / np.linalg.norm(q)
+    trace = A[0, 0] + A[1, 1] + A[2, 2]
+    if trace > -0.99:
+        w4 = 2.0 * math.sqrt(1.0 + trace)  # 4 w
+        return np.array([(A[1, 2] - A[2, 1]) / w4, (A[2, 0] - A[0, 2]) / w4, (A[0, 1] - A[1, 0]) / w4, w4 / 4.0])
+    # Near a half-turn: from the largest diagonal term, 4 e_i^2 = 1 + 2 A_ii - trace, A_ij + A_ji = 4 e_i e_j.
+    i = int(np.argmax(np.diag(A)))
+    j, k = (i + 1) % 3, (i + 2) % 3
+    e_i = 0.5 * math.sqrt(max(1.0 + 2.0 * A[i, i] - trace, 0.0))
+    q = np.empty(4)
+    q[i], q[j], q[k] = e_i, (A[i, j] + A[j, i]) / (4 * e_i), (A[i, k] + A[k, i]) / (4 * e_i)
+    q[3] = (A[j, k] - A[k, j]) / (4 * e_i)
+    return q if q[3] >= 0 else -q
 
 
 def angle_deg(q_a, q_b):

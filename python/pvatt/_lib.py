@@ -60,8 +60,10 @@ lib = ctypes.CDLL(str(LIBRARY_PATH))
 
 c_double_p = ctypes.POINTER(ctypes.c_double)
 c_char_pp = ctypes.POINTER(ctypes.c_char_p)
+# The buffers arrive as plain addresses (ints): a Python component keeps numpy views of them while they
+# stay where they are (one run's), instead of wrapping two pointers in new arrays at every sample.
 STEP_CALLBACK = ctypes.CFUNCTYPE(
-    ctypes.c_int, ctypes.c_void_p, ctypes.c_double, c_double_p, ctypes.c_size_t, c_double_p, ctypes.c_size_t
+    ctypes.c_int, ctypes.c_void_p, ctypes.c_double, ctypes.c_void_p, ctypes.c_size_t, ctypes.c_void_p, ctypes.c_size_t
 )
 
 

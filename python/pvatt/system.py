@@ -283,6 +283,7 @@ class PythonComponent:
         inputs = [n for n, v in variables.items() if v.causality == "input"]
         outputs = [n for n, v in variables.items() if v.causality == "output"]
         self.input_groups = self._groups(inputs)
+        self._buffers = None
         self.output_slots = {}
         for name, index in self._groups(outputs):
             self.output_slots[name] = index
@@ -304,14 +305,20 @@ class PythonComponent:
                 i += 1
         return groups
 
+    @staticmethod
+    def _view(address, n):
+        return np.frombuffer((ctypes.c_double * n).from_address(address), dtype=np.float64) if n else np.empty(0)
+
     def __call__(self, user, t, inputs, n_in, outputs, n_out):
         try:
-            x = np.ctypeslib.as_array(inputs, (n_in,)) if n_in else np.empty(0)
+            if self._buffers != (inputs, n_in, outputs, n_out):  # a new run: its buffers are elsewhere
+                self._buffers = (inputs, n_in, outputs, n_out)
+                self._x, self._y = self._view(inputs, n_in), self._view(outputs, n_out)
+            x, y = self._x, self._y
             given = {name: (x[index].copy() if isinstance(index, slice) else float(x[index]))
                      for name, index in self.input_groups}
             answer = self.step(t, given)
             if answer:
-                y = np.ctypeslib.as_array(outputs, (n_out,))
                 for name, value in answer.items():
                     y[self.output_slots[name]] = value
             return 0

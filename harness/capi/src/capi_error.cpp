@@ -3,7 +3,7 @@
 #include <cstring>
 #include <new>
 
-#include "interrupt.hpp"
+#include "engine/interrupt.hpp"
 
 namespace pvatt_capi {
 

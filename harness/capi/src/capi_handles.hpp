@@ -7,10 +7,10 @@
 #include <utility>
 #include <vector>
 
-#include "execution.hpp"
-#include "observer.hpp"
+#include "engine/execution.hpp"
+#include "engine/observer.hpp"
+#include "engine/system.hpp"
 #include "pvatt/cosim.h"
-#include "system.hpp"
 
 struct pvatt_system {
     cosim::SystemDescription description;

@@ -7,8 +7,8 @@
 
 #include "capi_error.hpp"
 #include "capi_handles.hpp"
-#include "interrupt.hpp"
-#include "run_command.hpp"
+#include "engine/interrupt.hpp"
+#include "engine/run_defaults.hpp"
 
 using namespace pvatt_capi;
 

@@ -11,7 +11,7 @@
 
 #include "capi_error.hpp"
 #include "capi_handles.hpp"
-#include "value_text.hpp"
+#include "engine/value_text.hpp"
 
 using namespace pvatt_capi;
 

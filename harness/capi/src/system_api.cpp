@@ -4,12 +4,12 @@
 #include <cstring>
 #include <limits>
 
-#include "callback_instance.hpp"
 #include "capi_error.hpp"
 #include "capi_handles.hpp"
+#include "engine/callback_instance.hpp"
+#include "engine/run_defaults.hpp"
+#include "engine/setting.hpp"
 #include "fmi_loader/fmu.hpp"
-#include "run_command.hpp"
-#include "setting.hpp"
 
 using namespace pvatt_capi;
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "component_instance.hpp"
+#include "engine/component_instance.hpp"
 
 namespace cosim {
 

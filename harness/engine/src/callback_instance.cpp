@@ -1,10 +1,10 @@
-#include "callback_instance.hpp"
+#include "engine/callback_instance.hpp"
 
 #include <cmath>
 
-#include "cosim_error.hpp"
-#include "hardware_bridge.hpp"  // max_sample_index: the same sample count as a bridged block's
-#include "value_text.hpp"
+#include "engine/cosim_error.hpp"
+#include "engine/hardware_bridge.hpp"  // max_sample_index: the same sample count as a bridged block's
+#include "engine/value_text.hpp"
 
 namespace cosim {
 
