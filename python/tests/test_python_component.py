@@ -78,3 +78,31 @@ def test_ctrl_c_stops_a_run_cleanly_and_the_next_run_works(chain):
     assert len(chain.run(output_interval=0.125)) == 9
     # Python's own handler is back once the run is over.
     assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+
+
+def test_in_a_stepped_run_exceptions_and_ctrl_c_come_back_from_advance_to(chain):
+    def component(t, inputs):
+        if t >= 0.5:
+            raise ValueError("bad sample")
+        return {"y": inputs["u"]}
+
+    chain.replace("gain", component, sample_period=0.25)
+    with chain.start(output_interval=0.25) as sim:
+        sim.advance_to(0.25)
+        with pytest.raises(pvatt.CallbackError) as caught:
+            sim.advance_to(1.0)
+        assert isinstance(caught.value.__cause__, ValueError)
+        assert sim.finished
+
+    def impatient(t, inputs):
+        if t >= 0.5:
+            os.kill(os.getpid(), signal.SIGINT)
+        return {"y": inputs["u"]}
+
+    # Sent from the run's own thread, the signal may be handled on the caller's thread only after the
+    # run has reached the stop time: then it is raised again for Python once the call is over. Either
+    # way, Ctrl-C is never lost.
+    chain.replace("gain", impatient, sample_period=0.25)
+    with chain.start(output_interval=0.25) as sim:
+        with pytest.raises(KeyboardInterrupt):
+            sim.advance_to(1.0)

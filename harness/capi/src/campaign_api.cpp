@@ -11,6 +11,7 @@
 #include "capi_handles.hpp"
 #include "collector.hpp"
 #include "drivers.hpp"
+#include "engine/interrupt.hpp"
 #include "results_table.hpp"
 
 using namespace pvatt_capi;
@@ -77,7 +78,12 @@ pvatt_status pvatt_campaign_run(const char* spec, const pvatt_campaign_options* 
         if (fmu_dir_count) required(fmu_dirs, "fmu_dirs");
         for (std::size_t i = 0; i < fmu_dir_count; ++i) dirs.emplace_back(required(fmu_dirs[i], "fmu_dirs[i]"));
         BlockingCall blocking;
-        copy_text(run_campaign(spec_file, options, dirs, extra).string(), table_path, size, needed);
+        try {
+            copy_text(run_campaign(spec_file, options, dirs, extra).string(), table_path, size, needed);
+        } catch (const cosim::Interrupted&) {
+            blocking.reported();
+            throw;
+        }
     });
 }
 

@@ -15,9 +15,11 @@ using namespace pvatt_capi;
 namespace {
 
 std::atomic<bool> catch_sigint{false};
+volatile std::sig_atomic_t sigint_caught = 0;
 struct sigaction previous_sigint {};
 
 extern "C" void on_sigint(int) {
+    sigint_caught = 1;
     cosim::record_interrupt(SIGINT);  // an atomic store: safe in a handler
 }
 
@@ -101,6 +103,7 @@ cosim::ExecutionOptions execution_options(const pvatt_system& handle, const cosi
 
 BlockingCall::BlockingCall() {
     cosim::clear_interrupt();
+    sigint_caught = 0;
     if (!catch_sigint.load()) return;
     struct sigaction action {};
     action.sa_handler = on_sigint;
@@ -109,7 +112,9 @@ BlockingCall::BlockingCall() {
 }
 
 BlockingCall::~BlockingCall() {
-    if (installed_) sigaction(SIGINT, &previous_sigint, nullptr);
+    if (!installed_) return;
+    sigaction(SIGINT, &previous_sigint, nullptr);
+    if (sigint_caught && !reported_) std::raise(SIGINT);
 }
 
 }  // namespace pvatt_capi
@@ -146,7 +151,12 @@ pvatt_status pvatt_run(pvatt_system* system, const pvatt_run_options* options, c
         const std::size_t rows = static_cast<std::size_t>((ex.stop_time - ex.start_time) / ex.output_interval) + 2;
         result->data.reserve(rows * result->names.size());
         cosim::Execution execution(*sys, ex);
-        execution.run({&recorder});
+        try {
+            execution.run({&recorder});
+        } catch (const cosim::Interrupted&) {
+            blocking.reported();
+            throw;
+        }
     });
     if (out && result) *out = result.release();  // the rows so far, also after an interrupt or a failure
     return status;

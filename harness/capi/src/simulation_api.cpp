@@ -11,6 +11,7 @@
 
 #include "capi_error.hpp"
 #include "capi_handles.hpp"
+#include "engine/interrupt.hpp"
 #include "engine/value_text.hpp"
 
 using namespace pvatt_capi;
@@ -82,7 +83,13 @@ struct pvatt_simulation {
         else
             changed.notify_all();
         changed.wait(lock, [&] { return !running; });
-        if (error) std::rethrow_exception(std::exchange(error, nullptr));
+        if (!error) return;
+        try {
+            std::rethrow_exception(std::exchange(error, nullptr));
+        } catch (const cosim::Interrupted&) {
+            blocking.reported();
+            throw;
+        }
     }
 
     ~pvatt_simulation() {
