@@ -71,7 +71,7 @@ cosim::ExecutionOptions execution_options(const pvatt_system& handle, const cosi
                                           const pvatt_run_options* options);
 
 // While alive (and pvatt_catch_sigint is on), SIGINT sets the interrupt flag; the previous action is
-// restored after. Clears a stale interrupt flag when it starts. A SIGINT that came too late to stop the
+// restored after. The interrupt flag is cleared when it starts and when it ends. A SIGINT that came too late to stop the
 // call (the run ended first, or on another thread just before it did) is raised again once the previous
 // action is back, so the caller's own handler still sees it; one the call reported as PVATT_INTERRUPTED
 // (reported()) is not.

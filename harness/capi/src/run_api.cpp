@@ -112,6 +112,7 @@ BlockingCall::BlockingCall() {
 }
 
 BlockingCall::~BlockingCall() {
+    cosim::clear_interrupt();  // the flag stopped this call or came too late for it: never the next call's
     if (!installed_) return;
     sigaction(SIGINT, &previous_sigint, nullptr);
     if (sigint_caught && !reported_) std::raise(SIGINT);

@@ -131,6 +131,7 @@ pvatt_status pvatt_system_open(const char* path, const char* const* fmu_dirs, si
         *out = nullptr;
         const std::filesystem::path file(required(path, "path"));
         if (fmu_dir_count) required(fmu_dirs, "fmu_dirs");
+        BlockingCall blocking;  // unpacking the FMUs takes a while: Ctrl-C stops it
         auto handle = std::make_unique<pvatt_system>();
         for (std::size_t i = 0; i < fmu_dir_count; ++i)
             handle->options.fmu_dirs.emplace_back(required(fmu_dirs[i], "fmu_dirs[i]"));
