@@ -1,15 +1,18 @@
 // pvatt_system_*: opening a system, listing it, settings and callback components.
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <cstring>
 #include <limits>
 
 #include "capi_error.hpp"
 #include "capi_handles.hpp"
 #include "engine/callback_instance.hpp"
+#include "engine/interrupt.hpp"
 #include "engine/run_defaults.hpp"
 #include "engine/setting.hpp"
 #include "fmi_loader/fmu.hpp"
+#include "fmi_loader/loader_error.hpp"
 
 using namespace pvatt_capi;
 
@@ -135,13 +138,19 @@ pvatt_status pvatt_system_open(const char* path, const char* const* fmu_dirs, si
         auto handle = std::make_unique<pvatt_system>();
         for (std::size_t i = 0; i < fmu_dir_count; ++i)
             handle->options.fmu_dirs.emplace_back(required(fmu_dirs[i], "fmu_dirs[i]"));
-        handle->description = file.extension() == ".fmu" ? single_fmu_system(file, handle->options)
-                                                         : cosim::read_system_description(file);
-        // Every run builds its System from the FMUs loaded here: unpacked and dlopen'ed once per handle
-        // (an FMU with libstdc++ linked in keeps ~70 kB of its runtime's at each dlopen, never given back).
-        handle->options.loaded_fmus =
-            std::make_shared<std::map<std::filesystem::path, std::shared_ptr<fmi_loader::Fmu>>>();
-        handle->loaded = std::make_unique<cosim::System>(handle->description, handle->options);
+        try {
+            handle->description = file.extension() == ".fmu" ? single_fmu_system(file, handle->options)
+                                                             : cosim::read_system_description(file);
+            // Every run builds its System from the FMUs loaded here: unpacked and dlopen'ed once per handle
+            // (an FMU with libstdc++ linked in keeps ~70 kB of its runtime's at each dlopen, never given back).
+            handle->options.loaded_fmus =
+                std::make_shared<std::map<std::filesystem::path, std::shared_ptr<fmi_loader::Fmu>>>();
+            handle->loaded = std::make_unique<cosim::System>(handle->description, handle->options);
+        } catch (const fmi_loader::LoaderError& e) {
+            if (e.code() != fmi_loader::LoaderErrc::cancelled) throw;
+            blocking.reported();  // Ctrl-C while unpacking: an interrupt, reported as one
+            throw cosim::Interrupted(SIGINT);
+        }
         handle->variable_strings.resize(handle->loaded->components().size());
         for (std::size_t i = 0; i < handle->variable_strings.size(); ++i)
             handle->variable_strings[i].resize(handle->loaded->components()[i].description().model_variables.size());
