@@ -22,6 +22,9 @@ packages=(
   clang-format        # one format for every C++ file (scripts/format.sh --check in scripts/test.sh)
   clang libclang-rt-14-dev   # libFuzzer with ASan and UBSan (scripts/fuzz.sh, fuzz/)
   python3-sgp4        # orbit/ tests: the independent SGP4 (Brandon Rhodes' package) run at test time
+  python3-numpy       # the Python package python/pvatt (its result columns are numpy arrays)
+  python3-pytest      # its tests (ctest Python.Pytest)
+  python3-pandas python3-matplotlib  # Result.to_pandas(), examples/python's figures
 )
 
 if [ "${1:-}" = "--firmware" ]; then

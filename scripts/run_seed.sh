@@ -9,7 +9,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh
 cmake --preset release > /dev/null   # CMakePresets.json
-cmake --build build -j"$(nproc)" --target cosim environment_fmu ssr_plant_fmu magnetometer_fmu attitude_estimator_fmu
+cmake --build build -j"$(nproc)" --target cosim environment_fmu ssr_plant_fmu magnetometer_fmu attitude_estimator_fmu pvatt_cosim
 mkdir -p results
 # The run, its statistics and parameters kept for results/index.html.
 ./build/bin/cosim run harness/systems/seed_spin.ssd --stop-time "${SEED_STOP_TIME:-10}" --output results/seed_spin.csv \

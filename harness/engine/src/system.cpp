@@ -103,7 +103,8 @@ void System::load_components(const SystemOptions& options) {
     // Each FMU file is unpacked once and shared by the components made from it (unless it may be
     // instantiated only once per process); the loader's max_total_bytes counts the whole system: the
     // .ssp's own unpacked bytes and every FMU's.
-    std::map<std::filesystem::path, std::shared_ptr<fmi_loader::Fmu>> unpacked;
+    std::map<std::filesystem::path, std::shared_ptr<fmi_loader::Fmu>> own;
+    auto& unpacked = options.loaded_fmus ? *options.loaded_fmus : own;
     fmi_loader::Limits budget;
     if (description_.archive)
         budget.max_total_bytes -= std::min(budget.max_total_bytes, unpacked_bytes(description_.archive->directory()));

@@ -1,0 +1,327 @@
+// The C API (pvatt/cosim.h) on a small system with a closed-form answer: an open input u = 1 through
+// the test gain (y = k u) into the test integrator (dx/dt = u / tau, x(0) = 1), so x(t) = 1 + k t / tau.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <unistd.h>
+#include <cmath>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "pvatt/cosim.h"
+
+namespace {
+
+const char* const fmu_dir = PVATT_CAPI_TEST_FMU_DIR;
+
+std::filesystem::path write_ssd(const std::string& name, const std::string& extra_connection = "") {
+    const auto path =
+        std::filesystem::temp_directory_path() / ("pvatt_capi_" + std::to_string(::getpid()) + "_" + name + ".ssd");
+    std::ofstream(path) << R"(<?xml version="1.0" encoding="UTF-8"?>
+<ssd:SystemStructureDescription xmlns:ssd="http://ssp-standard.org/SSP1/SystemStructureDescription"
+    xmlns:ssc="http://ssp-standard.org/SSP1/SystemStructureCommon" version="1.0" name="chain">
+  <ssd:System name="chain">
+    <ssd:Elements>
+      <ssd:Component name="gain" source="test_gain.fmu"/>
+      <ssd:Component name="integ" source="test_integrator.fmu"/>
+    </ssd:Elements>
+    <ssd:Connections>
+      <ssd:Connection startElement="gain" startConnector="y" endElement="integ" endConnector="u"/>)"
+                        << extra_connection << R"(
+    </ssd:Connections>
+  </ssd:System>
+  <ssd:DefaultExperiment startTime="0" stopTime="1"/>
+</ssd:SystemStructureDescription>
+)";
+    return path;
+}
+
+struct Chain : ::testing::Test {
+    std::filesystem::path ssd = write_ssd(::testing::UnitTest::GetInstance()->current_test_info()->name());
+    pvatt_system* system = nullptr;
+    void SetUp() override {
+        const char* dirs[] = {fmu_dir};
+        ASSERT_EQ(pvatt_system_open(ssd.c_str(), dirs, 1, &system), PVATT_OK) << pvatt_last_error();
+    }
+    void TearDown() override {
+        pvatt_system_close(system);
+        std::filesystem::remove(ssd);
+    }
+    // The column `name` of a result, by name.
+    static std::vector<double> column(const pvatt_result* r, const std::string& name) {
+        for (std::size_t c = 0; c < pvatt_result_columns(r); ++c) {
+            if (name != pvatt_result_column_name(r, c)) continue;
+            std::vector<double> out(pvatt_result_rows(r));
+            EXPECT_EQ(pvatt_result_read_column(r, c, out.data(), out.size()), PVATT_OK);
+            return out;
+        }
+        ADD_FAILURE() << "no column " << name;
+        return {};
+    }
+};
+
+TEST_F(Chain, ListsComponentsAndVariablesWithTypesUnitsAndChoices) {
+    ASSERT_EQ(pvatt_system_component_count(system), 2u);
+    EXPECT_STREQ(pvatt_system_component_name(system, 0), "gain");
+    EXPECT_STREQ(pvatt_system_component_name(system, 1), "integ");
+    EXPECT_EQ(pvatt_system_component_name(system, 2), nullptr);
+    bool saw_u = false, saw_sign = false;
+    for (std::size_t v = 0; v < pvatt_system_variable_count(system, 0); ++v) {
+        pvatt_variable_info info{};
+        ASSERT_EQ(pvatt_system_variable(system, 0, v, &info), PVATT_OK);
+        if (std::string(info.name) == "u") {
+            saw_u = true;
+            EXPECT_STREQ(info.type, "Real");
+            EXPECT_STREQ(info.causality, "input");
+            EXPECT_STREQ(info.unit, "V");
+        }
+        if (std::string(info.name) == "sign") {
+            saw_sign = true;
+            EXPECT_STREQ(info.type, "Enumeration");
+            ASSERT_EQ(info.item_count, 2u);
+            EXPECT_STREQ(info.items[0], "plus");
+            EXPECT_STREQ(info.items[1], "minus");
+        }
+    }
+    EXPECT_TRUE(saw_u && saw_sign);
+    pvatt_variable_info info{};
+    EXPECT_EQ(pvatt_system_variable(system, 0, 999, &info), PVATT_INVALID_ARGUMENT);
+    EXPECT_NE(std::string(pvatt_last_error()).find("out of range"), std::string::npos);
+}
+
+TEST_F(Chain, RunFollowsTheClosedFormWithSettingsAndChoicesByName) {
+    ASSERT_EQ(pvatt_system_set(system, "gain.k", "3"), PVATT_OK);
+    ASSERT_EQ(pvatt_system_set(system, "gain.sign", "minus"), PVATT_OK) << pvatt_last_error();
+    char text[16];
+    std::size_t needed = 0;
+    ASSERT_EQ(pvatt_system_get(system, "gain.sign", text, sizeof text, &needed), PVATT_OK);
+    EXPECT_STREQ(text, "minus");
+    EXPECT_EQ(pvatt_system_get(system, "gain.sign", text, 3, &needed), PVATT_BUFFER_TOO_SMALL);
+    EXPECT_EQ(needed, 6u);
+
+    pvatt_run_options options;
+    pvatt_run_options_init(&options);
+    options.output_interval = 0.125;
+    const char* columns[] = {"integ.y", "gain.y"};
+    pvatt_result* r = nullptr;
+    ASSERT_EQ(pvatt_run(system, &options, columns, 2, &r), PVATT_OK) << pvatt_last_error();
+    ASSERT_EQ(pvatt_result_rows(r), 9u);
+    ASSERT_EQ(pvatt_result_columns(r), 3u);
+    const auto t = column(r, "time"), x = column(r, "integ.y"), y = column(r, "gain.y");
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        EXPECT_DOUBLE_EQ(t[i], 0.125 * static_cast<double>(i));
+        EXPECT_NEAR(x[i], 1.0 - 3.0 * t[i], 1e-6);  // x = 1 + k sign u t / tau
+        EXPECT_EQ(y[i], -3.0);
+    }
+    // Row-major in place: row 8, column 1.
+    EXPECT_EQ(pvatt_result_data(r)[8 * 3 + 1], x[8]);
+    std::vector<double> small(3);
+    EXPECT_EQ(pvatt_result_read_column(r, 1, small.data(), small.size()), PVATT_BUFFER_TOO_SMALL);
+    pvatt_result_free(r);
+}
+
+TEST_F(Chain, RefusesUnknownNamesAndBadValuesWithAMessage) {
+    EXPECT_EQ(pvatt_system_set(system, "gain.nope", "1"), PVATT_INVALID_ARGUMENT);
+    EXPECT_NE(std::string(pvatt_last_error()).find("no variable 'nope'"), std::string::npos);
+    EXPECT_EQ(pvatt_system_set(system, "gain.sign", "sideways"), PVATT_INVALID_ARGUMENT);
+    EXPECT_NE(std::string(pvatt_last_error()).find("sideways"), std::string::npos);
+    EXPECT_EQ(pvatt_system_set(system, "gain.k", "abc"), PVATT_INVALID_ARGUMENT);
+    EXPECT_EQ(pvatt_system_set(nullptr, "gain.k", "1"), PVATT_INVALID_ARGUMENT);
+    EXPECT_EQ(pvatt_system_set(system, "nobody.k", "1"), PVATT_INVALID_ARGUMENT);
+    pvatt_run_options options;
+    pvatt_run_options_init(&options);
+    options.stop_time = -1.0;
+    pvatt_result* r = nullptr;
+    EXPECT_EQ(pvatt_run(system, &options, nullptr, 0, &r), PVATT_INVALID_ARGUMENT);
+    EXPECT_EQ(r, nullptr);
+    pvatt_system* none = nullptr;
+    EXPECT_EQ(pvatt_system_open("/nonexistent/system.ssd", nullptr, 0, &none), PVATT_ERROR);
+    EXPECT_NE(std::string(pvatt_last_error()).find("/nonexistent/system.ssd"), std::string::npos);
+    EXPECT_EQ(none, nullptr);
+}
+
+TEST_F(Chain, TheLastErrorIsPerThread) {
+    EXPECT_EQ(pvatt_system_set(system, "gain.nope", "1"), PVATT_INVALID_ARGUMENT);
+    std::string other;
+    std::thread([&] { other = pvatt_last_error(); }).join();
+    EXPECT_EQ(other, "");
+    EXPECT_NE(std::string(pvatt_last_error()), "");
+}
+
+TEST_F(Chain, SteppingPausesAtOutputPointsAndEqualsAWholeRun) {
+    ASSERT_EQ(pvatt_system_set(system, "gain.k", "2"), PVATT_OK);
+    pvatt_run_options options;
+    pvatt_run_options_init(&options);
+    options.output_interval = 0.1;
+    const char* columns[] = {"integ.y"};
+    pvatt_result* whole = nullptr;
+    ASSERT_EQ(pvatt_run(system, &options, columns, 1, &whole), PVATT_OK);
+
+    pvatt_simulation* sim = nullptr;
+    ASSERT_EQ(pvatt_start(system, &options, columns, 1, &sim), PVATT_OK) << pvatt_last_error();
+    EXPECT_EQ(pvatt_simulation_time(sim), 0.0);
+    ASSERT_EQ(pvatt_advance_to(sim, 0.5), PVATT_OK) << pvatt_last_error();
+    EXPECT_DOUBLE_EQ(pvatt_simulation_time(sim), 0.5);
+    double x = 0;
+    ASSERT_EQ(pvatt_simulation_get_real(sim, "integ.y", &x), PVATT_OK);
+    EXPECT_NEAR(x, 2.0, 1e-6);
+    EXPECT_EQ(pvatt_advance_to(sim, 0.2), PVATT_WRONG_STATE);
+    ASSERT_EQ(pvatt_advance_to(sim, 1.0), PVATT_OK);
+    EXPECT_TRUE(pvatt_simulation_finished(sim));
+    EXPECT_EQ(pvatt_advance_to(sim, 2.0), PVATT_OK);  // at most the stop time: already there
+    pvatt_result* stepped = nullptr;
+    ASSERT_EQ(pvatt_simulation_result(sim, &stepped), PVATT_OK);
+    ASSERT_EQ(pvatt_result_rows(stepped), pvatt_result_rows(whole));
+    for (std::size_t i = 0; i < 2 * pvatt_result_rows(whole); ++i)
+        EXPECT_EQ(pvatt_result_data(stepped)[i], pvatt_result_data(whole)[i]) << i;
+    pvatt_result_free(stepped);
+    pvatt_result_free(whole);
+    pvatt_simulation_free(sim);
+}
+
+TEST_F(Chain, ASetValueTakesEffectFromThePausedInstant) {
+    pvatt_run_options options;
+    pvatt_run_options_init(&options);
+    options.output_interval = 0.25;
+    pvatt_simulation* sim = nullptr;
+    ASSERT_EQ(pvatt_start(system, &options, nullptr, 0, &sim), PVATT_OK);
+    ASSERT_EQ(pvatt_advance_to(sim, 0.5), PVATT_OK);
+    ASSERT_EQ(pvatt_simulation_set_real(sim, "gain.u", 0.0), PVATT_OK) << pvatt_last_error();  // the open input
+    ASSERT_EQ(pvatt_advance_to(sim, 1.0), PVATT_OK);
+    double x = 0;
+    ASSERT_EQ(pvatt_simulation_get_real(sim, "integ.y", &x), PVATT_OK);
+    EXPECT_NEAR(x, 1.0 + 2.0 * 0.5, 1e-6);  // k = 2 for the first half, then nothing
+    char text[32];
+    ASSERT_EQ(pvatt_simulation_get_text(sim, "gain.sign", text, sizeof text, nullptr), PVATT_OK);
+    EXPECT_STREQ(text, "plus");  // a choice by its name
+    pvatt_simulation_free(sim);
+}
+
+TEST_F(Chain, FreeingAPausedSimulationEndsItsRun) {
+    pvatt_simulation* sim = nullptr;
+    ASSERT_EQ(pvatt_start(system, nullptr, nullptr, 0, &sim), PVATT_OK);
+    ASSERT_EQ(pvatt_advance_to(sim, 0.3), PVATT_OK);
+    pvatt_simulation_free(sim);  // must not hang nor leak its thread
+}
+
+// The callback component: y = 3 u sampled every 0.25 s in place of the gain FMU.
+int triple(void* user, double t, const double* in, std::size_t n_in, double* out, std::size_t n_out) {
+    auto* calls = static_cast<std::vector<double>*>(user);
+    calls->push_back(t);
+    if (n_in != 1 || n_out != 1) return 1;
+    out[0] = 3.0 * in[0];
+    return 0;
+}
+
+int failing(void*, double t, const double*, std::size_t, double*, std::size_t) {
+    return t > 0.4 ? 1 : 0;
+}
+
+TEST_F(Chain, ACallbackComponentReplacesAnFmuSampledAtItsOwnRate) {
+    std::vector<double> calls;
+    ASSERT_EQ(pvatt_system_replace(system, "gain", 0.25, triple, &calls), PVATT_OK);
+    pvatt_run_options options;
+    pvatt_run_options_init(&options);
+    options.output_interval = 0.5;
+    const char* columns[] = {"integ.y", "gain.y"};
+    pvatt_result* r = nullptr;
+    ASSERT_EQ(pvatt_run(system, &options, columns, 2, &r), PVATT_OK) << pvatt_last_error();
+    const auto x = column(r, "integ.y");
+    ASSERT_EQ(x.size(), 3u);
+    EXPECT_NEAR(x[2], 1.0 + 3.0, 1e-6);
+    EXPECT_EQ(column(r, "gain.y")[1], 3.0);
+    ASSERT_GE(calls.size(), 4u);
+    for (std::size_t i = 0; i < 4; ++i) EXPECT_DOUBLE_EQ(calls[i], 0.25 * static_cast<double>(i));
+    pvatt_result_free(r);
+    // Back to the FMU.
+    ASSERT_EQ(pvatt_system_replace(system, "gain", 0.0, nullptr, nullptr), PVATT_OK);
+    ASSERT_EQ(pvatt_run(system, &options, columns, 2, &r), PVATT_OK);
+    EXPECT_EQ(column(r, "gain.y")[1], 2.0);  // the FMU's k = 2
+    pvatt_result_free(r);
+}
+
+TEST_F(Chain, AFailingCallbackStopsTheRunWithItsCodeAndKeepsTheRows) {
+    ASSERT_EQ(pvatt_system_replace(system, "gain", 0.25, failing, nullptr), PVATT_OK);
+    pvatt_run_options options;
+    pvatt_run_options_init(&options);
+    options.output_interval = 0.125;
+    pvatt_result* r = nullptr;
+    EXPECT_EQ(pvatt_run(system, &options, nullptr, 0, &r), PVATT_CALLBACK_FAILED);
+    EXPECT_NE(std::string(pvatt_last_error()).find("gain: the callback component failed"), std::string::npos);
+    ASSERT_NE(r, nullptr);
+    EXPECT_EQ(pvatt_result_rows(r), 4u);  // 0 .. 0.375, the rows before the failing sample at 0.5
+    pvatt_result_free(r);
+    EXPECT_EQ(pvatt_system_replace(system, "nobody", 0.25, failing, nullptr), PVATT_INVALID_ARGUMENT);
+    EXPECT_EQ(pvatt_system_replace(system, "gain", -1.0, failing, nullptr), PVATT_INVALID_ARGUMENT);
+}
+
+// Interrupts from the callback itself: the flag is seen at the next check, the run ends cleanly.
+int interrupting(void*, double t, const double* in, std::size_t, double* out, std::size_t) {
+    if (t >= 0.5) pvatt_interrupt();
+    out[0] = in[0];
+    return 0;
+}
+
+TEST_F(Chain, AnInterruptStopsTheRunWithTheRowsSoFar) {
+    ASSERT_EQ(pvatt_system_replace(system, "gain", 0.25, interrupting, nullptr), PVATT_OK);
+    pvatt_run_options options;
+    pvatt_run_options_init(&options);
+    options.output_interval = 0.125;
+    pvatt_result* r = nullptr;
+    EXPECT_EQ(pvatt_run(system, &options, nullptr, 0, &r), PVATT_INTERRUPTED);
+    ASSERT_NE(r, nullptr);
+    EXPECT_GE(pvatt_result_rows(r), 4u);
+    EXPECT_LT(pvatt_result_rows(r), 9u);
+    pvatt_result_free(r);
+    // The flag is cleared when the next run starts.
+    ASSERT_EQ(pvatt_system_replace(system, "gain", 0.0, nullptr, nullptr), PVATT_OK);
+    EXPECT_EQ(pvatt_run(system, &options, nullptr, 0, &r), PVATT_OK);
+    EXPECT_EQ(pvatt_result_rows(r), 9u);
+    pvatt_result_free(r);
+}
+
+// SIGINT under pvatt_catch_sigint sets the flag instead of killing the process.
+int raising(void*, double t, const double* in, std::size_t, double* out, std::size_t) {
+    if (t >= 0.5) std::raise(SIGINT);
+    out[0] = in[0];
+    return 0;
+}
+
+TEST_F(Chain, SigintStopsTheRunWhenCaught) {
+    pvatt_catch_sigint(1);
+    ASSERT_EQ(pvatt_system_replace(system, "gain", 0.25, raising, nullptr), PVATT_OK);
+    pvatt_result* r = nullptr;
+    EXPECT_EQ(pvatt_run(system, nullptr, nullptr, 0, &r), PVATT_INTERRUPTED);
+    pvatt_result_free(r);
+    pvatt_catch_sigint(0);
+    // The previous action is back after the call.
+    struct sigaction now {};
+    sigaction(SIGINT, nullptr, &now);
+    EXPECT_EQ(now.sa_handler, SIG_DFL);
+}
+
+TEST(CapiFmu, ALoneFmuIsASystemOfOneComponent) {
+    const auto fmu = std::filesystem::path(fmu_dir) / "test_integrator.fmu";
+    pvatt_system* s = nullptr;
+    ASSERT_EQ(pvatt_system_open(fmu.c_str(), nullptr, 0, &s), PVATT_OK) << pvatt_last_error();
+    ASSERT_EQ(pvatt_system_component_count(s), 1u);
+    EXPECT_STREQ(pvatt_system_component_name(s, 0), "test_integrator");
+    ASSERT_EQ(pvatt_system_set(s, "test_integrator.u", "0.5"), PVATT_OK);
+    pvatt_run_options options;
+    pvatt_run_options_init(&options);
+    options.stop_time = 2.0;
+    options.output_interval = 1.0;
+    const char* columns[] = {"test_integrator.y"};
+    pvatt_result* r = nullptr;
+    ASSERT_EQ(pvatt_run(s, &options, columns, 1, &r), PVATT_OK) << pvatt_last_error();
+    ASSERT_EQ(pvatt_result_rows(r), 3u);
+    EXPECT_NEAR(pvatt_result_data(r)[2 * 2 + 1], 1.0 + 0.5 * 2.0, 1e-6);
+    pvatt_result_free(r);
+    pvatt_system_close(s);
+}
+
+}  // namespace
