@@ -141,10 +141,8 @@ pvatt_status pvatt_system_open(const char* path, const char* const* fmu_dirs, si
         try {
             handle->description = file.extension() == ".fmu" ? single_fmu_system(file, handle->options)
                                                              : cosim::read_system_description(file);
-            // Every run builds its System from the FMUs loaded here: unpacked and dlopen'ed once per handle
-            // (an FMU with libstdc++ linked in keeps ~70 kB of its runtime's at each dlopen, never given back).
-            handle->options.loaded_fmus =
-                std::make_shared<std::map<std::filesystem::path, std::shared_ptr<fmi_loader::Fmu>>>();
+            // Every run builds its System through the engine's import cache: each FMU is unpacked and
+            // dlopen'ed once per process (an FMU with libstdc++ linked in keeps ~70 kB at each dlopen).
             handle->loaded = std::make_unique<cosim::System>(handle->description, handle->options);
         } catch (const fmi_loader::LoaderError& e) {
             if (e.code() != fmi_loader::LoaderErrc::cancelled) throw;

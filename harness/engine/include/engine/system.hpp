@@ -55,9 +55,6 @@ struct SystemOptions {
     std::optional<double> tolerance;
     std::optional<int> bridge_port;            // replaces the port of every UDP hardware bridge
     std::optional<std::string> bridge_device;  // replaces the device of every serial hardware bridge
-    // FMUs already unpacked and loaded, reused by their canonical path instead of loaded again: a process
-    // that builds many systems (the C API, one per run) loads each FMU library once. Loaded ones are added.
-    std::shared_ptr<std::map<std::filesystem::path, std::shared_ptr<fmi_loader::Fmu>>> loaded_fmus;
 };
 
 // Consecutive connections (in flow order) between the same two components, copied in one get and
