@@ -288,11 +288,29 @@ std::size_t Instance3::state_count() const {
 Instance3::StepResult Instance3::do_step(double current_time, double step_size) {
     // With event mode the host runs the discrete updates: the step stops at an event inside it when the
     // host allows an early return, and leaves one due at its end in any case.
+    // An intermediate-update callback decides at each event inside the step (canReturnEarly): the step
+    // stops there when the host requests an early return, else the event is handled inside. The
+    // step stops at the event's time whatever earlyReturnTime the host names: the event needs the
+    // host's Event Mode there.
     using H = CsSolver::HostEvents;
-    const H host_events = !options_.event_mode_used ? H::none : (options_.early_return_allowed ? H::all : H::at_end);
+    const bool ask = options_.event_mode_used && options_.early_return_allowed && options_.intermediate_update;
+    H host_events = H::none;
+    if (ask)
+        host_events = H::ask;
+    else if (options_.event_mode_used)
+        host_events = options_.early_return_allowed ? H::all : H::at_end;
+    std::function<bool(double)> host_wants;
+    if (ask)
+        host_wants = [this](double t) {
+            fmi3Boolean requested = false;
+            fmi3Float64 early_return_time = t;
+            options_.intermediate_update(environment_, t, false, false, false, true, &requested, &early_return_time);
+            return static_cast<bool>(requested);
+        };
     StepResult r;
     bool event_pending = false;
-    r.status = static_cast<fmi3Status>(inner_.do_step(current_time, step_size, host_events, &event_pending));
+    r.status =
+        static_cast<fmi3Status>(inner_.do_step(current_time, step_size, host_events, &event_pending, host_wants));
     r.last_successful_time = inner_.time();
     r.event_handling_needed = event_pending;
     r.early_return = event_pending && !reached(r.last_successful_time, current_time + step_size);

@@ -95,7 +95,8 @@ public:
     // Co-Simulation; returns fmi2Discard when the block asked to terminate during the step. The FMI 3.0
     // layer leaves events to its host (event mode): `event_pending` tells whether the step stopped at one.
     fmi2Status do_step(double current_time, double step_size,
-                       CsSolver::HostEvents host_events = CsSolver::HostEvents::none, bool* event_pending = nullptr);
+                       CsSolver::HostEvents host_events = CsSolver::HostEvents::none, bool* event_pending = nullptr,
+                       const std::function<bool(double)>& host_wants = {});
     // canInterpolateInputs: first derivatives of continuous Real inputs, applied over the next steps.
     void set_real_input_derivatives(std::span<const fmi2ValueReference> vr, const fmi2Integer* order,
                                     const fmi2Real* values);
