@@ -21,10 +21,10 @@ namespace fmu {
 inline constexpr const char* log_categories[] = {
     "logEvents", "logStatusWarning", "logStatusDiscard", "logStatusError", "logStatusFatal", "logStatistics", "logAll"};
 inline constexpr const char* log_category_descriptions[] = {"Events: time and state events, discrete updates",
-                                                            "Messages with status fmi2Warning",
-                                                            "Messages with status fmi2Discard",
-                                                            "Messages with status fmi2Error",
-                                                            "Messages with status fmi2Fatal",
+                                                            "Messages with status Warning (fmi2Warning, fmi3Warning)",
+                                                            "Messages with status Discard (fmi2Discard, fmi3Discard)",
+                                                            "Messages with status Error (fmi2Error, fmi3Error)",
+                                                            "Messages with status Fatal (fmi2Fatal, fmi3Fatal)",
                                                             "Integrator statistics of Co-Simulation runs",
                                                             "Every call of the FMI functions"};
 
