@@ -138,27 +138,22 @@ void Instance3::get_float64(std::span<const fmi3ValueReference> vr, std::span<fm
     std::size_t at = 0;
     for (const fmi3ValueReference r : vr) {
         // Time and the event indicators are no table variables; the rest is read a variable at a time.
-        std::size_t n = 0;
-        if (r == view_.time_reference()) {
-            n = 1;
-        } else if (view_.event_indicator_count() > 0 && r == view_.event_indicators_reference()) {
-            n = view_.event_indicator_count();
-        } else {
-            const Fmi3Variable& v = variable(r);
-            const Variable& first = table_.variables()[v.first];
-            if (first.type != ValueType::Real)
-                throw Error("value reference " + std::to_string(r) + " is " + describe(first) + ", not Float64");
-            n = v.count;
-        }
+        const bool time = r == view_.time_reference();
+        const bool indicators = !time && view_.event_indicator_count() > 0 && r == view_.event_indicators_reference();
+        const Fmi3Variable* v = time || indicators ? nullptr : &variable(r);
+        if (v && table_.variables()[v->first].type != ValueType::Real)
+            throw Error("value reference " + std::to_string(r) + " is " + describe(table_.variables()[v->first]) +
+                        ", not Float64");
+        const std::size_t n = time ? 1 : indicators ? view_.event_indicator_count() : v->count;
         if (at + n > values.size())
             throw Error("fmi3GetFloat64: nValues = " + std::to_string(values.size()) +
                         " is fewer than the values named");
-        if (r == view_.time_reference())
+        if (time)
             values[at] = inner_.time();
-        else if (n == view_.event_indicator_count() && r == view_.event_indicators_reference())
+        else if (indicators)
             inner_.get_event_indicators(values.subspan(at, n));
         else
-            inner_.get_real(view_.element_references(variable(r)), values.data() + at);
+            inner_.get_real(view_.element_references(*v), values.data() + at);
         at += n;
     }
     if (at != values.size())
