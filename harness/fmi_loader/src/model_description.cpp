@@ -12,56 +12,26 @@
 #include <memory>
 #include <sstream>
 
+#include "fmi/vocabulary.hpp"
 #include "fmi_loader/loader_error.hpp"
 
 namespace fmi_loader {
 
+// The words are the runtime's (fmi/vocabulary.hpp), in the order of the enums in model_description.hpp.
+static_assert(fmi_vocabulary::spelling(fmi_vocabulary::causalities, Causality::independent) == "independent");
+static_assert(fmi_vocabulary::spelling(fmi_vocabulary::variabilities, Variability::continuous) == "continuous");
+static_assert(fmi_vocabulary::spelling(fmi_vocabulary::initials, Initial::calculated) == "calculated");
+
 std::string_view to_string(Causality c) noexcept {
-    switch (c) {
-        case Causality::parameter:
-            return "parameter";
-        case Causality::calculated_parameter:
-            return "calculatedParameter";
-        case Causality::input:
-            return "input";
-        case Causality::output:
-            return "output";
-        case Causality::local:
-            return "local";
-        case Causality::independent:
-            return "independent";
-    }
-    return "?";
+    return fmi_vocabulary::spelling(fmi_vocabulary::causalities, c);
 }
 
 std::string_view to_string(Variability v) noexcept {
-    switch (v) {
-        case Variability::constant:
-            return "constant";
-        case Variability::fixed:
-            return "fixed";
-        case Variability::tunable:
-            return "tunable";
-        case Variability::discrete:
-            return "discrete";
-        case Variability::continuous:
-            return "continuous";
-    }
-    return "?";
+    return fmi_vocabulary::spelling(fmi_vocabulary::variabilities, v);
 }
 
 std::string_view to_string(Initial i) noexcept {
-    switch (i) {
-        case Initial::none:
-            return "none";
-        case Initial::exact:
-            return "exact";
-        case Initial::approx:
-            return "approx";
-        case Initial::calculated:
-            return "calculated";
-    }
-    return "?";
+    return fmi_vocabulary::spelling(fmi_vocabulary::initials, i);
 }
 
 std::string_view to_string(VariableType t) noexcept {
@@ -275,31 +245,24 @@ public:
 
     Causality causality(const xmlNode* n) const {
         const auto v = attr(n, "causality");
-        if (!v || *v == "local") return Causality::local;  // default, section 2.2.7
-        if (*v == "parameter") return Causality::parameter;
-        if (*v == "calculatedParameter") return Causality::calculated_parameter;
-        if (*v == "input") return Causality::input;
-        if (*v == "output") return Causality::output;
-        if (*v == "independent") return Causality::independent;
+        if (!v) return Causality::local;  // default, section 2.2.7
+        if (const auto c = fmi_vocabulary::parse<Causality>(fmi_vocabulary::causalities, *v)) return *c;
         invalid(n, "unknown causality '" + *v + "'");
     }
 
     Variability variability(const xmlNode* n) const {
         const auto v = attr(n, "variability");
-        if (!v || *v == "continuous") return Variability::continuous;  // default, section 2.2.7
-        if (*v == "constant") return Variability::constant;
-        if (*v == "fixed") return Variability::fixed;
-        if (*v == "tunable") return Variability::tunable;
-        if (*v == "discrete") return Variability::discrete;
+        if (!v) return Variability::continuous;  // default, section 2.2.7
+        if (const auto x = fmi_vocabulary::parse<Variability>(fmi_vocabulary::variabilities, *v)) return *x;
         invalid(n, "unknown variability '" + *v + "'");
     }
 
     std::optional<Initial> initial(const xmlNode* n) const {
         const auto v = attr(n, "initial");
         if (!v) return std::nullopt;
-        if (*v == "exact") return Initial::exact;
-        if (*v == "approx") return Initial::approx;
-        if (*v == "calculated") return Initial::calculated;
+        // "none" is no word of the standard: the attribute is absent instead.
+        if (const auto i = fmi_vocabulary::parse<Initial>(fmi_vocabulary::initials, *v); i && *i != Initial::none)
+            return *i;
         invalid(n, "unknown initial '" + *v + "'");
     }
 
