@@ -255,7 +255,7 @@ pvatt_status pvatt_system_get(const pvatt_system* system, const char* name, char
         // The description's parameter binding, else the FMU's start value.
         const auto& cd = system->description.components[ref.component];
         for (const auto& p : cd.parameters)
-            if (p.name == ref.variable->name) text = p.value;
+            if (p.variable == ref.variable->name) text = p.value;
         if (text.empty()) text = ref.variable->start.value_or("");
     });
     return found != PVATT_OK ? found : guarded([&] { copy_text(text, buffer, size, needed); });
