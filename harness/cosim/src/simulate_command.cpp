@@ -8,6 +8,7 @@
 #include "cosim_error.hpp"
 #include "csv_table.hpp"
 #include "fmi2_instance.hpp"
+#include "fmi3_instance.hpp"
 #include "interrupt.hpp"
 #include "output_file.hpp"
 #include "value_text.hpp"
@@ -17,8 +18,16 @@ namespace cosim {
 void simulate(const SimulateOptions& options, std::ostream& out) {
     if (options.csv) refuse_overwriting_inputs("--output", *options.csv, {options.fmu});
     fmi_loader::Fmu fmu(options.fmu);
-    const auto& md = fmu.description();
-    if (!md.co_simulation) throw CosimError(options.fmu.string() + " has no CoSimulation interface");
+    if (fmu.description().is_fmi3()) refuse_unsupported_fmi3(fmu.description(), options.fmu.string());
+    if (!fmu.description().co_simulation) throw CosimError(options.fmu.string() + " has no CoSimulation interface");
+    std::unique_ptr<ComponentInstance> made;
+    if (fmu.description().is_fmi3())
+        made = std::make_unique<Fmi3Instance>(fmu, fmi_loader::FmuKind::co_simulation, fmu.description().model_name,
+                                              options.fmi3_event_mode);
+    else
+        made = std::make_unique<Fmi2Instance>(fmu, fmi_loader::FmuKind::co_simulation, fmu.description().model_name);
+    ComponentInstance& instance = *made;
+    const auto& md = instance.description();  // an FMI 3.0 FMU's arrays as one column per element
     const auto ex = md.default_experiment.value_or(fmi_loader::DefaultExperiment{});
     const double start = ex.start_time.value_or(0.0);
     const double stop = options.stop_time.value_or(ex.stop_time.value_or(start + 1.0));
@@ -44,7 +53,6 @@ void simulate(const SimulateOptions& options, std::ostream& out) {
         }
     }
 
-    Fmi2Instance instance(fmu, fmi_loader::FmuKind::co_simulation, md.model_name);
     instance.setup_experiment(start, stop, options.tolerance ? options.tolerance : ex.tolerance);
     for (const auto& setting : options.settings) instance.apply(parse_setting(setting, false));
     instance.enter_initialization_mode();
@@ -74,6 +82,7 @@ void simulate(const SimulateOptions& options, std::ostream& out) {
     };
     row("time", [&](std::size_t i) { return columns[i]->name; });
     const auto steps = static_cast<long>(std::llround((stop - start) / h));
+    bool stopped = false;
     for (long k = 0;; ++k) {
         const double t = start + k * h;  // from the step count, so that times never drift
         row(format_real(t), [&](std::size_t i) {
@@ -83,8 +92,9 @@ void simulate(const SimulateOptions& options, std::ostream& out) {
             cell << std::setprecision(8) << instance.get_real(v.value_reference);
             return cell.str();
         });
-        if (k >= steps) break;
+        if (k >= steps || stopped) break;
         instance.do_step(t, std::min(h, stop - t));
+        stopped = instance.terminate_requested();  // the row at the step's end is the last
     }
     instance.terminate();
     if (as_csv) {
