@@ -4,12 +4,13 @@
 # the installed package by the test Package.OutOfTreeBlock).
 include(CMakePackageConfigHelpers)
 
-install(TARGETS fmi2_headers cvode_integrator fmu_model fmu_runtime_objects fmu_description_writer fmu_describe_main
+install(TARGETS fmi2_headers fmi3_headers fmi_vocabulary cvode_integrator fmu_model fmu_runtime_objects
+  fmu_runtime3_objects fmu_description_writer fmu_describe_main
   EXPORT pvattTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   OBJECTS DESTINATION ${CMAKE_INSTALL_LIBDIR}/pvatt/objects
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-install(DIRECTORY fmus/include/fmu fmi2/include/fmi2 integrator/include/
+install(DIRECTORY fmus/include/fmu fmi2/include/fmi2 fmi3/include/fmi3 fmus/vocabulary/include/fmi integrator/include/
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h" PATTERN "*.hpp")
 install(FILES ${CMAKE_BINARY_DIR}/fmus_runtime/generated/fmu/version.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/fmu)
 
@@ -19,5 +20,5 @@ configure_package_config_file(cmake/pvattConfig.cmake.in ${CMAKE_BINARY_DIR}/pva
   INSTALL_DESTINATION ${config_dir})
 write_basic_package_version_file(${CMAKE_BINARY_DIR}/pvattConfigVersion.cmake COMPATIBILITY SameMinorVersion)
 install(FILES ${CMAKE_BINARY_DIR}/pvattConfig.cmake ${CMAKE_BINARY_DIR}/pvattConfigVersion.cmake
-  fmus/add_fmu.cmake fmus/fmu.map DESTINATION ${config_dir})
+  fmus/add_fmu.cmake fmus/fmu.map fmus/fmu3.map DESTINATION ${config_dir})
 install(FILES LICENSE DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/pvatt)

@@ -72,10 +72,15 @@ bool CsSolver::locate_without_states(double t_stop) {
     return crossing.has_value();
 }
 
-CsSolver::Outcome CsSolver::advance(double t_end) {
+CsSolver::Outcome CsSolver::advance(double t_end, HostEvents host_events) {
     const double tiny = 1e-12 * std::max(1.0, std::abs(t_end));
     for (;;) {
         if (runner_.time_event_due()) {
+            const bool at_end = runner_.time() >= t_end - tiny;
+            if (host_events == HostEvents::all || (host_events == HostEvents::at_end && at_end)) {
+                restart_needed_ = true;  // the host's discrete update may make the right-hand side jump
+                return Outcome::event_pending;
+            }
             ++stats_.time_events;
             const EventUpdate r = runner_.event_iteration();
             restart_needed_ = true;  // any discrete change may make the right-hand side jump
@@ -92,6 +97,10 @@ CsSolver::Outcome CsSolver::advance(double t_end) {
         const bool state_event = cvode_ ? integrate_to(t_stop) : locate_without_states(t_stop);
         if (state_event) {
             ++stats_.state_events;
+            if (host_events == HostEvents::all) {
+                restart_needed_ = true;
+                return Outcome::event_pending;
+            }
             const EventUpdate r = runner_.event_iteration();
             restart_needed_ = true;
             if (r.terminate) return Outcome::terminated;

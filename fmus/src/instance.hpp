@@ -92,8 +92,10 @@ public:
     void get_continuous_states(std::span<double> x);
     void get_nominals(std::span<double> nominal);
 
-    // Co-Simulation; returns fmi2Discard when the block asked to terminate during the step.
-    fmi2Status do_step(double current_time, double step_size);
+    // Co-Simulation; returns fmi2Discard when the block asked to terminate during the step. The FMI 3.0
+    // layer leaves events to its host (event mode): `event_pending` tells whether the step stopped at one.
+    fmi2Status do_step(double current_time, double step_size,
+                       CsSolver::HostEvents host_events = CsSolver::HostEvents::none, bool* event_pending = nullptr);
     // canInterpolateInputs: first derivatives of continuous Real inputs, applied over the next steps.
     void set_real_input_derivatives(std::span<const fmi2ValueReference> vr, const fmi2Integer* order,
                                     const fmi2Real* values);
@@ -102,6 +104,7 @@ public:
     fmi2Status get_boolean_status(fmi2StatusKind kind, fmi2Boolean* value) const;
 
     const std::string& name() const { return name_; }
+    double time() const { return runner_.time(); }
 
 private:
     const Variable& variable(fmi2ValueReference vr, ValueType type) const;

@@ -1,70 +1,30 @@
 // The standard's spelling of the enumerations, as they appear in modelDescription.xml.
 #include "fmu/variable.hpp"
 
+#include "fmi/vocabulary.hpp"
+
 namespace fmu {
 
+// The order of the enums in variable.hpp is the vocabulary's (fmi/vocabulary.hpp).
+static_assert(fmi_vocabulary::spelling(fmi_vocabulary::causalities, Causality::independent) == "independent");
+static_assert(fmi_vocabulary::spelling(fmi_vocabulary::variabilities, Variability::continuous) == "continuous");
+static_assert(fmi_vocabulary::spelling(fmi_vocabulary::initials, Initial::calculated) == "calculated");
+static_assert(fmi_vocabulary::spelling(fmi_vocabulary::types_fmi2, ValueType::Enumeration) == "Enumeration");
+
 std::string_view to_string(ValueType v) {
-    switch (v) {
-        case ValueType::Real:
-            return "Real";
-        case ValueType::Integer:
-            return "Integer";
-        case ValueType::Boolean:
-            return "Boolean";
-        case ValueType::String:
-            return "String";
-        case ValueType::Enumeration:
-            return "Enumeration";
-    }
-    return "?";
+    return fmi_vocabulary::spelling(fmi_vocabulary::types_fmi2, v);
 }
 
 std::string_view to_string(Causality c) {
-    switch (c) {
-        case Causality::parameter:
-            return "parameter";
-        case Causality::calculated_parameter:
-            return "calculatedParameter";
-        case Causality::input:
-            return "input";
-        case Causality::output:
-            return "output";
-        case Causality::local:
-            return "local";
-        case Causality::independent:
-            return "independent";
-    }
-    return "?";
+    return fmi_vocabulary::spelling(fmi_vocabulary::causalities, c);
 }
 
 std::string_view to_string(Variability v) {
-    switch (v) {
-        case Variability::constant:
-            return "constant";
-        case Variability::fixed:
-            return "fixed";
-        case Variability::tunable:
-            return "tunable";
-        case Variability::discrete:
-            return "discrete";
-        case Variability::continuous:
-            return "continuous";
-    }
-    return "?";
+    return fmi_vocabulary::spelling(fmi_vocabulary::variabilities, v);
 }
 
 std::string_view to_string(Initial i) {
-    switch (i) {
-        case Initial::none:
-            return "";
-        case Initial::exact:
-            return "exact";
-        case Initial::approx:
-            return "approx";
-        case Initial::calculated:
-            return "calculated";
-    }
-    return "?";
+    return i == Initial::none ? std::string_view() : fmi_vocabulary::spelling(fmi_vocabulary::initials, i);
 }
 
 const EnumerationItem* Variable::item_named(std::string_view item) const {

@@ -1,16 +1,19 @@
-// Build-time tool linked with one block: writes that block's modelDescription.xml and
-// documentation/index.html into a staging folder, from its variable table.
+// Build-time tool linked with one block: writes that block's modelDescription.xml (FMI 2.0, or 3.0
+// with the argument "3.0") and documentation/index.html into a staging folder, from its variable table.
 #include <exception>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <string_view>
 
+#include "description3_xml.hpp"
 #include "description_xml.hpp"
 #include "documentation_html.hpp"
 
 int main(int argc, char** argv) {
-    if (argc != 2) {
-        std::cerr << "usage: " << argv[0] << " STAGING_DIR\n";
+    const bool fmi3 = argc == 3 && std::string_view(argv[2]) == "3.0";
+    if (argc != 2 && !fmi3) {
+        std::cerr << "usage: " << argv[0] << " STAGING_DIR [3.0]\n";
         return 2;
     }
     try {
@@ -22,7 +25,8 @@ int main(int argc, char** argv) {
             out << text;
             if (!out) throw std::runtime_error("cannot write " + path.string());
         };
-        write(dir / "modelDescription.xml", fmu::model_description_xml(*model));
+        write(dir / "modelDescription.xml",
+              fmi3 ? fmu::model_description3_xml(*model) : fmu::model_description_xml(*model));
         write(dir / "documentation" / "index.html", fmu::documentation_html(*model));
         return 0;
     } catch (const std::exception& e) {

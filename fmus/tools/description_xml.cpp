@@ -1,7 +1,5 @@
 #include "description_xml.hpp"
 
-#include <libxml/xmlwriter.h>
-
 #include <memory>
 #include <set>
 #include <utility>
@@ -10,61 +8,11 @@
 #include "fmu/description.hpp"
 #include "fmu/errors.hpp"
 #include "fmu/units.hpp"
+#include "xml_writer.hpp"
 
 namespace fmu {
 
 namespace {
-
-struct BufferDeleter {
-    void operator()(xmlBuffer* b) const { xmlBufferFree(b); }
-};
-struct WriterDeleter {
-    void operator()(xmlTextWriter* w) const { xmlFreeTextWriter(w); }
-};
-
-class Writer {
-public:
-    Writer() : buffer_(xmlBufferCreate()) {
-        if (!buffer_) throw Error("libxml2: cannot create a buffer");
-        writer_.reset(xmlNewTextWriterMemory(buffer_.get(), 0));
-        if (!writer_) throw Error("libxml2: cannot create a writer");
-        xmlTextWriterSetIndent(writer_.get(), 1);
-        xmlTextWriterSetIndentString(writer_.get(), BAD_CAST "  ");
-        ok(xmlTextWriterStartDocument(writer_.get(), nullptr, "UTF-8", nullptr));
-    }
-    void start(const char* element) { ok(xmlTextWriterStartElement(writer_.get(), BAD_CAST element)); }
-    void end() { ok(xmlTextWriterEndElement(writer_.get())); }
-    void attribute(const char* name, const std::string& value) {
-        ok(xmlTextWriterWriteAttribute(writer_.get(), BAD_CAST name, BAD_CAST value.c_str()));
-    }
-    void attribute(const char* name, int value) { attribute(name, std::to_string(value)); }
-    std::string finish() {
-        ok(xmlTextWriterEndDocument(writer_.get()));
-        writer_.reset();  // flushes into the buffer
-        return std::string(reinterpret_cast<const char*>(xmlBufferContent(buffer_.get())));
-    }
-
-private:
-    static void ok(int rc) {
-        if (rc < 0) throw Error("libxml2 writer failed");
-    }
-    std::unique_ptr<xmlBuffer, BufferDeleter> buffer_;
-    std::unique_ptr<xmlTextWriter, WriterDeleter> writer_;
-};
-
-void write_unit(Writer& w, const UnitDefinition& u) {
-    w.start("Unit");
-    w.attribute("name", std::string(u.name));
-    w.start("BaseUnit");
-    const std::pair<const char*, int> exponents[] = {{"kg", u.kg}, {"m", u.m},     {"s", u.s},   {"A", u.A},
-                                                     {"K", u.K},   {"mol", u.mol}, {"cd", u.cd}, {"rad", u.rad}};
-    for (auto [name, e] : exponents)
-        if (e != 0) w.attribute(name, e);
-    if (u.factor != 1.0) w.attribute("factor", format_real(u.factor));
-    if (u.offset != 0.0) w.attribute("offset", format_real(u.offset));
-    w.end();
-    w.end();
-}
 
 // with_dependencies: Outputs and Derivatives (Variable::dependencies), else InitialUnknowns
 // (Variable::initial_dependencies); either only where declared.
@@ -128,18 +76,7 @@ std::string model_description_xml(const Model& model) {
     w.attribute("providesDirectionalDerivative", "false");
     w.end();
 
-    std::set<std::string> unit_names;
-    for (const auto& v : vars)
-        if (!v.unit.empty()) unit_names.insert(v.unit);
-    if (!unit_names.empty()) {
-        w.start("UnitDefinitions");
-        for (const auto& name : unit_names) {
-            const auto unit = find_unit(name);
-            if (!unit) throw Error("unit '" + name + "' has no definition");
-            write_unit(w, *unit);
-        }
-        w.end();
-    }
+    write_unit_definitions(w, vars);
 
     // Each choice's items, as a type its Enumeration variable declares (FMI 2.0 section 2.2.3).
     bool any_choice = false;
@@ -212,12 +149,7 @@ std::string model_description_xml(const Model& model) {
     for (std::size_t i = 0; i < vars.size(); ++i) {
         const auto& v = vars[i];
         if (v.causality == Causality::output) outputs.push_back(i);
-        // FMI 2.0 §2.2.8: outputs and states/derivatives with initial approx or calculated, and
-        // calculated parameters, in index order.
-        const bool calculated = v.initial == Initial::approx || v.initial == Initial::calculated;
-        if ((v.causality == Causality::output && calculated) || v.causality == Causality::calculated_parameter ||
-            ((v.is_state() || v.is_derivative()) && calculated))
-            initial_unknowns.push_back(i);
+        if (is_initial_unknown(v)) initial_unknowns.push_back(i);  // in index order
     }
     w.start("ModelStructure");
     write_unknowns(w, "Outputs", outputs, vars, true);

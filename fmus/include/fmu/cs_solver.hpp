@@ -25,10 +25,14 @@ class CsSolver {
 public:
     CsSolver(ModelRunner& runner, double relative_tolerance);
 
-    enum class Outcome { reached, terminated };
+    enum class Outcome { reached, terminated, event_pending };
+    // Which events advance leaves to the host (FMI 3.0 Co-Simulation with event mode): none (FMI 2.0,
+    // and 3.0 without event mode), those due at t_end, or also those inside the step (early return).
+    // A left event stops the step at its time with the discrete update not run: event_pending.
+    enum class HostEvents { none, at_end, all };
     // Integrate from the runner's current time to t_end, handling every event on the way and any
-    // event due exactly at t_end. Throws fmu::Error when the integrator fails.
-    Outcome advance(double t_end);
+    // event due exactly at t_end that is not the host's. Throws fmu::Error when the integrator fails.
+    Outcome advance(double t_end, HostEvents host_events = HostEvents::none);
     // States were changed from outside (FMU state restored, inputs changed): restart at next advance.
     void invalidate() { restart_needed_ = true; }
 

@@ -34,14 +34,17 @@ const char* status_name(int s) {
     return "?";
 }
 
-bool is_float(Fmi3Type t) { return t == Fmi3Type::float32 || t == Fmi3Type::float64; }
+bool is_float(Fmi3Type t) {
+    return t == Fmi3Type::float32 || t == Fmi3Type::float64;
+}
 
 }  // namespace
 
 void refuse_unsupported_fmi3(const fmi_loader::ModelDescription& md, const std::string& name) {
     if (!md.model_exchange && !md.co_simulation && md.scheduled_execution)
-        throw CosimError(name + ": the FMU offers only Scheduled Execution, which cosim does not support "
-                                "(FMI 3.0 Model Exchange and Co-Simulation are)");
+        throw CosimError(name +
+                         ": the FMU offers only Scheduled Execution, which cosim does not support "
+                         "(FMI 3.0 Model Exchange and Co-Simulation are)");
     for (const auto& v : md.model_variables) {
         if (v.fmi3_type == Fmi3Type::clock || !v.clocks.empty())
             throw CosimError(name + ": variable '" + v.name +
@@ -82,8 +85,8 @@ std::vector<std::uint8_t> unhex(const std::string& text, const std::string& what
 
 }  // namespace
 
-Fmi3Instance::Fmi3Instance(fmi_loader::Fmu& fmu, fmi_loader::FmuKind kind, std::string instance_name,
-                           bool event_mode, bool logging_on)
+Fmi3Instance::Fmi3Instance(fmi_loader::Fmu& fmu, fmi_loader::FmuKind kind, std::string instance_name, bool event_mode,
+                           bool logging_on)
     : fmu_(fmu),
       lib_((refuse_unsupported_fmi3(fmu.description(), instance_name), fmu.library3(kind))),
       view_(fmi_loader::scalar_view(fmu.description())),
@@ -94,9 +97,9 @@ Fmi3Instance::Fmi3Instance(fmi_loader::Fmu& fmu, fmi_loader::FmuKind kind, std::
     // FMI 3.0 passes the resources folder as a path with a trailing separator, not as a URI.
     const std::string resources = (fmu_.archive().directory() / "resources").string() + "/";
     if (co_simulation_)
-        instance_ = lib_->fmi3InstantiateCoSimulation(name_.c_str(), md.guid.c_str(), resources.c_str(), fmi3False,
-                                                      logging_on, event_mode_, fmi3False, nullptr, 0, this, logger,
-                                                      nullptr);
+        instance_ =
+            lib_->fmi3InstantiateCoSimulation(name_.c_str(), md.guid.c_str(), resources.c_str(), fmi3False, logging_on,
+                                              event_mode_, fmi3False, nullptr, 0, this, logger, nullptr);
     else
         instance_ = lib_->fmi3InstantiateModelExchange(name_.c_str(), md.guid.c_str(), resources.c_str(), fmi3False,
                                                        logging_on, this, logger);
@@ -125,7 +128,8 @@ void Fmi3Instance::check(int status, const char* function) {
 }
 
 const ScalarElement& Fmi3Instance::element(fmi2ValueReference vr) const {
-    if (vr >= view_.elements.size()) throw CosimError(name_ + ": no variable with value reference " + std::to_string(vr));
+    if (vr >= view_.elements.size())
+        throw CosimError(name_ + ": no variable with value reference " + std::to_string(vr));
     return view_.elements[vr];
 }
 
@@ -345,8 +349,8 @@ fmi2Integer Fmi3Instance::get_integer(fmi2ValueReference vr) {
     const std::int64_t x = read_integers(e)[e.offset];
     if (x < std::numeric_limits<fmi2Integer>::min() || x > std::numeric_limits<fmi2Integer>::max() ||
         (e.type == Fmi3Type::uint64 && static_cast<std::uint64_t>(x) > std::numeric_limits<fmi2Integer>::max()))
-        throw CosimError(name_ + "." + view_.description.model_variables[vr].name + ": the value " +
-                         std::to_string(x) + " is beyond the 32-bit Integer the master carries");
+        throw CosimError(name_ + "." + view_.description.model_variables[vr].name + ": the value " + std::to_string(x) +
+                         " is beyond the 32-bit Integer the master carries");
     return static_cast<fmi2Integer>(x);
 }
 
@@ -467,8 +471,7 @@ void Fmi3Instance::enter_event_mode() {
 }
 
 fmi2EventInfo Fmi3Instance::new_discrete_states() {
-    fmi3Boolean need = fmi3False, terminate = fmi3False, nominals = fmi3False, values = fmi3False,
-                defined = fmi3False;
+    fmi3Boolean need = fmi3False, terminate = fmi3False, nominals = fmi3False, values = fmi3False, defined = fmi3False;
     fmi3Float64 next = 0.0;
     check(lib_->fmi3UpdateDiscreteStates(instance_, &need, &terminate, &nominals, &values, &defined, &next),
           "fmi3UpdateDiscreteStates");

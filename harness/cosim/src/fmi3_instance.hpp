@@ -112,9 +112,9 @@ private:
     double start_time_ = 0.0;
     std::optional<double> stop_time_, tolerance_;
     std::vector<std::uint32_t> scratch_vr_;
-    std::vector<std::vector<double>> float_arrays_;        // by variable index, once written
-    std::vector<std::vector<std::int64_t>> int_arrays_;    // the same for integer arrays
-    std::vector<std::function<void()>> deferred_;          // discrete input sets for the next Event Mode
+    std::vector<std::vector<double>> float_arrays_;      // by variable index, once written
+    std::vector<std::vector<std::int64_t>> int_arrays_;  // the same for integer arrays
+    std::vector<std::function<void()>> deferred_;        // discrete input sets for the next Event Mode
     std::vector<std::pair<int, std::string>> messages_;
 };
 

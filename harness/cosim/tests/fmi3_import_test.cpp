@@ -153,8 +153,8 @@ void expect_types_travel(const SystemOptions& base) {
     Recorder rec_a(system, "a", {"label_out", "counter"});
     Recorder rec_b(system, "b", {"y32", "u64", "bin_out", "bin_in"});
     run(system, rec_b, 0.6, 0.3);
-    EXPECT_EQ(rec_b.at(2, 0), 6.0);    // 2 * (2 * 1.5)
-    EXPECT_EQ(rec_b.at(2, 1), 27.0);   // (7 + 10) + 10
+    EXPECT_EQ(rec_b.at(2, 0), 6.0);         // 2 * (2 * 1.5)
+    EXPECT_EQ(rec_b.at(2, 1), 27.0);        // (7 + 10) + 10
     EXPECT_EQ(rec_b.rows[2][2], "0102ab");  // reversed twice
     EXPECT_EQ(rec_b.rows[2][3], "ab0201");
     const auto& a = system.components()[system.component_index("a")];
@@ -248,10 +248,11 @@ TEST(CosimFmi3, UnsupportedFeaturesAreRefusedByName) {
                       "<Clock name=\"c\" valueReference=\"1\" causality=\"input\" intervalVariability=\"triggered\"/>")
                   .find("clocks are not supported"),
               std::string::npos);
-    EXPECT_NE(refusal("<CoSimulation modelIdentifier=\"m\"/>",
-                      "<String name=\"s\" valueReference=\"1\" causality=\"parameter\"><Dimension start=\"2\"/></String>")
-                  .find("arrays of String and Binary"),
-              std::string::npos);
+    EXPECT_NE(
+        refusal("<CoSimulation modelIdentifier=\"m\"/>",
+                "<String name=\"s\" valueReference=\"1\" causality=\"parameter\"><Dimension start=\"2\"/></String>")
+            .find("arrays of String and Binary"),
+        std::string::npos);
     EXPECT_EQ(refusal("<CoSimulation modelIdentifier=\"m\"/>", ""), "");
 }
 

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "fmi/vocabulary.hpp"
 #include "fmi_loader/loader_error.hpp"
 #include "fmi_loader/model_description.hpp"
 
@@ -103,32 +104,25 @@ public:
 
     Causality causality(const xmlNode* n) const {
         const auto v = attr(n, "causality");
-        if (!v || *v == "local") return Causality::local;  // default, section 2.2.7
-        if (*v == "parameter") return Causality::parameter;
-        if (*v == "calculatedParameter") return Causality::calculated_parameter;
-        if (*v == "input") return Causality::input;
-        if (*v == "output") return Causality::output;
-        if (*v == "independent") return Causality::independent;
+        if (!v) return Causality::local;  // default, section 2.2.7
+        if (const auto c = fmi_vocabulary::parse<Causality>(fmi_vocabulary::causalities, *v)) return *c;
         if (*v == "structuralParameter" && fmi3_) return Causality::structural_parameter;
         invalid(n, "unknown causality '" + *v + "'");
     }
 
     Variability variability(const xmlNode* n) const {
         const auto v = attr(n, "variability");
-        if (!v || *v == "continuous") return Variability::continuous;  // default, section 2.2.7
-        if (*v == "constant") return Variability::constant;
-        if (*v == "fixed") return Variability::fixed;
-        if (*v == "tunable") return Variability::tunable;
-        if (*v == "discrete") return Variability::discrete;
+        if (!v) return Variability::continuous;  // default, section 2.2.7
+        if (const auto x = fmi_vocabulary::parse<Variability>(fmi_vocabulary::variabilities, *v)) return *x;
         invalid(n, "unknown variability '" + *v + "'");
     }
 
     std::optional<Initial> initial(const xmlNode* n) const {
         const auto v = attr(n, "initial");
         if (!v) return std::nullopt;
-        if (*v == "exact") return Initial::exact;
-        if (*v == "approx") return Initial::approx;
-        if (*v == "calculated") return Initial::calculated;
+        // "none" is no word of the standard: the attribute is absent instead.
+        if (const auto i = fmi_vocabulary::parse<Initial>(fmi_vocabulary::initials, *v); i && *i != Initial::none)
+            return *i;
         invalid(n, "unknown initial '" + *v + "'");
     }
 

@@ -7,7 +7,6 @@
 
 namespace fmi_loader {
 
-
 std::filesystem::path Fmi3Library::binary_path(const std::filesystem::path& fmu_root,
                                                const std::string& model_identifier) {
     return fmu_root / "binaries" / "x86_64-linux" / (model_identifier + ".so");

@@ -13,58 +13,28 @@
 #include <sstream>
 
 #include "description_reader.hpp"
+#include "fmi/vocabulary.hpp"
 #include "fmi_loader/loader_error.hpp"
 
 namespace fmi_loader {
 
+// The words are the runtime's (fmi/vocabulary.hpp), in the order of the enums in model_description.hpp.
+static_assert(fmi_vocabulary::spelling(fmi_vocabulary::causalities, Causality::independent) == "independent");
+static_assert(fmi_vocabulary::spelling(fmi_vocabulary::variabilities, Variability::continuous) == "continuous");
+static_assert(fmi_vocabulary::spelling(fmi_vocabulary::initials, Initial::calculated) == "calculated");
+
 std::string_view to_string(Causality c) noexcept {
-    switch (c) {
-        case Causality::parameter:
-            return "parameter";
-        case Causality::calculated_parameter:
-            return "calculatedParameter";
-        case Causality::input:
-            return "input";
-        case Causality::output:
-            return "output";
-        case Causality::local:
-            return "local";
-        case Causality::independent:
-            return "independent";
-        case Causality::structural_parameter:
-            return "structuralParameter";
-    }
-    return "?";
+    // FMI 3.0's structural parameter is no word of FMI 2.0's list.
+    if (c == Causality::structural_parameter) return "structuralParameter";
+    return fmi_vocabulary::spelling(fmi_vocabulary::causalities, c);
 }
 
 std::string_view to_string(Variability v) noexcept {
-    switch (v) {
-        case Variability::constant:
-            return "constant";
-        case Variability::fixed:
-            return "fixed";
-        case Variability::tunable:
-            return "tunable";
-        case Variability::discrete:
-            return "discrete";
-        case Variability::continuous:
-            return "continuous";
-    }
-    return "?";
+    return fmi_vocabulary::spelling(fmi_vocabulary::variabilities, v);
 }
 
 std::string_view to_string(Initial i) noexcept {
-    switch (i) {
-        case Initial::none:
-            return "none";
-        case Initial::exact:
-            return "exact";
-        case Initial::approx:
-            return "approx";
-        case Initial::calculated:
-            return "calculated";
-    }
-    return "?";
+    return fmi_vocabulary::spelling(fmi_vocabulary::initials, i);
 }
 
 std::string_view to_string(VariableType t) noexcept {

@@ -40,7 +40,9 @@ std::optional<Fmi3Type> fmi3_type_of(const xmlNode* n, std::string_view suffix =
     return std::nullopt;
 }
 
-bool is_float(Fmi3Type t) { return t == Fmi3Type::float32 || t == Fmi3Type::float64; }
+bool is_float(Fmi3Type t) {
+    return t == Fmi3Type::float32 || t == Fmi3Type::float64;
+}
 
 }  // namespace
 
@@ -78,7 +80,8 @@ ModelDescription Reader::read3(const xmlNode* root) const {
         for (const xmlNode* c = n->children; c; c = c->next) {
             if (c->type != XML_ELEMENT_NODE) continue;
             const auto type = fmi3_type_of(c);
-            if (!type) invalid(c, std::string("unknown variable element <") + reinterpret_cast<const char*>(c->name) + ">");
+            if (!type)
+                invalid(c, std::string("unknown variable element <") + reinterpret_cast<const char*>(c->name) + ">");
             add_variable(md, variable3(c, *type, md));
         }
     }
@@ -200,7 +203,7 @@ ScalarVariable Reader::variable3(const xmlNode* n, Fmi3Type type, const ModelDes
     if (attr(n, "variability"))
         v.variability = variability(n);
     else
-        v.variability = parameter_like ? Variability::fixed
+        v.variability = parameter_like   ? Variability::fixed
                         : is_float(type) ? Variability::continuous
                                          : Variability::discrete;
     if (!is_valid_combination(v.causality, v.variability))
@@ -216,8 +219,8 @@ ScalarVariable Reader::variable3(const xmlNode* n, Fmi3Type type, const ModelDes
     const auto init = initial(n);
     v.initial_given = init.has_value();
     // The FMI 3.0 table gives inputs initial = exact (FMI 2.0: no initial).
-    const Initial fallback = v.causality == Causality::input ? Initial::exact
-                                                             : default_initial(v.causality, v.variability);
+    const Initial fallback =
+        v.causality == Causality::input ? Initial::exact : default_initial(v.causality, v.variability);
     v.initial = init ? *init : fallback;
 
     v.declared_type = text(n, "declaredType");

@@ -37,10 +37,10 @@ TEST(LoaderLibrary3, RequiredModelExchangeNamesMissingAreAllReported) {
     } catch (const LoaderError& e) {
         EXPECT_EQ(e.code(), LoaderErrc::missing_symbol);
         const std::string what = e.what();
-        for (const char* name : {"fmi3InstantiateModelExchange", "fmi3EnterContinuousTimeMode",
-                                 "fmi3CompletedIntegratorStep", "fmi3SetTime", "fmi3SetContinuousStates",
-                                 "fmi3GetContinuousStateDerivatives", "fmi3GetEventIndicators",
-                                 "fmi3GetContinuousStates", "fmi3GetNominalsOfContinuousStates"})
+        for (const char* name :
+             {"fmi3InstantiateModelExchange", "fmi3EnterContinuousTimeMode", "fmi3CompletedIntegratorStep",
+              "fmi3SetTime", "fmi3SetContinuousStates", "fmi3GetContinuousStateDerivatives", "fmi3GetEventIndicators",
+              "fmi3GetContinuousStates", "fmi3GetNominalsOfContinuousStates"})
             EXPECT_NE(what.find(name), std::string::npos) << name << " not named in: " << what;
         EXPECT_EQ(what.find("fmi3GetClock"), std::string::npos) << "an optional name reported: " << what;
     }

@@ -131,7 +131,7 @@ TEST(LoaderModelDescription3, StartValuesAndBinaryAttributes) {
     ASSERT_EQ(bin->start_values.size(), 1u);
     EXPECT_EQ(bin->start_values[0], "0a0b");
     EXPECT_EQ(bin->max_size, 4u);
-    EXPECT_EQ(bin->mime_type, "application/octet-stream");  // the schema's default
+    EXPECT_EQ(bin->mime_type, "application/octet-stream");   // the schema's default
     EXPECT_EQ(md.find_variable("m")->start, "1 2 3 4 5 6");  // an array's start stays one list
 }
 
@@ -193,23 +193,24 @@ TEST(LoaderModelDescription3, ModelStructureReferencesBecomeIndices) {
 }
 
 TEST(LoaderModelDescription3, ScheduledExecutionIsReadSoItCanBeNamed) {
-    const auto md = parse_model_description(with(
-        fmi3_xml, "<DefaultExperiment", "<ScheduledExecution modelIdentifier=\"probe3\"/>\n  <DefaultExperiment"));
+    const auto md = parse_model_description(
+        with(fmi3_xml, "<DefaultExperiment", "<ScheduledExecution modelIdentifier=\"probe3\"/>\n  <DefaultExperiment"));
     ASSERT_TRUE(md.scheduled_execution);
     EXPECT_EQ(md.scheduled_execution->model_identifier, "probe3");
 }
 
 TEST(LoaderModelDescription3, BrokenDescriptionsAreRefusedWithTheCause) {
-    EXPECT_NE(error_of(with(fmi3_xml, "valueReference=\"15\"/>", "valueReference=\"14\"/>"))
-                  .find("share valueReference 14"),
-              std::string::npos);
+    EXPECT_NE(
+        error_of(with(fmi3_xml, "valueReference=\"15\"/>", "valueReference=\"14\"/>")).find("share valueReference 14"),
+        std::string::npos);
     EXPECT_NE(error_of(with(fmi3_xml, "<Dimension valueReference=\"7\"/></Float64>\n    <Float64 name=\"der(x)\"",
                             "<Dimension valueReference=\"3\"/></Float64>\n    <Float64 name=\"der(x)\""))
                   .find("not a UInt64 structural parameter"),
               std::string::npos);
-    EXPECT_NE(error_of(with(fmi3_xml, "<EventIndicator valueReference=\"15\"/>", "<EventIndicator valueReference=\"99\"/>"))
-                  .find("valueReference 99 names no variable"),
-              std::string::npos);
+    EXPECT_NE(
+        error_of(with(fmi3_xml, "<EventIndicator valueReference=\"15\"/>", "<EventIndicator valueReference=\"99\"/>"))
+            .find("valueReference 99 names no variable"),
+        std::string::npos);
     EXPECT_NE(error_of(with(fmi3_xml, "<Int8 name=\"i8\" valueReference=\"4\" causality=\"output\"/>",
                             "<Int8 name=\"i8\" valueReference=\"4\" causality=\"output\" variability=\"continuous\"/>"))
                   .find("only Float32 and Float64 may be continuous"),

@@ -48,9 +48,13 @@ static fmi3Status fail(Probe* p, const char* why) {
     return fmi3Error;
 }
 
-static void compute(Probe* p) { snprintf(p->s.label_out, sizeof p->s.label_out, "%s!", p->s.label); }
+static void compute(Probe* p) {
+    snprintf(p->s.label_out, sizeof p->s.label_out, "%s!", p->s.label);
+}
 
-static double next_tick(const Values* s) { return (floor(s->time / TICK + 1e-9) + 1.0) * TICK; }
+static double next_tick(const Values* s) {
+    return (floor(s->time / TICK + 1e-9) + 1.0) * TICK;
+}
 
 static Probe* instantiate(fmi3String token, int cs, int event_mode, fmi3InstanceEnvironment env,
                           fmi3LogMessageCallback log) {
@@ -69,15 +73,17 @@ static Probe* instantiate(fmi3String token, int cs, int event_mode, fmi3Instance
     return p;
 }
 
-EXPORT const char* fmi3GetVersion(void) { return fmi3Version; }
+EXPORT const char* fmi3GetVersion(void) {
+    return fmi3Version;
+}
 EXPORT fmi3Status fmi3SetDebugLogging(fmi3Instance i, fmi3Boolean on, size_t n, const fmi3String c[]) {
     (void)i, (void)on, (void)n, (void)c;
     return fmi3OK;
 }
 
 EXPORT fmi3Instance fmi3InstantiateModelExchange(fmi3String name, fmi3String token, fmi3String resources,
-                                                 fmi3Boolean visible, fmi3Boolean logging,
-                                                 fmi3InstanceEnvironment env, fmi3LogMessageCallback log) {
+                                                 fmi3Boolean visible, fmi3Boolean logging, fmi3InstanceEnvironment env,
+                                                 fmi3LogMessageCallback log) {
     (void)name, (void)resources, (void)visible, (void)logging;
     return instantiate(token, 0, 0, env, log);
 }
@@ -92,7 +98,9 @@ EXPORT fmi3Instance fmi3InstantiateCoSimulation(fmi3String name, fmi3String toke
     return instantiate(token, 1, event_mode, env, log);
 }
 
-EXPORT void fmi3FreeInstance(fmi3Instance i) { free(i); }
+EXPORT void fmi3FreeInstance(fmi3Instance i) {
+    free(i);
+}
 
 EXPORT fmi3Status fmi3EnterInitializationMode(fmi3Instance i, fmi3Boolean tol_defined, fmi3Float64 tol,
                                               fmi3Float64 start, fmi3Boolean stop_defined, fmi3Float64 stop) {
@@ -286,7 +294,7 @@ EXPORT fmi3Status fmi3DoStep(fmi3Instance i, fmi3Float64 t, fmi3Float64 step, fm
         if (fabs(next - tick) <= 1e-9) {
             p->tick_pending = 1;
             if (p->event_mode_used && fabs(next - end) <= 1e-9) {
-                *event_needed = fmi3True;  /* handled in Event Mode by the importer */
+                *event_needed = fmi3True; /* handled in Event Mode by the importer */
                 break;
             }
             handle_events(p);
@@ -322,15 +330,32 @@ EXPORT fmi3Status fmi3GetFloat64(fmi3Instance i, const fmi3ValueReference vr[], 
         }
         if (at + 1 > n) return fail(p, "fmi3GetFloat64: nValues too small");
         switch (vr[j]) {
-            case 0: out[at++] = s->time; break;
-            case 4: out[at++] = s->h; break;
-            case 5: out[at++] = s->v; break;
-            case 6: out[at++] = s->v; break;
-            case 7: out[at++] = s->resting ? 0 : -s->g; break;
-            case 8: out[at++] = s->g; break;
-            case 9: out[at++] = s->e; break;
-            case 21: out[at++] = s->w[0] + 2 * s->w[1] + 3 * s->w[2]; break;
-            default: return fail(p, "fmi3GetFloat64: no such Float64");
+            case 0:
+                out[at++] = s->time;
+                break;
+            case 4:
+                out[at++] = s->h;
+                break;
+            case 5:
+                out[at++] = s->v;
+                break;
+            case 6:
+                out[at++] = s->v;
+                break;
+            case 7:
+                out[at++] = s->resting ? 0 : -s->g;
+                break;
+            case 8:
+                out[at++] = s->g;
+                break;
+            case 9:
+                out[at++] = s->e;
+                break;
+            case 21:
+                out[at++] = s->w[0] + 2 * s->w[1] + 3 * s->w[2];
+                break;
+            default:
+                return fail(p, "fmi3GetFloat64: no such Float64");
         }
     }
     return at == n ? fmi3OK : fail(p, "fmi3GetFloat64: nValues does not match");
@@ -392,7 +417,9 @@ EXPORT fmi3Status fmi3SetFloat32(fmi3Instance i, const fmi3ValueReference vr[], 
 }
 
 /* A discrete input changes in Event Mode only when Co-Simulation uses event mode (FMI 3.0.2, 4.2.4). */
-static int discrete_input_refused(const Probe* p) { return p->co_simulation && p->event_mode_used && p->mode == STEP; }
+static int discrete_input_refused(const Probe* p) {
+    return p->co_simulation && p->event_mode_used && p->mode == STEP;
+}
 
 EXPORT fmi3Status fmi3GetInt8(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr, fmi3Int8 out[], size_t n) {
     Probe* p = i;
@@ -417,8 +444,7 @@ EXPORT fmi3Status fmi3SetInt16(fmi3Instance i, const fmi3ValueReference vr[], si
     return fmi3OK;
 }
 
-EXPORT fmi3Status fmi3GetUInt64(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr, fmi3UInt64 out[],
-                                size_t n) {
+EXPORT fmi3Status fmi3GetUInt64(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr, fmi3UInt64 out[], size_t n) {
     Probe* p = i;
     if (nvr != 1 || n != 1 || vr[0] != 14) return fail(p, "fmi3GetUInt64: only u64");
     out[0] = (fmi3UInt64)(p->s.i16 + 10);
@@ -468,8 +494,7 @@ EXPORT fmi3Status fmi3SetBinary(fmi3Instance i, const fmi3ValueReference vr[], s
     return fmi3OK;
 }
 
-EXPORT fmi3Status fmi3GetString(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr, fmi3String out[],
-                                size_t n) {
+EXPORT fmi3Status fmi3GetString(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr, fmi3String out[], size_t n) {
     Probe* p = i;
     if (nvr != 1 || n != 1) return fail(p, "fmi3GetString: scalars only");
     compute(p);
@@ -485,7 +510,8 @@ EXPORT fmi3Status fmi3GetString(fmi3Instance i, const fmi3ValueReference vr[], s
 EXPORT fmi3Status fmi3SetString(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr, const fmi3String in[],
                                 size_t n) {
     Probe* p = i;
-    if (nvr != 1 || n != 1 || vr[0] != 18 || p->mode != INSTANTIATED) return fail(p, "fmi3SetString: label, before init");
+    if (nvr != 1 || n != 1 || vr[0] != 18 || p->mode != INSTANTIATED)
+        return fail(p, "fmi3SetString: label, before init");
     if (strlen(in[0]) >= sizeof p->s.label) return fail(p, "fmi3SetString: label longer than 63 characters");
     strcpy(p->s.label, in[0]);
     return fmi3OK;
@@ -538,10 +564,10 @@ EXPORT fmi3Status fmi3DeserializeFMUState(fmi3Instance i, const fmi3Byte bytes[]
 }
 
 /* The remaining required names: types this model does not have. */
-#define ABSENT(name, type)                                                                                \
+#define ABSENT(name, type)                                                                                  \
     EXPORT fmi3Status name(fmi3Instance i, const fmi3ValueReference vr[], size_t nvr, type v[], size_t n) { \
-        (void)vr, (void)nvr, (void)v, (void)n;                                                            \
-        return fail(i, #name ": the model has no such variable");                                         \
+        (void)vr, (void)nvr, (void)v, (void)n;                                                              \
+        return fail(i, #name ": the model has no such variable");                                           \
     }
 ABSENT(fmi3GetUInt8, fmi3UInt8)
 ABSENT(fmi3GetUInt16, fmi3UInt16)
