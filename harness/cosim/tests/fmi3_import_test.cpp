@@ -8,11 +8,14 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <tuple>
 
 #include "cosim_error.hpp"
 #include "execution.hpp"
 #include "fmi3_instance.hpp"
+#include "ssp_archive.hpp"
 #include "system.hpp"
 #include "system_description.hpp"
 
@@ -228,6 +231,76 @@ TEST(CosimFmi3, FmuStateReturnsToTheSnapshot) {
     EXPECT_EQ(p.get_real(vr), first);
     p.free_state(snapshot);
     p.free_state(restored);
+}
+
+// The runtime's own test blocks (harness/cosim/tests/fmus) as FMI 3.0 archives (test_fmus/fmi3/) run
+// bit for bit as their FMI 2.0 archives: the ball's state and time events, and an FMI 3.0 integrator in
+// a feedback loop with an FMI 2.0 gain (x' = -0.5 x: exp(-0.5 t)).
+TEST(CosimFmi3, RuntimeBlocksRunAsTheirFmi2ArchivesAndMixWithThem) {
+    const auto ball = [](const std::vector<std::filesystem::path>& dirs) {
+        Ssd ssd(component("ball", "test_ball"));
+        SystemOptions o = options();
+        o.fmu_dirs = dirs;
+        System system(read_system_description(ssd.path), o);
+        Recorder rec(system, "ball", {"h", "v", "bounces", "ticks"});
+        const auto stats = run(system, rec, 1.5, 0.05);
+        return std::tuple{rec.rows, stats.state_events, stats.time_events};
+    };
+    const auto fmi2 = ball({fmu_dir});
+    const auto fmi3 = ball({fmu_dir / "fmi3"});
+    EXPECT_EQ(std::get<0>(fmi3), std::get<0>(fmi2));
+    EXPECT_EQ(std::get<1>(fmi3), std::get<1>(fmi2));
+    EXPECT_EQ(std::get<2>(fmi3), std::get<2>(fmi2));
+    EXPECT_EQ(std::get<1>(fmi2), 2);  // impacts at 0.4515 s and 1.174 s (e = 0.8)
+
+    const auto loop = [](const std::vector<std::filesystem::path>& dirs) {
+        Ssd ssd(component("int", "test_integrator") + component("gain", "test_gain"),
+                connect("int", "y", "gain", "u") + connect("gain", "y", "int", "u"));
+        SystemOptions o = options();
+        o.fmu_dirs = dirs;
+        o.settings = {"gain.k=-0.5"};
+        System system(read_system_description(ssd.path), o);
+        Recorder rec(system, "int", {"y"});
+        run(system, rec, 2.0, 0.5);
+        return rec.rows;
+    };
+    // Only the integrator's FMI 3.0 archive in the first folder searched: it runs beside the FMI 2.0 gain.
+    const auto mixed_dir = std::filesystem::temp_directory_path() / "cosim_fmi3_mixed";
+    std::filesystem::create_directories(mixed_dir);
+    std::filesystem::copy_file(fmu_dir / "fmi3" / "test_integrator.fmu", mixed_dir / "test_integrator.fmu",
+                               std::filesystem::copy_options::overwrite_existing);
+    const auto mixed = loop({mixed_dir, fmu_dir});
+    std::filesystem::remove_all(mixed_dir);
+    EXPECT_EQ(mixed, loop({fmu_dir}));
+    ASSERT_EQ(mixed.size(), 5u);
+    for (std::size_t i = 0; i < mixed.size(); ++i) EXPECT_NEAR(std::stod(mixed[i][0]), std::exp(-0.25 * i), 1e-6);
+}
+
+// The .ssp packer takes FMI 3.0 components (an Enumeration bound by name, an array element connected)
+// and the packed system runs as the .ssd does, value for value.
+TEST(CosimFmi3, PackedSystemWithFmi3ComponentsRunsAsTheSsd) {
+    Ssd ssd(
+        "<ssd:Component name=\"p\" source=\"fmi3_probe.fmu\"><ssd:ParameterBindings><ssd:ParameterBinding>"
+        "<ssd:ParameterValues><ssv:ParameterSet xmlns:ssv=\"http://ssp-standard.org/SSP1/"
+        "SystemStructureParameterValues\" version=\"1.0\" name=\"p\"><ssv:Parameters>"
+        "<ssv:Parameter name=\"pace\"><ssv:Enumeration value=\"double\"/></ssv:Parameter>"
+        "</ssv:Parameters></ssv:ParameterSet></ssd:ParameterValues></ssd:ParameterBinding>"
+        "</ssd:ParameterBindings></ssd:Component>" +
+            component("gain", "test_gain"),
+        connect("p", "x[1]", "gain", "u"));
+    const auto ssp = std::filesystem::temp_directory_path() / "cosim_fmi3_packed.ssp";
+    std::ostringstream log;
+    pack_system(ssd.path, ssp, PackOptions{{fmu_dir}, 0.01}, log);
+    const auto rows = [](const std::filesystem::path& file) {
+        System system(read_system_description(file), options());
+        Recorder rec(system, "p", {"counter", "x[1]"});
+        run(system, rec, 1.1, 0.55);
+        return rec.rows;
+    };
+    const auto packed = rows(ssp);
+    std::filesystem::remove(ssp);
+    EXPECT_EQ(packed, rows(ssd.path));
+    EXPECT_EQ(packed.back()[0], "8");  // four ticks of two (pace = double from the binding)
 }
 
 TEST(CosimFmi3, UnsupportedFeaturesAreRefusedByName) {
