@@ -141,6 +141,7 @@ void Fmi3Instance::setup_experiment(double start_time, std::optional<double> sto
 }
 
 void Fmi3Instance::enter_initialization_mode() {
+    instantiated_ = false;
     check(lib_->fmi3EnterInitializationMode(instance_, tolerance_.has_value(), tolerance_.value_or(0.0), start_time_,
                                             stop_time_.has_value(), stop_time_.value_or(0.0)),
           "fmi3EnterInitializationMode");
@@ -279,13 +280,29 @@ void Fmi3Instance::write_integers(const ScalarElement& e, const std::vector<std:
 
 std::vector<double>& Fmi3Instance::float_array(const ScalarElement& e) {
     auto& values = float_arrays_[e.variable];
-    if (values.empty()) read_floats(e, values);
+    if (!values.empty()) return values;
+    if (!instantiated_) {
+        read_floats(e, values);
+        return values;
+    }
+    // Instantiated Mode allows no get: the values are the start values until the FMU is initialized.
+    for (std::size_t k = 0; k < e.count; ++k)
+        values.push_back(
+            view_.description.model_variables[view_.first_element[e.variable] + k].start_as_real().value_or(0.0));
     return values;
 }
 
 std::vector<std::int64_t>& Fmi3Instance::int_array(const ScalarElement& e) {
     auto& values = int_arrays_[e.variable];
-    if (values.empty()) values = read_integers(e);
+    if (!values.empty()) return values;
+    if (!instantiated_) {
+        values = read_integers(e);
+        return values;
+    }
+    for (std::size_t k = 0; k < e.count; ++k) {
+        const auto& v = view_.description.model_variables[view_.first_element[e.variable] + k];
+        values.push_back(static_cast<std::int64_t>(v.start_as_real().value_or(0.0)));
+    }
     return values;
 }
 
@@ -425,7 +442,12 @@ void Fmi3Instance::set_boolean(fmi2ValueReference vr, bool x) {
     set_or_defer(vr, [this, &e, x] {
         // Booleans are few and arrays of them rare: the whole array is read back before one is changed.
         const auto values = std::make_unique<fmi3Boolean[]>(e.count);
-        if (e.count > 1)
+        if (instantiated_)
+            for (std::size_t k = 0; k < e.count; ++k)
+                values[k] =
+                    view_.description.model_variables[view_.first_element[e.variable] + k].start_as_boolean().value_or(
+                        false);
+        else if (e.count > 1)
             check(lib_->fmi3GetBoolean(instance_, &e.value_reference, 1, values.get(), e.count), "fmi3GetBoolean");
         values[e.offset] = x;
         check(lib_->fmi3SetBoolean(instance_, &e.value_reference, 1, values.get(), e.count), "fmi3SetBoolean");

@@ -207,6 +207,23 @@ TEST(CosimFmi3, ArraysConnectWholeOrByElement) {
     EXPECT_THROW(wsum("x", "u32"), CosimError);  // 3 elements to 1
 }
 
+// An element of an array parameter set before initialization (where FMI 3.0 allows no get: the other
+// elements keep their start values): k = (1, 5, 3) makes x[2] = exp(-5 t).
+TEST(CosimFmi3, ArrayParameterElementIsSetBeforeInitialization) {
+    Ssd ssd(component("p", "fmi3_probe"));
+    SystemOptions o = options();
+    o.settings = {"p.k[2]=5"};
+    System system(read_system_description(ssd.path), o);
+    Recorder rec(system, "p", {"x[1]", "x[2]", "x[3]"});
+    run(system, rec, 1.0, 0.5);
+    for (std::size_t i = 0; i < rec.times.size(); ++i) {
+        const double t = rec.times[i];
+        EXPECT_NEAR(rec.at(i, 0), std::exp(-t), 1e-6);
+        EXPECT_NEAR(rec.at(i, 1), std::exp(-5 * t), 1e-6);
+        EXPECT_NEAR(rec.at(i, 2), std::exp(-3 * t), 1e-6);
+    }
+}
+
 // FMU state: back to a snapshot and on again gives the same values bit for bit, also through the
 // serialized form.
 TEST(CosimFmi3, FmuStateReturnsToTheSnapshot) {

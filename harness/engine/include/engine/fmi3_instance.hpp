@@ -108,6 +108,7 @@ private:
     std::string name_;
     bool co_simulation_ = false;
     bool event_mode_ = false;
+    bool instantiated_ = true;  // before fmi3EnterInitializationMode: no get allowed
     bool in_step_mode_ = false;
     bool terminate_requested_ = false;
     void* instance_ = nullptr;

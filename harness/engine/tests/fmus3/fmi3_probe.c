@@ -319,6 +319,7 @@ EXPORT fmi3Status fmi3GetFloat64(fmi3Instance i, const fmi3ValueReference vr[], 
     Probe* p = i;
     const Values* s = &p->s;
     size_t at = 0;
+    if (p->mode == INSTANTIATED) return fail(p, "fmi3GetFloat64: not allowed in Instantiated (FMI 3.0.2, 2.3.1)");
     for (size_t j = 0; j < nvr; ++j) {
         const double dx[3] = {-s->k[0] * s->x[0], -s->k[1] * s->x[1], -s->k[2] * s->x[2]};
         const double* array = vr[j] == 1 ? s->k : vr[j] == 2 ? s->x : vr[j] == 3 ? dx : vr[j] == 20 ? s->w : NULL;
