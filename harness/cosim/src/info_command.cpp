@@ -17,7 +17,8 @@ void print_system_info(const std::filesystem::path& path, std::ostream& out) {
         << d.connections.size() << " connections\n";
     for (const auto& c : d.components) {
         out << "  " << c.name << "  " << c.source << (c.bridge ? "  (hardware bridge)" : "") << "\n";
-        for (const auto& p : c.parameters) out << "      " << p.name << " = " << p.value << "  (" << p.type << ")\n";
+        for (const auto& p : c.parameters)
+            out << "      " << p.variable << " = " << p.value << "  (" << p.ssv_type << ")\n";
     }
 }
 }  // namespace

@@ -2,13 +2,14 @@
 
 #include <algorithm>
 #include <cstring>
-#include <map>
+#include <set>
 
 #include "connector_elements.hpp"
 #include "engine/cosim_error.hpp"
 #include "engine/fmi2_instance.hpp"
 #include "engine/fmi3_instance.hpp"
 #include "engine/hardware_bridge.hpp"
+#include "engine/import_cache.hpp"
 #include "engine/ssp_archive.hpp"
 
 namespace cosim {
@@ -102,10 +103,10 @@ std::filesystem::path System::resolve_source(const std::string& source, const Sy
 
 void System::load_components(const SystemOptions& options) {
     std::size_t states = 0, indicators = 0;
-    // Each FMU file is unpacked once and shared by the components made from it (unless it may be
-    // instantiated only once per process); the loader's max_total_bytes counts the whole system: the
-    // .ssp's own unpacked bytes and every FMU's.
-    std::map<std::filesystem::path, std::shared_ptr<fmi_loader::Fmu>> unpacked;
+    // Each FMU file is imported once per process (import_cache.hpp) and shared by the components made
+    // from it; the loader's max_total_bytes counts the whole system: the .ssp's own unpacked bytes and
+    // every FMU's.
+    std::set<const fmi_loader::Fmu*> counted;
     fmi_loader::Limits budget;
     if (description_.archive)
         budget.max_total_bytes -= std::min(budget.max_total_bytes, unpacked_bytes(description_.archive->directory()));
@@ -115,22 +116,9 @@ void System::load_components(const SystemOptions& options) {
                 throw CosimError(description_.file.string() + ": two components named '" + cd.name + "'");
         Component c;
         c.name = cd.name;
-        const auto source = resolve_source(cd.source, options);
-        std::error_code ec;
-        auto key = std::filesystem::canonical(source, ec);
-        if (ec) key = source;
-        auto& shared = unpacked[key];
-        const auto once = [](const fmi_loader::ModelDescription& d) {
-            return (d.model_exchange && d.model_exchange->can_be_instantiated_only_once_per_process) ||
-                   (d.co_simulation && d.co_simulation->can_be_instantiated_only_once_per_process);
-        };
-        if (shared && !once(shared->description())) {
-            c.fmu = shared;
-        } else {
-            c.fmu = std::make_shared<fmi_loader::Fmu>(source, budget);
+        c.fmu = import_fmu(resolve_source(cd.source, options), budget);
+        if (counted.insert(c.fmu.get()).second)
             budget.max_total_bytes -= std::min(budget.max_total_bytes, unpacked_bytes(c.fmu->archive().directory()));
-            shared = c.fmu;
-        }
         const auto& md = c.fmu->description();
         const bool asked_cs = std::find(options.co_simulation.begin(), options.co_simulation.end(), cd.name) !=
                               options.co_simulation.end();
@@ -475,7 +463,7 @@ void System::initialize(double start_time, std::optional<double> stop_time) {
     for (std::size_t i = 0; i < components_.size(); ++i) {
         auto& c = components_[i];
         c.instance->setup_experiment(start_time, stop_time, tolerance_);
-        for (const auto& p : description_.components[i].parameters) c.instance->apply({"", p.name, p.value, p.type});
+        for (const auto& p : description_.components[i].parameters) c.instance->apply(p);
         for (const auto& [index, setting] : settings_)
             if (index == i) c.instance->apply(setting);
     }

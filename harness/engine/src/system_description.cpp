@@ -116,16 +116,17 @@ const xmlNode* type_child(const xmlNode* n) {
     return nullptr;
 }
 
-void read_parameter_set(const xmlNode* set, const std::filesystem::path& file, std::vector<ParameterValue>& out) {
+void read_parameter_set(const xmlNode* set, const std::filesystem::path& file, std::vector<Setting>& out) {
     for_children(first_child(set, "Parameters"), "Parameter", [&](const xmlNode* p) {
         const xmlNode* t = type_child(p);
         if (!t) throw CosimError(file.string() + ":" + std::to_string(p->line) + ": parameter without a typed value");
-        out.push_back({required(p, "name", file), reinterpret_cast<const char*>(t->name), required(t, "value", file)});
+        out.push_back(
+            {"", required(p, "name", file), required(t, "value", file), reinterpret_cast<const char*>(t->name)});
     });
 }
 
 void read_bindings(const xmlNode* component, const std::filesystem::path& file, const fmi_loader::FmuArchive* archive,
-                   std::vector<ParameterValue>& out, std::vector<std::filesystem::path>& parameter_files) {
+                   std::vector<Setting>& out, std::vector<std::filesystem::path>& parameter_files) {
     for_children(first_child(component, "ParameterBindings"), "ParameterBinding", [&](const xmlNode* binding) {
         if (auto prefix = attribute(binding, "prefix"); prefix && !prefix->empty())
             throw CosimError(file.string() + ":" + std::to_string(binding->line) +

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/setting.hpp"
 #include "fmi_loader/fmu_archive.hpp"
 
 namespace cosim {
@@ -25,12 +26,6 @@ struct ConnectorDescription {
     ConnectorKind kind = ConnectorKind::unspecified;
     std::string type;  // "Real", "Integer", "Boolean", "String", "Enumeration" or "" when not given
     std::string unit;
-};
-
-struct ParameterValue {
-    std::string name;
-    std::string type;   // "Real", "Integer", "Boolean", "String", "Enumeration"
-    std::string value;  // as written
 };
 
 // A component run on external hardware instead of its FMU (README of harness/bridge): the .ssd
@@ -61,7 +56,7 @@ struct ComponentDescription {
     std::string name;
     std::string source;  // as written in the .ssd
     std::vector<ConnectorDescription> connectors;
-    std::vector<ParameterValue> parameters;
+    std::vector<Setting> parameters;  // its parameter bindings: variable, value and SSV type as written
     std::optional<BridgeDescription> bridge;
     std::optional<ExecutionHint> execution;
 };
