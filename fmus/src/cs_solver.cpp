@@ -72,12 +72,26 @@ bool CsSolver::locate_without_states(double t_stop) {
     return crossing.has_value();
 }
 
-CsSolver::Outcome CsSolver::advance(double t_end, HostEvents host_events) {
+CsSolver::Outcome CsSolver::advance(double t_end, HostEvents host_events,
+                                    const std::function<bool(double)>& host_wants) {
     const double tiny = 1e-12 * std::max(1.0, std::abs(t_end));
+    // Whether the event at the current time is the host's (see HostEvents).
+    auto hosts = [&](bool at_end) {
+        switch (host_events) {
+            case HostEvents::none:
+                return false;
+            case HostEvents::at_end:
+                return at_end;
+            case HostEvents::all:
+                return true;
+            case HostEvents::ask:
+                return at_end || host_wants(runner_.time());
+        }
+        return false;
+    };
     for (;;) {
         if (runner_.time_event_due()) {
-            const bool at_end = runner_.time() >= t_end - tiny;
-            if (host_events == HostEvents::all || (host_events == HostEvents::at_end && at_end)) {
+            if (hosts(runner_.time() >= t_end - tiny)) {
                 restart_needed_ = true;  // the host's discrete update may make the right-hand side jump
                 return Outcome::event_pending;
             }
@@ -97,7 +111,7 @@ CsSolver::Outcome CsSolver::advance(double t_end, HostEvents host_events) {
         const bool state_event = cvode_ ? integrate_to(t_stop) : locate_without_states(t_stop);
         if (state_event) {
             ++stats_.state_events;
-            if (host_events == HostEvents::all) {
+            if (hosts(false)) {
                 restart_needed_ = true;
                 return Outcome::event_pending;
             }

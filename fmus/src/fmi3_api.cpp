@@ -6,7 +6,8 @@
 // left only by fmi3SetFMUState, fmi3Reset or fmi3FreeInstance.
 // Not offered, each refused with a message naming it: Scheduled Execution, clocks, Configuration and
 // Reconfiguration Mode (no structural parameters), directional and adjoint derivatives, output
-// derivatives, fmi3EvaluateDiscreteStates, the intermediate-update callback.
+// derivatives, fmi3EvaluateDiscreteStates, variables accessed in Intermediate Update Mode (the
+// intermediate-update callback is called at events only, to let the host request an early return).
 #include <mutex>
 #include <new>
 #include <type_traits>
@@ -148,9 +149,9 @@ fmi3Instance fmi3InstantiateCoSimulation(fmi3String instanceName, fmi3String ins
                                          fmi3Boolean, fmi3Boolean loggingOn, fmi3Boolean eventModeUsed,
                                          fmi3Boolean earlyReturnAllowed, const fmi3ValueReference[], size_t,
                                          fmi3InstanceEnvironment environment, fmi3LogMessageCallback logMessage,
-                                         fmi3IntermediateUpdateCallback) {
-    return instantiate(instanceName, instantiationToken, Kind::co_simulation, {eventModeUsed, earlyReturnAllowed},
-                       loggingOn, environment, logMessage);
+                                         fmi3IntermediateUpdateCallback intermediateUpdate) {
+    return instantiate(instanceName, instantiationToken, Kind::co_simulation,
+                       {eventModeUsed, earlyReturnAllowed, intermediateUpdate}, loggingOn, environment, logMessage);
 }
 
 fmi3Instance fmi3InstantiateScheduledExecution(fmi3String instanceName, fmi3String, fmi3String, fmi3Boolean,

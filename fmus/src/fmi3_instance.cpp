@@ -138,27 +138,22 @@ void Instance3::get_float64(std::span<const fmi3ValueReference> vr, std::span<fm
     std::size_t at = 0;
     for (const fmi3ValueReference r : vr) {
         // Time and the event indicators are no table variables; the rest is read a variable at a time.
-        std::size_t n = 0;
-        if (r == view_.time_reference()) {
-            n = 1;
-        } else if (view_.event_indicator_count() > 0 && r == view_.event_indicators_reference()) {
-            n = view_.event_indicator_count();
-        } else {
-            const Fmi3Variable& v = variable(r);
-            const Variable& first = table_.variables()[v.first];
-            if (first.type != ValueType::Real)
-                throw Error("value reference " + std::to_string(r) + " is " + describe(first) + ", not Float64");
-            n = v.count;
-        }
+        const bool time = r == view_.time_reference();
+        const bool indicators = !time && view_.event_indicator_count() > 0 && r == view_.event_indicators_reference();
+        const Fmi3Variable* v = time || indicators ? nullptr : &variable(r);
+        if (v && table_.variables()[v->first].type != ValueType::Real)
+            throw Error("value reference " + std::to_string(r) + " is " + describe(table_.variables()[v->first]) +
+                        ", not Float64");
+        const std::size_t n = time ? 1 : indicators ? view_.event_indicator_count() : v->count;
         if (at + n > values.size())
             throw Error("fmi3GetFloat64: nValues = " + std::to_string(values.size()) +
                         " is fewer than the values named");
-        if (r == view_.time_reference())
+        if (time)
             values[at] = inner_.time();
-        else if (n == view_.event_indicator_count() && r == view_.event_indicators_reference())
+        else if (indicators)
             inner_.get_event_indicators(values.subspan(at, n));
         else
-            inner_.get_real(view_.element_references(variable(r)), values.data() + at);
+            inner_.get_real(view_.element_references(*v), values.data() + at);
         at += n;
     }
     if (at != values.size())
@@ -288,11 +283,29 @@ std::size_t Instance3::state_count() const {
 Instance3::StepResult Instance3::do_step(double current_time, double step_size) {
     // With event mode the host runs the discrete updates: the step stops at an event inside it when the
     // host allows an early return, and leaves one due at its end in any case.
+    // An intermediate-update callback decides at each event inside the step (canReturnEarly): the step
+    // stops there when the host requests an early return, else the event is handled inside. The
+    // step stops at the event's time whatever earlyReturnTime the host names: the event needs the
+    // host's Event Mode there.
     using H = CsSolver::HostEvents;
-    const H host_events = !options_.event_mode_used ? H::none : (options_.early_return_allowed ? H::all : H::at_end);
+    const bool ask = options_.event_mode_used && options_.early_return_allowed && options_.intermediate_update;
+    H host_events = H::none;
+    if (ask)
+        host_events = H::ask;
+    else if (options_.event_mode_used)
+        host_events = options_.early_return_allowed ? H::all : H::at_end;
+    std::function<bool(double)> host_wants;
+    if (ask)
+        host_wants = [this](double t) {
+            fmi3Boolean requested = false;
+            fmi3Float64 early_return_time = t;
+            options_.intermediate_update(environment_, t, false, false, false, true, &requested, &early_return_time);
+            return static_cast<bool>(requested);
+        };
     StepResult r;
     bool event_pending = false;
-    r.status = static_cast<fmi3Status>(inner_.do_step(current_time, step_size, host_events, &event_pending));
+    r.status =
+        static_cast<fmi3Status>(inner_.do_step(current_time, step_size, host_events, &event_pending, host_wants));
     r.last_successful_time = inner_.time();
     r.event_handling_needed = event_pending;
     r.early_return = event_pending && !reached(r.last_successful_time, current_time + step_size);

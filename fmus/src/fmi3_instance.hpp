@@ -5,6 +5,7 @@
 // (fmi3_api.cpp) only check the handle and call these through one guard.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <span>
@@ -21,6 +22,9 @@ namespace fmu::fmi3 {
 struct Options {
     bool event_mode_used = false;       // Co-Simulation: the host handles events in Event Mode
     bool early_return_allowed = false;  // Co-Simulation: a step may end early at an event
+    // Co-Simulation: called at each event inside a step (with event mode and early return allowed);
+    // the step ends there only if the host requests it. Null: the step ends at every event.
+    fmi3IntermediateUpdateCallback intermediate_update = nullptr;
 };
 
 class Instance3 {

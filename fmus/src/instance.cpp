@@ -528,7 +528,7 @@ CsSolver& Instance::cs_solver() {
 }
 
 fmi2Status Instance::do_step(double current_time, double step_size, CsSolver::HostEvents host_events,
-                             bool* event_pending) {
+                             bool* event_pending, const std::function<bool(double)>& host_wants) {
     if (!std::isfinite(current_time) || !std::isfinite(step_size) || step_size < 0.0)
         throw Error("fmi2DoStep: step size must be finite and non-negative (got " + format_real(step_size) + ")");
     if (terminate_requested_) throw Error("fmi2DoStep: the block has asked to terminate the simulation");
@@ -541,7 +541,7 @@ fmi2Status Instance::do_step(double current_time, double step_size, CsSolver::Ho
     runner_.set_time(current_time);
     CsSolver& solver = cs_solver();
     solver.invalidate();  // inputs may have jumped at the communication point
-    const auto outcome = solver.advance(current_time + step_size, host_events);
+    const auto outcome = solver.advance(current_time + step_size, host_events, host_wants);
     if (event_pending) *event_pending = outcome == CsSolver::Outcome::event_pending;
     runner_.clear_input_slopes();  // given for this step; the inputs stay at their values at its end
     last_successful_time_ = runner_.time();

@@ -21,10 +21,10 @@ namespace fmu {
 inline constexpr const char* log_categories[] = {
     "logEvents", "logStatusWarning", "logStatusDiscard", "logStatusError", "logStatusFatal", "logStatistics", "logAll"};
 inline constexpr const char* log_category_descriptions[] = {"Events: time and state events, discrete updates",
-                                                            "Messages with status fmi2Warning",
-                                                            "Messages with status fmi2Discard",
-                                                            "Messages with status fmi2Error",
-                                                            "Messages with status fmi2Fatal",
+                                                            "Messages with status Warning (fmi2Warning, fmi3Warning)",
+                                                            "Messages with status Discard (fmi2Discard, fmi3Discard)",
+                                                            "Messages with status Error (fmi2Error, fmi3Error)",
+                                                            "Messages with status Fatal (fmi2Fatal, fmi3Fatal)",
                                                             "Integrator statistics of Co-Simulation runs",
                                                             "Every call of the FMI functions"};
 
@@ -95,7 +95,8 @@ public:
     // Co-Simulation; returns fmi2Discard when the block asked to terminate during the step. The FMI 3.0
     // layer leaves events to its host (event mode): `event_pending` tells whether the step stopped at one.
     fmi2Status do_step(double current_time, double step_size,
-                       CsSolver::HostEvents host_events = CsSolver::HostEvents::none, bool* event_pending = nullptr);
+                       CsSolver::HostEvents host_events = CsSolver::HostEvents::none, bool* event_pending = nullptr,
+                       const std::function<bool(double)>& host_wants = {});
     // canInterpolateInputs: first derivatives of continuous Real inputs, applied over the next steps.
     void set_real_input_derivatives(std::span<const fmi2ValueReference> vr, const fmi2Integer* order,
                                     const fmi2Real* values);

@@ -132,6 +132,10 @@ std::string model_description3_xml(const Model& model) {
     // FMU stopping at each (its time events, its located state events).
     w.attribute("hasEventMode", "true");
     w.attribute("mightReturnEarlyFromDoStep", "true");
+    // With an intermediate-update callback the host is asked at each event whether the step should
+    // end there; no variable is readable or writable in Intermediate Update Mode.
+    w.attribute("providesIntermediateUpdate", "true");
+    w.attribute("canReturnEarlyAfterIntermediateUpdate", "true");
     w.end();
 
     write_unit_definitions(w, vars, {"s"});

@@ -133,4 +133,44 @@ TEST_P(Conformance3CoSimulation, SampledBlockStopsAtEachSample) {
     EXPECT_GT(run.early_returns, 0);
 }
 
+// With an intermediate-update callback the host decides at each event inside a step: the step goes
+// on through the events it declines and ends at the first one it asks to return at.
+struct Asked {
+    std::vector<double> times;
+    std::size_t return_at = 3;  // the call (1-based) at which the host requests an early return
+};
+Asked asked;  // the callback has no environment of its own (the instance's is its log)
+
+void ask_host(fmi3InstanceEnvironment, fmi3Float64 time, fmi3Boolean, fmi3Boolean, fmi3Boolean,
+              fmi3Boolean can_return_early, fmi3Boolean* requested, fmi3Float64*) {
+    asked.times.push_back(time);
+    *requested = can_return_early && asked.times.size() == asked.return_at;
+}
+
+TEST_P(Conformance3CoSimulation, IntermediateUpdateDecidesTheEarlyReturn) {
+    const auto period = std::find_if(md().variables.begin(), md().variables.end(),
+                                     [](const auto& v) { return v.name == "sample_period"; });
+    if (period == md().variables.end()) GTEST_SKIP() << "no sample_period: no events at known times";
+    const double dt = std::stod(period->start.at(0));
+    asked = {};
+    Instance3 inst(fmu3(), Instance3::Kind::co_simulation, true, true, "", ask_host);
+    ASSERT_EQ(inst.initialize(), fmi3OK);
+    fmi3Boolean again = true, terminate = false, nominals = false, values = false, defined = false;
+    double next = 0.0;
+    while (again)
+        ASSERT_EQ(inst.f().update_discrete_states(inst.c(), &again, &terminate, &nominals, &values, &defined, &next),
+                  fmi3OK);
+    ASSERT_EQ(inst.f().enter_step_mode(inst.c()), fmi3OK);
+    fmi3Boolean event = false, early = false;
+    double last = 0.0;
+    ASSERT_EQ(inst.f().do_step(inst.c(), md().start_time, 10 * dt, true, &event, &terminate, &early, &last), fmi3OK)
+        << inst.log().dump();
+    ASSERT_EQ(asked.times.size(), asked.return_at);
+    for (std::size_t k = 0; k < asked.times.size(); ++k)
+        EXPECT_NEAR(asked.times[k], md().start_time + static_cast<double>(k + 1) * dt, 1e-9) << "call " << k + 1;
+    EXPECT_TRUE(early);
+    EXPECT_TRUE(event);
+    EXPECT_EQ(last, asked.times.back());
+}
+
 }  // namespace

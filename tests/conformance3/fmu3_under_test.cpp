@@ -172,14 +172,15 @@ void record(fmi3InstanceEnvironment env, fmi3Status status, fmi3String category,
 }
 }  // namespace
 
-Instance3::Instance3(Fmu3& fmu, Kind kind, bool event_mode_used, bool early_return_allowed, const std::string& token)
+Instance3::Instance3(Fmu3& fmu, Kind kind, bool event_mode_used, bool early_return_allowed, const std::string& token,
+                     fmi3IntermediateUpdateCallback intermediate_update)
     : fmu_(fmu), log_(std::make_unique<Log3>()) {
     const std::string& t = token.empty() ? fmu.md().token : token;
     if (kind == Kind::model_exchange)
         c_ = fmu.f().instantiate_me("conformance3", t.c_str(), nullptr, false, false, log_.get(), record);
     else
         c_ = fmu.f().instantiate_cs("conformance3", t.c_str(), nullptr, false, false, event_mode_used,
-                                    early_return_allowed, nullptr, 0, log_.get(), record, nullptr);
+                                    early_return_allowed, nullptr, 0, log_.get(), record, intermediate_update);
 }
 
 Instance3::~Instance3() {

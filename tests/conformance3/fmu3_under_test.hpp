@@ -108,7 +108,7 @@ class Instance3 {
 public:
     enum class Kind { model_exchange, co_simulation };
     Instance3(Fmu3& fmu, Kind kind, bool event_mode_used = false, bool early_return_allowed = false,
-              const std::string& token = "");
+              const std::string& token = "", fmi3IntermediateUpdateCallback intermediate_update = nullptr);
     ~Instance3();
     Instance3(const Instance3&) = delete;
     Instance3& operator=(const Instance3&) = delete;

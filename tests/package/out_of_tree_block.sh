@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Installs this build's runtime package, builds examples/battery_heater against it out of the tree, runs
-# the FMI 2.0 conformance suite over the FMU it makes, and checks the heater's first switch-on against
+# the FMI 2.0 and FMI 3.0 conformance suites over the two archives it makes, and checks the heater's first switch-on against
 # the closed form of the pack's cooling (the block's own numbers play no part in the expectation).
-# Arguments: BUILD_DIR SOURCE_DIR CONFORMANCE_EXE COSIM_EXE WORK_DIR SANITIZE(ON/OFF)
+# Arguments: BUILD_DIR SOURCE_DIR CONFORMANCE_EXE COSIM_EXE WORK_DIR SANITIZE(ON/OFF) CONFORMANCE3_EXE
 set -euo pipefail
-build=$1 src=$2 conformance=$3 cosim=$4 work=$5 sanitize=$6
+build=$1 src=$2 conformance=$3 cosim=$4 work=$5 sanitize=$6 conformance3=$7
 rm -rf "$work"
 cmake --install "$build" --prefix "$work/prefix" > "$work.install.log" 2>&1 || { cat "$work.install.log"; exit 1; }
 flags="-Wall -Wextra -Werror"
@@ -17,6 +17,8 @@ fmu="$work/build/fmus/battery_heater.fmu"
 [ -f "$fmu" ] || { echo "no $fmu"; exit 1; }
 
 PVATT_FMU_DIR="$work/build/fmus" "$conformance" --gtest_brief=1
+[ -f "$work/build/fmus3/battery_heater.fmu" ] || { echo "no FMI 3.0 archive in $work/build/fmus3"; exit 1; }
+PVATT_FMU_DIR="$work/build/fmus" PVATT_FMU3_DIR="$work/build/fmus3" "$conformance3" --gtest_brief=1
 
 # Cooling from 8 C towards the body's -20 C with tau = C/G = 450/0.05 = 9000 s: T(t) = -20 + 28 exp(-t/tau) C,
 # reaching t_on = 5 C at t1 = tau ln(28/25) = 1019.96 s. The run must follow the curve (to the integrator's

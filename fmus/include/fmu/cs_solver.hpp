@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -29,10 +30,13 @@ public:
     // Which events advance leaves to the host (FMI 3.0 Co-Simulation with event mode): none (FMI 2.0,
     // and 3.0 without event mode), those due at t_end, or also those inside the step (early return).
     // A left event stops the step at its time with the discrete update not run: event_pending.
-    enum class HostEvents { none, at_end, all };
+    // `ask`: those at t_end, and each one inside the step for which `host_wants(t)` says so (FMI 3.0's
+    // intermediate update, the host requesting an early return); the others are handled inside.
+    enum class HostEvents { none, at_end, all, ask };
     // Integrate from the runner's current time to t_end, handling every event on the way and any
     // event due exactly at t_end that is not the host's. Throws fmu::Error when the integrator fails.
-    Outcome advance(double t_end, HostEvents host_events = HostEvents::none);
+    Outcome advance(double t_end, HostEvents host_events = HostEvents::none,
+                    const std::function<bool(double)>& host_wants = {});
     // States were changed from outside (FMU state restored, inputs changed): restart at next advance.
     void invalidate() { restart_needed_ = true; }
 
