@@ -85,6 +85,13 @@ def main():
             runs.append(("cs", []))
             if cs.get("hasEventMode") == "true":
                 runs.append(("cs", ["--event-mode-used"]))
+        if not runs:
+            r = subprocess.run([args.cosim, "simulate", fmu], capture_output=True, text=True)
+            refused = r.returncode != 0
+            failed = failed or not refused
+            print(f"{name}: neither Model Exchange nor Co-Simulation; cosim "
+                  f"{'refuses it: ' + r.stderr.strip() if refused else 'did not refuse it'}")
+            continue
         with tempfile.TemporaryDirectory() as tmp:
             ssd = os.path.join(tmp, "one.ssd")
             with open(ssd, "w") as f:
