@@ -48,6 +48,8 @@ int main(int argc, char** argv) {
     simulate->add_option("--set", sim.settings, "name=value before initialization (repeatable)");
     simulate->add_option("--columns", sim.columns, "Variables to report (default: every output)")->delimiter(',');
     simulate->add_option("--output", csv_path, "Write CSV to this file instead of printing a table");
+    simulate->add_flag("!--no-event-mode", sim.fmi3_event_mode,
+                       "FMI 3.0 Co-Simulation: do not use event mode (the FMU handles its events inside fmi3DoStep)");
 
     cosim::RunOptions run_options;
     std::string ssd_path, run_csv;
@@ -79,6 +81,8 @@ int main(int argc, char** argv) {
     run->add_option("--bridge-device", run_options.system.bridge_device,
                     "Serial device of every serial hardware bridge (replaces the .ssd's; scripts/pil.sh passes QEMU's "
                     "pseudo-terminal)");
+    run->add_flag("!--no-event-mode", run_options.system.fmi3_event_mode,
+                  "FMI 3.0 Co-Simulation components: do not use event mode");
     run->add_flag("--realtime", run_options.realtime, "Pace simulated time to the wall clock");
     run->add_option("--realtime-tolerance", run_options.realtime_tolerance,
                     "With --realtime: how far behind its wall time (s) an output point may be before it counts as late")

@@ -6,6 +6,7 @@
 
 #include "engine/cosim_error.hpp"
 #include "engine/execution.hpp"
+#include "engine/fmi3_instance.hpp"
 #include "engine/import_cache.hpp"
 #include "engine/interrupt.hpp"
 #include "engine/output_file.hpp"
@@ -52,6 +53,7 @@ void simulate(const SimulateOptions& options, std::ostream& out) {
     if (options.csv) refuse_overwriting_inputs("--output", *options.csv, {options.fmu});
     const auto fmu = import_fmu(options.fmu);  // the system below takes the same import
     const auto& md = fmu->description();
+    if (md.is_fmi3()) refuse_unsupported_fmi3(md, options.fmu.string());  // names Scheduled Execution, clocks
     if (!md.co_simulation) throw CosimError(options.fmu.string() + " has no CoSimulation interface");
     const auto ex = md.default_experiment.value_or(fmi_loader::DefaultExperiment{});
     const double start = ex.start_time.value_or(0.0);
@@ -72,6 +74,7 @@ void simulate(const SimulateOptions& options, std::ostream& out) {
         {name, std::filesystem::absolute(options.fmu).string(), {}, {}, {}, ExecutionHint{true, h}});
     SystemOptions system_options;
     system_options.tolerance = options.tolerance ? options.tolerance : ex.tolerance;
+    system_options.fmi3_event_mode = options.fmi3_event_mode;
     for (const auto& setting : options.settings) system_options.settings.push_back(name + "." + setting);
     System system(description, system_options);
     std::vector<std::string> columns;

@@ -15,6 +15,7 @@ struct SimulateOptions {
     std::vector<std::string> settings;  // "name=value", applied before initialization
     std::vector<std::string> columns;   // variables to report; empty: every output
     std::optional<std::filesystem::path> csv;
+    bool fmi3_event_mode = true;  // an FMI 3.0 FMU with event mode: use it (false: the FMU handles its events)
 };
 
 // Runs the FMU; writes CSV to options.csv if given, else a fixed-width table to `out`.

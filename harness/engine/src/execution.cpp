@@ -355,6 +355,7 @@ struct Execution::Impl {
                 if (!reached(t, t_comm)) continue;
                 auto& s = stepping[i];
                 system.step_co_simulation(i, t_comm, t_comm - s.last);
+                terminate = terminate || comp(i).instance->terminate_requested();
                 s.last = t_comm;
                 ++s.k;
                 ++comp(i).events;

@@ -4,8 +4,10 @@
 #include <cstring>
 #include <set>
 
+#include "connector_elements.hpp"
 #include "engine/cosim_error.hpp"
 #include "engine/fmi2_instance.hpp"
+#include "engine/fmi3_instance.hpp"
 #include "engine/hardware_bridge.hpp"
 #include "engine/import_cache.hpp"
 #include "engine/ssp_archive.hpp"
@@ -134,15 +136,17 @@ void System::load_components(const SystemOptions& options) {
             components_.push_back(std::move(c));
             continue;
         }
+        if (md.is_fmi3()) refuse_unsupported_fmi3(md, cd.name);
         if (want_cs || !md.model_exchange) {
             if (!md.co_simulation) throw CosimError(cd.name + ": the FMU offers no Co-Simulation interface");
             c.interface = Interface::co_simulation;
         }
-        c.instance = std::make_unique<Fmi2Instance>(*c.fmu,
-                                                    c.interface == Interface::model_exchange
-                                                        ? fmi_loader::FmuKind::model_exchange
-                                                        : fmi_loader::FmuKind::co_simulation,
-                                                    cd.name);
+        const auto kind = c.interface == Interface::model_exchange ? fmi_loader::FmuKind::model_exchange
+                                                                   : fmi_loader::FmuKind::co_simulation;
+        if (md.is_fmi3())
+            c.instance = std::make_unique<Fmi3Instance>(*c.fmu, kind, cd.name, options.fmi3_event_mode);
+        else
+            c.instance = std::make_unique<Fmi2Instance>(*c.fmu, kind, cd.name);
         if (c.interface == Interface::co_simulation) {
             c.communication_step = options.communication_step;
             if (!c.communication_step && annotated_cs) c.communication_step = cd.execution->communication_step;
@@ -166,19 +170,22 @@ void System::check_connectors() {
     for (std::size_t i = 0; i < components_.size(); ++i) {
         const auto& md = components_[i].description();
         for (const auto& k : description_.components[i].connectors) {
-            const auto* v = md.find_variable(k.name);
-            if (!v) throw CosimError(components_[i].name + ": connector '" + k.name + "' is not a variable of its FMU");
-            if (!kind_matches(k.kind, v->causality))
-                throw CosimError(components_[i].name + "." + k.name + ": declared " + kind_name(k.kind) +
-                                 " in the .ssd but " + std::string(fmi_loader::to_string(v->causality)) +
-                                 " in the FMU");
-            if (!k.type.empty() && k.type != fmi_loader::to_string(v->type) &&
-                !(k.type == "Integer" && v->type == VariableType::enumeration))
-                throw CosimError(components_[i].name + "." + k.name + ": declared " + k.type + " in the .ssd but " +
-                                 std::string(fmi_loader::to_string(v->type)) + " in the FMU");
-            if (!k.unit.empty() && !v->unit.empty() && k.unit != v->unit)
-                throw CosimError(components_[i].name + "." + k.name + ": unit " + k.unit + " in the .ssd but " +
-                                 v->unit + " in the FMU");
+            const auto elements = connector_elements(md, k.name);  // an FMI 3.0 array: each element
+            if (elements.empty())
+                throw CosimError(components_[i].name + ": connector '" + k.name + "' is not a variable of its FMU");
+            for (const auto* v : elements) {
+                if (!kind_matches(k.kind, v->causality))
+                    throw CosimError(components_[i].name + "." + k.name + ": declared " + kind_name(k.kind) +
+                                     " in the .ssd but " + std::string(fmi_loader::to_string(v->causality)) +
+                                     " in the FMU");
+                if (!k.type.empty() && k.type != fmi_loader::to_string(v->type) &&
+                    !(k.type == "Integer" && v->type == VariableType::enumeration))
+                    throw CosimError(components_[i].name + "." + k.name + ": declared " + k.type + " in the .ssd but " +
+                                     std::string(fmi_loader::to_string(v->type)) + " in the FMU");
+                if (!k.unit.empty() && !v->unit.empty() && k.unit != v->unit)
+                    throw CosimError(components_[i].name + "." + k.name + ": unit " + k.unit + " in the .ssd but " +
+                                     v->unit + " in the FMU");
+            }
         }
     }
 }
@@ -191,29 +198,37 @@ void System::connect() {
                                               [&](const ConnectorDescription& d) { return d.name == conn; }))
             throw CosimError(description_.file.string() + ": component '" + comp + "' declares no connector '" + conn +
                              "'");
-        const auto* v = components_[i].description().find_variable(conn);
-        if (!v) throw CosimError(description_.file.string() + ": '" + comp + "' has no variable '" + conn + "'");
+        const auto v = connector_elements(components_[i].description(), conn);
+        if (v.empty()) throw CosimError(description_.file.string() + ": '" + comp + "' has no variable '" + conn + "'");
         return std::pair{i, v};
     };
     for (const auto& cd : description_.connections) {
-        const auto [from, source] = endpoint(cd.start_element, cd.start_connector);
-        const auto [to, target] = endpoint(cd.end_element, cd.end_connector);
-        const std::string label =
-            cd.start_element + "." + cd.start_connector + " -> " + cd.end_element + "." + cd.end_connector;
-        if (source->causality != Causality::output && source->causality != Causality::calculated_parameter)
-            throw CosimError(label + ": the start of a connection must be an output");
-        if (target->causality != Causality::input)
-            throw CosimError(label + ": the end of a connection must be an input");
-        if (!same_type(source->type, target->type))
-            throw CosimError(label + ": type mismatch (" + std::string(fmi_loader::to_string(source->type)) + " to " +
-                             std::string(fmi_loader::to_string(target->type)) + ")");
-        if (!source->unit.empty() && !target->unit.empty() && source->unit != target->unit)
-            throw CosimError(label + ": unit mismatch (" + source->unit + " to " + target->unit + ")");
-        for (const auto& existing : connections_)
-            if (existing.to == to && existing.target == target)
-                throw CosimError(label + ": the input already has a source (" + components_[existing.from].name + "." +
-                                 existing.source->name + ")");
-        connections_.push_back({from, to, source, target});
+        const auto [from, sources] = endpoint(cd.start_element, cd.start_connector);
+        const auto [to, targets] = endpoint(cd.end_element, cd.end_connector);
+        if (sources.size() != targets.size())
+            throw CosimError(cd.start_element + "." + cd.start_connector + " -> " + cd.end_element + "." +
+                             cd.end_connector + ": " + std::to_string(sources.size()) + " elements to " +
+                             std::to_string(targets.size()));
+        for (std::size_t e = 0; e < sources.size(); ++e) {
+            const auto* source = sources[e];
+            const auto* target = targets[e];
+            const std::string label =
+                cd.start_element + "." + source->name + " -> " + cd.end_element + "." + target->name;
+            if (source->causality != Causality::output && source->causality != Causality::calculated_parameter)
+                throw CosimError(label + ": the start of a connection must be an output");
+            if (target->causality != Causality::input)
+                throw CosimError(label + ": the end of a connection must be an input");
+            if (!same_type(source->type, target->type))
+                throw CosimError(label + ": type mismatch (" + std::string(fmi_loader::to_string(source->type)) +
+                                 " to " + std::string(fmi_loader::to_string(target->type)) + ")");
+            if (!source->unit.empty() && !target->unit.empty() && source->unit != target->unit)
+                throw CosimError(label + ": unit mismatch (" + source->unit + " to " + target->unit + ")");
+            for (const auto& existing : connections_)
+                if (existing.to == to && existing.target == target)
+                    throw CosimError(label + ": the input already has a source (" + components_[existing.from].name +
+                                     "." + existing.source->name + ")");
+            connections_.push_back({from, to, source, target});
+        }
     }
 }
 

@@ -3,28 +3,9 @@
 #include <dlfcn.h>
 
 #include "fmi_loader/loader_error.hpp"
+#include "resolve_symbol.hpp"
 
 namespace fmi_loader {
-
-namespace {
-
-enum class Kind { common, model_exchange, co_simulation };
-
-template <class Fn>
-void resolve(void* handle, const char* name, Fn*& slot, bool required, std::vector<std::string>& missing,
-             std::vector<std::string>& missing_required) {
-    dlerror();
-    void* symbol = dlsym(handle, name);
-    if (!symbol) {
-        missing.emplace_back(name);
-        if (required) missing_required.emplace_back(name);
-        return;
-    }
-    // POSIX guarantees object-to-function pointer conversion for dlsym results.
-    slot = reinterpret_cast<Fn*>(symbol);
-}
-
-}  // namespace
 
 std::filesystem::path Fmi2Library::binary_path(const std::filesystem::path& fmu_root,
                                                const std::string& model_identifier) {
@@ -41,7 +22,7 @@ Fmi2Library::Fmi2Library(const std::filesystem::path& shared_object, bool model_
     }
     std::vector<std::string> missing_required;
     auto& f = functions_;
-#define FMI_LOADER_RESOLVE(name, needed) resolve(handle_, #name, f.name, needed, missing_, missing_required)
+#define FMI_LOADER_RESOLVE(name, needed) detail::resolve(handle_, #name, f.name, needed, missing_, missing_required)
     const bool common = true;
     FMI_LOADER_RESOLVE(fmi2GetTypesPlatform, common);
     FMI_LOADER_RESOLVE(fmi2GetVersion, common);

@@ -13,9 +13,10 @@ namespace {
 
 // The binary must be a regular file inside the unpacked FMU once every link is resolved: the
 // modelIdentifier is already a C identifier, and this holds even if the platform folders were links.
-std::filesystem::path binary_inside(const FmuArchive& archive, const std::string& id) {
+std::filesystem::path binary_inside(const FmuArchive& archive, const std::string& id, bool fmi3) {
     namespace fs = std::filesystem;
-    const fs::path path = Fmi2Library::binary_path(archive.directory(), id);
+    const fs::path path =
+        fmi3 ? Fmi3Library::binary_path(archive.directory(), id) : Fmi2Library::binary_path(archive.directory(), id);
     std::error_code ec, ec_root;
     const fs::path real = fs::canonical(path, ec);
     const fs::path root = fs::canonical(archive.directory(), ec_root);
@@ -28,6 +29,31 @@ std::filesystem::path binary_inside(const FmuArchive& archive, const std::string
     return real;
 }
 
+// One library per modelIdentifier: ME and CS share it when their identifiers agree.
+template <class Library>
+const Library& load(const FmuArchive& archive, const ModelDescription& md, FmuKind kind,
+                    std::shared_ptr<Library>& me_slot, std::shared_ptr<Library>& cs_slot) {
+    const auto& me = md.model_exchange;
+    const auto& cs = md.co_simulation;
+    const bool want_me = kind == FmuKind::model_exchange;
+    if (want_me ? !me : !cs)
+        throw LoaderError(LoaderErrc::missing_symbol, "'" + archive.fmu_path().string() + "' declares no " +
+                                                          (want_me ? "ModelExchange" : "CoSimulation"));
+    auto& slot = want_me ? me_slot : cs_slot;
+    if (slot) return *slot;
+    const bool shared = me && cs && me->model_identifier == cs->model_identifier;
+    const std::string& id = want_me ? me->model_identifier : cs->model_identifier;
+    slot = std::make_shared<Library>(binary_inside(archive, id, md.is_fmi3()), want_me || shared, !want_me || shared);
+    if (shared) (want_me ? cs_slot : me_slot) = slot;
+    return *slot;
+}
+
+void require_version(const FmuArchive& archive, const ModelDescription& md, bool fmi3) {
+    if (md.is_fmi3() != fmi3)
+        throw LoaderError(LoaderErrc::xml_invalid, "'" + archive.fmu_path().string() + "' is an FMI " + md.fmi_version +
+                                                       " FMU, asked for as FMI " + (fmi3 ? "3.0" : "2.0"));
+}
+
 }  // namespace
 
 bool Fmu::supports(FmuKind kind) const noexcept {
@@ -36,20 +62,13 @@ bool Fmu::supports(FmuKind kind) const noexcept {
 }
 
 const Fmi2Library& Fmu::library(FmuKind kind) {
-    const auto& me = description_.model_exchange;
-    const auto& cs = description_.co_simulation;
-    if (!supports(kind))
-        throw LoaderError(LoaderErrc::missing_symbol,
-                          "'" + archive_.fmu_path().string() + "' declares no " +
-                              (kind == FmuKind::model_exchange ? "ModelExchange" : "CoSimulation"));
-    auto& slot = kind == FmuKind::model_exchange ? me_ : cs_;
-    if (slot) return *slot;
-    const bool shared = me && cs && me->model_identifier == cs->model_identifier;
-    const std::string& id = kind == FmuKind::model_exchange ? me->model_identifier : cs->model_identifier;
-    slot = std::make_shared<Fmi2Library>(binary_inside(archive_, id), kind == FmuKind::model_exchange || shared,
-                                         kind == FmuKind::co_simulation || shared);
-    if (shared) (kind == FmuKind::model_exchange ? cs_ : me_) = slot;
-    return *slot;
+    require_version(archive_, description_, false);
+    return load(archive_, description_, kind, me_, cs_);
+}
+
+const Fmi3Library& Fmu::library3(FmuKind kind) {
+    require_version(archive_, description_, true);
+    return load(archive_, description_, kind, me3_, cs3_);
 }
 
 }  // namespace fmi_loader

@@ -65,6 +65,8 @@ public:
 
     // Co-Simulation.
     virtual void do_step(double t, double h) = 0;
+    // Whether the component asked to end the run at its last step (FMI 3.0 terminateSimulation).
+    virtual bool terminate_requested() const { return false; }
     // First time derivatives of continuous Real inputs for the next step (canInterpolateInputs).
     virtual void set_real_input_derivatives(std::span<const fmi2ValueReference> vr, std::span<const double> dx) = 0;
 

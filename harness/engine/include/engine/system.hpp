@@ -37,7 +37,10 @@ struct Component {
     long rhs_evaluations = 0;
     long events = 0;
     bool has_dynamics() const { return state_count > 0 || indicator_count > 0; }
-    const fmi_loader::ModelDescription& description() const { return fmu->description(); }
+    // The instance's view (an FMI 3.0 FMU's arrays as scalars); the FMU's own before it is instantiated.
+    const fmi_loader::ModelDescription& description() const {
+        return instance ? instance->description() : fmu->description();
+    }
 };
 
 struct Connection {
@@ -55,6 +58,7 @@ struct SystemOptions {
     std::optional<double> tolerance;
     std::optional<int> bridge_port;            // replaces the port of every UDP hardware bridge
     std::optional<std::string> bridge_device;  // replaces the device of every serial hardware bridge
+    bool fmi3_event_mode = true;               // FMI 3.0 Co-Simulation: use event mode where the FMU has it
 };
 
 // Consecutive connections (in flow order) between the same two components, copied in one get and

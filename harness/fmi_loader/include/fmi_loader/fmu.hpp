@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "fmi_loader/fmi2_library.hpp"
+#include "fmi_loader/fmi3_library.hpp"
 #include "fmi_loader/fmu_archive.hpp"
 #include "fmi_loader/model_description.hpp"
 
@@ -24,11 +25,15 @@ public:
     // The library implementing `kind`; ME and CS share one when their modelIdentifiers agree.
     // Throws LoaderError if the kind is not declared or the library cannot be loaded.
     const Fmi2Library& library(FmuKind kind);
+    // The same for an FMI 3.0 FMU (description().is_fmi3()): binaries/x86_64-linux/<id>.so. Throws
+    // LoaderError also when the description is not FMI 3.0 (and library() when it is).
+    const Fmi3Library& library3(FmuKind kind);
 
 private:
     FmuArchive archive_;
     ModelDescription description_;
     std::shared_ptr<Fmi2Library> me_, cs_;
+    std::shared_ptr<Fmi3Library> me3_, cs3_;
 };
 
 }  // namespace fmi_loader
