@@ -7,7 +7,7 @@ namespace fmu {
 
 namespace {
 
-constexpr std::array<UnitDefinition, 31> units{{
+constexpr std::array<UnitDefinition, 32> units{{
     {.name = "1"},
     {.name = "s", .s = 1},
     {.name = "Hz", .s = -1},
@@ -34,11 +34,12 @@ constexpr std::array<UnitDefinition, 31> units{{
     {.name = "%/V", .kg = -1, .m = -2, .s = 3, .A = 1, .factor = 0.01},
     {.name = "1/V", .kg = -1, .m = -2, .s = 3, .A = 1},
     {.name = "V/K", .kg = 1, .m = 2, .s = -3, .A = -1, .K = -1},
-    {.name = "J/(m2.K)", .kg = 1, .s = -2, .K = -1},     // areal heat capacity
-    {.name = "W/(m2.K)", .kg = 1, .s = -3, .K = -1},     // areal thermal conductance
-    {.name = "J/K", .kg = 1, .m = 2, .s = -2, .K = -1},  // heat capacity
-    {.name = "W/K", .kg = 1, .m = 2, .s = -3, .K = -1},  // thermal conductance
-    {.name = "A.m2", .m = 2, .A = 1},                    // magnetic dipole moment
+    {.name = "J/(m2.K)", .kg = 1, .s = -2, .K = -1},          // areal heat capacity
+    {.name = "W/(m2.K)", .kg = 1, .s = -3, .K = -1},          // areal thermal conductance
+    {.name = "J/K", .kg = 1, .m = 2, .s = -2, .K = -1},       // heat capacity
+    {.name = "W/K", .kg = 1, .m = 2, .s = -3, .K = -1},       // thermal conductance
+    {.name = "A.m2", .m = 2, .A = 1},                         // magnetic dipole moment
+    {.name = "1/year", .s = -1, .factor = 1.0 / 31557600.0},  // a fraction per Julian year (a degradation)
 }};
 
 }  // namespace

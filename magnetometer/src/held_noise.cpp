@@ -1,5 +1,6 @@
 #include "magnetometer/held_noise.hpp"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -36,13 +37,23 @@ std::int64_t noise_index(double t, double t0, double period) {
     return k;
 }
 
-double held_normal(std::uint64_t seed, std::int64_t index, int axis) {
-    const std::uint64_t key = mix64(seed + golden_gamma);
+namespace {
+// The two uniforms of (key, index, axis).
+std::array<double, 2> uniform_pair(std::uint64_t key, std::int64_t index, int axis) {
     // Unsigned wrap-around keeps negative indices distinct from positive ones for |k| ≤ 2^53.
     const std::uint64_t counter = 2 * (3 * static_cast<std::uint64_t>(index) + static_cast<std::uint64_t>(axis));
-    const double u1 = unit_open(mix64(key ^ mix64(counter)));
-    const double u2 = unit_open(mix64(key ^ mix64(counter + 1)));
+    return {unit_open(mix64(key ^ mix64(counter))), unit_open(mix64(key ^ mix64(counter + 1)))};
+}
+}  // namespace
+
+double held_normal(std::uint64_t seed, std::int64_t index, int axis) {
+    const auto [u1, u2] = uniform_pair(mix64(seed + golden_gamma), index, axis);
     return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
+}
+
+double held_uniform(std::uint64_t seed, std::int64_t index, int stream) {
+    // A key of its own: the uniforms of a seed are independent of the normals of the same seed.
+    return uniform_pair(mix64(seed + 2 * golden_gamma), index, stream)[0];
 }
 
 }  // namespace magnetometer

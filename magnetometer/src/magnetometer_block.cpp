@@ -10,6 +10,59 @@
 
 namespace magnetometer {
 
+namespace {
+
+// The injected faults (faults.hpp): physical effects from an onset to an end, both time events.
+void declare_faults(fmu::Table<MagnetometerData>& t) {
+    using D = MagnetometerData;
+    const auto onset = [&](const char* name, double D::*field, const char* what) {
+        t.parameter(name, field, "s", std::string("Simulation time at which ") + what + " (a time event)");
+    };
+    const auto end = [&](const char* name, double D::*field, const char* what) {
+        t.parameter(name, field, "s",
+                    std::string("Simulation time at which ") + what + " clears (a time event); 0 = never");
+    };
+    t.parameter("fault_stuck_axis", &D::fault_stuck_axis, "",
+                "Axis whose output is stuck (fault_stuck_mode); 0 = no fault, 1 ... 3 = X, Y, Z")
+        .range(0, 3);
+    t.choice("fault_stuck_mode", &D::fault_stuck_mode,
+             {{"last", StuckMode::last}, {"rail_low", StuckMode::rail_low}, {"rail_high", StuckMode::rail_high}},
+             "Where the stuck axis stays: last (the voltage it had at the onset: a latched amplifier or ADC "
+             "channel), rail_low or rail_high (an open bridge arm drives its amplifier to a supply rail)");
+    onset("fault_stuck_onset", &D::fault_stuck_onset, "the axis sticks");
+    end("fault_stuck_end", &D::fault_stuck_end, "the stuck axis");
+    t.parameter("fault_spike_axis", &D::fault_spike_axis, "",
+                "Axis whose output carries interference spikes; 0 = no fault, 1 ... 3 = X, Y, Z")
+        .range(0, 3);
+    t.parameter("fault_spike_rate", &D::fault_spike_rate, "Hz",
+                "Mean rate of the spikes (a Poisson process, at most one per fault_spike_duration)")
+        .range(0.0, 1e6);
+    t.parameter("fault_spike_size", &D::fault_spike_size, "V",
+                "Height of a spike at the output, either sign at random (1 V = 1 gauss = 100 uT at the "
+                "datasheet's sensitivity); clamped at the rails")
+        .range(-5.0, 5.0);
+    t.parameter("fault_spike_duration", &D::fault_spike_duration, "s",
+                "Length of a spike (and of the slots the spikes are drawn in, counted from the onset)")
+        .min(1e-6);
+    t.parameter("fault_spike_seed", &D::fault_spike_seed, "",
+                "Seed of the spikes' generator: the same seed gives the same spikes");
+    onset("fault_spike_onset", &D::fault_spike_onset, "the spikes start");
+    end("fault_spike_end", &D::fault_spike_end, "the spikes");
+    t.parameter("fault_bias_jump", &D::fault_bias_jump, "T",
+                "A field that appears at the sensor, body axes (a part magnetised nearby): read like the Earth's "
+                "field, so it flips with set/reset and is not removed by it; all zero = no fault")
+        .range(-1e-3, 1e-3);
+    onset("fault_bias_onset", &D::fault_bias_onset, "the bias field appears");
+    end("fault_bias_end", &D::fault_bias_end, "the bias field");
+    t.parameter("fault_strap_failed", &D::fault_strap_failed, "",
+                "The set/reset strap fails (open strap or driver): from the onset the pulses no longer flip the "
+                "film, the polarity stays at its value then");
+    onset("fault_strap_onset", &D::fault_strap_onset, "the strap fails");
+    end("fault_strap_end", &D::fault_strap_end, "the strap failure");
+}
+
+}  // namespace
+
 void MagnetometerBlock::declare(fmu::Table<MagnetometerData>& t) {
     using D = MagnetometerData;
     t.input("mag_body", &D::mag_body, "T", "Magnetic flux density at the sensor, body axes");
@@ -89,6 +142,8 @@ void MagnetometerBlock::declare(fmu::Table<MagnetometerData>& t) {
     t.parameter("load_loop_side_a", &D::load_loop_side_a, "m", "First side of the load loop");
     t.parameter("load_loop_side_b", &D::load_loop_side_b, "m", "Second side of the load loop");
 
+    declare_faults(t);
+
     t.state("b_filt", &D::b_filt, &D::der_b_filt, "T", "Field after the sensor's bandwidth filter, sensor axes")
         .nominal(1e-4)
         .calculated_start()
@@ -137,7 +192,10 @@ fmu::ModelInfo MagnetometerBlock::describe() {
         "sensor; <code>read_spacecraft_field</code> = false leaves it out of the reading.</p>"
         "<p>Defaults are the datasheet's typical values; <code>bridge_offset</code>, <code>cross_axis</code> and "
         "<code>set_reset_period</code> are assumptions to be replaced by a calibration of the flight unit. "
-        "Linearity error, hysteresis and the set/reset pulse's own transient are not modelled.</p>";
+        "Linearity error, hysteresis and the set/reset pulse's own transient are not modelled.</p>"
+        "<p>Faults (parameters <code>fault_...</code>, each from its onset to its end, both time events): an axis "
+        "stuck at its last value or at a rail, seeded interference spikes on an axis' output, a bias field "
+        "appearing at the sensor, a failed set/reset strap (no flip). See the block's README.</p>";
     info.default_experiment = {.start_time = 0.0, .stop_time = 5.0, .tolerance = 1e-6, .step_size = 1e-3};
     return info;
 }
@@ -178,6 +236,46 @@ void MagnetometerBlock::validate() const {
     const auto& d = data();
     if (!(d.v_rail_low < d.v_rail_high)) throw fmu::Error("v_rail_low must be below v_rail_high");
     if (d.v_null < d.v_rail_low || d.v_null > d.v_rail_high) throw fmu::Error("v_null must lie between the rails");
+    try {
+        check_faults(faults());
+    } catch (const std::invalid_argument& e) {
+        throw fmu::Error(e.what());
+    }
+}
+
+FaultParameters MagnetometerBlock::faults() const {
+    const auto& d = data();
+    FaultParameters f;
+    f.stuck_axis = d.fault_stuck_axis;
+    f.stuck_mode = d.fault_stuck_mode;
+    f.stuck = {d.fault_stuck_onset, d.fault_stuck_end};
+    f.spike_axis = d.fault_spike_axis;
+    f.spike_rate = d.fault_spike_rate;
+    f.spike_size = d.fault_spike_size;
+    f.spike_duration = d.fault_spike_duration;
+    f.spike_seed = d.fault_spike_seed;
+    f.spikes = {d.fault_spike_onset, d.fault_spike_end};
+    f.bias_jump = d.fault_bias_jump;
+    f.bias = {d.fault_bias_onset, d.fault_bias_end};
+    f.strap_failed = d.fault_strap_failed;
+    f.strap = {d.fault_strap_onset, d.fault_strap_end};
+    return f;
+}
+
+// Slots of fault_spike_duration counted from the onset, like the noise's hold intervals: no time events.
+double MagnetometerBlock::spike_voltage(double t) const {
+    const auto& d = data();
+    if (d.fault_phase[fault_spikes] != fault_active) return 0.0;
+    return spike_in_slot(faults(), noise_index(t, d.fault_spike_onset, d.fault_spike_duration));
+}
+
+void MagnetometerBlock::apply_stuck_axis() {
+    auto& d = data();
+    if (d.fault_phase[fault_stuck] != fault_active) return;
+    const double stuck = d.fault_stuck_mode == StuckMode::last       ? d.fault_stuck_value
+                         : d.fault_stuck_mode == StuckMode::rail_low ? d.v_rail_low
+                                                                     : d.v_rail_high;
+    d.v_out[static_cast<std::size_t>(d.fault_stuck_axis - 1)] = stuck;
 }
 
 // The fields outside the table of a state restored from bytes (issue 14 case 8).
@@ -189,6 +287,9 @@ void MagnetometerBlock::check_state() const {
         throw fmu::Error("restored FMU state: an event time is NaN");
     if (d.noise_index < 0 && d.noise_index != no_noise_index)
         throw fmu::Error("restored FMU state: the noise hold interval is negative");
+    for (const std::int32_t phase : d.fault_phase)
+        fmu::require_range(phase, fault_pending, fault_cleared, "fault_phase");
+    fmu::require_finite(d.fault_stuck_value, "fault_stuck_value");
 }
 
 // The noise enters the outputs only (after the filter), never a derivative: a new sample is a jump of
@@ -214,6 +315,19 @@ void MagnetometerBlock::initialize(double t) {
     d.next_set_reset = d.set_reset_source == SetResetSource::timer ? t + d.set_reset_period : fmu::no_time_event;
     d.noise_start = t;
     d.noise_index = no_noise_index;  // interval 0 is drawn by the first evaluate
+    // Faults whose onset is at or before the start. An axis stuck at its last value from the start reads
+    // what the sensor reads then with the other faults.
+    const FaultParameters f = faults();
+    FaultPhases phases{};
+    advance_faults(f, phases, t);
+    d.fault_phase = phases;
+    d.fault_stuck_value = 0.0;
+    if (phases[fault_stuck] == fault_active && f.stuck_mode == StuckMode::last) {
+        d.fault_phase[fault_stuck] = fault_pending;
+        evaluate(t);
+        d.fault_stuck_value = d.v_out[static_cast<std::size_t>(d.fault_stuck_axis - 1)];
+        d.fault_phase = phases;
+    }
 }
 
 void MagnetometerBlock::evaluate(double t) {
@@ -231,27 +345,49 @@ void MagnetometerBlock::evaluate(double t) {
                             .offset = d.bridge_offset,
                             .v_low = d.v_rail_low,
                             .v_high = d.v_rail_high};
-    if (d.set_reset_source == SetResetSource::input) d.set_polarity = d.set_reset_command;
+    // A failed strap no longer flips the film: the polarity stays what it was at the failure.
+    const bool strap_works = d.fault_phase[fault_strap] != fault_active;
+    if (d.set_reset_source == SetResetSource::input && strap_works) d.set_polarity = d.set_reset_command;
     const double polarity = d.set_polarity ? 1.0 : -1.0;
-    for (int i = 0; i < 3; ++i) d.v_out[i] = output_voltage(stage, d.b_filt[i] + own[i], d.noise[i], polarity);
+    if (d.fault_phase == FaultPhases{}) {
+        for (int i = 0; i < 3; ++i) d.v_out[i] = output_voltage(stage, d.b_filt[i] + own[i], d.noise[i], polarity);
+    } else {
+        // A bias field is a field at the sensor (through M, flipped by set/reset); a spike is a voltage at
+        // the amplifier's output (not flipped, clamped at the rails); a stuck axis overrides its output.
+        const Vec3 bias = d.fault_phase[fault_bias] == fault_active ? multiply(m, d.fault_bias_jump) : Vec3{};
+        const double spike = spike_voltage(t);
+        for (std::size_t i = 0; i < 3; ++i) {
+            OutputStage axis_stage = stage;
+            if (static_cast<std::int32_t>(i) + 1 == d.fault_spike_axis) axis_stage.offset += spike;
+            d.v_out[i] = output_voltage(axis_stage, d.b_filt[i] + own[i] + bias[i], d.noise[i], polarity);
+        }
+        apply_stuck_axis();
+    }
     d.v_ref = std::clamp(d.v_null, d.v_rail_low, d.v_rail_high);
 }
 
 fmu::EventUpdate MagnetometerBlock::event_update(double t, bool time_event_due) {
     auto& d = data();
     if (!time_event_due) return {};
+    // Fault onsets and ends. The outputs were evaluated for the instant before the update (the runtime's
+    // contract): an axis sticking at its last value keeps that reading.
+    const std::uint32_t started = advance_faults(faults(), d.fault_phase, t);
+    if ((started & (1u << fault_stuck)) != 0u)
+        d.fault_stuck_value = d.v_out[static_cast<std::size_t>(d.fault_stuck_axis - 1)];
+    const bool strap_works = d.fault_phase[fault_strap] != fault_active;
     // A host that stepped over instants gets them counted at once (and a time too far for the count
     // refused), not one per call: next_instant_index is the number of instants reached.
     if (fmu::reached(t, d.next_set_reset)) {
         const auto pulses = fmu::next_instant_index(t, d.next_set_reset, d.set_reset_period, 1, "set/reset pulses");
-        if (pulses % 2 == 1) d.set_polarity = !d.set_polarity;  // pulses alternate set, reset, set, ...
+        // pulses alternate set, reset, set, ... (a failed strap's pulses flip nothing)
+        if (pulses % 2 == 1 && strap_works) d.set_polarity = !d.set_polarity;
         d.next_set_reset += static_cast<double>(pulses) * d.set_reset_period;
     }
     return {};
 }
 
 double MagnetometerBlock::next_time_event() const {
-    return data().next_set_reset;
+    return std::min(data().next_set_reset, next_fault_event(faults(), data().fault_phase));
 }
 
 }  // namespace magnetometer

@@ -3,12 +3,88 @@
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
+#include <string>
+#include <string_view>
 
 #include "fmu/errors.hpp"
 #include "fmu/state_check.hpp"
 #include "ssr_plant/battery.hpp"
 
 namespace ssr_plant {
+
+namespace {
+
+// The injected faults (faults.hpp): each a physical change of the circuit from its onset (a time event).
+void declare_faults(fmu::Table<SsrPlantData>& t) {
+    using D = SsrPlantData;
+    constexpr std::string_view face = "; 0 = no fault, 1 ... 6 = +x, -x, +y, -y, +z, -z";
+    const auto onset = [&](const char* name, double D::*field, const char* what) {
+        t.parameter(name, field, "s", std::string("Simulation time at which ") + what + " (a time event)");
+    };
+    const auto end = [&](const char* name, double D::*field, const char* what) {
+        t.parameter(name, field, "s",
+                    std::string("Simulation time at which ") + what + " clears (a time event); 0 = never");
+    };
+    t.parameter("fault_string_open_face", &D::fault_string_open_face, "",
+                std::string("Face whose string opens: no current flows in it, to the bus or through its shunt "
+                            "switch (its Hall channel reads 0)") +
+                    std::string(face))
+        .range(0, 6);
+    onset("fault_string_open_onset", &D::fault_string_open_onset, "the string opens");
+    end("fault_string_open_end", &D::fault_string_open_end, "the open string");
+    t.parameter("fault_cell_short_face", &D::fault_cell_short_face, "",
+                std::string("Face with shorted cells: its string has fault_cell_short_cells fewer cells in series "
+                            "(open-circuit and maximum-power voltages scaled down, the current the same)") +
+                    std::string(face))
+        .range(0, 6);
+    t.parameter("fault_cell_short_cells", &D::fault_cell_short_cells, "",
+                "Cells shorted in the faulty string (1 ... cells_in_series - 1)")
+        .range(1, 999);
+    onset("fault_cell_short_onset", &D::fault_cell_short_onset, "the cells short");
+    end("fault_cell_short_end", &D::fault_cell_short_end, "the cell short");
+    t.parameter(
+         "fault_degradation_face", &D::fault_degradation_face, "",
+         std::string("Face whose photocurrent degrades (radiation, contamination), 7 = all faces") + std::string(face))
+        .range(0, 7);
+    t.parameter("fault_degradation_rate", &D::fault_degradation_rate, "1/year",
+                "Fraction of the photocurrent (and so of Isc) lost per year from fault_degradation_onset, linear, "
+                "down to 0 at most (a Julian year of 365.25 days)")
+        .range(0.0, 1.0);
+    onset("fault_degradation_onset", &D::fault_degradation_onset, "the degradation starts (it never clears)");
+    t.parameter("fault_shadow_face", &D::fault_shadow_face, "",
+                std::string("Face partly shadowed by an appendage (the shadow spread over all of its cells)") +
+                    std::string(face))
+        .range(0, 6);
+    t.parameter("fault_shadow_fraction", &D::fault_shadow_fraction, "1",
+                "Fraction of the face's area in the shadow: the direct sun's photocurrent falls by it (albedo "
+                "is not shadowed)")
+        .range(0.0, 1.0);
+    onset("fault_shadow_onset", &D::fault_shadow_onset, "the shadow falls");
+    end("fault_shadow_end", &D::fault_shadow_end, "the shadow");
+    t.parameter("fault_switch_face", &D::fault_switch_face, "",
+                std::string("Face whose shunt MOSFET is stuck (fault_switch_stuck)") + std::string(face))
+        .range(0, 6);
+    t.choice("fault_switch_stuck", &D::fault_switch_stuck, {{"on", SwitchStuck::on}, {"off", SwitchStuck::off}},
+             "How the faulty shunt switch is stuck: on (its panel always shorted: nothing to the bus, its Hall "
+             "channel always sees the short-circuit current) or off (its panel always on the bus, the regulator "
+             "cannot shunt it; its Hall channel sees nothing)");
+    onset("fault_switch_onset", &D::fault_switch_onset, "the shunt switch sticks");
+    end("fault_switch_end", &D::fault_switch_end, "the stuck shunt switch");
+    t.parameter("fault_hall_face", &D::fault_hall_face, "",
+                std::string("Face whose Hall channel (the measured i_face_sh, not the physical current) is "
+                            "faulty; i_sh is formed from the measured face channels") +
+                    std::string(face))
+        .range(0, 6);
+    t.choice("fault_hall_mode", &D::fault_hall_mode, {{"offset", HallFault::offset}, {"stuck", HallFault::stuck}},
+             "The Hall channel's fault: offset (reads fault_hall_offset too much) or stuck (keeps the value it "
+             "read at the onset)");
+    t.parameter("fault_hall_offset", &D::fault_hall_offset, "A", "Offset of the faulty Hall channel (mode offset)")
+        .range(-100.0, 100.0);
+    onset("fault_hall_onset", &D::fault_hall_onset, "the Hall channel fails");
+    end("fault_hall_end", &D::fault_hall_end, "the Hall channel's fault");
+}
+
+}  // namespace
 
 void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
     using D = SsrPlantData;
@@ -104,6 +180,8 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
              "current tapers to the chemistry's end-of-charge current in the charger's constant-voltage phase, or "
              "when the bus stops charging it) or state_of_charge (soc_connect, soc_disconnect)");
 
+    declare_faults(t);
+
     auto v = t.state("v_cap", &D::v_cap, &D::der_v_cap, "V", "Bus capacitor voltage (the bus voltage)").nominal(15.0);
     auto q = t.state("soc_state", &D::soc_state, &D::der_soc_state, "1", "Battery state of charge (charge / capacity)")
                  .nominal(1.0);
@@ -173,6 +251,10 @@ fmu::ModelInfo SsrPlantBlock::describe() {
         "<p>In <code>averaged</code> fidelity the PWM is replaced by its state-space average over one period (no "
         "PWM events) and the sample/hold by the continuous current (per axis and per face: the live current of "
         "the panel short-circuited through its shunt switch): use it for whole orbits.</p>"
+        "<p>Faults (parameters <code>fault_...</code>, each on one face 1-6 from its onset to its end, both time "
+        "events; face 0 = none): an open string (no current in it), shorted cells (fewer cells in series: the "
+        "voltage of the curve scaled), a degradation of the photocurrent per year, a partial shadow of the direct "
+        "sun, a shunt switch stuck on or off, a Hall channel with an offset or stuck. See the block's README.</p>"
         "<p>Assumed values "
         "(not in the seeds): the panel datasheet, the battery curve and resistances, diode drops, thresholds.</p>";
     info.default_experiment = {.start_time = 0.0, .stop_time = 10.0, .tolerance = 1e-6, .step_size = 1e-3};
@@ -211,6 +293,19 @@ Parameters SsrPlantBlock::parameters() const {
     p.battery.soc_connect = d.soc_connect;
     p.battery.soc_disconnect = d.soc_disconnect;
     p.battery.charge_control = d.charge_control;
+    auto& f = p.faults;
+    f.string_open = {d.fault_string_open_face, d.fault_string_open_onset, d.fault_string_open_end};
+    f.cell_short = {d.fault_cell_short_face, d.fault_cell_short_onset, d.fault_cell_short_end};
+    f.shorted_cells = d.fault_cell_short_cells;
+    f.degradation = {d.fault_degradation_face, d.fault_degradation_onset, 0.0};
+    f.degradation_rate = d.fault_degradation_rate;
+    f.shadow = {d.fault_shadow_face, d.fault_shadow_onset, d.fault_shadow_end};
+    f.shadow_fraction = d.fault_shadow_fraction;
+    f.shunt_switch = {d.fault_switch_face, d.fault_switch_onset, d.fault_switch_end};
+    f.switch_stuck = d.fault_switch_stuck;
+    f.hall = {d.fault_hall_face, d.fault_hall_onset, d.fault_hall_end};
+    f.hall_mode = d.fault_hall_mode;
+    f.hall_offset = d.fault_hall_offset;
     return p;
 }
 
@@ -236,11 +331,17 @@ const ssr_plant::Model& SsrPlantBlock::plant() const {
     return *model_;
 }
 
-const Illumination& SsrPlantBlock::illumination(const ssr_plant::Model& m) const {
+const Illumination& SsrPlantBlock::illumination(const ssr_plant::Model& m, double t) const {
     const Inputs u = inputs();  // checked on every use: a bad input is reported where it is used
-    if (!illumination_ || !(u == illumination_inputs_)) {
-        illumination_ = illuminate(m, u);
+    const FaultState& faults = data().discrete.faults;
+    // A degradation in effect makes the photocurrents a function of time.
+    const bool timed = faults.phase[fault_degradation] == fault_active;
+    if (!illumination_ || !(u == illumination_inputs_) || !(faults == illumination_faults_) ||
+        (timed && t != illumination_time_)) {
+        illumination_ = illuminate(m, u, faults, t);
         illumination_inputs_ = u;
+        illumination_faults_ = faults;
+        illumination_time_ = t;
         bus_side_memo_.clear();
     }
     return *illumination_;
@@ -287,6 +388,9 @@ void SsrPlantBlock::check_state() const {
     if (std::isnan(s.next_event_time)) throw fmu::Error("restored FMU state: discrete.next_event_time is NaN");
     fmu::require_finite(std::span<const double>(s.held_face_current.data(), s.held_face_current.size()),
                         "discrete.held_face_current");
+    for (std::int32_t phase : s.faults.phase)
+        fmu::require_range(phase, fault_pending, fault_cleared, "discrete.faults.phase");
+    fmu::require_finite(s.faults.hall_stuck_value, "discrete.faults.hall_stuck_value");
 }
 
 void SsrPlantBlock::validate() const {
@@ -305,7 +409,7 @@ void SsrPlantBlock::initialize(double t) {
 void SsrPlantBlock::evaluate(double t) {
     auto& d = data();
     const ssr_plant::Model& m = plant();
-    const Illumination& l = illumination(m);  // first: a new illumination empties the memo
+    const Illumination& l = illumination(m, t);  // first: a new illumination empties the memo
     const Evaluation e = ssr_plant::evaluate(m, l, d.discrete, t, state(), bus_side_memo_);
     d.der_v_cap = e.derivatives[state_v_bus];
     d.der_soc_state = e.derivatives[state_soc];
@@ -341,7 +445,7 @@ void SsrPlantBlock::event_indicators(double t, std::span<double> z) {
 fmu::EventUpdate SsrPlantBlock::event_update(double t, bool) {
     auto& d = data();
     const ssr_plant::Model& m = plant();
-    const EventResult r = ssr_plant::event_update(m, illumination(m), d.discrete, t, state());
+    const EventResult r = ssr_plant::event_update(m, illumination(m, t), d.discrete, t, state());
     d.discrete = r.discrete;
     d.gate = gate_output();
     d.pwm_period = pwm_period_output();
@@ -349,7 +453,7 @@ fmu::EventUpdate SsrPlantBlock::event_update(double t, bool) {
 }
 
 double SsrPlantBlock::next_time_event() const {
-    return ssr_plant::next_time_event(plant(), data().discrete);  // PWM edges (switching) or none
+    return ssr_plant::next_time_event(plant(), data().discrete);  // PWM edges (switching), fault onsets and ends
 }
 
 }  // namespace ssr_plant

@@ -521,6 +521,14 @@ TEST(SsrFmu, ParameterDefaultsAreTheCores) {
     EXPECT_EQ(d.battery_chemistry, core.battery.chemistry);
     EXPECT_EQ(d.battery_capacity, core.battery.capacity);
     EXPECT_EQ(d.charge_control, core.battery.charge_control);
+    EXPECT_EQ(core.faults, FaultParameters{});  // no fault by default
+    EXPECT_EQ(d.fault_string_open_face, no_fault_face);
+    EXPECT_EQ(d.fault_cell_short_face, no_fault_face);
+    EXPECT_EQ(d.fault_degradation_face, no_fault_face);
+    EXPECT_EQ(d.fault_shadow_face, no_fault_face);
+    EXPECT_EQ(d.fault_switch_face, no_fault_face);
+    EXPECT_EQ(d.fault_hall_face, no_fault_face);
+    EXPECT_EQ(d.fault_cell_short_cells, core.faults.shorted_cells);
     // The block's parameters() hands every field to the core unchanged: a default-constructed block
     // describes the core's default plant but for the angular response.
     EXPECT_EQ(Inputs{}.irradiance, d.irradiance);
@@ -617,6 +625,46 @@ BusFigures seed_bus_at_300_per_volt(const char* fidelity) {
     std::printf("seed spin at 300 /V, %s: v_bus mean %.4f V, min %.4f, max %.4f (peak to peak %.1f mV)\n", fidelity,
                 b.mean, b.min, b.max, 1e3 * (b.max - b.min));
     return b;
+}
+
+// A string opening mid-step through the runtime (the parameters a .ssd or --set gives): the onset is a
+// time event, so the solver stops there and the bus sees the loss from that instant on. Averaged fidelity,
+// the sun on +x; the string closes again at its end.
+TEST(SsrFmuFaults, StringOpensAndClosesAtItsTimeEvents) {
+    PlantRun run(false);
+    run.set_choice("fidelity", "averaged");
+    run.data().sun_body = {1.0, 0.0, 0.0};
+    run.data().fault_string_open_face = 1;
+    run.data().fault_string_open_onset = 0.0123;
+    run.data().fault_string_open_end = 0.0456;
+    run.parameters_changed();
+    run.start();
+    EXPECT_EQ(run.block().next_time_event(), 0.0123);
+    run.step_to(0.0122);
+    EXPECT_GT(run.data().i_sc[0], 0.6);
+    run.step_to(0.02);  // across the onset: one communication step holding the time event
+    EXPECT_EQ(run.data().i_sc[0], 0.0);
+    EXPECT_EQ(run.data().i_face_sh[0], 0.0);
+    EXPECT_EQ(run.data().i_panel[0], 0.0);
+    EXPECT_EQ(run.block().next_time_event(), 0.0456);
+    run.step_to(0.05);
+    EXPECT_GT(run.data().i_sc[0], 0.6);
+    EXPECT_EQ(run.block().next_time_event(), fmu::no_time_event);
+}
+
+// A bad fault parameter is refused with the parameter's name.
+TEST(SsrFmuFaults, RefusesAnEndBeforeTheOnset) {
+    PlantRun run;
+    run.data().fault_shadow_face = 2;
+    run.data().fault_shadow_onset = 10.0;
+    run.data().fault_shadow_end = 5.0;
+    run.parameters_changed();
+    try {
+        run.start();
+        FAIL() << "accepted an end before the onset";
+    } catch (const fmu::Error& e) {
+        EXPECT_NE(std::string_view(e.what()).find("fault_shadow_end"), std::string_view::npos) << e.what();
+    }
 }
 
 TEST(SsrFmuModulation, AveragedBusSitsAtTheReferencePlusDOverK) {

@@ -26,4 +26,8 @@ std::int64_t noise_index(double t, double t0, double period);
 // Standard normal deviate for (seed, index, axis); axis is 0, 1 or 2.
 double held_normal(std::uint64_t seed, std::int64_t index, int axis);
 
+// Uniform deviate in (0, 1) for (seed, index, stream), stream 0, 1 or 2: the same generator under a key of
+// its own, so that it is independent of held_normal's deviates of the same seed.
+double held_uniform(std::uint64_t seed, std::int64_t index, int stream);
+
 }  // namespace magnetometer

@@ -9,6 +9,7 @@
 
 #include "fmu/block.hpp"
 #include "fmu/fixed_string.hpp"
+#include "magnetometer/faults.hpp"
 #include "magnetometer/held_noise.hpp"
 #include "magnetometer/hmc2003.hpp"
 #include "magnetometer/spacecraft_field.hpp"
@@ -79,6 +80,24 @@ struct MagnetometerData {
     Vec3 load_loop_center = layout_defaults.load_loop.center;
     Vec3 load_loop_side_a = layout_defaults.load_loop.side_a;
     Vec3 load_loop_side_b = layout_defaults.load_loop.side_b;
+    // injected faults (faults.hpp); the defaults inject none
+    std::int32_t fault_stuck_axis = FaultParameters{}.stuck_axis;
+    StuckMode fault_stuck_mode = FaultParameters{}.stuck_mode;
+    double fault_stuck_onset = 0.0;
+    double fault_stuck_end = 0.0;
+    std::int32_t fault_spike_axis = FaultParameters{}.spike_axis;
+    double fault_spike_rate = FaultParameters{}.spike_rate;
+    double fault_spike_size = FaultParameters{}.spike_size;
+    double fault_spike_duration = FaultParameters{}.spike_duration;
+    std::int32_t fault_spike_seed = FaultParameters{}.spike_seed;
+    double fault_spike_onset = 0.0;
+    double fault_spike_end = 0.0;
+    Vec3 fault_bias_jump = FaultParameters{}.bias_jump;
+    double fault_bias_onset = 0.0;
+    double fault_bias_end = 0.0;
+    bool fault_strap_failed = FaultParameters{}.strap_failed;
+    double fault_strap_onset = 0.0;
+    double fault_strap_end = 0.0;
     // continuous states and derivatives
     Vec3 b_filt{};
     Vec3 der_b_filt{};
@@ -92,6 +111,8 @@ struct MagnetometerData {
     double noise_start = 0.0;                   // s: start of hold interval 0 (the initialization time)
     std::int64_t noise_index = no_noise_index;  // hold interval whose samples `noise` holds (a cache)
     Vec3 noise{};                               // T
+    FaultPhases fault_phase{};                  // pending, active or cleared, per fault (faults.hpp)
+    double fault_stuck_value = 0.0;             // V, what the stuck axis reads (mode last: captured at the onset)
 };
 
 class MagnetometerBlock : public fmu::Block<MagnetometerBlock, MagnetometerData> {
@@ -110,6 +131,10 @@ public:
 
 private:
     void update_noise(double t);
+    FaultParameters faults() const;
+    // The faults' part of the output: the spike on its axis (V, 0 outside a pulse), the stuck axis.
+    double spike_voltage(double t) const;
+    void apply_stuck_axis();
     // The spacecraft's own field at the sensor, body axes (sets mag_spacecraft).
     Vec3 spacecraft_field();
 

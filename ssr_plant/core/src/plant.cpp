@@ -49,43 +49,66 @@ double period_start(const DiscreteState& d, const Model& m, std::int64_t k) {
 
 using FaceDiodes = std::array<DiodeModel, face_count>;
 
-// Per face: the panel at the face's temperature (the fit itself at the datasheet's).
-FaceDiodes face_diodes(const Model& m, const Inputs& u) {
+// Per face: the panel at the face's temperature (the fit itself at the datasheet's), with its shorted
+// cells removed while a cell short is in effect.
+FaceDiodes face_diodes(const Model& m, const Inputs& u, const FaultState& s) {
+    const auto& p = m.parameters;
     FaceDiodes d;
-    for (std::size_t k = 0; k < face_count; ++k)
-        d[k] = at_temperature(m.diode, m.parameters.panel, u.panel_temperature[k]);
+    for (std::size_t k = 0; k < face_count; ++k) {
+        d[k] = at_temperature(m.diode, p.panel, u.panel_temperature[k]);
+        if (fault_on_face(p.faults, s, fault_cell_short, k))
+            d[k] = with_cells_shorted(d[k], p.panel.cells_in_series, p.faults.shorted_cells);
+    }
     return d;
 }
 
-// Per face: photocurrent from the effective irradiance.
-std::array<double, face_count> photocurrents(const Model& m, const FaceDiodes& diode, const Inputs& u) {
-    const auto g = face_irradiance(m, u);
-    std::array<double, face_count> iph{};
-    for (std::size_t k = 0; k < face_count; ++k) iph[k] = photocurrent(diode[k], g[k]);
-    return iph;
+// Direct sunlight on face k through the angular law (eq. 1 or the Kelly cosine), W/m².
+double direct_irradiance(const Model& m, const Inputs& u, double norm, std::size_t k) {
+    const auto& s = u.sun_body;
+    const std::size_t axis = k / 2;
+    const double sign = (k % 2 == 0) ? 1.0 : -1.0;  // faces +x, −x, +y, −y, +z, −z
+    const double cos_beta = norm > 0.0 ? sign * s[axis] / norm : -1.0;
+    return u.irradiance * angular_response(m.parameters.angular_response, cos_beta);
+}
+
+double sun_norm(const Inputs& u) {
+    const auto& s = u.sun_body;
+    return std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+}
+
+// The panels without any solve: each face's circuit, photocurrent and the faults that change its wiring.
+// A shadow takes its fraction of the direct sun (the albedo comes from the Earth's side); a degradation
+// scales the photocurrent.
+Illumination panels(const Model& m, const Inputs& u, const FaultState& s, double t) {
+    const auto& f = m.parameters.faults;
+    Illumination l;
+    l.diode = face_diodes(m, u, s);
+    const double norm = sun_norm(u);
+    for (std::size_t k = 0; k < face_count; ++k) {
+        double g = direct_irradiance(m, u, norm, k);
+        if (fault_on_face(f, s, fault_shadow, k)) g *= 1.0 - f.shadow_fraction;
+        l.photocurrent[k] = photocurrent(l.diode[k], g + u.albedo_face[k]);
+        if (fault_on_face(f, s, fault_degradation, k))
+            l.photocurrent[k] *= degradation_factor(f.degradation_rate, f.degradation.onset, t);
+        l.open[k] = fault_on_face(f, s, fault_string_open, k);
+        const bool stuck = fault_on_face(f, s, fault_shunt_switch, k);
+        l.switch_stuck_on[k] = stuck && f.switch_stuck == SwitchStuck::on;
+        l.switch_stuck_off[k] = stuck && f.switch_stuck == SwitchStuck::off;
+    }
+    return l;
 }
 
 // Current each panel pushes through its OR diode into the bus when its shunt switch is off: the panel
 // sits at v_bus + V_f + I R_or; a reverse-biased diode (panel below bus + V_f) passes nothing. A dark
 // panel (I_ph = 0: every face turned away from the sun without albedo) is below any bus V >= 0: no solve.
-std::array<double, face_count> bus_side_currents(const Model& m, const FaceDiodes& diode,
-                                                 const std::array<double, face_count>& iph, double v_bus) {
+// An open string passes nothing; a panel whose switch is stuck on never reaches the bus: no solve either.
+std::array<double, face_count> bus_side_currents(const Model& m, const Illumination& l, double v_bus) {
     const auto& p = m.parameters;
     const double v_anode = v_bus + p.or_diode_forward_voltage;
     std::array<double, face_count> i{};
     for (std::size_t k = 0; k < face_count; ++k)
-        if (iph[k] > 0.0 || v_anode < 0.0)
-            i[k] = std::max(0.0, panel_current(diode[k], iph[k], v_anode, p.or_diode_resistance));
-    return i;
-}
-
-// Current through each closed shunt switch (panel short-circuited through R_DS(on)): what the Hall
-// transducer sees while the gate is on.
-std::array<double, face_count> shunted_currents(const Model& m, const FaceDiodes& diode,
-                                                const std::array<double, face_count>& iph) {
-    std::array<double, face_count> i{};
-    for (std::size_t k = 0; k < face_count; ++k)
-        i[k] = panel_current(diode[k], iph[k], 0.0, m.parameters.shunt_switch_resistance);
+        if ((l.photocurrent[k] > 0.0 || v_anode < 0.0) && !l.open[k] && !l.switch_stuck_on[k])
+            i[k] = std::max(0.0, panel_current(l.diode[k], l.photocurrent[k], v_anode, p.or_diode_resistance));
     return i;
 }
 
@@ -93,6 +116,19 @@ std::array<double, face_count> shunted_currents(const Model& m, const FaceDiodes
 double shunt_fraction(const Model& m, const DiscreteState& d, double v_bus) {
     if (m.parameters.fidelity == Fidelity::averaged) return controller_duty(m.parameters, v_bus);
     return d.gate ? 1.0 : 0.0;
+}
+
+// Face k's own shunt fraction: a switch stuck on shorts its panel all the time, one stuck off never.
+double face_shunt_fraction(const Illumination& l, std::size_t k, double sigma) {
+    if (l.switch_stuck_on[k]) return 1.0;
+    if (l.switch_stuck_off[k]) return 0.0;
+    return sigma;
+}
+
+bool any_switch_stuck(const Illumination& l) {
+    for (std::size_t k = 0; k < face_count; ++k)
+        if (l.switch_stuck_on[k] || l.switch_stuck_off[k]) return true;
+    return false;
 }
 
 // Starts PWM period k at its start time: sample the controller, turn the gate on for the pulse. Regular
@@ -148,36 +184,45 @@ void update_charge_switch(const Model& m, DiscreteState& d, const State& x) {
 
 // The bus node and the battery at one instant: what derivatives() and outputs() share.
 struct BusBalance {
-    double sigma = 0.0;                        // shunt fraction
-    std::array<double, face_count> i_pv = {};  // A, bus-side panel currents with the shunts open
+    double sigma = 0.0;                              // shunt fraction
+    std::array<double, face_count> sigma_face = {};  // each face's (a stuck switch's own)
+    std::array<double, face_count> i_pv = {};        // A, bus-side panel currents with the shunts open
     BatteryPoint batt;
     State dx = {};
 };
 
 // The bus-side currents at v through the caller's memo (if any): a hit is the earlier solve's result.
-std::array<double, face_count> memoized_bus_side_currents(const Model& m, const FaceDiodes& diode,
-                                                          const std::array<double, face_count>& iph, double v,
+std::array<double, face_count> memoized_bus_side_currents(const Model& m, const Illumination& l, double v,
                                                           BusSideMemo* memo) {
-    if (!memo) return bus_side_currents(m, diode, iph, v);
+    if (!memo) return bus_side_currents(m, l, v);
     for (const auto& e : memo->entries)
         if (e.valid && e.v_bus == v) return e.current;
     auto& e = memo->entries[memo->next];
     memo->next = (memo->next + 1) % memo->entries.size();
-    e = {true, v, bus_side_currents(m, diode, iph, v)};
+    e = {true, v, bus_side_currents(m, l, v)};
     return e.current;
 }
 
-BusBalance bus_balance(const Model& m, const FaceDiodes& diode, const std::array<double, face_count>& iph,
-                       const DiscreteState& d, const State& x, BusSideMemo* memo = nullptr) {
+BusBalance bus_balance(const Model& m, const Illumination& l, const DiscreteState& d, const State& x,
+                       BusSideMemo* memo = nullptr) {
     const auto& p = m.parameters;
     const double v = x[state_v_bus];
     BusBalance b;
     b.sigma = shunt_fraction(m, d, v);
+    bool any_open_switch = false;
+    for (std::size_t k = 0; k < face_count; ++k) {
+        b.sigma_face[k] = face_shunt_fraction(l, k, b.sigma);
+        any_open_switch = any_open_switch || b.sigma_face[k] < 1.0;
+    }
     // With the shunts closed all period long (gate on, or D = 1) no panel feeds the bus: no solve.
-    if (b.sigma < 1.0) b.i_pv = memoized_bus_side_currents(m, diode, iph, v, memo);
+    if (any_open_switch) b.i_pv = memoized_bus_side_currents(m, l, v, memo);
     double i_in = 0.0;
-    for (double i : b.i_pv) i_in += i;
-    i_in *= (1.0 - b.sigma);  // eq. 4: I_bus = (1 − D) I; σ ∈ {0, 1} when switching
+    if (!any_switch_stuck(l)) {
+        for (double i : b.i_pv) i_in += i;
+        i_in *= (1.0 - b.sigma);  // eq. 4: I_bus = (1 − D) I; σ ∈ {0, 1} when switching
+    } else {
+        for (std::size_t k = 0; k < face_count; ++k) i_in += (1.0 - b.sigma_face[k]) * b.i_pv[k];
+    }
     b.batt = battery_operating_point(p.battery, x[state_soc], v, d.charge_connected);
     b.dx[state_v_bus] = (i_in - v / p.load_resistance - b.batt.current) / p.bus_capacitance;  // C dv/dt = Σ i
     // Charge balance: only charge_efficiency of a charging current is stored (battery.hpp).
@@ -185,21 +230,30 @@ BusBalance bus_balance(const Model& m, const FaceDiodes& diode, const std::array
     return b;
 }
 
+// What face k's Hall channel reads, its fault applied to the physical sample/hold value `physical`.
+double measured_face_current(const Model& m, const DiscreteState& d, std::size_t k, double physical) {
+    const auto& f = m.parameters.faults;
+    if (!fault_on_face(f, d.faults, fault_hall, k)) return physical;
+    return f.hall_mode == HallFault::stuck ? d.faults.hall_stuck_value : physical + f.hall_offset;
+}
+
 // derivatives and outputs in one pass; memo: see BusSideMemo (nullptr: solve every time).
 Evaluation evaluation(const Model& m, const Illumination& l, const DiscreteState& d, const State& x,
                       BusSideMemo* memo) {
     const auto& p = m.parameters;
     const double v = x[state_v_bus];
-    const BusBalance b = bus_balance(m, l.diode, l.photocurrent, d, x, memo);
+    const BusBalance b = bus_balance(m, l, d, x, memo);
     Evaluation e;
     e.derivatives = b.dx;
     Outputs& y = e.outputs;
     y.i_sc = l.i_sc;
-    for (std::size_t k = 0; k < face_count; ++k) y.i_panel[k] = (1.0 - b.sigma) * b.i_pv[k];
+    for (std::size_t k = 0; k < face_count; ++k) y.i_panel[k] = (1.0 - b.sigma_face[k]) * b.i_pv[k];
     const bool averaged = p.fidelity == Fidelity::averaged;
     for (std::size_t k = 0; k < face_count; ++k) {
-        y.i_shunt[k] = (averaged ? b.sigma : d.duty) * l.i_shunt[k];
-        y.i_string[k] = averaged ? y.i_panel[k] + y.i_shunt[k] : l.i_shunt[k];
+        // A switch stuck on carries the shorted current all the time; one stuck off nothing (l.i_shunt = 0).
+        y.i_shunt[k] = l.switch_stuck_on[k] ? l.i_shunt[k] : (averaged ? b.sigma : d.duty) * l.i_shunt[k];
+        // Switching: a panel whose switch is stuck off is on the bus all the time (solved, sigma_face = 0).
+        y.i_string[k] = averaged ? y.i_panel[k] + y.i_shunt[k] : l.switch_stuck_off[k] ? b.i_pv[k] : l.i_shorted[k];
     }
     // Seed 001 §3: the S/H samples while the shunts are on and holds while they are off.
     // Averaged: no S/H, the live currents. The per-axis value is the difference of the per-face ones in
@@ -210,6 +264,11 @@ Evaluation evaluation(const Model& m, const Illumination& l, const DiscreteState
     } else {
         y.i_face_sh = d.held_face_current;
         y.i_sh = differential_currents(d.held_face_current);
+    }
+    // A faulty Hall channel misreads its face (the per-axis values are formed from the face channels).
+    if (d.faults.phase[fault_hall] == fault_active) {
+        for (std::size_t k = 0; k < face_count; ++k) y.i_face_sh[k] = measured_face_current(m, d, k, y.i_face_sh[k]);
+        y.i_sh = differential_currents(y.i_face_sh);
     }
     y.v_bus = v;
     y.v_batt = b.batt.terminal_voltage;
@@ -254,6 +313,7 @@ Model make_model(const Parameters& p) {
     require(non_negative(b.charge_voltage) && non_negative(b.charge_polarization),
             "charge_voltage and charge_polarization must be >= 0");
     require(b.charge_voltage == 0.0 || b.charge_voltage > b.v_connect, "charge_voltage must exceed v_connect");
+    check_faults(p.faults, p.panel.cells_in_series);
     Model m;
     m.parameters = p;
     m.diode = fit_diode_model(p.panel);
@@ -276,35 +336,41 @@ void check_inputs(const Inputs& u) {
 }
 
 std::array<double, face_count> face_irradiance(const Model& m, const Inputs& u) {
-    const auto& s = u.sun_body;
-    const double norm = std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+    const double norm = sun_norm(u);
     std::array<double, face_count> g{};
-    for (std::size_t k = 0; k < face_count; ++k) {
-        const std::size_t axis = k / 2;
-        const double sign = (k % 2 == 0) ? 1.0 : -1.0;  // faces +x, −x, +y, −y, +z, −z
-        const double cos_beta = norm > 0.0 ? sign * s[axis] / norm : -1.0;
-        // Direct sunlight through the angular law (eq. 1 or the Kelly cosine), plus the face's albedo.
-        g[k] = u.irradiance * angular_response(m.parameters.angular_response, cos_beta) + u.albedo_face[k];
-    }
+    // Direct sunlight through the angular law, plus the face's albedo.
+    for (std::size_t k = 0; k < face_count; ++k) g[k] = direct_irradiance(m, u, norm, k) + u.albedo_face[k];
     return g;
 }
 
-Illumination illuminate(const Model& m, const Inputs& u) {
-    Illumination l;
-    l.diode = face_diodes(m, u);
-    l.photocurrent = photocurrents(m, l.diode, u);
-    for (std::size_t k = 0; k < face_count; ++k) l.i_sc[k] = panel_current(l.diode[k], l.photocurrent[k], 0.0);
-    l.i_shunt = shunted_currents(m, l.diode, l.photocurrent);
+Illumination illuminate(const Model& m, const Inputs& u, const FaultState& faults, double t) {
+    Illumination l = panels(m, u, faults, t);
+    const double r_switch = m.parameters.shunt_switch_resistance;
+    for (std::size_t k = 0; k < face_count; ++k) {
+        if (l.open[k]) continue;  // an open string: every current of the face is 0
+        l.i_sc[k] = panel_current(l.diode[k], l.photocurrent[k], 0.0);
+        // Through the closed shunt switch (R_DS(on)): what the Hall transducer sees while the gate is on.
+        l.i_shorted[k] = panel_current(l.diode[k], l.photocurrent[k], 0.0, r_switch);
+        l.i_shunt[k] = l.switch_stuck_off[k] ? 0.0 : l.i_shorted[k];
+    }
     l.i_hall = differential_currents(l.i_shunt);
     return l;
+}
+
+Illumination illuminate(const Model& m, const Inputs& u) {
+    return illuminate(m, u, FaultState{}, 0.0);
 }
 
 DiscreteState initialize(const Model& m, const Inputs& u, double t0, const State& x0) {
     DiscreteState d;
     d.period_origin = t0;
     d.charge_connected = charge_switch_indicator(m, false, x0) <= 0.0;
+    advance_faults(m.parameters.faults, d.faults, t0);  // the faults whose onset is at or before the start
     // The S/H starts as if it had been tracking: it holds the live differential current.
-    d.held_face_current = illuminate(m, u).i_shunt;
+    d.held_face_current = illuminate(m, u, d.faults, t0).i_shunt;
+    // A Hall channel stuck from the start reads what it read then.
+    const auto& hall = m.parameters.faults.hall;
+    if (hall.face != no_fault_face) d.faults.hall_stuck_value = d.held_face_current[hall.face - 1];
     if (m.parameters.fidelity == Fidelity::switching) {
         start_period(m, d, 0, x0[state_v_bus]);
     } else {
@@ -315,9 +381,8 @@ DiscreteState initialize(const Model& m, const Inputs& u, double t0, const State
     return d;
 }
 
-State derivatives(const Model& m, const Inputs& u, const DiscreteState& d, double /*t*/, const State& x) {
-    const FaceDiodes diode = face_diodes(m, u);
-    return bus_balance(m, diode, photocurrents(m, diode, u), d, x).dx;
+State derivatives(const Model& m, const Inputs& u, const DiscreteState& d, double t, const State& x) {
+    return bus_balance(m, panels(m, u, d.faults, t), d, x).dx;
 }
 
 Evaluation evaluate(const Model& m, const Illumination& l, const DiscreteState& d, double /*t*/, const State& x) {
@@ -330,7 +395,7 @@ Evaluation evaluate(const Model& m, const Illumination& l, const DiscreteState& 
 }
 
 Outputs outputs(const Model& m, const Inputs& u, const DiscreteState& d, double t, const State& x) {
-    return evaluate(m, illuminate(m, u), d, t, x).outputs;
+    return evaluate(m, illuminate(m, u, d.faults, t), d, t, x).outputs;
 }
 
 Indicators event_indicators(const Model& m, const Inputs&, const DiscreteState& d, double t, const State& x) {
@@ -339,16 +404,25 @@ Indicators event_indicators(const Model& m, const Inputs&, const DiscreteState& 
 }
 
 double next_time_event(const Model& m, const DiscreteState& d) {
-    if (m.parameters.fidelity == Fidelity::averaged) return no_time_event;
-    return d.next_event_time;
+    const double faults = next_fault_event(m.parameters.faults, d.faults);
+    if (m.parameters.fidelity == Fidelity::averaged) return faults;
+    return std::min(d.next_event_time, faults);
 }
 
 EventResult event_update(const Model& m, const Inputs& u, const DiscreteState& d, double t, const State& x) {
-    return event_update(m, illuminate(m, u), d, t, x);
+    return event_update(m, illuminate(m, u, d.faults, t), d, t, x);
 }
 
 EventResult event_update(const Model& m, const Illumination& l, const DiscreteState& d0, double t, const State& x) {
     DiscreteState d = d0;
+    const auto& f = m.parameters.faults;
+    const std::uint32_t started = advance_faults(f, d.faults, t);
+    if ((started & (1u << fault_hall)) != 0u) {
+        // A Hall channel sticking now keeps what it read just before: the tracked or the held value.
+        const auto k = static_cast<std::size_t>(f.hall.face - 1);
+        const bool tracking = m.parameters.fidelity == Fidelity::averaged || d0.gate;
+        d.faults.hall_stuck_value = tracking ? l.i_shunt[k] : d0.held_face_current[k];
+    }
     if (m.parameters.fidelity == Fidelity::switching) {
         // A host that stepped over whole periods (it should not) restarts in the period holding t
         // instead of walking every edge in between; a time too far for the count is refused.

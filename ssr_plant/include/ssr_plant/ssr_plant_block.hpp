@@ -59,6 +59,30 @@ struct SsrPlantData {
     double soc_connect = core_defaults.battery.soc_connect;
     double soc_disconnect = core_defaults.battery.soc_disconnect;
     ChargeControl charge_control = core_defaults.battery.charge_control;
+    // injected faults (core/include/ssr_plant/faults.hpp); face 0 = none, 1 … 6 = +x, −x, +y, −y, +z, −z
+    std::int32_t fault_string_open_face = core_defaults.faults.string_open.face;
+    double fault_string_open_onset = core_defaults.faults.string_open.onset;
+    double fault_string_open_end = core_defaults.faults.string_open.end;
+    std::int32_t fault_cell_short_face = core_defaults.faults.cell_short.face;
+    std::int32_t fault_cell_short_cells = core_defaults.faults.shorted_cells;
+    double fault_cell_short_onset = core_defaults.faults.cell_short.onset;
+    double fault_cell_short_end = core_defaults.faults.cell_short.end;
+    std::int32_t fault_degradation_face = core_defaults.faults.degradation.face;
+    double fault_degradation_rate = core_defaults.faults.degradation_rate;
+    double fault_degradation_onset = core_defaults.faults.degradation.onset;
+    std::int32_t fault_shadow_face = core_defaults.faults.shadow.face;
+    double fault_shadow_fraction = core_defaults.faults.shadow_fraction;
+    double fault_shadow_onset = core_defaults.faults.shadow.onset;
+    double fault_shadow_end = core_defaults.faults.shadow.end;
+    std::int32_t fault_switch_face = core_defaults.faults.shunt_switch.face;
+    SwitchStuck fault_switch_stuck = core_defaults.faults.switch_stuck;
+    double fault_switch_onset = core_defaults.faults.shunt_switch.onset;
+    double fault_switch_end = core_defaults.faults.shunt_switch.end;
+    std::int32_t fault_hall_face = core_defaults.faults.hall.face;
+    HallFault fault_hall_mode = core_defaults.faults.hall_mode;
+    double fault_hall_offset = core_defaults.faults.hall_offset;
+    double fault_hall_onset = core_defaults.faults.hall.onset;
+    double fault_hall_end = core_defaults.faults.hall.end;
     // continuous states and derivatives
     double v_cap = 15.0;
     double soc_state = 0.9;
@@ -107,7 +131,8 @@ private:
     const ssr_plant::Model& plant() const;
     // What the current inputs fix (panel photocurrents, short-circuit and Hall currents), recomputed
     // only when the input values changed (inputs are constant over a step); checked on every use.
-    const Illumination& illumination(const ssr_plant::Model& m) const;
+    // An illumination also depends on the faults in effect, and on t while a degradation is.
+    const Illumination& illumination(const ssr_plant::Model& m, double t) const;
     Inputs inputs() const;
     State state() const;
     bool gate_output() const;
@@ -118,6 +143,8 @@ private:
     std::optional<ssr_plant::Model> model_;
     mutable std::optional<Illumination> illumination_;
     mutable Inputs illumination_inputs_{};
+    mutable FaultState illumination_faults_{};
+    mutable double illumination_time_ = 0.0;  // used only while a degradation is in effect
     // The last bus-side panel solves (see BusSideMemo), emptied with every new illumination (and so
     // with every refit, which drops the illumination).
     mutable BusSideMemo bus_side_memo_;

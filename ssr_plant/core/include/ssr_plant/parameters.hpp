@@ -7,6 +7,8 @@
 #include <array>
 #include <cstdint>
 
+#include "ssr_plant/fault_parameters.hpp"
+
 namespace ssr_plant {
 
 // How the plant is solved in time. Both use the same equations (plant.cpp); only the shunt fraction
@@ -145,6 +147,9 @@ struct Parameters {
     double controller_gain = 300.0;  // 1/V (seed)
 
     BatteryParameters battery;
+
+    // Injected faults (faults.hpp); the defaults inject none.
+    FaultParameters faults;
 };
 
 }  // namespace ssr_plant

@@ -18,6 +18,7 @@
 #include <limits>
 #include <type_traits>
 
+#include "ssr_plant/faults.hpp"
 #include "ssr_plant/parameters.hpp"
 #include "ssr_plant/pv_panel.hpp"
 
@@ -75,6 +76,7 @@ struct DiscreteState {
     // A, S/H value of each face's shunt current, updated when the gate opens. The per-axis S/H is their
     // difference (one hold instant for both, so i_sh = i_face_sh[+] − i_face_sh[−] exactly).
     std::array<double, face_count> held_face_current = {};
+    FaultState faults;  // which injected faults are in effect (faults.hpp)
     friend bool operator==(const DiscreteState&, const DiscreteState&) = default;
 };
 
@@ -117,12 +119,17 @@ static_assert(std::is_trivially_copyable_v<Parameters> && std::is_trivially_copy
 // photocurrent and true short-circuit current, and the Hall transducers' live currents of the shorted
 // panels (per face, and per axis: their difference). Inputs are constant over a host's communication step, so a wrapper computes this
 // once per input change instead of once per right-hand side (12 of the 18 panel solves of outputs()).
+// Faults in effect change it (faults.hpp): an open string or a switch stuck off carries no shunt current.
 struct Illumination {
-    std::array<DiodeModel, face_count> diode = {};     // each face's panel at its temperature
-    std::array<double, face_count> photocurrent = {};  // A, I_ph of each face
-    std::array<double, face_count> i_sc = {};          // A, each panel's short-circuit current (V = 0)
-    std::array<double, face_count> i_shunt = {};       // A, each face's current through its closed shunt
-    std::array<double, axis_count> i_hall = {};        // A, I(+axis) − I(−axis) of i_shunt
+    std::array<DiodeModel, face_count> diode = {};       // each face's panel at its temperature (and cell short)
+    std::array<double, face_count> photocurrent = {};    // A, I_ph of each face
+    std::array<bool, face_count> open = {};              // the face's string is open: no current at all
+    std::array<bool, face_count> switch_stuck_on = {};   // the face's panel is shorted whatever the gate
+    std::array<bool, face_count> switch_stuck_off = {};  // the face's panel feeds the bus whatever the gate
+    std::array<double, face_count> i_sc = {};            // A, each panel's short-circuit current (V = 0)
+    std::array<double, face_count> i_shorted = {};       // A, each panel's current when shorted through a switch
+    std::array<double, face_count> i_shunt = {};         // A, each face's current through its switch when closed
+    std::array<double, axis_count> i_hall = {};          // A, I(+axis) − I(−axis) of i_shunt
 };
 
 // derivatives() and outputs() in one pass (the bus-side panel solves shared).
@@ -165,10 +172,13 @@ DiscreteState initialize(const Model& m, const Inputs& u, double t0, const State
 State derivatives(const Model& m, const Inputs& u, const DiscreteState& d, double t, const State& x);
 Outputs outputs(const Model& m, const Inputs& u, const DiscreteState& d, double t, const State& x);
 Indicators event_indicators(const Model& m, const Inputs& u, const DiscreteState& d, double t, const State& x);
-double next_time_event(const Model& m, const DiscreteState& d);  // no_time_event if none
+// PWM edges (switching) and the faults' onsets and ends; no_time_event if none.
+double next_time_event(const Model& m, const DiscreteState& d);
 
 // The same through a precomputed illumination (inputs checked by the caller): identical results.
-Illumination illuminate(const Model& m, const Inputs& u);
+// An illumination depends on the faults in effect and, while a degradation is, on the time.
+Illumination illuminate(const Model& m, const Inputs& u, const FaultState& faults, double t);
+Illumination illuminate(const Model& m, const Inputs& u);  // no fault in effect
 Evaluation evaluate(const Model& m, const Illumination& l, const DiscreteState& d, double t, const State& x);
 // The same, reusing and filling a memo of bus-side solves (see BusSideMemo): identical results.
 Evaluation evaluate(const Model& m, const Illumination& l, const DiscreteState& d, double t, const State& x,
@@ -180,7 +190,8 @@ struct EventResult {
                            // newDiscreteStatesNeeded = false: one call settles an event instant)
 };
 // Performs every discrete change due at t: PWM edges whose time has come (t >= edge − 1e-9 T), the
-// controller sample at a period start, the S/H hold when the gate opens, and the charge switch.
+// controller sample at a period start, the S/H hold when the gate opens, the faults' onsets and ends, and
+// the charge switch.
 // Idempotent: a second call at the same t with the result changes nothing.
 EventResult event_update(const Model& m, const Inputs& u, const DiscreteState& d, double t, const State& x);
 EventResult event_update(const Model& m, const Illumination& l, const DiscreteState& d, double t, const State& x);
