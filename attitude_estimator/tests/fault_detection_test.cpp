@@ -62,36 +62,39 @@ TYPED_TEST(EstimatorCoreFaults, HealthyFacesWithAlbedoAndPenumbraDeclareNothing)
     const Scene<T> scene;
     FaultDetectionState<T> s;
     // Albedo adds light: 0.35 of full sun on the dark −z face (toward nadir) and 0.2 on top of +y.
-    run_faces(s, 2000, 0.0,
-              [&](T t) {
-                  auto o = scene.observation(t);
-                  o.face_r[5] = T(0.35);
-                  o.face_r[2] += T(0.2);
-                  for (std::size_t k = 0; k < 6; ++k) o.i_face[k] = o.face_r[k] * scene.i_norm;
-                  for (std::size_t k = 0; k < 3; ++k) o.i_sh[k] = o.i_face[2 * k] - o.i_face[2 * k + 1];
-                  return o;
-              },
-              0);
+    run_faces(
+        s, 2000, 0.0,
+        [&](T t) {
+            auto o = scene.observation(t);
+            o.face_r[5] = T(0.35);
+            o.face_r[2] += T(0.2);
+            for (std::size_t k = 0; k < 6; ++k) o.i_face[k] = o.face_r[k] * scene.i_norm;
+            for (std::size_t k = 0; k < 3; ++k) o.i_sh[k] = o.i_face[2 * k] - o.i_face[2 * k + 1];
+            return o;
+        },
+        0);
     // Penumbra: every face at 55 % of its sunlit reading (the others show 0.55 ≥ 0.5: tested, and passing
     // since +x reads 0.55 × 0.8 = 0.44 > 0.55 × 0.8 − 0.3); then eclipse (nothing lit: not tested).
-    run_faces(s, 2000, 100.0,
-              [&](T t) {
-                  auto o = scene.observation(t);
-                  for (auto& v : o.face_r) v *= T(0.55);
-                  for (auto& v : o.i_face) v *= T(0.55);
-                  for (auto& v : o.i_sh) v *= T(0.55);
-                  return o;
-              },
-              0);
-    run_faces(s, 2000, 200.0,
-              [&](T t) {
-                  auto o = scene.observation(t);
-                  o.face_r = {};
-                  o.i_face = {};
-                  o.i_sh = {};
-                  return o;
-              },
-              0);
+    run_faces(
+        s, 2000, 100.0,
+        [&](T t) {
+            auto o = scene.observation(t);
+            for (auto& v : o.face_r) v *= T(0.55);
+            for (auto& v : o.i_face) v *= T(0.55);
+            for (auto& v : o.i_sh) v *= T(0.55);
+            return o;
+        },
+        0);
+    run_faces(
+        s, 2000, 200.0,
+        [&](T t) {
+            auto o = scene.observation(t);
+            o.face_r = {};
+            o.i_face = {};
+            o.i_sh = {};
+            return o;
+        },
+        0);
     for (std::size_t k = 0; k < 6; ++k) {
         EXPECT_EQ(s.face_word[k], 0u) << "face " << k;
         EXPECT_EQ(s.face_time[k], T(-1));
@@ -106,17 +109,18 @@ TYPED_TEST(EstimatorCoreFaults, AnOpenStringIsDeclaredAfterTheConfirmationTimeOn
     // +x's string opens at t = 10 s: it reads 0 (its Hall channel too, so i_sh[x] = −i(−x) = 0 stays
     // consistent) where the cosine law says 0.8; the others (+y, +z) show full sun. Failing from the first
     // sample at t = 10 s, 5 s of evidence is the 100th failing sample: t = 10 + 99 × 0.05 = 14.95 s.
-    const T declared = run_faces(s, 600, 0.0,
-                                 [&](T t) {
-                                     auto o = scene.observation(t);
-                                     if (t >= T(10) - T(1e-4)) {
-                                         o.face_r[0] = T(0);
-                                         o.i_face[0] = T(0);
-                                         o.i_sh[0] = T(0);
-                                     }
-                                     return o;
-                                 },
-                                 0);
+    const T declared = run_faces(
+        s, 600, 0.0,
+        [&](T t) {
+            auto o = scene.observation(t);
+            if (t >= T(10) - T(1e-4)) {
+                o.face_r[0] = T(0);
+                o.i_face[0] = T(0);
+                o.i_sh[0] = T(0);
+            }
+            return o;
+        },
+        0);
     EXPECT_NEAR(declared, 14.95, 0.051);
     EXPECT_EQ(s.face_word[0], kFaultFaceDeficit);
     for (std::size_t k = 1; k < 6; ++k) EXPECT_EQ(s.face_word[k], 0u) << "face " << k;
@@ -128,18 +132,19 @@ TYPED_TEST(EstimatorCoreFaults, APassBeforeTheConfirmationTimeClearsTheEvidence)
     const Scene<T> scene;
     FaultDetectionState<T> s;
     // +x reads nothing for 4 s out of every 4.05 s (80 failing samples, then one healthy): never 5 s in a row.
-    run_faces(s, 4000, 0.0,
-              [&](T t) {
-                  auto o = scene.observation(t);
-                  const long i = std::lround(static_cast<double>(t) / kPeriod);
-                  if (i % 81 != 80) {
-                      o.face_r[0] = T(0);
-                      o.i_face[0] = T(0);
-                      o.i_sh[0] = T(0);
-                  }
-                  return o;
-              },
-              0);
+    run_faces(
+        s, 4000, 0.0,
+        [&](T t) {
+            auto o = scene.observation(t);
+            const long i = std::lround(static_cast<double>(t) / kPeriod);
+            if (i % 81 != 80) {
+                o.face_r[0] = T(0);
+                o.i_face[0] = T(0);
+                o.i_sh[0] = T(0);
+            }
+            return o;
+        },
+        0);
     EXPECT_EQ(s.face_word[0], 0u);
 }
 
@@ -155,13 +160,16 @@ TYPED_TEST(EstimatorCoreFaults, AFaceTurnedAwayNeitherConfirmsNorClears) {
         o.i_sh[0] = T(0);
         return o;
     };
-    run_faces(s, 60, 0.0, [&](T t) { return open(scene.observation(t)); }, 0);
+    run_faces(
+        s, 60, 0.0, [&](T t) { return open(scene.observation(t)); }, 0);
     Scene<T> away;
     away.sun = {T(0), T(0.8), T(0.6)};
     away.r = {T(0), T(0), T(0.8), T(0), T(0.6), T(0)};
-    run_faces(s, 1200, 3.0, [&](T t) { return open(away.observation(t)); }, 0);
+    run_faces(
+        s, 1200, 3.0, [&](T t) { return open(away.observation(t)); }, 0);
     EXPECT_EQ(s.face_word[0], 0u);
-    const T declared = run_faces(s, 40, 63.0, [&](T t) { return open(scene.observation(t)); }, 0);
+    const T declared = run_faces(
+        s, 40, 63.0, [&](T t) { return open(scene.observation(t)); }, 0);
     EXPECT_NEAR(declared, 63.0 + 39 * kPeriod, 0.051);
 }
 
@@ -170,25 +178,27 @@ TYPED_TEST(EstimatorCoreFaults, AHallChannelThatDisagreesWithItsFacesMarksThePai
     const Scene<T> scene;
     FaultDetectionState<T> s;
     // i_sh[y] 50 mA off (beyond the 20 mA tolerance): both y faces get the bus bit after 5 s; x and z stay.
-    run_faces(s, 200, 0.0,
-              [&](T t) {
-                  auto o = scene.observation(t);
-                  o.i_sh[1] += T(0.05);
-                  return o;
-              },
-              2);
+    run_faces(
+        s, 200, 0.0,
+        [&](T t) {
+            auto o = scene.observation(t);
+            o.i_sh[1] += T(0.05);
+            return o;
+        },
+        2);
     EXPECT_EQ(s.face_word[2], kFaultFaceBus);
     EXPECT_EQ(s.face_word[3], kFaultFaceBus);
     EXPECT_EQ(excluded_faces(s), 0b001100);
     // 15 mA off is within tolerance (two 12-bit converters' quantization is below 2 mA).
     FaultDetectionState<T> ok;
-    run_faces(ok, 200, 0.0,
-              [&](T t) {
-                  auto o = scene.observation(t);
-                  o.i_sh[1] += T(0.015);
-                  return o;
-              },
-              2);
+    run_faces(
+        ok, 200, 0.0,
+        [&](T t) {
+            auto o = scene.observation(t);
+            o.i_sh[1] += T(0.015);
+            return o;
+        },
+        2);
     EXPECT_EQ(excluded_faces(ok), 0);
 }
 
@@ -197,15 +207,16 @@ TYPED_TEST(EstimatorCoreFaults, AStuckHallReadingFullCurrentIsAnExcess) {
     const Scene<T> scene;
     FaultDetectionState<T> s;
     // −x (dark by the cosine law) reads 1.0 of full sun: more than sun (0) + the 0.6 albedo allowance.
-    run_faces(s, 200, 0.0,
-              [&](T t) {
-                  auto o = scene.observation(t);
-                  o.face_r[1] = T(1);
-                  o.i_face[1] = scene.i_norm;
-                  o.i_sh[0] = o.i_face[0] - o.i_face[1];
-                  return o;
-              },
-              1);
+    run_faces(
+        s, 200, 0.0,
+        [&](T t) {
+            auto o = scene.observation(t);
+            o.face_r[1] = T(1);
+            o.i_face[1] = scene.i_norm;
+            o.i_sh[0] = o.i_face[0] - o.i_face[1];
+            return o;
+        },
+        1);
     EXPECT_EQ(s.face_word[1], kFaultFaceExcess);
     EXPECT_EQ(excluded_faces(s), 0b000010);
 }
