@@ -82,6 +82,22 @@ void declare_faults(fmu::Table<SsrPlantData>& t) {
         .range(-100.0, 100.0);
     onset("fault_hall_onset", &D::fault_hall_onset, "the Hall channel fails");
     end("fault_hall_end", &D::fault_hall_end, "the Hall channel's fault");
+    t.parameter("fault_appendage_face", &D::fault_appendage_face, "",
+                std::string("Face shadowed by a body-fixed appendage given by its geometry (a plate); the shadowed "
+                            "fraction follows the sun") +
+                    std::string(face))
+        .range(0, 6);
+    t.parameter("fault_appendage_center", &D::fault_appendage_center, "m",
+                "Centre of the appendage's plate, body axes from the box's centre");
+    t.parameter("fault_appendage_side_a", &D::fault_appendage_side_a, "m",
+                "First side of the plate (its points: centre + s side_a + t side_b, s and t in -1/2 ... 1/2)");
+    t.parameter("fault_appendage_side_b", &D::fault_appendage_side_b, "m", "Second side of the plate");
+    t.parameter("fault_appendage_box", &D::fault_appendage_box, "m",
+                "Edges of the box along body x, y, z, centred on the origin, each face covered by its panel "
+                "(assumed 3U: 0.1, 0.1, 0.34)")
+        .min(1e-3);
+    onset("fault_appendage_onset", &D::fault_appendage_onset, "the appendage deploys and starts to shadow");
+    end("fault_appendage_end", &D::fault_appendage_end, "the appendage's shadow");
 }
 
 }  // namespace
@@ -254,7 +270,8 @@ fmu::ModelInfo SsrPlantBlock::describe() {
         "<p>Faults (parameters <code>fault_...</code>, each on one face 1-6 from its onset to its end, both time "
         "events; face 0 = none): an open string (no current in it), shorted cells (fewer cells in series: the "
         "voltage of the curve scaled), a degradation of the photocurrent per year, a partial shadow of the direct "
-        "sun, a shunt switch stuck on or off, a Hall channel with an offset or stuck. See the block's README.</p>"
+        "sun (a fixed fraction, or a body-fixed appendage's from its geometry), a shunt switch stuck on or off, a Hall "
+        "channel with an offset or stuck. See the block's README.</p>"
         "<p>Assumed values "
         "(not in the seeds): the panel datasheet, the battery curve and resistances, diode drops, thresholds.</p>";
     info.default_experiment = {.start_time = 0.0, .stop_time = 10.0, .tolerance = 1e-6, .step_size = 1e-3};
@@ -306,6 +323,11 @@ Parameters SsrPlantBlock::parameters() const {
     f.hall = {d.fault_hall_face, d.fault_hall_onset, d.fault_hall_end};
     f.hall_mode = d.fault_hall_mode;
     f.hall_offset = d.fault_hall_offset;
+    f.appendage = {d.fault_appendage_face, d.fault_appendage_onset, d.fault_appendage_end};
+    f.appendage_center = d.fault_appendage_center;
+    f.appendage_side_a = d.fault_appendage_side_a;
+    f.appendage_side_b = d.fault_appendage_side_b;
+    f.appendage_box = d.fault_appendage_box;
     return p;
 }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "reference_formulas.hpp"
+#include "ssr_plant/appendage_shadow.hpp"
 #include "ssr_plant/plant.hpp"
 
 namespace {
@@ -237,6 +238,57 @@ TEST(SsrFaults, RejectsFaultParametersOutOfRange) {
     Parameters ok;
     ok.faults.degradation.face = 7;
     EXPECT_NO_THROW(make_model(ok));
+}
+
+// The appendage's shadow by hand: a 0.1 × 0.1 × 0.34 m box, face +x at x = 0.05 spanning y ±0.05, z ±0.17
+// (0.034 m²).
+constexpr Vec3 box_3u = {0.1, 0.1, 0.34};
+
+TEST(SsrFaults, AppendageShadowOfAPlateAgainstHandGeometry) {
+    const double r = 1.0 / std::sqrt(2.0);
+    // Sun normal to +x, a plate parallel to the face covering y in [0, 0.05], all of z: half the face.
+    const Plate half{{0.2, 0.025, 0.0}, {0.0, 0.05, 0.0}, {0.0, 0.0, 0.34}};
+    EXPECT_NEAR(appendage_shadow_fraction(half, box_3u, 0, {1.0, 0.0, 0.0}), 0.5, 1e-12);
+    // Sun at 45° in the x–z plane, a 0.1 m square plate 0.1 m in front of the face (x = 0.15, z ±0.05): the
+    // shadow slides by 0.1 m along −z to z in [−0.15, −0.05], all on the face: 0.01 / 0.034.
+    const Plate square{{0.15, 0.0, 0.0}, {0.0, 0.1, 0.0}, {0.0, 0.0, 0.1}};
+    EXPECT_NEAR(appendage_shadow_fraction(square, box_3u, 0, {r, 0.0, r}), 0.01 / 0.034, 1e-12);
+    // The same plate at z in [−0.12, −0.02]: the shadow at z in [−0.22, −0.12] is cut at the edge −0.17.
+    const Plate low{{0.15, 0.0, -0.07}, {0.0, 0.1, 0.0}, {0.0, 0.0, 0.1}};
+    EXPECT_NEAR(appendage_shadow_fraction(low, box_3u, 0, {r, 0.0, r}), 0.005 / 0.034, 1e-12);
+    // A fin standing on the face (the x–y plane at z = 0, x in [0, 0.1], y ±0.05): only its half in front of
+    // the face casts, x in [0.05, 0.1] → z' = −(x − 0.05) in [−0.05, 0]: 0.005 / 0.034.
+    const Plate fin{{0.05, 0.0, 0.0}, {0.1, 0.0, 0.0}, {0.0, 0.1, 0.0}};
+    EXPECT_NEAR(appendage_shadow_fraction(fin, box_3u, 0, {r, 0.0, r}), 0.005 / 0.034, 1e-12);
+    // Nothing: the plate behind the face's plane, the sun behind the face, the plate's shadow off the face,
+    // a plate seen edge-on, another face.
+    const Plate behind{{0.0, 0.0, 0.0}, {0.0, 0.1, 0.0}, {0.0, 0.0, 0.1}};
+    EXPECT_EQ(appendage_shadow_fraction(behind, box_3u, 0, {1.0, 0.0, 0.0}), 0.0);
+    EXPECT_EQ(appendage_shadow_fraction(half, box_3u, 0, {-1.0, 0.0, 0.0}), 0.0);
+    const Plate aside{{0.2, 0.3, 0.0}, {0.0, 0.1, 0.0}, {0.0, 0.0, 0.1}};
+    EXPECT_EQ(appendage_shadow_fraction(aside, box_3u, 0, {1.0, 0.0, 0.0}), 0.0);
+    const Plate edge_on{{0.2, 0.0, 0.0}, {0.1, 0.0, 0.0}, {0.0, 0.0, 0.1}};
+    EXPECT_NEAR(appendage_shadow_fraction(edge_on, box_3u, 0, {1.0, 0.0, 0.0}), 0.0, 1e-15);
+    // Face −z (index 5) at z = −0.17, a plate below it covering x ≥ 0, sun along −z: half of 0.1 × 0.1.
+    const Plate under{{0.025, 0.0, -0.3}, {0.05, 0.0, 0.0}, {0.0, 0.1, 0.0}};
+    EXPECT_NEAR(appendage_shadow_fraction(under, box_3u, 5, {0.0, 0.0, -1.0}), 0.5, 1e-12);
+}
+
+TEST(SsrFaults, AppendageShadowCutsTheDirectPhotocurrentFromItsDeployment) {
+    // Sun normal to +x, the half-face plate deployed at 100 s: I_sc of +x halves (∝ irradiance, to 1e-7).
+    Parameters p = averaged_plant();
+    const Inputs u = sun_on_plus_x();
+    p.faults.appendage = {1, 100.0, 0.0};
+    p.faults.appendage_center = {0.2, 0.025, 0.0};
+    p.faults.appendage_side_a = {0.0, 0.05, 0.0};
+    p.faults.appendage_side_b = {0.0, 0.0, 0.34};
+    const Model m = make_model(p);
+    const double healthy = illuminate(make_model(averaged_plant()), u).i_sc[0];
+    DiscreteState d = started(m, u);
+    EXPECT_EQ(illuminate(m, u, d.faults, 50.0).i_sc[0], healthy);
+    EXPECT_EQ(next_time_event(m, d), 100.0);
+    d = event_update(m, u, d, 100.0, {15.0, 0.9}).discrete;
+    EXPECT_NEAR(illuminate(m, u, d.faults, 100.0).i_sc[0] / healthy, 0.5, 1e-7);
 }
 
 }  // namespace

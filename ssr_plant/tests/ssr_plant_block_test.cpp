@@ -528,6 +528,8 @@ TEST(SsrFmu, ParameterDefaultsAreTheCores) {
     EXPECT_EQ(d.fault_shadow_face, no_fault_face);
     EXPECT_EQ(d.fault_switch_face, no_fault_face);
     EXPECT_EQ(d.fault_hall_face, no_fault_face);
+    EXPECT_EQ(d.fault_appendage_face, no_fault_face);
+    EXPECT_EQ(d.fault_appendage_box, core.faults.appendage_box);
     EXPECT_EQ(d.fault_cell_short_cells, core.faults.shorted_cells);
     // The block's parameters() hands every field to the core unchanged: a default-constructed block
     // describes the core's default plant but for the angular response.

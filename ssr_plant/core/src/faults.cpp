@@ -8,7 +8,8 @@ namespace ssr_plant {
 namespace {
 
 constexpr std::array<const char*, fault_kind_count> parameter_prefix = {
-    "fault_string_open", "fault_cell_short", "fault_degradation", "fault_shadow", "fault_switch", "fault_hall"};
+    "fault_string_open", "fault_cell_short", "fault_degradation", "fault_shadow",
+    "fault_switch",      "fault_hall",       "fault_appendage"};
 
 void require(bool ok, const std::string& what) {
     if (!ok) throw ParameterError("ssr_plant parameters: " + what);
@@ -34,8 +35,10 @@ const FaultWindow& window(const FaultParameters& f, FaultKind kind) {
         case fault_shunt_switch:
             return f.shunt_switch;
         case fault_hall:
-        default:
             return f.hall;
+        case fault_appendage:
+        default:
+            return f.appendage;
     }
 }
 
@@ -64,6 +67,12 @@ void check_faults(const FaultParameters& f, std::int32_t cells_in_series) {
     require(f.hall_mode == HallFault::offset || f.hall_mode == HallFault::stuck,
             "fault_hall_mode must be 0 (offset) or 1 (stuck)");
     require(std::isfinite(f.hall_offset), "fault_hall_offset must be finite");
+    for (std::size_t i = 0; i < 3; ++i) {
+        require(std::isfinite(f.appendage_box[i]) && f.appendage_box[i] > 0.0, "fault_appendage_box must be > 0");
+        require(std::isfinite(f.appendage_center[i]) && std::isfinite(f.appendage_side_a[i]) &&
+                    std::isfinite(f.appendage_side_b[i]),
+                "fault_appendage_center, _side_a and _side_b must be finite");
+    }
 }
 
 std::uint32_t advance_faults(const FaultParameters& f, FaultState& s, double t) {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "ssr_plant/angular_response.hpp"
+#include "ssr_plant/appendage_shadow.hpp"
 #include "ssr_plant/battery.hpp"
 #include "ssr_plant/shunt_regulator.hpp"
 
@@ -86,7 +87,17 @@ Illumination panels(const Model& m, const Inputs& u, const FaultState& s, double
     const double norm = sun_norm(u);
     for (std::size_t k = 0; k < face_count; ++k) {
         double g = direct_irradiance(m, u, norm, k);
-        if (fault_on_face(f, s, fault_shadow, k)) g *= 1.0 - f.shadow_fraction;
+        const bool shadow = fault_on_face(f, s, fault_shadow, k);
+        const bool appendage = fault_on_face(f, s, fault_appendage, k);
+        if (shadow || appendage) {
+            double fraction = shadow ? f.shadow_fraction : 0.0;
+            if (appendage && norm > 0.0) {
+                const Vec3 sun = {u.sun_body[0] / norm, u.sun_body[1] / norm, u.sun_body[2] / norm};
+                const Plate plate{f.appendage_center, f.appendage_side_a, f.appendage_side_b};
+                fraction = std::max(fraction, appendage_shadow_fraction(plate, f.appendage_box, k, sun));
+            }
+            g *= 1.0 - fraction;
+        }
         l.photocurrent[k] = photocurrent(l.diode[k], g + u.albedo_face[k]);
         if (fault_on_face(f, s, fault_degradation, k))
             l.photocurrent[k] *= degradation_factor(f.degradation_rate, f.degradation.onset, t);

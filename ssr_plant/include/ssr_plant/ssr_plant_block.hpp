@@ -83,6 +83,13 @@ struct SsrPlantData {
     double fault_hall_offset = core_defaults.faults.hall_offset;
     double fault_hall_onset = core_defaults.faults.hall.onset;
     double fault_hall_end = core_defaults.faults.hall.end;
+    std::int32_t fault_appendage_face = core_defaults.faults.appendage.face;
+    std::array<double, 3> fault_appendage_center = core_defaults.faults.appendage_center;
+    std::array<double, 3> fault_appendage_side_a = core_defaults.faults.appendage_side_a;
+    std::array<double, 3> fault_appendage_side_b = core_defaults.faults.appendage_side_b;
+    std::array<double, 3> fault_appendage_box = core_defaults.faults.appendage_box;
+    double fault_appendage_onset = core_defaults.faults.appendage.onset;
+    double fault_appendage_end = core_defaults.faults.appendage.end;
     // continuous states and derivatives
     double v_cap = 15.0;
     double soc_state = 0.9;

@@ -14,6 +14,9 @@
 //   shunt switch    the face's shunt MOSFET is stuck on (the panel always shorted: nothing to the bus, the
 //                   Hall channel always sees the short-circuit current) or off (the panel always on the bus:
 //                   the regulator cannot shunt it, its Hall channel sees nothing)
+//   appendage       a body-fixed plate shadows the face, from its geometry (appendage_shadow.hpp): the direct
+//                   sun's photocurrent falls by the shadowed fraction, which moves with the sun (with a shadow
+//                   fault on the same face, the larger fraction counts)
 //   Hall sensor     the face's Hall channel (the measured current i_face_sh, not the physical current) reads
 //                   `hall_offset` amperes too much, or stays stuck at the value it read at the onset
 #pragma once
@@ -36,6 +39,7 @@ enum FaultKind : std::size_t {
     fault_shadow,
     fault_shunt_switch,
     fault_hall,
+    fault_appendage,
     fault_kind_count
 };
 
