@@ -127,6 +127,29 @@ TYPED_TEST(EstimatorCoreFaults, AnOpenStringIsDeclaredAfterTheConfirmationTimeOn
     EXPECT_EQ(excluded_faces(s), 1);
 }
 
+TYPED_TEST(EstimatorCoreFaults, AnOpenFaceDoesNotLowerTheBarForTheOthers) {
+    using T = TypeParam;
+    const Scene<T> scene;
+    FaultDetectionState<T> s;
+    // +x open, and the Earth adds 0.35 of full sun on +y (0.48 + 0.35 = 0.83). The sun is as bright as
+    // ever: +y's excess test compares 0.83 with 0.48 + 0.6 = 1.08 and passes, and +x alone is declared.
+    // (Scaled by the irradiance the other faces show — (0 + 0.36)/(0.8 + 0.36) = 0.31 with +x dark — the
+    // bar would be 0.31 × 0.48 + 0.6 = 0.75 and +y would be declared as well.)
+    run_faces(
+        s, 400, 0.0,
+        [&](T t) {
+            auto o = scene.observation(t);
+            o.face_r[0] = T(0);
+            o.face_r[2] = T(0.83);
+            for (std::size_t k = 0; k < 6; ++k) o.i_face[k] = o.face_r[k] * scene.i_norm;
+            for (std::size_t k = 0; k < 3; ++k) o.i_sh[k] = o.i_face[2 * k] - o.i_face[2 * k + 1];
+            return o;
+        },
+        0);
+    EXPECT_EQ(s.face_word[0], kFaultFaceDeficit);
+    EXPECT_EQ(excluded_faces(s), 0b000001);
+}
+
 TYPED_TEST(EstimatorCoreFaults, APassBeforeTheConfirmationTimeClearsTheEvidence) {
     using T = TypeParam;
     const Scene<T> scene;

@@ -121,9 +121,9 @@ TEST(E2eLeoFaultDetection, AnOpenStringIsDeclaredOnItsFaceAloneAndTheFilterRides
 }
 
 TEST(E2eLeoFaultDetection, AnAxisStuckAtItsLastValueIsDeclaredAloneAndTheFilterGoesOnWithTwo) {
-    const auto r = run({"mag.fault_stuck_axis=2", "mag.fault_stuck_mode=last",
-                        "mag.fault_stuck_onset=" + std::to_string(kOnset)},
-                       6600.0);
+    const auto r =
+        run({"mag.fault_stuck_axis=2", "mag.fault_stuck_mode=last", "mag.fault_stuck_onset=" + std::to_string(kOnset)},
+            6600.0);
     const Declared d = declared(r);
     EXPECT_EQ(d.axes[1], 2);  // kFaultAxisNoFlip
     EXPECT_GE(d.axis_time[1], kOnset);

@@ -20,19 +20,20 @@ bool confirmed(T& failing, Outcome outcome, T dt, T confirm_time) {
     return outcome == Outcome::fail && failing + T(0.5) * dt >= confirm_time;
 }
 
-// The irradiance the faces other than k (and not excluded) show, as a
-// fraction of what the prediction gives them; negative when the others are predicted too dark to say.
+// The irradiance the sun gives this sample, as a fraction of full sun, from the faces other than k (and
+// not excluded) that the prediction puts well in the sun: the largest of their measured-to-predicted
+// ratios, at most 1, or −1 when no such face can say. The largest, so that a second faulty (dark) face
+// does not make the sun look dimmer than it is; albedo can only raise it, which makes the deficit test
+// stricter, never laxer.
 template <class T>
 T irradiance_without(const std::array<T, 6>& measured, const std::array<T, 6>& predicted, std::uint8_t excluded,
                      std::size_t k, T min_predicted) {
-    T m = T(0), p = T(0);
+    T f = T(-1);
     for (std::size_t j = 0; j < 6; ++j) {
-        if (j == k || (excluded >> j & 1u)) continue;
-        m += measured[j];
-        p += predicted[j];
+        if (j == k || (excluded >> j & 1u) || predicted[j] < min_predicted) continue;
+        f = std::max(f, measured[j] / predicted[j]);
     }
-    if (p < min_predicted) return T(-1);
-    return std::min(T(1), m / p);
+    return std::min(T(1), f);
 }
 
 template <class T>
@@ -58,9 +59,9 @@ void face_tests(FaultDetectionState<T>& s, const FaultObservation<T>& o, const F
             const T f = irradiance_without(o.face_r, predicted, excluded, k, c.others_min_predicted);
             if (f >= c.others_min_irradiance && predicted[k] >= c.face_min_response)
                 deficit = o.face_r[k] < f * predicted[k] - c.face_deficit ? Outcome::fail : Outcome::pass;
-            // More than the sun (at full irradiance when the others cannot say) and albedo can give.
-            const T sun_share = f >= T(0) ? f * predicted[k] : predicted[k];
-            excess = o.face_r[k] > sun_share + c.face_excess ? Outcome::fail : Outcome::pass;
+            // More than the full sun and albedo can give (at full irradiance: another face's fault must not
+            // lower the bar).
+            excess = o.face_r[k] > predicted[k] + c.face_excess ? Outcome::fail : Outcome::pass;
         }
         if (confirmed(s.face_failing[k][0], deficit, dt, c.confirm_time))
             declare(s.face_word[k], s.face_time[k], kFaultFaceDeficit, o.t);

@@ -171,7 +171,7 @@ struct EstimatorData {
     // Fault detection, isolation and recovery (fault_detection.hpp, docs/faults.md): parameters and outputs.
     bool detect_faults = false;
     double detect_confirm_time = 5.0;          // s: a test fails this long before a fault is declared
-    double detect_face_min_response = 0.5;     // 1: face tests where the predicted response is at least this
+    double detect_face_min_response = 0.4;     // 1: face tests where the predicted response is at least this
     double detect_face_deficit = 0.3;          // 1: a face reading this far below the prediction fails
     double detect_face_excess = 0.6;           // 1: ... this far above it (albedo adds up to ~0.4)
     double detect_irradiance_min = 0.5;        // 1: face tests while the other faces show this much sun

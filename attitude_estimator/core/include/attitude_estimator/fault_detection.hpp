@@ -6,8 +6,8 @@
 // The tests (docs/faults.md, "Detection"):
 //  - face deficit / excess: a face's relative current r_k = i_k / i_face_norm_k against the response the
 //    filter predicts from its attitude and the sun reference, R(n_k · Â ŝ_ref), scaled by the irradiance the
-//    other faces show (eclipse and penumbra); albedo only adds current, so the deficit test ignores it and
-//    the excess test allows for it;
+//    other faces show (eclipse and penumbra: the largest of their measured-to-predicted ratios); albedo only
+//    adds current, so the deficit test ignores it and the excess test allows for it;
 //  - bus: the per-axis Hall sample/hold i_sh[k] against the difference of its two faces' channels
 //    (ssr_plant: i_sh[k] = i_face_sh[2k] − i_face_sh[2k+1] exactly when healthy);
 //  - axis rail: a magnetometer channel within the rail margin of its converter's range ends;
@@ -38,14 +38,16 @@ template <class T>
 struct FaultDetectionConfig {
     bool enabled = false;
     T confirm_time = T(5);  // s: a test must fail this long (not interrupted by a pass) before a declaration
-    // Face tests: applied where the predicted relative response is at least face_min_response and the
-    // other faces show at least others_min_irradiance of full sun (not in eclipse, not deep in penumbra).
-    T face_min_response = T(0.5);
-    T face_deficit = T(0.3);  // fail below (predicted − this), relative to full sun
+    // Face tests: applied where the predicted relative response is at least face_min_response and the sun
+    // is bright enough: the irradiance, the largest measured-to-predicted ratio of the other faces the
+    // prediction puts at others_min_predicted or more, must be at least others_min_irradiance (not in
+    // eclipse, not deep in penumbra). The deficit test compares with the prediction times that irradiance.
+    T face_min_response = T(0.4);
+    T face_deficit = T(0.3);  // fail below (irradiance × predicted − this), relative to full sun
     T face_excess = T(0.6);   // fail above (predicted + this): albedo adds at most ~0.4 on a nadir face
     T others_min_irradiance = T(0.5);
-    T others_min_predicted = T(0.3);  // the other faces' predicted responses must sum to this for a scale
-    T bus_tolerance = T(0.02);        // A: |i_sh[k] − (i_face[2k] − i_face[2k+1])|
+    T others_min_predicted = T(0.3);
+    T bus_tolerance = T(0.02);  // A: |i_sh[k] − (i_face[2k] − i_face[2k+1])|
     // Flip test: applied where the predicted field along the axis is at least flip_min_field; fails when
     // the measured half difference along the predicted sign is below flip_fraction of it.
     T flip_min_field = T(15e-6);  // T
