@@ -65,6 +65,7 @@ def summarize(path):
     ratios_sun, ratios_ecl = [], []
     sun_fault, sun_ctrl, ecl_fault, ecl_ctrl = [], [], [], []
     missed = []
+    times_by_run = {}
     for r in faulty:
         onset = float(r[onset_column])
         faces, axes = declared(r)
@@ -79,6 +80,7 @@ def summarize(path):
         if hit:
             detected += 1
             times.append(min(hit) - onset)
+            times_by_run[int(r["run"])] = min(hit) - onset
         else:
             missed.append(int(r["run"]))
         if set(faces) == expected_faces and set(axes) == expected_axes and all(
@@ -109,6 +111,14 @@ def summarize(path):
         print(f"- isolation right (exactly the expected elements): {right}/{n}; wrong or incomplete: {n - right}")
         if missed:
             print(f"- missed runs: {missed}")
+        if "mag.fault_stuck_mode" in faulty[0]:
+            for mode in sorted({r["mag.fault_stuck_mode"] for r in faulty}):
+                t = [times_by_run[int(r["run"])] for r in faulty
+                     if r["mag.fault_stuck_mode"] == mode and int(r["run"]) in times_by_run]
+                m = sum(1 for r in faulty if r["mag.fault_stuck_mode"] == mode)
+                if t:
+                    print(f"  - mode {mode}: {len(t)}/{m} detected, median {statistics.median(t):.1f} s, "
+                          f"max {max(t):.1f} s, within 60 s {sum(x <= 60.0 for x in t)}/{m}")
     print(f"- false alarms in the controls: {alarms} over {len(controls)} runs")
     for label, fa, co, ra in (("sunlit", sun_fault, sun_ctrl, ratios_sun), ("eclipse", ecl_fault, ecl_ctrl, ratios_ecl)):
         if ra:
