@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/system_description.hpp"
 #include "recorder.hpp"
-#include "system_description.hpp"
 
 namespace {
 

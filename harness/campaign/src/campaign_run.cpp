@@ -7,12 +7,12 @@
 
 #include "campaign_error.hpp"
 #include "draws.hpp"
-#include "execution.hpp"
-#include "interrupt.hpp"
+#include "engine/execution.hpp"
+#include "engine/interrupt.hpp"
+#include "engine/observer.hpp"
+#include "engine/run_defaults.hpp"
+#include "engine/setting.hpp"
 #include "metric_observer.hpp"
-#include "observer.hpp"
-#include "run_command.hpp"
-#include "setting.hpp"
 
 namespace campaign {
 

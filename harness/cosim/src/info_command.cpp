@@ -4,8 +4,8 @@
 #include <iomanip>
 #include <string_view>
 
+#include "engine/system_description.hpp"
 #include "fmi_loader/fmu.hpp"
-#include "system_description.hpp"
 
 namespace cosim {
 

@@ -5,15 +5,15 @@
 #include <cerrno>
 #include <iostream>
 
+#include "analysis/result_figures.hpp"
 #include "campaign_command.hpp"
-#include "cosim_error.hpp"
+#include "engine/cosim_error.hpp"
+#include "engine/interrupt.hpp"
+#include "engine/ssp_archive.hpp"
 #include "fmi_loader/loader_error.hpp"
 #include "info_command.hpp"
-#include "interrupt.hpp"
-#include "plot_command.hpp"
 #include "run_command.hpp"
 #include "simulate_command.hpp"
-#include "ssp_archive.hpp"
 
 int main(int argc, char** argv) {
     CLI::App app{"cosim: FMI 2.0 co-simulation master"};
@@ -138,7 +138,7 @@ int main(int argc, char** argv) {
             cosim::run_system(run_options, std::cout);
         }
         if (*plot) {
-            for (const auto& png : cosim::plot_results(plot_csv, plot_dir, std::cerr))
+            for (const auto& png : analysis::plot_results(plot_csv, plot_dir, std::cerr))
                 std::cout << png.string() << "\n";
         }
         if (*simulate) {
