@@ -47,9 +47,9 @@ void check_faults(const FaultParameters& f) {
                 name + "_end must be 0 (never clears) or after " + name + "_onset");
     }
     require(f.stuck_axis >= 0 && f.stuck_axis <= 3, "fault_stuck_axis must be 0 (none) or 1 ... 3 (X, Y, Z)");
-    require(f.stuck_mode == StuckMode::last || f.stuck_mode == StuckMode::rail_low ||
-                f.stuck_mode == StuckMode::rail_high,
-            "fault_stuck_mode must be 0 (last), 1 (rail_low) or 2 (rail_high)");
+    require(
+        f.stuck_mode == StuckMode::last || f.stuck_mode == StuckMode::rail_low || f.stuck_mode == StuckMode::rail_high,
+        "fault_stuck_mode must be 0 (last), 1 (rail_low) or 2 (rail_high)");
     require(f.spike_axis >= 0 && f.spike_axis <= 3, "fault_spike_axis must be 0 (none) or 1 ... 3 (X, Y, Z)");
     require(std::isfinite(f.spike_rate) && f.spike_rate >= 0.0, "fault_spike_rate must be finite and >= 0");
     require(std::isfinite(f.spike_size), "fault_spike_size must be finite");

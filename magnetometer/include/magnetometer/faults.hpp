@@ -35,9 +35,9 @@ struct FaultParameters {
     std::int32_t stuck_axis = 0;  // 0 = none, 1 … 3 = X, Y, Z
     StuckMode stuck_mode = StuckMode::last;
     FaultTimes stuck;
-    std::int32_t spike_axis = 0;  // 0 = none, 1 … 3
-    double spike_rate = 0.0;      // 1/s, mean rate of the pulses
-    double spike_size = 0.0;      // V, height of a pulse at the output
+    std::int32_t spike_axis = 0;   // 0 = none, 1 … 3
+    double spike_rate = 0.0;       // 1/s, mean rate of the pulses
+    double spike_size = 0.0;       // V, height of a pulse at the output
     double spike_duration = 1e-3;  // s, length of a pulse (and of a slot)
     std::int32_t spike_seed = 1;
     FaultTimes spikes;

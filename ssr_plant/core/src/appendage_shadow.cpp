@@ -45,7 +45,8 @@ double appendage_shadow_fraction(const Plate& plate, const Vec3& box, std::size_
     const auto height = [&](const Vec3& p) { return sign * p[axis] - plane; };  // in front of the face: > 0
 
     Polygon<Vec3> corners;
-    for (const auto [s, t] : {std::array{-0.5, -0.5}, std::array{0.5, -0.5}, std::array{0.5, 0.5}, std::array{-0.5, 0.5}}) {
+    for (const auto [s, t] :
+         {std::array{-0.5, -0.5}, std::array{0.5, -0.5}, std::array{0.5, 0.5}, std::array{-0.5, 0.5}}) {
         Vec3 p{};
         for (std::size_t j = 0; j < 3; ++j) p[j] = plate.center[j] + s * plate.side_a[j] + t * plate.side_b[j];
         corners.push(p);
