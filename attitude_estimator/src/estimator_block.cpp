@@ -352,7 +352,7 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
                 "onboard: time between two evaluations of the on-board orbit, sun and field models (each sample "
                 "interpolates between the two around it)")
         .range(0.01, 600.0);
-    // (The on-board orbit's position and sun distance are not outputs: the block has 70, a bridge frame carries
+    // (The on-board orbit's position and sun distance are not outputs: the block has 90, a bridge frame carries
     // up to 128.)
     t.output("ref_sun", &D::ref_sun, "1",
              "The sun reference (J2000) the last sample used: sun_ref, or the on-board one")
@@ -362,6 +362,7 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
              "The field reference (J2000) the last sample used: mag_ref, or the on-board model's")
         .discrete()
         .depends_on({});
+    declare_fault_variables(t);
     t.local("t_start", &D::t_start, "s", "Start time: sample k is due at t_start + k*sample_period").discrete();
 }
 

@@ -106,6 +106,7 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
     // The rate comes from two single-frame attitudes at most a few samples apart.
     m.max_init_gap = static_cast<T>(3.5 * d.sample_period);
 
+    s.faults = fault_settings_from<T>(d);
     s.reference_source = d.reference_source;
     if (d.reference_source == ReferenceSource::onboard) {
         const CalendarInstant epoch{.year = d.clock_epoch_year,
@@ -176,6 +177,7 @@ void store_outputs(EstimatorData& d, const OnboardOutputs<T>& out) {
     d.ref_sun = from<3>(out.references.sun);
     d.ref_mag = from<3>(out.references.field);
     d.mag_cal_valid = out.mag_cal_valid;
+    store_fault_outputs(d, out);
     if (d.filter == FilterKind::mekf) {
         d.q_filt = {out.q_filt.x, out.q_filt.y, out.q_filt.z, out.q_filt.w};
         d.omega_filt = from<3>(out.omega_filt);

@@ -261,17 +261,24 @@ MekfUpdate<T> mekf_update_sun(MekfState<T>& s, const Vec3<T>& sun_ref, const Vec
 
 template <class T>
 MekfUpdate<T> mekf_update_field(MekfState<T>& s, const Vec3<T>& field_ref, const Vec3<T>& field_body, T polarity,
-                                const MekfConfig<T>& c) noexcept {
+                                const MekfConfig<T>& c, std::uint8_t axes) noexcept {
     // The residual in µT: in tesla the innovation covariance (~1e-14 T²) has a determinant below float's
     // smallest normal number. The offset state stays in tesla (its Jacobian carries the 1e6).
     const T micro = T(1e6);
     const V3<T> predicted_field = matrix_of(s.q) * v3(field_ref);
-    const V3<T> y = micro * (v3(field_body) - (predicted_field + polarity * v3(s.mag_offset)));
+    V3<T> y = micro * (v3(field_body) - (predicted_field + polarity * v3(s.mag_offset)));
     Eigen::Matrix<T, 3, kMekfStates> h = Eigen::Matrix<T, 3, kMekfStates>::Zero();
     h.template block<3, 3>(0, kMekfAttitude) = skew<T>(micro * predicted_field);
     h.template block<3, 3>(0, kMekfOffset) = micro * polarity * Mat3<T>::Identity();
     const T sigma = micro * c.mag_sigma, ref_sigma = micro * c.mag_ref_sigma;
-    const Mat3<T> r = (sigma * sigma + ref_sigma * ref_sigma) * Mat3<T>::Identity();
+    Mat3<T> r = (sigma * sigma + ref_sigma * ref_sigma) * Mat3<T>::Identity();
+    for (int i = 0; i < 3; ++i) {
+        if (axes >> i & 1u) continue;
+        // An excluded axis: a zero row with unit variance gives it zero gain and zero NIS.
+        y(i) = T(0);
+        h.row(i).setZero();
+        r(i, i) = T(1);
+    }
     return linear_update<T, 3>(s, y, h, r, c.gate);
 }
 
@@ -371,7 +378,7 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
         s.mag_calibrated = calibrated;
         MekfConfig<T> mag_config = c;
         if (in.mag_calibrated && c.mag_sigma_calibrated > T(0)) mag_config.mag_sigma = c.mag_sigma_calibrated;
-        result.mag = mekf_update_field(s, in.mag_ref, in.mag_body, in.polarity, mag_config);
+        result.mag = mekf_update_field(s, in.mag_ref, in.mag_body, in.polarity, mag_config, in.mag_axes);
         ++offered;
         accepted += result.mag.accepted;
     }
@@ -405,8 +412,8 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
     template void mekf_propagate(MekfState<T>&, T, const MekfConfig<T>&) noexcept;                                   \
     template MekfUpdate<T> mekf_update_sun(MekfState<T>&, const Vec3<T>&, const Vec3<T>&,                            \
                                            const MekfConfig<T>&) noexcept;                                           \
-    template MekfUpdate<T> mekf_update_field(MekfState<T>&, const Vec3<T>&, const Vec3<T>&, T,                       \
-                                             const MekfConfig<T>&) noexcept;                                         \
+    template MekfUpdate<T> mekf_update_field(MekfState<T>&, const Vec3<T>&, const Vec3<T>&, T, const MekfConfig<T>&, \
+                                             std::uint8_t) noexcept;                                                 \
     template int mekf_update_faces(MekfState<T>&, const Vec3<T>&, const std::array<T, 6>&, const std::array<T, 6>&,  \
                                    std::uint8_t, const panel_response::Response<T>&, const MekfConfig<T>&) noexcept; \
     template T mekf_attitude_bound(const MekfState<T>&) noexcept;                                                    \

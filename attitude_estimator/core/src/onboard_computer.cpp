@@ -1,5 +1,8 @@
 #include "attitude_estimator/onboard_computer.hpp"
 
+#include "attitude_estimator/attitude_matrix.hpp"
+#include "attitude_estimator/vec3_math.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -48,7 +51,8 @@ Matrix3RowMajor<T> attitude_covariance_sqrt(const MekfState<T>& m) {
 
 template <class T>
 void update_filter(OnboardState<T>& s, const OnboardInputs<T>& in, const OnboardSettings<T>& settings, T t,
-                   const SampleResult<T>& r, const EstimatorConfig<T>& nominal, T polarity, OnboardOutputs<T>& out) {
+                   const SampleResult<T>& r, const EstimatorConfig<T>& nominal, T polarity, bool mag_valid,
+                   std::uint8_t mag_axes, OnboardOutputs<T>& out) {
     MekfSampleInputs<T> f;
     f.t = t;
     f.attitude_valid = r.valid;
@@ -56,7 +60,8 @@ void update_filter(OnboardState<T>& s, const OnboardInputs<T>& in, const Onboard
     f.sun_valid = r.sun_valid;
     f.sun_ref = in.sun_ref;
     f.sun_body = r.sun_meas;
-    f.mag_valid = r.mag_valid;
+    f.mag_valid = mag_valid;
+    f.mag_axes = mag_axes;
     f.mag_ref = in.mag_ref;
     // The field comes with the set/reset offset estimate taken out, B + p (v_os − applied)/S: the filter's
     // offset state is what is left of the offset, with the sign of this reading's polarity.
@@ -124,6 +129,74 @@ void update_rates(OnboardState<T>& s, const OnboardSettings<T>& settings, T t, c
     out.rate_valid = mean.valid && !step_aliases && !filter_aliases;
 }
 
+// The filter's prediction for time t: its attitude propagated by its rate since its last sample
+// (v_body(t) = exp(−[ω h×]) v_body(t_last)), applied to the sun and field references.
+template <class T>
+void predict(const MekfState<T>& m, const OnboardInputs<T>& in, T t, FaultObservation<T>& o) {
+    const Matrix3RowMajor<T> a = attitude_matrix(m.q);
+    Vec3<T> sun = multiply(a, in.sun_ref);
+    Vec3<T> field = multiply(a, in.mag_ref);
+    const Vec3<T> turn = scaled(m.omega, -(t - m.t_last));
+    const T angle = std::sqrt(squared_norm(turn));
+    if (angle > T(0)) {
+        const Vec3<T> axis = scaled(turn, T(1) / angle);
+        const T c = std::cos(angle), sn = std::sin(angle);
+        const auto rotate = [&](const Vec3<T>& v) {
+            const Vec3<T> kxv = cross(axis, v);
+            const T kv = dot(axis, v);
+            Vec3<T> w{};
+            for (std::size_t i = 0; i < 3; ++i) w[i] = v[i] * c + kxv[i] * sn + axis[i] * kv * (T(1) - c);
+            return w;
+        };
+        sun = rotate(sun);
+        field = rotate(field);
+    }
+    const T sun_norm = std::sqrt(squared_norm(sun));
+    o.sun_body = sun_norm > T(0) ? scaled(sun, T(1) / sun_norm) : Vec3<T>{};
+    o.field_body = field;
+    o.predicted = sun_norm > T(0);
+}
+
+// The tests' view of this sample: the raw readings (before any exclusion), the filter's prediction.
+template <class T>
+FaultObservation<T> observe(const OnboardState<T>& s, const OnboardInputs<T>& in, const OnboardSettings<T>& settings,
+                            const EstimatorConfig<T>& nominal, T t, T polarity, const SampleResult<T>& r,
+                            std::uint8_t axes_out) {
+    FaultObservation<T> o;
+    o.t = t;
+    o.sample_period = settings.sample_period;
+    o.response = &nominal.sun.response;
+    o.bus_available = true;
+    for (std::size_t k = 0; k < 6; ++k) {
+        o.i_face[k] = convert(nominal.face_adc[k], in.i_face[k]).value;
+        o.face_r[k] = o.i_face[k] / nominal.sun.i_face_norm[k];
+    }
+    const T v_ref = convert(nominal.mag_ref_adc, in.v_mag_ref).value;
+    for (std::size_t k = 0; k < 3; ++k) {
+        o.i_sh[k] = convert(nominal.sun_adc[k], in.i_sh[k]).value;
+        const AdcConfig<T>& adc = nominal.mag_adc[k];
+        const T v = convert(adc, in.v_mag[k]).value;
+        o.mag_reading[k] = v - v_ref;
+        o.at_rail[k] = !(v > adc.min + nominal.mag_rail_margin && v < adc.max - nominal.mag_rail_margin);
+    }
+    o.polarity = polarity;
+    o.sensitivity = nominal.mag_sensitivity;
+    o.field_usable = axes_out == 0 && r.mag_valid;
+    o.field = r.mag_field;
+    o.field_ref_norm = std::sqrt(squared_norm(in.mag_ref));
+    if (settings.filter == FilterKind::mekf && s.filter.stage == 2) predict(s.filter, in, t, o);
+    return o;
+}
+
+// No attitude from this sample's single frame (a vector it needs is excluded).
+template <class T>
+void drop_single_frame(SampleResult<T>& r) {
+    r.valid = false;
+    r.q = Quaternion<T>{};
+    r.a = Matrix3RowMajor<T>{1, 0, 0, 0, 1, 0, 0, 0, 1};
+    r.loss = T(0);
+}
+
 // The sample's inputs with the reference vectors the settings choose: the inputs' own, or the on-board
 // models' at time t (an element set SGP4 cannot propagate leaves the field zero: no field observation).
 template <class T>
@@ -179,8 +252,50 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
                                     .mag_offset = applied_offset(s.set_reset, settings.set_reset),
                                     .mag_gain = s.mag_cal.gain,
                                     .mag_cal_offset = s.mag_cal.offset};
-    out.sample = estimate_sample(sample_in, config, s.sun);
-    if (settings.mag_calibration && out.sample.mag_reading_usable) {
+    // Excluded faces read nothing; an excluded axis reads its null, so that its rail does not take the
+    // other two with it (its component is not used below).
+    const bool detecting = settings.faults.enabled;
+    const std::uint8_t faces_out = detecting ? excluded_faces(s.faults) : std::uint8_t{0};
+    const std::uint8_t axes_out = detecting ? excluded_axes(s.faults) : std::uint8_t{0};
+    SampleInputs<T> used_in = sample_in;
+    for (std::size_t k = 0; k < 6; ++k)
+        if (faces_out >> k & 1u) used_in.i_face[k] = T(0);
+    for (std::size_t k = 0; k < 3; ++k)
+        if (axes_out >> k & 1u) used_in.v_mag[k] = in.v_mag_ref;
+    out.sample = estimate_sample(used_in, config, s.sun);
+    bool filter_mag_valid = out.sample.mag_valid;
+    if (detecting) {
+        const FaultObservation<T> o = observe(s, in, settings, nominal, t, reading_polarity, out.sample, axes_out);
+        fault_detect(s.faults, o, settings.faults);
+        // An excluded face that may be lit (predicted within 3° of its horizon or facing the sun, or no
+        // prediction) leaves the sun vector without its light: no sun this sample. Dark, it changes nothing.
+        bool face_may_be_lit = false;
+        for (std::size_t k = 0; k < 6; ++k) {
+            const T toward = (k % 2 == 0 ? T(1) : T(-1)) * o.sun_body[k / 2];
+            if ((faces_out >> k & 1u) && (!o.predicted || toward > T(-0.05))) face_may_be_lit = true;
+        }
+        if (face_may_be_lit && out.sample.sun_valid) {
+            out.sample.sun_valid = false;
+            out.sample.sun_meas = Vec3<T>{};
+            drop_single_frame(out.sample);
+        }
+        // With an axis excluded the field is incomplete: no single-frame attitude; the filter takes the
+        // axes left.
+        if (axes_out != 0 && out.sample.mag_valid) {
+            out.sample.mag_valid = false;
+            out.sample.mag_meas = Vec3<T>{};
+            drop_single_frame(out.sample);
+        }
+        if (axes_out == 7) filter_mag_valid = false;
+    }
+    const FaultDetectionState<T>& fd = s.faults;
+    out.fault_face = fd.face_word;
+    out.fault_face_time = fd.face_time;
+    out.fault_mag_axis = fd.axis_word;
+    out.fault_mag_axis_time = fd.axis_time;
+    out.fault_mag_norm = fd.norm_word;
+    out.fault_mag_norm_time = fd.norm_time;
+    if (settings.mag_calibration && out.sample.mag_reading_usable && axes_out == 0) {
         // Against the reference field's magnitude only: no attitude needed (the next sample applies it).
         const T ref =
             std::sqrt(in.mag_ref[0] * in.mag_ref[0] + in.mag_ref[1] * in.mag_ref[1] + in.mag_ref[2] * in.mag_ref[2]);
@@ -197,7 +312,8 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
     out.mag_offset = applied_offset(s.set_reset, settings.set_reset);
     update_rates(s, settings, t, out.sample, out);
     if (settings.filter == FilterKind::mekf)
-        update_filter(s, in, settings, t, out.sample, nominal, reading_polarity, out);
+        update_filter(s, in, settings, t, out.sample, nominal, reading_polarity, filter_mag_valid,
+                      static_cast<std::uint8_t>(~axes_out & 7u), out);
     return out;
 }
 

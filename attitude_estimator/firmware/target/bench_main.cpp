@@ -294,6 +294,22 @@ int main() {
              d.reference_source = ReferenceSource::onboard;  // degree 8, a knot every 10 s (200 samples)
              d.tle_elements = {2461118.5, 14.98524078, 0.0012, 64.9, 3.1277, 90.376, 275.3137, 1.5e-4};
          }},
+        // Issue 28: the orbit's computer with set/reset pulses, without and with the fault detection.
+        {"difference_qmethod_mekf_onboard_references_setreset",
+         [](EstimatorData& d) {
+             d.filter = FilterKind::mekf;
+             d.reference_source = ReferenceSource::onboard;
+             d.tle_elements = {2461118.5, 14.98524078, 0.0012, 64.9, 3.1277, 90.376, 275.3137, 1.5e-4};
+             d.mag_set_reset_samples = 1;
+         }},
+        {"difference_qmethod_mekf_onboard_references_setreset_detect",
+         [](EstimatorData& d) {
+             d.filter = FilterKind::mekf;
+             d.reference_source = ReferenceSource::onboard;
+             d.tle_elements = {2461118.5, 14.98524078, 0.0012, 64.9, 3.1277, 90.376, 275.3137, 1.5e-4};
+             d.mag_set_reset_samples = 1;
+             d.detect_faults = true;
+         }},
         {"cones_qmethod_mekf_scale_setreset",
          [](EstimatorData& d) {
              d.sun_method = SunMethod::cones;

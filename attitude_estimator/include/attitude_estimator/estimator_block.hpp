@@ -29,6 +29,9 @@ private:
     std::unique_ptr<SpinSpectrum> spectrum_;
 };
 
+// The fault detection's parameters and outputs (fault_table.cpp).
+void declare_fault_variables(fmu::Table<EstimatorData>& t);
+
 class EstimatorBlock : public fmu::Block<EstimatorBlock, EstimatorData> {
 public:
     static void declare(fmu::Table<EstimatorData>& t);

@@ -111,10 +111,11 @@ MekfUpdate<T> mekf_update_sun(MekfState<T>& s, const Vec3<T>& sun_ref, const Vec
                               const MekfConfig<T>& config) noexcept;
 
 // Field update: field_ref (inertial, T) and field_body (measured, T); polarity p = ±1 is the sign the
-// offset takes in this reading (the set/reset state the reading was taken in).
+// offset takes in this reading (the set/reset state the reading was taken in). Only the axes in `axes`
+// (bit k = axis k) are used: an excluded axis (a declared fault, fault_detection.hpp) adds nothing.
 template <class T>
 MekfUpdate<T> mekf_update_field(MekfState<T>& s, const Vec3<T>& field_ref, const Vec3<T>& field_body, T polarity,
-                                const MekfConfig<T>& config) noexcept;
+                                const MekfConfig<T>& config, std::uint8_t axes = 7) noexcept;
 
 // Face update (the panel scale): relative responses r[k] = i_face[k] / i_face_norm[k] (nominal
 // normalization) of the faces in `use` (bit k = face k), predicted as (1 + ε) (R(n_k · A sun_ref) + a_k)
@@ -145,6 +146,7 @@ struct MekfSampleInputs {
     Vec3<T> mag_body{};           // T
     T polarity = T(1);            // set/reset sign of this field reading
     bool mag_calibrated = false;  // mag_body comes through the in-flight calibration (mag_sigma_calibrated)
+    std::uint8_t mag_axes = 7;    // the magnetometer axes to use (bit k = axis k; fault_detection.hpp)
     // Face update (only with config.estimate_scale): relative responses and the faces to use.
     std::array<T, 6> face_r{};
     std::array<T, 6> face_albedo{};  // relative albedo on each face (cones' fit), taken out of face_r's model
@@ -175,7 +177,7 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
     extern template MekfUpdate<T> mekf_update_sun(MekfState<T>&, const Vec3<T>&, const Vec3<T>&,                     \
                                                   const MekfConfig<T>&) noexcept;                                    \
     extern template MekfUpdate<T> mekf_update_field(MekfState<T>&, const Vec3<T>&, const Vec3<T>&, T,                \
-                                                    const MekfConfig<T>&) noexcept;                                  \
+                                                    const MekfConfig<T>&, std::uint8_t) noexcept;                    \
     extern template int mekf_update_faces(MekfState<T>&, const Vec3<T>&, const std::array<T, 6>&,                    \
                                           const std::array<T, 6>&, std::uint8_t, const panel_response::Response<T>&, \
                                           const MekfConfig<T>&) noexcept;                                            \

@@ -12,6 +12,7 @@
 
 #include "attitude_estimator/angular_rate.hpp"
 #include "attitude_estimator/estimator.hpp"
+#include "attitude_estimator/fault_detection.hpp"
 #include "attitude_estimator/mag_calibration.hpp"
 #include "attitude_estimator/mekf.hpp"
 #include "attitude_estimator/onboard_references.hpp"
@@ -41,6 +42,9 @@ struct OnboardSettings {
     // computer's own element set, sun ephemeris and field model (onboard_references.hpp).
     ReferenceSource reference_source = ReferenceSource::inputs;
     OnboardReferenceConfig<T> references{};
+    // Fault detection, isolation and recovery (fault_detection.hpp; off by default). Its predictive tests
+    // need the filter; its bus test needs both i_sh and i_face wired.
+    FaultDetectionConfig<T> faults{};
 };
 
 template <class T>
@@ -69,7 +73,8 @@ struct OnboardState {
     bool has_last = false;
     T step_turn = T(0);  // rad per sample (exponential average)
     std::int32_t samples = 0;
-    ReferenceState<T> references{};  // the on-board models' last two evaluations
+    ReferenceState<T> references{};   // the on-board models' last two evaluations
+    FaultDetectionState<T> faults{};  // the tests' evidence and the faults declared (latched)
 };
 
 template <class T>
@@ -95,6 +100,14 @@ struct OnboardOutputs {
     bool mag_cal_valid = false;  // an in-flight calibration is applied
     Matrix3RowMajor<T> mag_cal_gain{1, 0, 0, 0, 1, 0, 0, 0, 1};  // its I + D
     Vec3<T> mag_cal_offset{};                                    // its b, T
+    // Declared faults (fault_detection.hpp): a word per face and per magnetometer axis (0: healthy) and
+    // when each was first declared (s; −1: never); the field-norm test (detection only).
+    std::array<std::uint32_t, 6> fault_face{};
+    std::array<T, 6> fault_face_time{T(-1), T(-1), T(-1), T(-1), T(-1), T(-1)};
+    std::array<std::uint32_t, 3> fault_mag_axis{};
+    std::array<T, 3> fault_mag_axis_time{T(-1), T(-1), T(-1)};
+    std::uint32_t fault_mag_norm = 0;
+    T fault_mag_norm_time = T(-1);
 };
 
 // Power-up: nothing remembered, the sensor set, and no pulse at the first sample (a host re-reads the

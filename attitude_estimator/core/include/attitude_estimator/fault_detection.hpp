@@ -1,0 +1,121 @@
+// Fault detection and isolation on board (issue 28): the computer checks its measurements against each
+// other and against the filter's prediction, and declares a fault on a face or a magnetometer axis once a
+// test has failed for a confirmation time. A declared fault is latched: the face or axis stays excluded
+// (onboard_computer.cpp applies the exclusion to the single-frame solution and the filter).
+//
+// The tests (docs/faults.md, "Detection"):
+//  - face deficit / excess: a face's relative current r_k = i_k / i_face_norm_k against the response the
+//    filter predicts from its attitude and the sun reference, R(n_k · Â ŝ_ref), scaled by the irradiance the
+//    other faces show (eclipse and penumbra: the largest of their measured-to-predicted ratios); albedo only
+//    adds current, so the deficit test ignores it and the excess test allows for it;
+//  - bus: the per-axis Hall sample/hold i_sh[k] against the difference of its two faces' channels
+//    (ssr_plant: i_sh[k] = i_face_sh[2k] − i_face_sh[2k+1] exactly when healthy);
+//  - axis rail: a magnetometer channel within the rail margin of its converter's range ends;
+//  - axis flip: with set/reset pulses, two readings of opposite polarity differ by 2 S B_k; an axis that
+//    does not flip (stuck, or its strap failed) shows no difference where the predicted field along it
+//    is large;
+//  - field norm: |B| measured against |B_ref| (detection only: it names no axis).
+// Float or double, fixed sizes, no heap, no exceptions (the firmware runs it).
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "attitude_estimator/types.hpp"
+#include "panel_response/kelly.hpp"
+
+namespace attitude_estimator {
+
+// Bits of a face's fault word.
+inline constexpr std::uint32_t kFaultFaceDeficit = 1u;  // reads well below the predicted response
+inline constexpr std::uint32_t kFaultFaceExcess = 2u;   // reads well above it (more than albedo can add)
+inline constexpr std::uint32_t kFaultFaceBus = 4u;      // its axis' Hall current disagrees with the face pair
+// Bits of a magnetometer axis' fault word.
+inline constexpr std::uint32_t kFaultAxisRail = 1u;    // at a rail of its converter
+inline constexpr std::uint32_t kFaultAxisNoFlip = 2u;  // does not flip with the set/reset polarity
+
+template <class T>
+struct FaultDetectionConfig {
+    bool enabled = false;
+    T confirm_time = T(5);  // s: a test must fail this long (not interrupted by a pass) before a declaration
+    // Face tests: applied where the predicted relative response is at least face_min_response and the sun
+    // is bright enough: the irradiance, the largest measured-to-predicted ratio of the other faces the
+    // prediction puts at others_min_predicted or more, must be at least others_min_irradiance (not in
+    // eclipse, not deep in penumbra). The deficit test compares with the prediction times that irradiance.
+    T face_min_response = T(0.4);
+    T face_deficit = T(0.3);  // fail below (irradiance × predicted − this), relative to full sun
+    T face_excess = T(0.6);   // fail above (predicted + this): albedo adds at most ~0.4 on a nadir face
+    T others_min_irradiance = T(0.5);
+    T others_min_predicted = T(0.3);
+    T bus_tolerance = T(0.02);  // A: |i_sh[k] − (i_face[2k] − i_face[2k+1])|
+    // Flip test: applied where the predicted field along the axis is at least flip_min_field; fails when
+    // the measured half difference along the predicted sign is below flip_fraction of it.
+    T flip_min_field = T(15e-6);  // T
+    T flip_fraction = T(0.25);
+    T norm_tolerance = T(12e-6);  // T: | |B| − |B_ref| |
+};
+
+// What one sample offers the tests. Predictions are those of the filter (zero / false when it is not
+// running): then only the bus, rail and norm tests can run.
+template <class T>
+struct FaultObservation {
+    T t = T(0);
+    std::array<T, 6> face_r{};      // 1: digitized face currents over their normalization (at the sun distance)
+    std::array<T, 6> i_face{};      // A: digitized face currents
+    Vec3<T> i_sh{};                 // A: digitized per-axis differential currents
+    bool bus_available = false;     // both i_sh and i_face are read (the bus test needs both)
+    bool predicted = false;         // the filter runs: the two predictions below hold
+    Vec3<T> sun_body{};             // unit sun direction predicted in body axes
+    Vec3<T> field_body{};           // T: field predicted in body axes
+    Vec3<T> mag_reading{};          // V: digitized v_mag − v_mag_ref (offset and polarity still in)
+    T polarity = T(1);              // the set/reset polarity the reading was taken in
+    T sensitivity = T(1e4);         // V/T
+    std::array<bool, 3> at_rail{};  // each channel within the rail margin of its converter's ends
+    bool field_usable = false;      // the measured field below is complete (no axis excluded or at a rail)
+    Vec3<T> field{};                // T: measured field (offset removed, calibrated when the calibration applies)
+    T field_ref_norm = T(0);        // T: |B_ref| (0: no reference)
+    T sample_period = T(0.05);      // s
+    const panel_response::Response<T>* response = nullptr;  // the panels' angular law
+};
+
+// Trivially copyable (part of the FMU state and of the firmware's memory).
+template <class T>
+struct FaultDetectionState {
+    // Seconds each test has been failing without a pass in between: faces (deficit, excess, bus), axes
+    // (rail, flip), norm.
+    std::array<std::array<T, 3>, 6> face_failing{};
+    std::array<std::array<T, 2>, 3> axis_failing{};
+    T norm_failing = T(0);
+    std::array<std::uint32_t, 6> face_word{};  // declared faults (kFaultFace* bits), latched
+    std::array<T, 6> face_time{T(-1), T(-1), T(-1), T(-1), T(-1), T(-1)};  // s, when declared (−1: never)
+    std::array<std::uint32_t, 3> axis_word{};                              // kFaultAxis* bits, latched
+    std::array<T, 3> axis_time{T(-1), T(-1), T(-1)};
+    std::uint32_t norm_word = 0;  // 1 once the field-norm test has been confirmed
+    T norm_time = T(-1);
+    Vec3<T> last_reading{};  // the previous sample's mag_reading and polarity (flip test)
+    T last_polarity = T(0);
+    T last_t = T(0);
+    bool has_last = false;
+};
+
+// One sample of every test that the observation allows; declares faults whose test has failed for
+// config.confirm_time (at that sample's t).
+template <class T>
+void fault_detect(FaultDetectionState<T>& s, const FaultObservation<T>& o, const FaultDetectionConfig<T>& c) noexcept;
+
+// Faces excluded (bit k = face k) and axes excluded (bit k = axis k) by the faults declared so far.
+template <class T>
+std::uint8_t excluded_faces(const FaultDetectionState<T>& s) noexcept;
+template <class T>
+std::uint8_t excluded_axes(const FaultDetectionState<T>& s) noexcept;
+
+extern template void fault_detect(FaultDetectionState<float>&, const FaultObservation<float>&,
+                                  const FaultDetectionConfig<float>&) noexcept;
+extern template void fault_detect(FaultDetectionState<double>&, const FaultObservation<double>&,
+                                  const FaultDetectionConfig<double>&) noexcept;
+extern template std::uint8_t excluded_faces(const FaultDetectionState<float>&) noexcept;
+extern template std::uint8_t excluded_faces(const FaultDetectionState<double>&) noexcept;
+extern template std::uint8_t excluded_axes(const FaultDetectionState<float>&) noexcept;
+extern template std::uint8_t excluded_axes(const FaultDetectionState<double>&) noexcept;
+
+}  // namespace attitude_estimator

@@ -1,0 +1,41 @@
+// The fault detection's parameters and outputs (estimator_data.hpp) and their conversions to and from the
+// core (fault_detection.hpp). FMI-free: the block and the firmware build it.
+#include "attitude_estimator/estimator_data.hpp"
+
+namespace attitude_estimator {
+
+template <class T>
+FaultDetectionConfig<T> fault_settings_from(const EstimatorData& d) {
+    return FaultDetectionConfig<T>{.enabled = d.detect_faults,
+                                   .confirm_time = static_cast<T>(d.detect_confirm_time),
+                                   .face_min_response = static_cast<T>(d.detect_face_min_response),
+                                   .face_deficit = static_cast<T>(d.detect_face_deficit),
+                                   .face_excess = static_cast<T>(d.detect_face_excess),
+                                   .others_min_irradiance = static_cast<T>(d.detect_irradiance_min),
+                                   .others_min_predicted = T(0.3),
+                                   .bus_tolerance = static_cast<T>(d.detect_bus_tolerance),
+                                   .flip_min_field = static_cast<T>(d.detect_flip_min_field),
+                                   .flip_fraction = static_cast<T>(d.detect_flip_fraction),
+                                   .norm_tolerance = static_cast<T>(d.detect_norm_tolerance)};
+}
+
+template <class T>
+void store_fault_outputs(EstimatorData& d, const OnboardOutputs<T>& out) {
+    for (std::size_t k = 0; k < 6; ++k) {
+        d.fault_face[k] = static_cast<std::int32_t>(out.fault_face[k]);
+        d.fault_face_time[k] = static_cast<double>(out.fault_face_time[k]);
+    }
+    for (std::size_t k = 0; k < 3; ++k) {
+        d.fault_mag_axis[k] = static_cast<std::int32_t>(out.fault_mag_axis[k]);
+        d.fault_mag_axis_time[k] = static_cast<double>(out.fault_mag_axis_time[k]);
+    }
+    d.fault_mag_norm = static_cast<std::int32_t>(out.fault_mag_norm);
+    d.fault_mag_norm_time = static_cast<double>(out.fault_mag_norm_time);
+}
+
+template FaultDetectionConfig<float> fault_settings_from(const EstimatorData&);
+template FaultDetectionConfig<double> fault_settings_from(const EstimatorData&);
+template void store_fault_outputs(EstimatorData&, const OnboardOutputs<float>&);
+template void store_fault_outputs(EstimatorData&, const OnboardOutputs<double>&);
+
+}  // namespace attitude_estimator

@@ -1,0 +1,71 @@
+// The fault detection's variables in the estimator's table (fault_detection.hpp, docs/faults.md).
+#include "attitude_estimator/estimator_block.hpp"
+
+namespace attitude_estimator {
+
+void declare_fault_variables(fmu::Table<EstimatorData>& t) {
+    using D = EstimatorData;
+    t.parameter("detect_faults", &D::detect_faults, "",
+                "Detect, isolate and exclude faulty faces and magnetometer axes (per-face innovation, face "
+                "pair against i_sh, rails, set/reset flip, field norm); the predictive tests need filter = mekf");
+    t.parameter("detect_confirm_time", &D::detect_confirm_time, "s",
+                "detect_faults: a test must fail this long, without a pass between, before a fault is declared")
+        .range(0.0, 3600.0);
+    t.parameter("detect_face_min_response", &D::detect_face_min_response, "1",
+                "detect_faults: a face is tested where its predicted relative response is at least this")
+        .range(0.05, 1.0);
+    t.parameter("detect_face_deficit", &D::detect_face_deficit, "1",
+                "detect_faults: a face reading this far below its predicted relative response fails")
+        .range(0.01, 1.0);
+    t.parameter("detect_face_excess", &D::detect_face_excess, "1",
+                "detect_faults: a face reading this far above its predicted relative response fails (albedo "
+                "adds up to about 0.4 on a face toward nadir)")
+        .range(0.01, 10.0);
+    t.parameter("detect_irradiance_min", &D::detect_irradiance_min, "1",
+                "detect_faults: faces are tested while the other faces show at least this fraction of the sun "
+                "predicted on them (not in eclipse or deep penumbra)")
+        .range(0.01, 1.0);
+    t.parameter("detect_bus_tolerance", &D::detect_bus_tolerance, "A",
+                "detect_faults: largest |i_sh[k] - (i_face[2k-1] - i_face[2k])| of a healthy face pair")
+        .range(1e-6, 10.0);
+    t.parameter("detect_flip_min_field", &D::detect_flip_min_field, "T",
+                "detect_faults: an axis' set/reset flip is tested where the predicted field along it is at least "
+                "this")
+        .range(1e-7, 1e-3);
+    t.parameter("detect_flip_fraction", &D::detect_flip_fraction, "1",
+                "detect_faults: an axis whose reading flips by less than this fraction of the predicted field "
+                "fails")
+        .range(0.01, 1.0);
+    t.parameter("detect_norm_tolerance", &D::detect_norm_tolerance, "T",
+                "detect_faults: largest | |B| - |B_ref| | of a healthy field")
+        .range(1e-8, 1e-3);
+    t.output("fault_face", &D::fault_face, "",
+             "detect_faults: fault word per face (+x, -x, +y, -y, +z, -z), 0 healthy; bits 1 reads below the "
+             "prediction, 2 above it, 4 disagrees with its axis' i_sh; a declared face is excluded")
+        .discrete()
+        .depends_on({});
+    t.output("fault_face_time", &D::fault_face_time, "s",
+             "detect_faults: when each face's fault was declared (-1: never)")
+        .discrete()
+        .depends_on({});
+    t.output("fault_mag_axis", &D::fault_mag_axis, "",
+             "detect_faults: fault word per magnetometer axis, 0 healthy; bits 1 at a rail, 2 does not flip with "
+             "the set/reset polarity; a declared axis is excluded")
+        .discrete()
+        .depends_on({});
+    t.output("fault_mag_axis_time", &D::fault_mag_axis_time, "s",
+             "detect_faults: when each axis' fault was declared (-1: never)")
+        .discrete()
+        .depends_on({});
+    t.output("fault_mag_norm", &D::fault_mag_norm, "",
+             "detect_faults: 1 once the measured field's magnitude has disagreed with the reference's (names no "
+             "axis, excludes nothing)")
+        .discrete()
+        .depends_on({});
+    t.output("fault_mag_norm_time", &D::fault_mag_norm_time, "s",
+             "detect_faults: when fault_mag_norm was declared (-1: never)")
+        .discrete()
+        .depends_on({});
+}
+
+}  // namespace attitude_estimator
