@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "campaign_error.hpp"
+#include "name_hint.hpp"
 #include "plot_command.hpp"
 #include "statistics.hpp"
 #include "value_text.hpp"
@@ -45,11 +46,28 @@ MetricObserver::Column MetricObserver::resolve(const cosim::System& system, cons
     if (index == components.size())
         throw CampaignError("metric " + metric + ": no component named '" + name.substr(0, dot) + "'");
     const auto* v = components[index].description().find_variable(name.substr(dot + 1));
-    if (!v) throw CampaignError("metric " + metric + ": no variable '" + name + "'");
+    if (!v)
+        throw CampaignError("metric " + metric + ": " +
+                            cosim::unknown_variable_message(components[index].description(), name.substr(0, dot),
+                                                            name.substr(dot + 1)));
     if (v->type == fmi_loader::VariableType::string)
         throw CampaignError("metric " + metric + ": '" + name + "' is a String");
     return {index, v};
 }
+
+namespace {
+
+// A metric's condition ("env.irradiance > 0") on the value read at an output point.
+bool holds(double x, const std::string& op, double value) {
+    if (op == "<") return x < value;
+    if (op == "<=") return x <= value;
+    if (op == ">") return x > value;
+    if (op == ">=") return x >= value;
+    if (op == "==") return x == value;
+    return x != value;
+}
+
+}  // namespace
 
 double MetricObserver::read(cosim::System& system, const Column& c) {
     auto& instance = *system.components()[c.component].instance;
@@ -65,7 +83,7 @@ double MetricObserver::read(cosim::System& system, const Column& c) {
 
 MetricObserver::MetricObserver(const std::vector<Metric>& metrics, const cosim::System& system) {
     for (const auto& m : metrics) {
-        Tracked t{&m, {}, {}, {}, {}, {}, {}};
+        Tracked t{&m, {}, {}, {}, {}, {}, {}, {}};
         const int n = m.kind == MetricKind::quaternion_angle ? 4 : 3;
         if (m.kind == MetricKind::column) {
             t.a.push_back(resolve(system, m.a, m.name));
@@ -75,6 +93,7 @@ MetricObserver::MetricObserver(const std::vector<Metric>& metrics, const cosim::
         }
         if (!m.valid.empty()) t.valid = resolve(system, m.valid, m.name);
         if (!m.when.empty()) t.when = resolve(system, m.when, m.name);
+        if (!m.condition_column.empty()) t.condition = resolve(system, m.condition_column, m.name);
         tracked_.push_back(std::move(t));
     }
 }
@@ -92,6 +111,7 @@ void MetricObserver::sample(double t, cosim::System& system) {
         }
         if (!changed || t < m.after) continue;
         if (k.valid && read(system, *k.valid) == 0.0) continue;
+        if (k.condition && !holds(read(system, *k.condition), m.condition_op, m.condition_value)) continue;
         double value = 0.0;
         if (m.kind == MetricKind::column) {
             value = read(system, k.a[0]);

@@ -1,13 +1,14 @@
 #include "component_instance.hpp"
 
 #include "cosim_error.hpp"
+#include "name_hint.hpp"
 #include "value_text.hpp"
 
 namespace cosim {
 
 void ComponentInstance::apply(const Setting& s) {
     const auto* v = description().find_variable(s.variable);
-    if (!v) throw CosimError(name() + ": no variable named '" + s.variable + "'");
+    if (!v) throw CosimError(unknown_variable_message(description(), name(), s.variable));
     const fmi2ValueReference vr = v->value_reference;
     const TypedValue x = typed_value(description(), *v, s, name() + "." + s.variable);
     if (const auto* r = std::get_if<double>(&x)) set_real(vr, *r);

@@ -5,6 +5,7 @@
 
 #include "cosim_error.hpp"
 #include "csv_table.hpp"
+#include "name_hint.hpp"
 #include "value_text.hpp"
 
 namespace cosim {
@@ -26,7 +27,9 @@ CsvWriter::CsvWriter(const std::filesystem::path& file, const System& system, co
             if (dot == std::string::npos) throw CosimError("--columns expects component.variable, got '" + name + "'");
             const std::size_t i = system.component_index(name.substr(0, dot));
             const auto* v = comps[i].description().find_variable(name.substr(dot + 1));
-            if (!v) throw CosimError("no variable '" + name.substr(dot + 1) + "' in component '" + comps[i].name + "'");
+            if (!v)
+                throw CosimError("--columns: " +
+                                 unknown_variable_message(comps[i].description(), comps[i].name, name.substr(dot + 1)));
             columns_.push_back({i, v});
         }
     }

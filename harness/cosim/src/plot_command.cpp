@@ -64,12 +64,18 @@ std::string flat_range(const std::vector<Series>& series, std::size_t first_row)
     return buf;
 }
 
+// How every figure of one plot_results call is drawn: the terminal, and the eclipse to shade.
+struct Style {
+    std::string format = "png";
+    const std::vector<double>* irradiance = nullptr;  // 0 in the Earth's shadow; null: no shading
+};
+
 // One figure: writes the data and a gnuplot script, runs gnuplot in out_dir (no path in the script),
-// returns the PNG.
-std::filesystem::path draw(const std::filesystem::path& out_dir, const std::string& name, const std::string& title,
-                           const std::string& ylabel, const std::vector<double>& time,
+// returns the image. The eclipse (irradiance 0) is shaded grey behind the series.
+std::filesystem::path draw(const std::filesystem::path& out_dir, const Style& style, const std::string& name,
+                           const std::string& title, const std::string& ylabel, const std::vector<double>& time,
                            const std::vector<Series>& series, std::size_t first_row = 0) {
-    const std::string data = name + ".dat", png = name + ".png";
+    const std::string data = name + ".dat", image = name + "." + style.format;
     struct Remove {
         std::filesystem::path file;
         ~Remove() {
@@ -77,27 +83,38 @@ std::filesystem::path draw(const std::filesystem::path& out_dir, const std::stri
             std::filesystem::remove(file, ec);
         }
     } remove_data{out_dir / data};
+    bool shaded = false;
     {
         std::ofstream d(out_dir / data);
         for (std::size_t r = first_row; r < time.size(); ++r) {
             d << time[r];
             for (const auto& s : series) d << ' ' << s.values[r];
-            d << '\n';
+            const bool eclipse = style.irradiance && (*style.irradiance)[r] <= 0.0;
+            shaded = shaded || eclipse;
+            d << ' ' << (eclipse ? "1" : "nan") << '\n';
         }
         d.flush();
         if (!d) throw CosimError("cannot write " + (out_dir / data).string());
     }
-    std::string script =
-        "set terminal pngcairo noenhanced size 1100,600 font 'sans,11'\nset output " + gnuplot_string(png) +
-        "\nset title " + gnuplot_string(title) + "\nset xlabel 'time (s)'\nset ylabel " + gnuplot_string(ylabel) +
-        "\nset grid\nset key outside right\nset datafile missing 'nan'\n" + flat_range(series, first_row) + "plot ";
+    const std::string terminal = style.format == "svg" ? "svg noenhanced size 1100,600 font 'sans,11'"
+                                                       : "pngcairo noenhanced size 1100,600 font 'sans,11'";
+    std::string script = "set terminal " + terminal + "\nset output " + gnuplot_string(image) + "\nset title " +
+                         gnuplot_string(title) + "\nset xlabel 'time (s)'\nset ylabel " + gnuplot_string(ylabel) +
+                         "\nset grid\nset key below\nset datafile missing 'nan'\n" + flat_range(series, first_row);
+    std::string plots;
+    if (shaded) {
+        // Eclipse rows as boxes of height 1 on the second y axis (0..1, not shown): grey bands behind.
+        script += "set y2range [0:1]\nunset y2tics\nset style fill transparent solid 0.15 noborder\n";
+        plots += gnuplot_string(data) + " using 1:" + std::to_string(series.size() + 2) +
+                 " axes x1y2 with boxes lc rgb 'gray30' title 'eclipse'";
+    }
     for (std::size_t i = 0; i < series.size(); ++i)
-        script += (i ? ", " : "") + gnuplot_string(data) + " using 1:" + std::to_string(i + 2) +
-                  (series[i].points ? " with points pt 7 ps 0.7" : " with lines lw 2") + " title " +
-                  gnuplot_string(series[i].title);
-    script += "\n";
-    run_gnuplot(out_dir, script, png);
-    return out_dir / png;
+        plots += (plots.empty() ? "" : ", ") + gnuplot_string(data) + " using 1:" + std::to_string(i + 2) +
+                 (series[i].points ? " with points pt 7 ps 0.7" : " with lines lw 2") + " title " +
+                 gnuplot_string(series[i].title);
+    script += "plot " + plots + "\n";
+    run_gnuplot(out_dir, script, image);
+    return out_dir / image;
 }
 
 // Rows where the estimate changed (the on-board computer took a sample) while it was valid: where an error
@@ -133,19 +150,33 @@ Series error_series(const std::string& what, const std::vector<double>& error, c
     return s;
 }
 
+std::string html_escape(const std::string& text) {
+    std::string out;
+    for (char c : text)
+        out += c == '<'   ? std::string("&lt;")
+               : c == '&' ? std::string("&amp;")
+               : c == '"' ? std::string("&quot;")
+                          : std::string(1, c);
+    return out;
+}
+
 // results/index.html: every figure of the folder, the error statistics of this CSV, and the run's
 // statistics when a run_statistics.txt lies beside them (scripts/run_seed.sh writes it).
 void write_index(const std::filesystem::path& out_dir, const std::filesystem::path& csv, const std::string& summary) {
     std::vector<std::filesystem::path> pngs;
     for (const auto& e : std::filesystem::recursive_directory_iterator(out_dir))
-        if (e.path().extension() == ".png") pngs.push_back(std::filesystem::relative(e.path(), out_dir));
+        if (e.path().extension() == ".png" || e.path().extension() == ".svg")
+            pngs.push_back(std::filesystem::relative(e.path(), out_dir));
     std::sort(pngs.begin(), pngs.end());
     const auto index = out_dir / "index.html";
     std::ofstream h(index);
     h << "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>cosim results</title>"
          "<style>body{font-family:sans-serif;max-width:1150px;margin:auto}td,th{padding:2px 10px}"
          "img{max-width:100%}</style></head><body>\n<h1>Results</h1>\n<p>From <code>"
-      << csv.filename().string() << "</code>.</p>\n";
+      << html_escape(csv.filename().string()) << "</code> (<a href=\""
+      << html_escape(
+             std::filesystem::relative(std::filesystem::absolute(csv), std::filesystem::absolute(out_dir)).string())
+      << "\">the CSV</a>).</p>\n";
     if (!summary.empty())
         h << "<h2>Errors at the estimator's samples</h2>\n<table><tr><th>error</th><th>samples</th><th>median "
              "(deg)</th><th>95th percentile (deg)</th></tr>\n"
@@ -154,10 +185,7 @@ void write_index(const std::filesystem::path& out_dir, const std::filesystem::pa
     if (std::filesystem::exists(stats)) {
         std::ifstream in(stats);
         std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        std::string escaped;
-        for (char c : text)
-            escaped += c == '<' ? std::string("&lt;") : c == '&' ? std::string("&amp;") : std::string(1, c);
-        h << "<h2>Run statistics and parameters</h2>\n<pre>" << escaped << "</pre>\n";
+        h << "<h2>Run statistics and parameters</h2>\n<pre>" << html_escape(text) << "</pre>\n";
     }
     h << "<h2>Figures</h2>\n";
     for (const auto& p : pngs) h << "<h3>" << p.stem().string() << "</h3>\n<img src=\"" << p.string() << "\">\n";
@@ -169,7 +197,9 @@ void write_index(const std::filesystem::path& out_dir, const std::filesystem::pa
 }  // namespace
 
 std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv, const std::filesystem::path& out_dir,
-                                                std::ostream& notes) {
+                                                std::ostream& notes, const PlotOptions& options) {
+    if (options.format != "png" && options.format != "svg")
+        throw CosimError("--format " + options.format + ": png or svg");
     const CsvTable table = read_csv(csv);
     const auto time_col = table.find("time");
     if (!time_col) throw CosimError(csv.string() + ": no time column");
@@ -191,6 +221,19 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
         const auto i = table.find(name);
         return i ? &table.columns[*i] : nullptr;
     };
+    Style style;
+    style.format = options.format;
+    style.irradiance = column("irradiance");
+    // --columns: any variables against time, in one figure.
+    if (!options.columns.empty()) {
+        std::vector<Series> chosen;
+        for (const auto& name : options.columns) {
+            const auto* c = column(name);
+            if (!c) throw CosimError(csv.string() + ": no column '" + name + "'");
+            chosen.push_back({name, *c});
+        }
+        add([&] { return draw(out_dir, style, "columns", "Chosen columns", "value", time, chosen); });
+    }
     // A CSV sampled finer than 50 us (a tenth of a 5 kHz PWM period) is a close-up of the bus: its ripple only.
     const bool close_up = time.size() > 2 && time[1] - time[0] <= 50e-6;
 
@@ -204,12 +247,12 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
         if (!real || !meas) continue;
         sun_real.push_back(real);
         sun_meas.push_back(meas);
-        const auto use = update_rows({meas}, nullptr);
+        const auto use = update_rows({meas}, column("sun_valid"));  // an invalid sample is no measurement
         Series acquired{std::string("acquired s") + axis[i - 1], std::vector<double>(time.size(), std::nan("")), true};
         for (std::size_t r = 0; r < time.size(); ++r)
             if (use[r]) acquired.values[r] = (*meas)[r];
         add([&] {
-            return draw(out_dir, std::string("sun_vector_") + axis[i - 1],
+            return draw(out_dir, style, std::string("sun_vector_") + axis[i - 1],
                         std::string("Sun vector, body ") + axis[i - 1] + ": real and acquired (seed 000 fig. 8)",
                         "component", time, {{std::string("real s") + axis[i - 1], *real}, acquired});
         });
@@ -229,8 +272,8 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
         }
         const auto use = update_rows(sun_meas, column("sun_valid"));
         add([&] {
-            return draw(out_dir, "sun_error", "Sun vector error at the estimator samples (while valid)", "degrees",
-                        time, {error_series("sun vector error", error, use, summary)});
+            return draw(out_dir, style, "sun_error", "Sun vector error at the estimator samples (while valid)",
+                        "degrees", time, {error_series("sun vector error", error, use, summary)});
         });
     } else if (!close_up) {
         notes << "no sun_body / sun_meas columns: sun vector figures skipped\n";
@@ -239,50 +282,63 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
     if (const auto* v = column("v_bus")) {
         if (!close_up)
             add([&] {
-                return draw(out_dir, "bus_voltage", "Bus voltage (seed 000 fig. 9)", "V", time, {{"v_bus", *v}});
+                return draw(out_dir, style, "bus_voltage", "Bus voltage (seed 000 fig. 9)", "V", time, {{"v_bus", *v}});
             });
         // The ripple: the last millisecond (five PWM periods at 5 kHz) of a close-up CSV.
         if (close_up) {
             std::size_t first = time.size() - 1;
             while (first > 0 && time.back() - time[first - 1] <= 1e-3) --first;
             add([&] {
-                return draw(out_dir, "bus_ripple", "Bus voltage ripple over the last millisecond (PWM at 5 kHz)", "V",
-                            time, {{"v_bus", *v}}, first);
+                return draw(out_dir, style, "bus_ripple", "Bus voltage ripple over the last millisecond (PWM at 5 kHz)",
+                            "V", time, {{"v_bus", *v}}, first);
             });
         }
     } else {
         notes << "no v_bus column: bus voltage figure skipped\n";
     }
 
-    const std::vector<double>* q_true[4];
-    std::vector<const std::vector<double>*> q_est(4);
-    bool have_q = !close_up;
-    for (int i = 0; i < 4 && have_q; ++i) {
-        q_true[i] = column("q_true[" + std::to_string(i + 1) + "]");
-        q_est[i] = column("q_est[" + std::to_string(i + 1) + "]");
-        have_q = have_q && q_true[i] && q_est[i];
-    }
-    if (have_q) {
+    // Every estimate the run holds, each against the truth at its own samples while it is valid, with its own
+    // median and p95: the single-frame Q-method (q_est, valid) and the filter (q_filt, filter_valid).
+    struct Estimate {
+        const char* column;
+        const char* valid;
+        const char* title;
+    };
+    const Estimate estimates[] = {{"q_est", "valid", "single-frame q_est"},
+                                  {"q_filt", "filter_valid", "filter q_filt"}};
+    std::vector<Series> attitude;
+    for (const auto& e : estimates) {
+        const std::vector<double>* q_true[4];
+        std::vector<const std::vector<double>*> q(4);
+        bool have = !close_up;
+        for (int i = 0; i < 4 && have; ++i) {
+            q_true[i] = column("q_true[" + std::to_string(i + 1) + "]");
+            q[i] = column(std::string(e.column) + "[" + std::to_string(i + 1) + "]");
+            have = have && q_true[i] && q[i];
+        }
+        if (!have) continue;
         std::vector<double> error(time.size());
         for (std::size_t r = 0; r < time.size(); ++r) {
             double a[4], b[4];
             for (int i = 0; i < 4; ++i) {
                 a[i] = (*q_true[i])[r];
-                b[i] = (*q_est[i])[r];
+                b[i] = (*q[i])[r];
             }
             error[r] = attitude_error_degrees(a, b);
         }
-        const auto use = update_rows(q_est, column("valid"));
+        attitude.push_back(error_series(e.title, error, update_rows(q, column(e.valid)), summary));
+    }
+    if (!attitude.empty()) {
         add([&] {
-            return draw(out_dir, "attitude_error", "Attitude error at the estimator samples (while valid)", "degrees",
-                        time, {error_series("attitude error", error, use, summary)});
+            return draw(out_dir, style, "attitude_error",
+                        "Attitude error of each estimate at its samples (while valid)", "degrees", time, attitude);
         });
     } else if (!close_up) {
-        notes << "no q_true / q_est columns: attitude error figure skipped\n";
+        notes << "no q_true with q_est or q_filt columns: attitude error figure skipped\n";
     }
 
     if (const auto* soc = column("soc"); soc && !close_up)
-        add([&] { return draw(out_dir, "battery_soc", "Battery state of charge", "1", time, {{"soc", *soc}}); });
+        add([&] { return draw(out_dir, style, "battery_soc", "Battery state of charge", "1", time, {{"soc", *soc}}); });
     else if (!close_up)
         notes << "no soc column: battery figure skipped\n";
     write_index(out_dir, csv, summary.str());

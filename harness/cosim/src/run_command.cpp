@@ -13,6 +13,7 @@
 #include <memory>
 
 #include "cosim_error.hpp"
+#include "couplings.hpp"
 #include "interrupt.hpp"
 #include "output_file.hpp"
 #include "ssp_archive.hpp"
@@ -139,12 +140,23 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
     if (!stop) throw CosimError(options.ssd.string() + " has no DefaultExperiment stopTime: give --stop-time");
     check_time("--stop-time", *stop);
     System system(description, system_options);
+    analysis::check_couplings(system, options.allow_mismatch, std::cerr);
 
     ExecutionOptions ex;
     ex.start_time = description.start_time.value_or(0.0);
     ex.stop_time = *stop;
     const RunDefaults defaults = run_defaults(system, ex.start_time, ex.stop_time);
     ex.output_interval = options.output_interval.value_or(defaults.output_interval);
+    const double span = ex.stop_time - ex.start_time;
+    if (!options.output_interval && span > 0.0 && std::isfinite(span) && ex.output_interval > span) {
+        // The system's interval is for its usual run: a shorter one still gets rows (a hundred), said once.
+        const double shortened = span / 100.0;
+        if (options.csv)
+            std::cerr << "cosim: the output interval " << format_real(ex.output_interval) << " s of "
+                      << options.ssd.filename().string() << " is longer than the run (" << format_real(span)
+                      << " s): a row every " << format_real(shortened) << " s instead (--output-interval to choose)\n";
+        ex.output_interval = shortened;
+    }
     ex.relative_tolerance = options.tolerance.value_or(defaults.tolerance);
     ex.realtime = options.realtime;
     ex.realtime_tolerance = options.realtime_tolerance;
@@ -191,6 +203,8 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
     if (csv) csv->close();
     if (tty && last_percent >= 0) std::fprintf(stderr, "\r%60s\r", "");
     print_statistics(stats, report);
+    // What this run changed from the .ssd, for a results page that shows what was run.
+    for (const auto& s : options.system.settings) report << "--set " << s << "\n";
     return stats;
 }
 

@@ -9,6 +9,7 @@
 #include "csv_table.hpp"
 #include "fmi2_instance.hpp"
 #include "interrupt.hpp"
+#include "name_hint.hpp"
 #include "output_file.hpp"
 #include "value_text.hpp"
 
@@ -39,7 +40,7 @@ void simulate(const SimulateOptions& options, std::ostream& out) {
     } else {
         for (const auto& name : options.columns) {
             const auto* v = md.find_variable(name);
-            if (!v) throw CosimError("no variable named '" + name + "' in " + options.fmu.string());
+            if (!v) throw CosimError(unknown_variable_message(md, options.fmu.string(), name));
             columns.push_back(v);
         }
     }

@@ -120,7 +120,8 @@ void read_parameter_set(const xmlNode* set, const std::filesystem::path& file, s
     for_children(first_child(set, "Parameters"), "Parameter", [&](const xmlNode* p) {
         const xmlNode* t = type_child(p);
         if (!t) throw CosimError(file.string() + ":" + std::to_string(p->line) + ": parameter without a typed value");
-        out.push_back({required(p, "name", file), reinterpret_cast<const char*>(t->name), required(t, "value", file)});
+        out.push_back({required(p, "name", file), reinterpret_cast<const char*>(t->name), required(t, "value", file),
+                       file.string() + ":" + std::to_string(p->line)});
     });
 }
 
@@ -302,6 +303,7 @@ SystemDescription read_system_description(const std::filesystem::path& path) {
         conn.start_connector = required(k, "startConnector", ssd);
         conn.end_element = attribute(k, "endElement").value_or("");
         conn.end_connector = required(k, "endConnector", ssd);
+        conn.place = ssd.string() + ":" + std::to_string(k->line);
         if (conn.start_element.empty() || conn.end_element.empty())
             throw CosimError(ssd.string() + ":" + std::to_string(k->line) +
                              ": connections to the system's own connectors are not supported");

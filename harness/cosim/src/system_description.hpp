@@ -31,6 +31,7 @@ struct ParameterValue {
     std::string name;
     std::string type;   // "Real", "Integer", "Boolean", "String", "Enumeration"
     std::string value;  // as written
+    std::string place;  // "file:line" of its <ssv:Parameter> (the .ssd or .ssv), for messages
 };
 
 // A component run on external hardware instead of its FMU (README of harness/bridge): the .ssd
@@ -68,6 +69,7 @@ struct ComponentDescription {
 
 struct ConnectionDescription {
     std::string start_element, start_connector, end_element, end_connector;
+    std::string place;  // "file:line" of its <ssd:Connection>, for messages
 };
 
 struct SystemDescription {
