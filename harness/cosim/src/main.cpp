@@ -103,6 +103,9 @@ int main(int argc, char** argv) {
     plot->add_option("--format", plot_options.format, "png or svg")->capture_default_str();
     plot->add_option("--columns", plot_options.columns,
                      "Also draw these CSV columns against time in one figure (columns.png), e.g. est.q_filt[1]");
+    plot->add_option("--derived", plot_options.derived,
+                     "Write the derived signals (each estimate's attitude error: angle, roll, pitch, yaw; the "
+                     "filter's normalized error; the sun vector error) to this CSV");
 
     campaign::CampaignOptions campaign_options;
     std::string spec_path, campaign_output;

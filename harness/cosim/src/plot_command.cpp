@@ -1,9 +1,11 @@
 #include "plot_command.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iomanip>
 #include <iterator>
 #include <numbers>
 #include <optional>
@@ -12,6 +14,7 @@
 
 #include "cosim_error.hpp"
 #include "csv_table.hpp"
+#include "derived_signals.hpp"
 #include "gnuplot.hpp"
 
 namespace cosim {
@@ -115,6 +118,38 @@ std::filesystem::path draw(const std::filesystem::path& out_dir, const Style& st
     script += "plot " + plots + "\n";
     run_gnuplot(out_dir, script, image);
     return out_dir / image;
+}
+
+// A derived signal of every row: NaN where it is not kept (no new sample, or invalid).
+struct Derived {
+    std::string name;
+    std::vector<double> values;
+};
+
+std::vector<double> kept(const std::vector<double>& values, const std::vector<bool>& use) {
+    std::vector<double> out(values.size(), std::nan(""));
+    for (std::size_t r = 0; r < values.size(); ++r)
+        if (use[r]) out[r] = values[r];
+    return out;
+}
+
+// --derived: time and every derived signal as CSV columns (empty cells where not kept).
+void write_derived(const std::filesystem::path& file, const std::vector<double>& time,
+                   const std::vector<Derived>& derived) {
+    std::ofstream out(file);
+    out << "time";
+    for (const auto& d : derived) out << "," << d.name;
+    out << "\n" << std::setprecision(17);
+    for (std::size_t r = 0; r < time.size(); ++r) {
+        out << time[r];
+        for (const auto& d : derived) {
+            out << ",";
+            if (std::isfinite(d.values[r])) out << d.values[r];
+        }
+        out << "\n";
+    }
+    out.flush();
+    if (!out) throw CosimError("cannot write " + file.string());
 }
 
 // Rows where the estimate changed (the on-board computer took a sample) while it was valid: where an error
@@ -221,6 +256,7 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
         const auto i = table.find(name);
         return i ? &table.columns[*i] : nullptr;
     };
+    std::vector<Derived> derived;  // the derived signals, for --derived
     Style style;
     style.format = options.format;
     style.irradiance = column("irradiance");
@@ -259,18 +295,11 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
     }
     if (!close_up && sun_meas.size() == 3) {
         std::vector<double> error(time.size());
-        for (std::size_t r = 0; r < time.size(); ++r) {
-            double dot = 0, nm = 0, nr = 0;
-            for (int i = 0; i < 3; ++i) {
-                dot += (*sun_meas[i])[r] * (*sun_real[i])[r];
-                nm += (*sun_meas[i])[r] * (*sun_meas[i])[r];
-                nr += (*sun_real[i])[r] * (*sun_real[i])[r];
-            }
-            error[r] = nm > 0 && nr > 0
-                           ? std::acos(std::clamp(dot / std::sqrt(nm * nr), -1.0, 1.0)) * 180.0 / std::numbers::pi
-                           : 0.0;
-        }
+        for (std::size_t r = 0; r < time.size(); ++r)
+            error[r] = analysis::direction_error_degrees({(*sun_meas[0])[r], (*sun_meas[1])[r], (*sun_meas[2])[r]},
+                                                         {(*sun_real[0])[r], (*sun_real[1])[r], (*sun_real[2])[r]});
         const auto use = update_rows(sun_meas, column("sun_valid"));
+        derived.push_back({"sun_error_deg", kept(error, use)});
         add([&] {
             return draw(out_dir, style, "sun_error", "Sun vector error at the estimator samples (while valid)",
                         "degrees", time, {error_series("sun vector error", error, use, summary)});
@@ -317,16 +346,75 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
             have = have && q_true[i] && q[i];
         }
         if (!have) continue;
-        std::vector<double> error(time.size());
+        // The error vector of every row (analysis/derived_signals.hpp), kept at the estimate's updates.
+        std::vector<double> error(time.size()), axis_error[3];
+        for (auto& a : axis_error) a.resize(time.size());
+        std::vector<std::array<double, 3>> vectors(time.size());
         for (std::size_t r = 0; r < time.size(); ++r) {
-            double a[4], b[4];
-            for (int i = 0; i < 4; ++i) {
-                a[i] = (*q_true[i])[r];
-                b[i] = (*q[i])[r];
-            }
-            error[r] = attitude_error_degrees(a, b);
+            vectors[r] =
+                analysis::attitude_error_vector({(*q_true[0])[r], (*q_true[1])[r], (*q_true[2])[r], (*q_true[3])[r]},
+                                                {(*q[0])[r], (*q[1])[r], (*q[2])[r], (*q[3])[r]});
+            error[r] = std::hypot(vectors[r][0], vectors[r][1], vectors[r][2]) * 180.0 / std::numbers::pi;
+            for (int k = 0; k < 3; ++k)
+                axis_error[k][r] = vectors[r][static_cast<std::size_t>(k)] * 180.0 / std::numbers::pi;
         }
-        attitude.push_back(error_series(e.title, error, update_rows(q, column(e.valid)), summary));
+        const auto use = update_rows(q, column(e.valid));
+        attitude.push_back(error_series(e.title, error, use, summary));
+        const std::string prefix = e.column;
+        derived.push_back({prefix + "_error_deg", kept(error, use)});
+        const char* axis_names[] = {"roll", "pitch", "yaw"};
+        std::vector<Series> axes;
+        for (int k = 0; k < 3; ++k) {
+            derived.push_back({prefix + "_" + axis_names[k] + "_deg", kept(axis_error[k], use)});
+            axes.push_back({std::string(axis_names[k]) + " (body x, y, z)", derived.back().values, true});
+        }
+        add([&] {
+            return draw(out_dir, style, "attitude_error_axes_" + prefix,
+                        std::string("Attitude error of ") + e.title + " about the body axes (while valid)", "degrees",
+                        time, axes);
+        });
+        // The filter's own view of its error: the 3-sigma bound on the figure, its coverage, and the
+        // normalized error per degree of freedom from the covariance factor (1 when consistent).
+        if (std::string(e.column) != "q_filt") continue;
+        if (const auto* bound = column("attitude_bound")) {
+            Series b{"filter 3-sigma bound", std::vector<double>(time.size(), std::nan("")), false};
+            std::size_t samples = 0, covered = 0;
+            for (std::size_t r = 0; r < time.size(); ++r) {
+                if (!use[r]) continue;
+                b.values[r] = (*bound)[r] * 180.0 / std::numbers::pi;
+                ++samples;
+                covered += error[r] <= b.values[r];
+            }
+            attitude.push_back(b);
+            summary << "<tr><td>filter q_filt within its 3-sigma bound</td><td>" << samples << "</td><td colspan=2>"
+                    << degrees(samples ? 100.0 * static_cast<double>(covered) / static_cast<double>(samples) : NAN)
+                    << " %</td></tr>\n";
+        }
+        std::vector<const std::vector<double>*> l;
+        for (int i = 1; i <= 6; ++i)
+            if (const auto* c = column("attitude_cov_sqrt[" + std::to_string(i) + "]")) l.push_back(c);
+        if (l.size() == 6) {
+            std::vector<double> nees(time.size(), std::nan(""));
+            double sum = 0.0;
+            std::size_t n = 0;
+            for (std::size_t r = 0; r < time.size(); ++r) {
+                if (!use[r]) continue;
+                nees[r] = analysis::normalized_error_per_dof(
+                    vectors[r], {(*l[0])[r], (*l[1])[r], (*l[2])[r], (*l[3])[r], (*l[4])[r], (*l[5])[r]});
+                if (std::isfinite(nees[r])) {
+                    sum += nees[r];
+                    ++n;
+                }
+            }
+            derived.push_back({"q_filt_nees_per_dof", nees});
+            summary << "<tr><td>filter q_filt normalized error per dof (mean; 1 = consistent)</td><td>" << n
+                    << "</td><td colspan=2>" << degrees(n ? sum / static_cast<double>(n) : NAN) << "</td></tr>\n";
+            add([&] {
+                return draw(out_dir, style, "filter_normalized_error",
+                            "Filter normalized error per degree of freedom (1 = consistent)", "NEES / 3", time,
+                            {{"q_filt NEES/dof", nees, true}});
+            });
+        }
     }
     if (!attitude.empty()) {
         add([&] {
@@ -341,6 +429,10 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
         add([&] { return draw(out_dir, style, "battery_soc", "Battery state of charge", "1", time, {{"soc", *soc}}); });
     else if (!close_up)
         notes << "no soc column: battery figure skipped\n";
+    if (options.derived) {
+        write_derived(*options.derived, time, derived);
+        written.push_back(*options.derived);
+    }
     write_index(out_dir, csv, summary.str());
     written.push_back(out_dir / "index.html");
     if (failed)

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -15,8 +16,9 @@
 namespace cosim {
 
 struct PlotOptions {
-    std::string format = "png";        // "png" (pngcairo) or "svg"
-    std::vector<std::string> columns;  // also draw these columns against time, one figure ("columns")
+    std::string format = "png";                    // "png" (pngcairo) or "svg"
+    std::vector<std::string> columns;              // also draw these columns against time, one figure ("columns")
+    std::optional<std::filesystem::path> derived;  // write the derived signals here as CSV columns
 };
 
 // Returns the files written. Where the CSV has an irradiance column, the eclipse (irradiance 0) is shaded.

@@ -31,9 +31,9 @@ TEST(Couplings, TheEstimatorsAngularResponseMustBeThePanels) {
         << m[0];
     // The plant changed alone: the estimator and the environment's albedo weighting both disagree.
     EXPECT_EQ(mismatches({"plant.angular_response=cosine"}).size(), 2u);
-    EXPECT_EQ(mismatches({"plant.angular_response=cosine", "est.angular_response=cosine",
-                          "env.albedo_response=cosine"}),
-              std::vector<std::string>{});
+    EXPECT_EQ(
+        mismatches({"plant.angular_response=cosine", "est.angular_response=cosine", "env.albedo_response=cosine"}),
+        std::vector<std::string>{});
 }
 
 TEST(Couplings, TheEstimatorsAltitudeMustBeTheTruths) {

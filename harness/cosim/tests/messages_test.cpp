@@ -126,15 +126,15 @@ TEST(Messages, ABadBindingNamesItsFileAndLine) {
 <ssd:ParameterValues><ssv:ParameterSet xmlns:ssv="http://ssp-standard.org/SSP1/SystemStructureParameterValues" version="1.0" name="p"><ssv:Parameters>
 <ssv:Parameter name="sing"><ssv:String value="minus"/></ssv:Parameter>
 </ssv:Parameters></ssv:ParameterSet></ssd:ParameterValues></ssd:ParameterBinding></ssd:ParameterBindings></ssd:Component>)");
-    EXPECT_EQ(refusal(options_for(ssd)),
-              ssd.string() + ":7: gain: no variable named 'sing' (did you mean 'sign'?)");
+    EXPECT_EQ(refusal(options_for(ssd)), ssd.string() + ":7: gain: no variable named 'sing' (did you mean 'sign'?)");
 }
 
 TEST(Messages, EachMissingFmuOnceWithTheFoldersLookedIn) {
     Scratch s;
-    auto o = options_for(s.ssd(R"(<ssd:Component name="a" source="ghost.fmu"/><ssd:Component name="b" source="ghost.fmu"/>
+    auto o =
+        options_for(s.ssd(R"(<ssd:Component name="a" source="ghost.fmu"/><ssd:Component name="b" source="ghost.fmu"/>
 <ssd:Component name="c" source="phantom.fmu"/>)"));
-    o.system.fmu_dirs = {fmu_dir, fmu_dir / "." };  // the same folder twice: one place
+    o.system.fmu_dirs = {fmu_dir, fmu_dir / "."};  // the same folder twice: one place
     const std::string says = refusal(o);
     EXPECT_NE(says.find("2 FMUs not found: ghost.fmu phantom.fmu; looked in:\n  " + s.root.string() + "\n  " +
                         fmu_dir.lexically_normal().string() + "\n"),

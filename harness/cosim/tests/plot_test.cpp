@@ -7,6 +7,7 @@
 #include <sstream>
 #include <string>
 
+#include "csv_table.hpp"
 #include "plot_command.hpp"
 
 namespace cosim {
@@ -71,6 +72,16 @@ TEST(CosimPlot, EveryEstimateWithItsOwnStatistics) {
     const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     EXPECT_NE(html.find("<td>single-frame q_est</td><td>4</td><td>2</td><td>2</td>"), std::string::npos) << html;
     EXPECT_NE(html.find("<td>filter q_filt</td><td>2</td><td>0.5</td><td>0.5</td>"), std::string::npos) << html;
+    // Derived signals on request: the filter is 0.5 deg ahead about body z, so the truth is -0.5 deg of yaw
+    // from it (to the CSV's 6 digits), at its valid samples only.
+    PlotOptions options;
+    options.derived = dir / "derived.csv";
+    plot_results(csv, dir, notes, options);
+    const auto derived = read_csv(dir / "derived.csv");
+    const auto yaw = derived.find("q_filt_yaw_deg");
+    ASSERT_TRUE(yaw.has_value());
+    EXPECT_TRUE(std::isnan(derived.columns[*yaw][0]));
+    EXPECT_NEAR(derived.columns[*yaw][3], -0.5, 1e-4);
     std::filesystem::remove_all(dir);
 }
 

@@ -12,7 +12,7 @@ namespace analysis {
 
 namespace {
 
-constexpr double earth_mean_radius = 6371e3;          // m: the estimator's albedo sphere (estimator_data.cpp)
+constexpr double earth_mean_radius = 6371e3;           // m: the estimator's albedo sphere (estimator_data.cpp)
 constexpr double earth_equatorial_radius = 6378137.0;  // m: the environment's circular altitude is above it
 constexpr double earth_mu = 3.986004418e14;            // m^3/s^2
 
@@ -80,8 +80,10 @@ std::vector<std::string> coupling_mismatches(const cosim::System& system) {
             const auto believed = item(system, e, "angular_response");
             if (believed && *believed != *panels)
                 out.push_back(comps[e].name + ".angular_response is " + *believed + " but " + comps[p].name +
-                              ".angular_response is " + *panels + ": the computer inverts a response the panels do "
-                              "not have (set " + comps[e].name + ".angular_response=" + *panels + ")");
+                              ".angular_response is " + *panels +
+                              ": the computer inverts a response the panels do "
+                              "not have (set " +
+                              comps[e].name + ".angular_response=" + *panels + ")");
         }
         for (std::size_t e : envs) {
             const auto albedo_on = system.initial_value(e, "albedo_enabled");
@@ -89,9 +91,10 @@ std::vector<std::string> coupling_mismatches(const cosim::System& system) {
             const auto weighed = item(system, e, "albedo_response");
             if (weighed && *weighed != *panels)
                 out.push_back(comps[e].name + ".albedo_response is " + *weighed + " but " + comps[p].name +
-                              ".angular_response is " + *panels + ": the albedo on each face is weighed with "
-                              "another response than the panels' (set " + comps[e].name + ".albedo_response=" +
-                              *panels + ")");
+                              ".angular_response is " + *panels +
+                              ": the albedo on each face is weighed with "
+                              "another response than the panels' (set " +
+                              comps[e].name + ".albedo_response=" + *panels + ")");
         }
     }
     for (std::size_t env : envs) {

@@ -1,0 +1,41 @@
+#include "derived_signals.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace analysis {
+
+std::array<double, 3> attitude_error_vector(const std::array<double, 4>& q_true, const std::array<double, 4>& q_est) {
+    // dq = q_true (x) q_est^-1 in the product with A(p (x) q) = A(p) A(q) (Shuster's convention):
+    // vector part w1 v2 + w2 v1 - v1 x v2, scalar part w1 w2 - v1 . v2, with q_est^-1 = [-v, w].
+    const double x1 = q_true[0], y1 = q_true[1], z1 = q_true[2], w1 = q_true[3];
+    const double x2 = -q_est[0], y2 = -q_est[1], z2 = -q_est[2], w2 = q_est[3];
+    const std::array<double, 3> v{w1 * x2 + w2 * x1 - (y1 * z2 - z1 * y2), w1 * y2 + w2 * y1 - (z1 * x2 - x1 * z2),
+                                  w1 * z2 + w2 * z1 - (x1 * y2 - y1 * x2)};
+    const double w = w1 * w2 - (x1 * x2 + y1 * y2 + z1 * z2);
+    const double s = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (s == 0.0) return {0.0, 0.0, 0.0};
+    // The shorter rotation: angle 2 atan2(|v|, |w|) about v, turned with w's sign.
+    const double angle = 2.0 * std::atan2(s, std::abs(w)) * (w < 0.0 ? -1.0 : 1.0);
+    return {angle * v[0] / s, angle * v[1] / s, angle * v[2] / s};
+}
+
+double normalized_error_per_dof(const std::array<double, 3>& d, const std::array<double, 6>& l) {
+    if (l[0] == 0.0 || l[2] == 0.0 || l[5] == 0.0) return std::numeric_limits<double>::quiet_NaN();
+    const double z0 = d[0] / l[0];  // forward substitution: L z = d
+    const double z1 = (d[1] - l[1] * z0) / l[2];
+    const double z2 = (d[2] - l[3] * z0 - l[4] * z1) / l[5];
+    return (z0 * z0 + z1 * z1 + z2 * z2) / 3.0;
+}
+
+double direction_error_degrees(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    const std::array<double, 3> c{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    const double na = std::hypot(a[0], a[1], a[2]), nb = std::hypot(b[0], b[1], b[2]);
+    if (na == 0.0 || nb == 0.0) return std::numeric_limits<double>::quiet_NaN();
+    // atan2 of |a x b| and a . b: accurate at small and at near-180 degree angles alike.
+    return std::atan2(std::hypot(c[0], c[1], c[2]), a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) * 180.0 /
+           std::numbers::pi;
+}
+
+}  // namespace analysis
