@@ -4,9 +4,9 @@
 #include <cstdint>
 #include <filesystem>
 
-#include "cosim_error.hpp"
+#include "engine/cosim_error.hpp"
+#include "engine/system_description.hpp"
 #include "input_file.hpp"
-#include "system_description.hpp"
 
 namespace {
 const fuzz::InputFile input("fuzz_ssd", ".ssd");

@@ -5,10 +5,10 @@
 #include <cstdint>
 #include <filesystem>
 
-#include "cosim_error.hpp"
+#include "engine/cosim_error.hpp"
+#include "engine/ssp_archive.hpp"
+#include "engine/system_description.hpp"
 #include "input_file.hpp"
-#include "ssp_archive.hpp"
-#include "system_description.hpp"
 
 namespace {
 const fuzz::InputFile input("fuzz_ssp", ".ssp");

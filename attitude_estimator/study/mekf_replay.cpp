@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "attitude_estimator/mekf.hpp"
-#include "csv_table.hpp"
+#include "engine/csv_table.hpp"
 
 namespace ae = attitude_estimator;
 

@@ -18,12 +18,12 @@
 #include <string_view>
 #include <vector>
 
-#include "execution.hpp"
-#include "fmi2_instance.hpp"
+#include "engine/execution.hpp"
+#include "engine/fmi2_instance.hpp"
+#include "engine/run_defaults.hpp"
+#include "engine/system.hpp"
+#include "engine/system_description.hpp"
 #include "fmi_loader/fmu.hpp"
-#include "run_command.hpp"
-#include "system.hpp"
-#include "system_description.hpp"
 
 namespace {
 

@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
-#include "execution.hpp"
-#include "plot_command.hpp"
+#include "analysis/angle_error.hpp"
+#include "engine/execution.hpp"
+#include "engine/system.hpp"
+#include "engine/system_description.hpp"
 #include "recorder.hpp"
-#include "system.hpp"
-#include "system_description.hpp"
 
 namespace {
 
@@ -68,8 +68,8 @@ TEST(E2eFilter, SeedSpinFilterNoWorseThanTheQMethod) {
         }
         ASSERT_GT(rec["est.valid"][k], 0.5) << rec.time[k];
         ASSERT_GT(rec["est.filter_valid"][k], 0.5) << rec.time[k];
-        single.push_back(cosim::attitude_error_degrees(qt, qe));
-        filtered.push_back(cosim::attitude_error_degrees(qt, qf));
+        single.push_back(analysis::attitude_error_degrees(qt, qe));
+        filtered.push_back(analysis::attitude_error_degrees(qt, qf));
         covered += filtered.back() <= rec["est.attitude_bound"][k] * 180.0 / M_PI;
         double w2 = 0;
         for (int i = 0; i < 3; ++i) {

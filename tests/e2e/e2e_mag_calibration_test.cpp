@@ -10,10 +10,10 @@
 #include <cstdio>
 #include <string>
 
-#include "execution.hpp"
+#include "engine/execution.hpp"
+#include "engine/system.hpp"
+#include "engine/system_description.hpp"
 #include "recorder.hpp"
-#include "system.hpp"
-#include "system_description.hpp"
 
 TEST(E2eLeoMagCalibration, TheCalibratedFieldLosesTheCrossAxisCoupling) {
     cosim::SystemOptions options;

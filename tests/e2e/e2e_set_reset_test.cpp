@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "execution.hpp"
+#include "engine/execution.hpp"
+#include "engine/system.hpp"
+#include "engine/system_description.hpp"
 #include "recorder.hpp"
-#include "system.hpp"
-#include "system_description.hpp"
 
 namespace {
 

@@ -12,11 +12,11 @@
 #include <string>
 #include <vector>
 
-#include "execution.hpp"
-#include "plot_command.hpp"
+#include "analysis/angle_error.hpp"
+#include "engine/execution.hpp"
+#include "engine/system.hpp"
+#include "engine/system_description.hpp"
 #include "recorder.hpp"
-#include "system.hpp"
-#include "system_description.hpp"
 
 namespace {
 
@@ -69,7 +69,7 @@ SunScore run_leo(const std::string& method) {
                                   rec["env.q_true[4]"][k]};
             const double qe[4] = {rec["est.q_est[1]"][k], rec["est.q_est[2]"][k], rec["est.q_est[3]"][k],
                                   rec["est.q_est[4]"][k]};
-            attitude_errors.push_back(cosim::attitude_error_degrees(qt, qe));
+            attitude_errors.push_back(analysis::attitude_error_degrees(qt, qe));
         }
         if (rec["est.rate_valid"][k] > 0.5) {
             // Torque-free: |ω| changes little over the 4-minute window, so the value now is the reference.

@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "execution.hpp"
-#include "plot_command.hpp"
+#include "analysis/angle_error.hpp"
+#include "engine/execution.hpp"
+#include "engine/system.hpp"
+#include "engine/system_description.hpp"
 #include "recorder.hpp"
-#include "system.hpp"
-#include "system_description.hpp"
 
 namespace {
 
@@ -69,7 +69,7 @@ TEST(E2eSeedSpin, BusHeldSunAcquiredAttitudeEstimated) {
                               rec["env.q_true[4]"][k]};
         const double qe[4] = {rec["est.q_est[1]"][k], rec["est.q_est[2]"][k], rec["est.q_est[3]"][k],
                               rec["est.q_est[4]"][k]};
-        worst_attitude = std::max(worst_attitude, cosim::attitude_error_degrees(qt, qe));
+        worst_attitude = std::max(worst_attitude, analysis::attitude_error_degrees(qt, qe));
     }
     EXPECT_GE(valid, 35);  // the sun is always up in the seed scenario
     EXPECT_LT(worst_sun, 0.5);
@@ -126,7 +126,7 @@ TEST(E2eLeoOrbit, EclipseInvalidatesTheEstimateAndDrainsTheBattery) {
                                       rec["env.q_true[4]"][k]};
                 const double qe[4] = {rec["est.q_est[1]"][k], rec["est.q_est[2]"][k], rec["est.q_est[3]"][k],
                                       rec["est.q_est[4]"][k]};
-                errors.push_back(cosim::attitude_error_degrees(qt, qe));
+                errors.push_back(analysis::attitude_error_degrees(qt, qe));
             }
         }
     }

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "execution.hpp"
-#include "system.hpp"
+#include "engine/execution.hpp"
+#include "engine/system.hpp"
 
 namespace e2e {
 

@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "csv_table.hpp"
-#include "ssp_archive.hpp"
+#include "engine/csv_table.hpp"
+#include "engine/ssp_archive.hpp"
 
 namespace cosim {
 namespace {

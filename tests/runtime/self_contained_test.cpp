@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "fmi2_instance.hpp"
+#include "engine/fmi2_instance.hpp"
 #include "fmi_loader/fmu.hpp"
 
 namespace {

@@ -24,7 +24,7 @@
 #include <thread>
 #include <vector>
 
-#include "csv_table.hpp"
+#include "engine/csv_table.hpp"
 
 extern char** environ;
 

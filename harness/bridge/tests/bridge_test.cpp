@@ -15,12 +15,12 @@
 #include <thread>
 
 #include "bridge/board_emulator.hpp"
-#include "cosim_error.hpp"
-#include "execution.hpp"
-#include "hardware_bridge.hpp"
-#include "interrupt.hpp"
-#include "system.hpp"
-#include "system_description.hpp"
+#include "engine/cosim_error.hpp"
+#include "engine/execution.hpp"
+#include "engine/hardware_bridge.hpp"
+#include "engine/interrupt.hpp"
+#include "engine/system.hpp"
+#include "engine/system_description.hpp"
 
 namespace {
 

@@ -17,9 +17,9 @@
 #include <sstream>
 #include <string>
 
-#include "execution.hpp"
-#include "system.hpp"
-#include "system_description.hpp"
+#include "engine/execution.hpp"
+#include "engine/system.hpp"
+#include "engine/system_description.hpp"
 
 extern char** environ;
 

@@ -6,17 +6,17 @@
 #include <limits>
 #include <memory>
 
+#include "analysis/couplings.hpp"
 #include "campaign_error.hpp"
-#include "cosim_error.hpp"
-#include "couplings.hpp"
 #include "draws.hpp"
-#include "execution.hpp"
-#include "interrupt.hpp"
+#include "engine/cosim_error.hpp"
+#include "engine/execution.hpp"
+#include "engine/interrupt.hpp"
+#include "engine/name_hint.hpp"
+#include "engine/observer.hpp"
+#include "engine/run_defaults.hpp"
+#include "engine/setting.hpp"
 #include "metric_observer.hpp"
-#include "name_hint.hpp"
-#include "observer.hpp"
-#include "run_command.hpp"
-#include "setting.hpp"
 
 namespace campaign {
 

@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "campaign_spec.hpp"
+#include "engine/system.hpp"
+#include "engine/system_description.hpp"
 #include "results_table.hpp"
-#include "system.hpp"
-#include "system_description.hpp"
 
 namespace campaign {
 

@@ -12,8 +12,8 @@
 #include <sstream>
 
 #include "campaign_error.hpp"
+#include "engine/value_text.hpp"
 #include "statistics.hpp"
-#include "value_text.hpp"
 
 namespace campaign {
 

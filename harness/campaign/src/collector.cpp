@@ -4,7 +4,7 @@
 #include <iomanip>
 
 #include "campaign_error.hpp"
-#include "value_text.hpp"
+#include "engine/value_text.hpp"
 
 namespace campaign {
 

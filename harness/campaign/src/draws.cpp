@@ -6,8 +6,8 @@
 #include <numbers>
 
 #include "campaign_error.hpp"
+#include "engine/value_text.hpp"
 #include "random.hpp"
-#include "value_text.hpp"
 
 namespace campaign {
 

@@ -10,7 +10,7 @@
 #include <utility>
 
 #include "campaign_error.hpp"
-#include "interrupt.hpp"
+#include "engine/interrupt.hpp"
 
 #ifdef PVATT_MPI
 #include <mpi.h>

@@ -1,14 +1,12 @@
 #include "metric_observer.hpp"
 
-#include <algorithm>
 #include <cmath>
-#include <numbers>
 
+#include "analysis/angle_error.hpp"
 #include "campaign_error.hpp"
-#include "name_hint.hpp"
-#include "plot_command.hpp"
+#include "engine/name_hint.hpp"
+#include "engine/value_text.hpp"
 #include "statistics.hpp"
-#include "value_text.hpp"
 
 namespace campaign {
 
@@ -18,13 +16,6 @@ std::vector<std::string> group(const std::string& prefix, int n) {
     std::vector<std::string> out;
     for (int i = 1; i <= n; ++i) out.push_back(prefix + "[" + std::to_string(i) + "]");
     return out;
-}
-
-double vector_angle_degrees(const double a[3], const double b[3]) {
-    const double dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-    const double na = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-    const double nb = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
-    return std::acos(std::clamp(dot / (na * nb), -1.0, 1.0)) * 180.0 / std::numbers::pi;
 }
 
 }  // namespace
@@ -121,8 +112,8 @@ void MetricObserver::sample(double t, cosim::System& system) {
                 a[i] = read(system, k.a[i]);
                 b[i] = read(system, k.b[i]);
             }
-            value = m.kind == MetricKind::quaternion_angle ? cosim::attitude_error_degrees(a, b)
-                                                           : vector_angle_degrees(a, b);
+            value = m.kind == MetricKind::quaternion_angle ? analysis::attitude_error_degrees(a, b)
+                                                           : analysis::vector_angle_degrees(a, b);
         }
         if (!std::isfinite(value)) continue;  // a zero vector or quaternion has no angle
         if (k.values.size() == max_metric_samples)

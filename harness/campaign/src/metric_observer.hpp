@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "campaign_spec.hpp"
-#include "observer.hpp"
+#include "engine/observer.hpp"
 
 namespace campaign {
 

@@ -6,8 +6,8 @@
 
 #include "campaign_error.hpp"
 #include "draws.hpp"
+#include "engine/value_text.hpp"
 #include "metric_observer.hpp"
-#include "value_text.hpp"
 
 namespace campaign {
 

@@ -12,13 +12,13 @@
 #include <sstream>
 
 #include "campaign_error.hpp"
-#include "cosim_error.hpp"
 #include "draws.hpp"
-#include "gnuplot.hpp"
+#include "engine/cosim_error.hpp"
+#include "engine/gnuplot.hpp"
+#include "engine/value_text.hpp"
 #include "metric_observer.hpp"
 #include "results_table.hpp"
 #include "statistics.hpp"
-#include "value_text.hpp"
 
 namespace campaign {
 

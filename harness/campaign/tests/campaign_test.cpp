@@ -15,7 +15,7 @@
 #include "campaign_command.hpp"
 #include "campaign_error.hpp"
 #include "campaign_spec.hpp"
-#include "csv_table.hpp"
+#include "engine/csv_table.hpp"
 #include "results_table.hpp"
 
 using namespace campaign;

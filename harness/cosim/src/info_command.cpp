@@ -4,9 +4,9 @@
 #include <iomanip>
 #include <string_view>
 
+#include "engine/system_description.hpp"
+#include "engine/value_text.hpp"
 #include "fmi_loader/fmu.hpp"
-#include "system_description.hpp"
-#include "value_text.hpp"
 
 namespace cosim {
 

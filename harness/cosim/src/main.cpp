@@ -5,15 +5,15 @@
 #include <cerrno>
 #include <iostream>
 
+#include "analysis/result_figures.hpp"
 #include "campaign_command.hpp"
-#include "cosim_error.hpp"
+#include "engine/cosim_error.hpp"
+#include "engine/interrupt.hpp"
+#include "engine/ssp_archive.hpp"
 #include "fmi_loader/loader_error.hpp"
 #include "info_command.hpp"
-#include "interrupt.hpp"
-#include "plot_command.hpp"
 #include "run_command.hpp"
 #include "simulate_command.hpp"
-#include "ssp_archive.hpp"
 
 int main(int argc, char** argv) {
     CLI::App app{"cosim: FMI 2.0 co-simulation master"};
@@ -99,7 +99,7 @@ int main(int argc, char** argv) {
     auto* plot = app.add_subcommand("plot", "Draw the standard figures of a results CSV as PNG files (gnuplot)");
     plot->add_option("csv", plot_csv, "Results CSV written by cosim run")->required();
     plot->add_option("--out-dir", plot_dir, "Folder for the PNG files")->capture_default_str();
-    cosim::PlotOptions plot_options;
+    analysis::PlotOptions plot_options;
     plot->add_option("--format", plot_options.format, "png or svg")->capture_default_str();
     plot->add_option("--columns", plot_options.columns,
                      "Also draw these CSV columns against time in one figure (columns.png), e.g. est.q_filt[1]");
@@ -148,7 +148,7 @@ int main(int argc, char** argv) {
             cosim::run_system(run_options, std::cout);
         }
         if (*plot) {
-            for (const auto& png : cosim::plot_results(plot_csv, plot_dir, std::cerr, plot_options))
+            for (const auto& png : analysis::plot_results(plot_csv, plot_dir, std::cerr, plot_options))
                 std::cout << png.string() << "\n";
         }
         if (*simulate) {

@@ -7,8 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "execution.hpp"
-#include "system.hpp"
+#include "engine/execution.hpp"
+#include "engine/run_defaults.hpp"
+#include "engine/system.hpp"
 
 namespace cosim {
 
@@ -27,9 +28,6 @@ struct RunOptions {
     bool allow_mismatch = false;  // blocks that must agree and do not (analysis/couplings.hpp): warn, run
 };
 
-// Output or communication points a run may have without --force: 1e8 points is hours of run and
-// gigabytes of CSV; more is a typo (--output-interval 1e-300) far more often than a wish.
-inline constexpr double max_run_points = 1e8;
 // From this many rows on, the CSV's size is announced on stderr before the run.
 inline constexpr double large_output_rows = 1e6;
 
@@ -37,14 +35,6 @@ inline constexpr double large_output_rows = 1e6;
 // not positive and finite, longer than the run or more than max_run_points points, and a CSV that
 // would not fit on its disk (the last two unless `force`). Throws Interrupted after a signal
 // (install_interrupt_handlers), with the CSV closed and a line of statistics on `report`.
-// cosim run's defaults for a system run from start to stop: the .ssd's output interval, else the FMUs'
-// smallest DefaultExperiment step but no finer than a thousandth of the run; the FMUs' smallest
-// tolerance (1e-6 when none is smaller).
-struct RunDefaults {
-    double output_interval, tolerance;
-};
-RunDefaults run_defaults(const System& system, double start, double stop);
-
 RunStatistics run_system(const RunOptions& options, std::ostream& report);
 void print_statistics(const RunStatistics& stats, std::ostream& out);
 

@@ -5,13 +5,13 @@
 #include <iomanip>
 #include <sstream>
 
-#include "cosim_error.hpp"
-#include "csv_table.hpp"
-#include "fmi2_instance.hpp"
-#include "interrupt.hpp"
-#include "name_hint.hpp"
-#include "output_file.hpp"
-#include "value_text.hpp"
+#include "engine/cosim_error.hpp"
+#include "engine/csv_table.hpp"
+#include "engine/fmi2_instance.hpp"
+#include "engine/interrupt.hpp"
+#include "engine/name_hint.hpp"
+#include "engine/output_file.hpp"
+#include "engine/value_text.hpp"
 
 namespace cosim {
 

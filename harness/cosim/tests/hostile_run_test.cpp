@@ -20,12 +20,12 @@
 #include <thread>
 #include <vector>
 
-#include "cosim_error.hpp"
-#include "csv_table.hpp"
-#include "interrupt.hpp"
+#include "engine/cosim_error.hpp"
+#include "engine/csv_table.hpp"
+#include "engine/interrupt.hpp"
+#include "engine/ssp_archive.hpp"
+#include "engine/system_description.hpp"
 #include "run_command.hpp"
-#include "ssp_archive.hpp"
-#include "system_description.hpp"
 
 extern char** environ;
 

@@ -10,9 +10,9 @@
 #include <sstream>
 #include <string>
 
-#include "cosim_error.hpp"
-#include "csv_table.hpp"
-#include "name_hint.hpp"
+#include "engine/cosim_error.hpp"
+#include "engine/csv_table.hpp"
+#include "engine/name_hint.hpp"
 #include "run_command.hpp"
 
 namespace cosim {

@@ -1,0 +1,21 @@
+// What a run of a system takes when its request leaves it open, and the limit on its points: shared by
+// every front end (cosim run, simulate, campaign) so that they agree.
+#pragma once
+
+#include "engine/system.hpp"
+
+namespace cosim {
+
+// Output or communication points a run may have without --force: 1e8 points is hours of run and
+// gigabytes of CSV; more is a typo (--output-interval 1e-300) far more often than a wish.
+inline constexpr double max_run_points = 1e8;
+
+// The defaults for a system run from start to stop: the .ssd's output interval, else the FMUs'
+// smallest DefaultExperiment step but no finer than a thousandth of the run; the FMUs' smallest
+// tolerance (1e-6 when none is smaller).
+struct RunDefaults {
+    double output_interval, tolerance;
+};
+RunDefaults run_defaults(const System& system, double start, double stop);
+
+}  // namespace cosim

@@ -1,0 +1,122 @@
+#include "engine/interrupt.hpp"
+
+#include <pthread.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <mutex>
+#include <string>
+#include <thread>
+
+#include "fmi_loader/limits.hpp"
+
+namespace cosim {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::atomic<int> received{0};
+std::once_flag installed;
+
+// The private temporary folder of use_private_temp_directory(): removed when the process exits
+// normally (a static's destructor) and by the signal thread on an abort.
+struct PrivateTemp {
+    fs::path path;
+    ~PrivateTemp() {
+        std::error_code ec;
+        if (!path.empty()) fs::remove_all(path, ec);
+    }
+};
+PrivateTemp private_temp;
+std::mutex private_temp_mutex;
+
+const char* signal_name(int signal) {
+    return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : signal == SIGHUP ? "SIGHUP" : "a signal";
+}
+
+sigset_t stop_signals() {
+    sigset_t set;
+    sigemptyset(&set);
+    sigaddset(&set, SIGINT);
+    sigaddset(&set, SIGTERM);
+    sigaddset(&set, SIGHUP);
+    return set;
+}
+
+// Runs in ordinary thread context (sigwait), not in a signal handler: removing folders is safe here.
+void signal_loop(sigset_t set) {
+    for (;;) {
+        int signal = 0;
+        if (::sigwait(&set, &signal) != 0) continue;
+        int expected = 0;
+        if (received.compare_exchange_strong(expected, signal)) {
+            fmi_loader::request_cancel();
+            continue;
+        }
+        std::fprintf(stderr, "cosim: second signal (%s): aborting without unwinding (exit code %d)\n",
+                     signal_name(signal), aborted_exit_code);
+        {
+            std::lock_guard lock(private_temp_mutex);
+            std::error_code ec;
+            if (!private_temp.path.empty()) fs::remove_all(private_temp.path, ec);
+        }
+        std::_Exit(aborted_exit_code);
+    }
+}
+
+}  // namespace
+
+Interrupted::Interrupted(int signal)
+    : std::runtime_error(std::string("interrupted by ") + signal_name(signal)), signal_(signal) {}
+
+void install_interrupt_handlers() {
+    std::call_once(installed, [] {
+        const sigset_t set = stop_signals();
+        ::pthread_sigmask(SIG_BLOCK, &set, nullptr);
+        std::thread(signal_loop, set).detach();
+    });
+}
+
+void use_private_temp_directory() {
+    std::lock_guard lock(private_temp_mutex);
+    if (!private_temp.path.empty()) return;
+    std::string pattern = (fs::temp_directory_path() / "cosim_XXXXXX").string();
+    if (::mkdtemp(pattern.data()) == nullptr) return;  // no private folder: the extraction folders go where they did
+    private_temp.path = pattern;
+    ::setenv("TMPDIR", pattern.c_str(), 1);
+}
+
+int interrupt_signal() noexcept {
+    return received.load(std::memory_order_relaxed);
+}
+
+void throw_if_interrupted() {
+    if (const int s = interrupt_signal()) throw Interrupted(s);
+}
+
+void sleep_until_or_interrupted(std::chrono::steady_clock::time_point due) {
+    for (;;) {
+        throw_if_interrupted();
+        const auto now = std::chrono::steady_clock::now();
+        if (now >= due) return;
+        std::this_thread::sleep_for(std::min<std::chrono::steady_clock::duration>(due - now, wait_slice));
+    }
+}
+
+void clear_interrupt() noexcept {
+    received.store(0, std::memory_order_relaxed);
+    fmi_loader::clear_cancel();
+}
+
+void record_interrupt(int signal) noexcept {
+    received.store(signal, std::memory_order_relaxed);
+    fmi_loader::request_cancel();
+}
+
+}  // namespace cosim

@@ -1,0 +1,529 @@
+#include "engine/system.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+
+#include "engine/cosim_error.hpp"
+#include "engine/fmi2_instance.hpp"
+#include "engine/hardware_bridge.hpp"
+#include "engine/name_hint.hpp"
+#include "engine/ssp_archive.hpp"
+#include "engine/value_text.hpp"
+
+namespace cosim {
+
+namespace {
+
+using fmi_loader::Causality;
+using fmi_loader::VariableType;
+
+// The bytes unpacked below a folder (regular files only).
+std::uint64_t unpacked_bytes(const std::filesystem::path& folder) {
+    std::uint64_t total = 0;
+    std::error_code ec;
+    for (auto it = std::filesystem::recursive_directory_iterator(folder, ec);
+         !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec))
+        if (it->is_regular_file(ec)) total += it->file_size(ec);
+    return total;
+}
+
+std::string kind_name(ConnectorKind k) {
+    switch (k) {
+        case ConnectorKind::input:
+            return "input";
+        case ConnectorKind::output:
+            return "output";
+        case ConnectorKind::parameter:
+            return "parameter";
+        case ConnectorKind::calculated_parameter:
+            return "calculatedParameter";
+        case ConnectorKind::inout:
+            return "inout";
+        case ConnectorKind::unspecified:
+            return "unspecified";
+    }
+    return "?";
+}
+
+bool kind_matches(ConnectorKind k, Causality c) {
+    switch (k) {
+        case ConnectorKind::input:
+            return c == Causality::input;
+        case ConnectorKind::output:
+            return c == Causality::output;
+        case ConnectorKind::parameter:
+            return c == Causality::parameter;
+        case ConnectorKind::calculated_parameter:
+            return c == Causality::calculated_parameter;
+        default:
+            return true;
+    }
+}
+
+// Integer and Enumeration values travel as the same fmi2Integer.
+bool same_type(VariableType a, VariableType b) {
+    auto norm = [](VariableType t) { return t == VariableType::enumeration ? VariableType::integer : t; };
+    return norm(a) == norm(b);
+}
+
+std::size_t index_in(const fmi_loader::ModelDescription& md, const fmi_loader::ScalarVariable* v) {
+    return static_cast<std::size_t>(v - md.model_variables.data());
+}
+
+}  // namespace
+
+System::System(const SystemDescription& description, const SystemOptions& options)
+    : description_(description), tolerance_(options.tolerance) {
+    load_components(options);
+    check_connectors();
+    connect();
+    order_connections();
+    group_transfers();
+    mark_continuous_consumers();
+    changed_.assign(components_.size(), 0);
+    discrete_changed_.assign(components_.size(), 0);
+    for (const auto& text : options.settings) {
+        Setting setting = parse_setting(text, true);
+        settings_.emplace_back(component_index(setting.component), std::move(setting));
+    }
+    check_settings();
+    check_open_inputs();
+}
+
+// Every --set names a variable of its component and holds a value of its type, checked here, before any
+// run-time check: a misspelt name is the first thing reported, not a consequence of it.
+void System::check_settings() const {
+    // The .ssd's (and its .ssv files') bindings, named by file and line.
+    for (std::size_t i = 0; i < components_.size(); ++i) {
+        const auto& md = components_[i].description();
+        for (const auto& p : description_.components[i].parameters) {
+            const auto* v = md.find_variable(p.name);
+            if (!v) throw CosimError(p.place + ": " + unknown_variable_message(md, components_[i].name, p.name));
+            try {
+                (void)typed_value(md, *v, {"", p.name, p.value, p.type}, components_[i].name + "." + p.name);
+            } catch (const CosimError& e) {
+                throw CosimError(p.place + ": " + e.what());
+            }
+        }
+    }
+    for (const auto& [index, setting] : settings_) {
+        const auto& md = components_[index].description();
+        const std::string where = components_[index].name + "." + setting.variable;
+        const auto* v = md.find_variable(setting.variable);
+        if (!v) throw SettingError(unknown_variable_message(md, components_[index].name, setting.variable));
+        try {
+            (void)typed_value(md, *v, setting, where);
+        } catch (const CosimError& e) {
+            throw SettingError(e.what());
+        }
+    }
+}
+
+std::optional<std::string> System::initial_value(std::size_t c, const std::string& variable) const {
+    const auto& md = components_.at(c).description();
+    const auto* v = md.find_variable(variable);
+    if (!v) return std::nullopt;
+    auto as_text = [&](const Setting& s) -> std::string {
+        const TypedValue x = typed_value(md, *v, s, components_[c].name + "." + variable);
+        if (const auto* r = std::get_if<double>(&x)) return format_real(*r);
+        if (const auto* i = std::get_if<fmi2Integer>(&x)) return std::to_string(*i);
+        if (const auto* b = std::get_if<bool>(&x)) return *b ? "true" : "false";
+        return std::get<std::string>(x);
+    };
+    for (auto it = settings_.rbegin(); it != settings_.rend(); ++it)
+        if (it->first == c && it->second.variable == variable) return as_text(it->second);
+    const auto& bound = description_.components.at(c).parameters;
+    for (auto it = bound.rbegin(); it != bound.rend(); ++it)
+        if (it->name == variable) return as_text({"", it->name, it->value, it->type});
+    return v->start;
+}
+
+std::size_t System::component_index(const std::string& name) const {
+    for (std::size_t i = 0; i < components_.size(); ++i)
+        if (components_[i].name == name) return i;
+    std::vector<std::string> names;
+    for (const auto& c : components_) names.push_back(c.name);
+    throw CosimError(description_.file.string() + ": no component named '" + name + "'" + name_hint(name, names));
+}
+
+std::filesystem::path System::resolve_source(const std::string& source, const SystemOptions& options) const {
+    return resolve_fmu(description_, source, options.fmu_dirs);
+}
+
+void System::load_components(const SystemOptions& options) {
+    check_fmus_found(description_, options.fmu_dirs);
+    std::size_t states = 0, indicators = 0;
+    // Each FMU file is unpacked once and shared by the components made from it (unless it may be
+    // instantiated only once per process); the loader's max_total_bytes counts the whole system: the
+    // .ssp's own unpacked bytes and every FMU's.
+    std::map<std::filesystem::path, std::shared_ptr<fmi_loader::Fmu>> unpacked;
+    fmi_loader::Limits budget;
+    if (description_.archive)
+        budget.max_total_bytes -= std::min(budget.max_total_bytes, unpacked_bytes(description_.archive->directory()));
+    for (const auto& cd : description_.components) {
+        for (const auto& other : components_)
+            if (other.name == cd.name)
+                throw CosimError(description_.file.string() + ": two components named '" + cd.name + "'");
+        Component c;
+        c.name = cd.name;
+        const auto source = resolve_source(cd.source, options);
+        std::error_code ec;
+        auto key = std::filesystem::canonical(source, ec);
+        if (ec) key = source;
+        auto& shared = unpacked[key];
+        const auto once = [](const fmi_loader::ModelDescription& d) {
+            return (d.model_exchange && d.model_exchange->can_be_instantiated_only_once_per_process) ||
+                   (d.co_simulation && d.co_simulation->can_be_instantiated_only_once_per_process);
+        };
+        if (shared && !once(shared->description())) {
+            c.fmu = shared;
+        } else {
+            c.fmu = std::make_shared<fmi_loader::Fmu>(source, budget);
+            budget.max_total_bytes -= std::min(budget.max_total_bytes, unpacked_bytes(c.fmu->archive().directory()));
+            shared = c.fmu;
+        }
+        const auto& md = c.fmu->description();
+        const bool asked_cs = std::find(options.co_simulation.begin(), options.co_simulation.end(), cd.name) !=
+                              options.co_simulation.end();
+        const bool annotated_cs = !options.model_exchange_only && cd.execution && cd.execution->co_simulation;
+        const bool want_cs = asked_cs || annotated_cs;
+        if (cd.bridge) {
+            // The block runs elsewhere: its description stays, its binary is never loaded.
+            if (want_cs) throw CosimError(cd.name + ": a hardware-bridged component runs as Model Exchange only");
+            BridgeDescription bridge = *cd.bridge;
+            if (options.bridge_port && bridge.transport == "udp") bridge.port = *options.bridge_port;
+            if (options.bridge_device && bridge.transport == "serial") bridge.device = *options.bridge_device;
+            c.instance = std::make_unique<HardwareBridge>(md, cd.name, bridge);
+            c.state_offset = states;
+            c.indicator_offset = indicators;
+            components_.push_back(std::move(c));
+            continue;
+        }
+        if (want_cs || !md.model_exchange) {
+            if (!md.co_simulation) throw CosimError(cd.name + ": the FMU offers no Co-Simulation interface");
+            c.interface = Interface::co_simulation;
+        }
+        c.instance = std::make_unique<Fmi2Instance>(*c.fmu,
+                                                    c.interface == Interface::model_exchange
+                                                        ? fmi_loader::FmuKind::model_exchange
+                                                        : fmi_loader::FmuKind::co_simulation,
+                                                    cd.name);
+        if (c.interface == Interface::co_simulation) {
+            c.communication_step = options.communication_step;
+            if (!c.communication_step && annotated_cs) c.communication_step = cd.execution->communication_step;
+            c.interpolates_inputs = md.co_simulation->can_interpolate_inputs;
+        } else {
+            c.completed_step_needed = !md.model_exchange->completed_integrator_step_not_needed;
+        }
+        if (c.interface == Interface::model_exchange) {
+            c.state_offset = states;
+            c.state_count = md.number_of_continuous_states();
+            c.indicator_offset = indicators;
+            c.indicator_count = md.number_of_event_indicators;
+            states += c.state_count;
+            indicators += c.indicator_count;
+        }
+        components_.push_back(std::move(c));
+    }
+}
+
+void System::check_connectors() {
+    for (std::size_t i = 0; i < components_.size(); ++i) {
+        const auto& md = components_[i].description();
+        for (const auto& k : description_.components[i].connectors) {
+            const auto* v = md.find_variable(k.name);
+            if (!v) throw CosimError(components_[i].name + ": connector '" + k.name + "' is not a variable of its FMU");
+            if (!kind_matches(k.kind, v->causality))
+                throw CosimError(components_[i].name + "." + k.name + ": declared " + kind_name(k.kind) +
+                                 " in the .ssd but " + std::string(fmi_loader::to_string(v->causality)) +
+                                 " in the FMU");
+            if (!k.type.empty() && k.type != fmi_loader::to_string(v->type) &&
+                !(k.type == "Integer" && v->type == VariableType::enumeration))
+                throw CosimError(components_[i].name + "." + k.name + ": declared " + k.type + " in the .ssd but " +
+                                 std::string(fmi_loader::to_string(v->type)) + " in the FMU");
+            if (!k.unit.empty() && !v->unit.empty() && k.unit != v->unit)
+                throw CosimError(components_[i].name + "." + k.name + ": unit " + k.unit + " in the .ssd but " +
+                                 v->unit + " in the FMU");
+        }
+    }
+}
+
+void System::connect() {
+    auto endpoint = [&](const std::string& comp, const std::string& conn, const std::string& place) {
+        const std::size_t i = component_index(comp);
+        const auto& declared = description_.components[i].connectors;
+        if (!declared.empty() && std::none_of(declared.begin(), declared.end(),
+                                              [&](const ConnectorDescription& d) { return d.name == conn; }))
+            throw CosimError(place + ": component '" + comp + "' declares no connector '" + conn + "'");
+        const auto* v = components_[i].description().find_variable(conn);
+        if (!v) throw CosimError(place + ": " + unknown_variable_message(components_[i].description(), comp, conn));
+        return std::pair{i, v};
+    };
+    for (const auto& cd : description_.connections) {
+        const std::string place = cd.place.empty() ? description_.file.string() : cd.place;
+        const auto [from, source] = endpoint(cd.start_element, cd.start_connector, place);
+        const auto [to, target] = endpoint(cd.end_element, cd.end_connector, place);
+        const std::string label = place + ": " + cd.start_element + "." + cd.start_connector + " -> " + cd.end_element +
+                                  "." + cd.end_connector;
+        if (source->causality != Causality::output && source->causality != Causality::calculated_parameter)
+            throw CosimError(label + ": the start of a connection must be an output");
+        if (target->causality != Causality::input)
+            throw CosimError(label + ": the end of a connection must be an input");
+        if (!same_type(source->type, target->type))
+            throw CosimError(label + ": type mismatch (" + std::string(fmi_loader::to_string(source->type)) + " to " +
+                             std::string(fmi_loader::to_string(target->type)) + ")");
+        if (!source->unit.empty() && !target->unit.empty() && source->unit != target->unit)
+            throw CosimError(label + ": unit mismatch (" + source->unit + " to " + target->unit + ")");
+        for (const auto& existing : connections_)
+            if (existing.to == to && existing.target == target)
+                throw CosimError(label + ": the input already has a source (" + components_[existing.from].name + "." +
+                                 existing.source->name + ")");
+        connections_.push_back({from, to, source, target});
+    }
+}
+
+// Connection b must come after connection a when a feeds an input of a Model Exchange component
+// whose output, the start of b, depends on that input directly (ModelStructure/Outputs; no list
+// means "depends on every input"). A cycle of such edges is an algebraic loop, refused here.
+void System::order_connections() {
+    const std::size_t n = connections_.size();
+    auto feeds_through = [&](const Connection& a, const Connection& b) {
+        if (a.to != b.from || components_[a.to].interface != Interface::model_exchange) return false;
+        const auto& md = components_[a.to].description();
+        const std::size_t out_index = index_in(md, b.source) + 1;
+        const std::size_t in_index = index_in(md, a.target) + 1;
+        for (const auto& u : md.model_structure.outputs) {
+            if (u.index != out_index) continue;
+            if (!u.dependencies) return true;
+            return std::find(u.dependencies->begin(), u.dependencies->end(), in_index) != u.dependencies->end();
+        }
+        return b.source->causality == Causality::output;  // an output missing from ModelStructure: assume the worst
+    };
+    std::vector<std::vector<std::size_t>> after(n);
+    std::vector<std::size_t> indegree(n, 0);
+    for (std::size_t a = 0; a < n; ++a)
+        for (std::size_t b = 0; b < n; ++b)
+            if (feeds_through(connections_[a], connections_[b])) {
+                after[a].push_back(b);
+                ++indegree[b];
+            }
+    std::vector<std::size_t> order, ready;
+    for (std::size_t i = 0; i < n; ++i)
+        if (indegree[i] == 0) ready.push_back(i);
+    while (!ready.empty()) {
+        const std::size_t i = ready.front();
+        ready.erase(ready.begin());
+        order.push_back(i);
+        for (auto j : after[i])
+            if (--indegree[j] == 0) ready.push_back(j);
+    }
+    if (order.size() != n) {
+        std::string loop;
+        for (std::size_t i = 0; i < n; ++i)
+            if (indegree[i] > 0)
+                loop += "\n  " + components_[connections_[i].from].name + "." + connections_[i].source->name + " -> " +
+                        components_[connections_[i].to].name + "." + connections_[i].target->name;
+        throw CosimError(description_.file.string() + ": algebraic loop through direct feedthrough:" + loop);
+    }
+    std::vector<Connection> sorted;
+    for (auto i : order) sorted.push_back(connections_[i]);
+    connections_ = std::move(sorted);
+}
+
+void System::check_open_inputs() const {
+    for (std::size_t i = 0; i < components_.size(); ++i) {
+        for (const auto& v : components_[i].description().model_variables) {
+            if (v.causality != Causality::input || v.start) continue;
+            const bool connected = std::any_of(connections_.begin(), connections_.end(),
+                                               [&](const Connection& c) { return c.to == i && c.target == &v; });
+            const bool set = std::any_of(settings_.begin(), settings_.end(),
+                                         [&](const auto& s) { return s.first == i && s.second.variable == v.name; });
+            if (!connected && !set)
+                throw CosimError(components_[i].name + "." + v.name +
+                                 ": input is not connected and has no start value");
+        }
+    }
+}
+
+// Kahn's order refined: among the connections ready to go, take one between the same two components
+// as the last, so that runs of them can be copied in one call.
+void System::group_transfers() {
+    groups_.clear();
+    for (const auto& c : connections_) {
+        const bool real = c.source->type == VariableType::real;
+        const bool continuous = real && c.target->variability == fmi_loader::Variability::continuous;
+        if (!groups_.empty()) {
+            auto& g = groups_.back();
+            if (real && g.type == VariableType::real && g.from == c.from && g.to == c.to &&
+                g.continuous_target == continuous) {
+                g.source_vrs.push_back(c.source->value_reference);
+                g.target_vrs.push_back(c.target->value_reference);
+                continue;
+            }
+        }
+        TransferGroup g;
+        g.from = c.from;
+        g.to = c.to;
+        g.type = c.source->type;
+        g.continuous_target = continuous;
+        g.source_vrs = {c.source->value_reference};
+        g.target_vrs = {c.target->value_reference};
+        groups_.push_back(std::move(g));
+    }
+    for (auto& g : groups_) {
+        g.values.assign(g.source_vrs.size(), 0.0);
+        g.last.assign(g.source_vrs.size(), 0.0);
+    }
+}
+
+void System::mark_continuous_consumers() {
+    for (auto& c : components_) c.continuous_consumer = c.interface == Interface::model_exchange && c.has_dynamics();
+    // A Model Exchange component feeding a consumer's continuous input must itself see its inputs
+    // between events (its outputs may depend on them): up the connections until nothing changes.
+    for (bool grew = true; grew;) {
+        grew = false;
+        for (const auto& g : groups_) {
+            auto& source = components_[g.from];
+            if (!components_[g.to].continuous_consumer || !g.continuous_target) continue;
+            if (source.interface != Interface::model_exchange || source.continuous_consumer) continue;
+            source.continuous_consumer = true;
+            grew = true;
+        }
+    }
+}
+
+namespace {
+
+bool same_bits(double a, double b) {
+    return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+}  // namespace
+
+// The group's source values into g.values (and `text` for a String); true when they differ from the
+// last ones given.
+bool System::read_sources(TransferGroup& g, std::string& text) {
+    auto& from = *components_[g.from].instance;
+    bool changed = !g.given;
+    switch (g.type) {
+        case VariableType::real:
+            from.get_reals(g.source_vrs, g.values);
+            break;
+        case VariableType::integer:
+        case VariableType::enumeration:
+            g.values[0] = from.get_integer(g.source_vrs[0]);
+            break;
+        case VariableType::boolean:
+            g.values[0] = from.get_boolean(g.source_vrs[0]) ? 1.0 : 0.0;
+            break;
+        case VariableType::string:
+            text = from.get_string(g.source_vrs[0]);
+            changed = changed || text != g.last_string;
+            break;
+    }
+    for (std::size_t i = 0; i < g.values.size(); ++i) changed = changed || !same_bits(g.values[i], g.last[i]);
+    return changed;
+}
+
+// What read_sources read becomes the last values given.
+void System::accept(TransferGroup& g, std::string& text) {
+    g.last.swap(g.values);
+    if (g.type == VariableType::string) g.last_string = std::move(text);
+    g.given = true;
+}
+
+void System::write_targets(const TransferGroup& g, std::span<const double> values, const std::string& text) {
+    auto& to = *components_[g.to].instance;
+    switch (g.type) {
+        case VariableType::real:
+            to.set_reals(g.target_vrs, values);
+            break;
+        case VariableType::integer:
+        case VariableType::enumeration:
+            to.set_integer(g.target_vrs[0], static_cast<fmi2Integer>(values[0]));
+            break;
+        case VariableType::boolean:
+            to.set_boolean(g.target_vrs[0], values[0] != 0.0);
+            break;
+        case VariableType::string:
+            to.set_string(g.target_vrs[0], text);
+            break;
+    }
+}
+
+bool System::transfer(TransferGroup& g, const std::function<void(std::size_t)>& before_discrete_change) {
+    std::string text;
+    // An unchanged value is not set again: the target keeps its evaluated outputs.
+    if (!read_sources(g, text)) return false;
+    if (!g.continuous_target && before_discrete_change) before_discrete_change(g.to);
+    write_targets(g, g.values, text);
+    accept(g, text);
+    changed_[g.to] = 1;
+    if (!g.continuous_target) discrete_changed_[g.to] = 1;
+    return true;
+}
+
+bool System::propagate(Pass pass, const std::function<void(std::size_t)>& before_discrete_change) {
+    bool changed = false;
+    for (auto& g : groups_) {
+        const auto& target = components_[g.to];
+        if (pass != Pass::all && target.interface != Interface::model_exchange) continue;
+        if (pass == Pass::integrating || pass == Pass::continuous) {
+            if (!g.continuous_target || components_[g.from].interface != Interface::model_exchange) continue;
+            if (pass == Pass::integrating && !target.continuous_consumer) continue;
+        }
+        changed = transfer(g, before_discrete_change) || changed;
+    }
+    return changed;
+}
+
+void System::clear_changes() {
+    std::fill(changed_.begin(), changed_.end(), 0);
+    std::fill(discrete_changed_.begin(), discrete_changed_.end(), 0);
+}
+
+void System::record_co_simulation_inputs(std::size_t c) {
+    for (auto& g : groups_) {
+        if (g.to != c) continue;
+        g.step_start = g.last;
+        g.step_start_string = g.last_string;
+    }
+}
+
+void System::step_co_simulation(std::size_t c, double t, double h) {
+    auto& target = *components_[c].instance;
+    auto& slopes = slopes_;  // reused: no allocation per communication point
+    for (auto& g : groups_) {
+        if (g.to != c) continue;
+        std::string text;
+        if (read_sources(g, text)) accept(g, text);           // the sources' values now, at the end of the step: g.last
+        write_targets(g, g.step_start, g.step_start_string);  // the step starts from the values at its start
+        const bool interpolate = components_[c].interpolates_inputs && g.continuous_target && h > 0.0 &&
+                                 components_[g.from].interface == Interface::model_exchange;
+        if (!interpolate) continue;
+        slopes.resize(g.last.size());
+        for (std::size_t i = 0; i < slopes.size(); ++i) slopes[i] = (g.last[i] - g.step_start[i]) / h;
+        target.set_real_input_derivatives(g.target_vrs, slopes);
+    }
+    target.do_step(t - h, h);
+    record_co_simulation_inputs(c);
+}
+
+void System::initialize(double start_time, std::optional<double> stop_time) {
+    for (std::size_t i = 0; i < components_.size(); ++i) {
+        auto& c = components_[i];
+        c.instance->setup_experiment(start_time, stop_time, tolerance_);
+        for (const auto& p : description_.components[i].parameters) c.instance->apply({"", p.name, p.value, p.type});
+        for (const auto& [index, setting] : settings_)
+            if (index == i) c.instance->apply(setting);
+    }
+    for (auto& c : components_) c.instance->enter_initialization_mode();
+    propagate(Pass::all);  // in connection order: each input sees its source's initial value
+    for (auto& c : components_) c.instance->exit_initialization_mode();
+    for (std::size_t i = 0; i < components_.size(); ++i)
+        if (components_[i].interface == Interface::co_simulation) record_co_simulation_inputs(i);
+    clear_changes();
+}
+
+}  // namespace cosim
