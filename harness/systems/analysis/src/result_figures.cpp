@@ -357,6 +357,11 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
                 axis_error[k][r] = vectors[r][static_cast<std::size_t>(k)] * 180.0 / std::numbers::pi;
         }
         const auto use = update_rows(q, column(e.valid));
+        if (std::none_of(use.begin(), use.end(), [](bool u) { return u; })) {
+            // A filter the system does not run (filter = none) or that never became valid: nothing to draw.
+            notes << e.title << ": no valid sample in the CSV, its figures skipped\n";
+            continue;
+        }
         attitude.push_back(error_series(e.title, error, use, summary));
         const std::string prefix = e.column;
         derived.push_back({prefix + "_error_deg", kept(error, use)});
