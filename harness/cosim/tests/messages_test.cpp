@@ -129,6 +129,20 @@ TEST(Messages, ABadBindingNamesItsFileAndLine) {
     EXPECT_EQ(refusal(options_for(ssd)), ssd.string() + ":7: gain: no variable named 'sing' (did you mean 'sign'?)");
 }
 
+TEST(Messages, AnFmusRefusalIsSaidOnceWithTheValue) {
+    // The integrator's tau has a minimum of 1e-6 s: -1 is refused by the FMU. Its message comes once, in
+    // the error (it was also printed on stderr as the FMU's log line), and names the value.
+    Scratch s;
+    auto o = options_for(s.ssd(R"(<ssd:Component name="int" source="test_integrator.fmu"/>)"));
+    o.system.settings = {"int.tau=-1"};
+    ::testing::internal::CaptureStderr();
+    const std::string says = refusal(o);
+    const std::string printed = ::testing::internal::GetCapturedStderr();
+    EXPECT_NE(says.find("int: fmi2SetReal returned Error"), std::string::npos) << says;
+    EXPECT_NE(says.find("-1"), std::string::npos) << says;
+    EXPECT_EQ(printed.find("[Error]"), std::string::npos) << printed;
+}
+
 TEST(Messages, EachMissingFmuOnceWithTheFoldersLookedIn) {
     Scratch s;
     auto o =

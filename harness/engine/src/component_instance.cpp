@@ -11,10 +11,17 @@ void ComponentInstance::apply(const Setting& s) {
     if (!v) throw CosimError(unknown_variable_message(description(), name(), s.variable));
     const fmi2ValueReference vr = v->value_reference;
     const TypedValue x = typed_value(description(), *v, s, name() + "." + s.variable);
-    if (const auto* r = std::get_if<double>(&x)) set_real(vr, *r);
-    if (const auto* i = std::get_if<fmi2Integer>(&x)) set_integer(vr, *i);
-    if (const auto* b = std::get_if<bool>(&x)) set_boolean(vr, *b);
-    if (const auto* t = std::get_if<std::string>(&x)) set_string(vr, *t);
+    try {
+        if (const auto* r = std::get_if<double>(&x)) set_real(vr, *r);
+        if (const auto* i = std::get_if<fmi2Integer>(&x)) set_integer(vr, *i);
+        if (const auto* b = std::get_if<bool>(&x)) set_boolean(vr, *b);
+        if (const auto* t = std::get_if<std::string>(&x)) set_string(vr, *t);
+    } catch (const CosimError& e) {
+        // The FMU refused it: say the value given, unless its own message already does.
+        const std::string what = e.what();
+        if (what.find(s.value) != std::string::npos) throw;
+        throw CosimError(what + " (given " + s.variable + " = " + s.value + ")");
+    }
 }
 
 std::string ComponentInstance::get_as_text(const fmi_loader::ScalarVariable& v) {
