@@ -13,6 +13,7 @@
 #include "engine/cosim_error.hpp"
 #include "engine/csv_table.hpp"
 #include "engine/name_hint.hpp"
+#include "info_command.hpp"
 #include "run_command.hpp"
 
 namespace cosim {
@@ -166,6 +167,25 @@ TEST(Messages, AStopTimeShorterThanTheSystemsIntervalRunsWithItShortened) {
     run_system(o, report);
     const auto table = read_csv(*o.csv);
     EXPECT_EQ(table.rows(), 101u);
+}
+
+TEST(Messages, InfoShowsTheExperimentTheConnectionsAndEnumerationItems) {
+    Scratch s;
+    const auto ssd =
+        s.ssd(R"(<ssd:Component name="a" source="test_gain.fmu"/><ssd:Component name="b" source="test_gain.fmu"/>
+</ssd:Elements><ssd:Connections><ssd:Connection startElement="a" startConnector="y" endElement="b" endConnector="u"/>
+</ssd:Connections><ssd:Elements>)");
+    std::ostringstream system;
+    print_info(ssd, system);
+    EXPECT_NE(system.str().find("experiment: start 0 s, stop 100 s, output interval 10 s"), std::string::npos)
+        << system.str();
+    EXPECT_NE(system.str().find("  a  test_gain.fmu  Model Exchange"), std::string::npos) << system.str();
+    EXPECT_NE(system.str().find("connections:\n  a.y -> b.u\n"), std::string::npos) << system.str();
+    // The gain's sign: plus = 1 (its default), minus = 2 (harness/engine/tests/fmus/test_blocks.hpp).
+    std::ostringstream fmu;
+    print_info(fmu_dir / "test_gain.fmu", fmu);
+    EXPECT_NE(fmu.str().find("plus (1)"), std::string::npos) << fmu.str();
+    EXPECT_NE(fmu.str().find("[plus = 1, minus = 2]"), std::string::npos) << fmu.str();
 }
 
 }  // namespace
