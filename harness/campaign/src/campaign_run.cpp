@@ -102,7 +102,7 @@ CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path
     analysis::check_couplings(system, false, std::cerr);  // the blocks agree before any draw (each run checks its own)
 
     s.start_time = s.description.start_time.value_or(0.0);
-    const auto stop = spec.stop_time ? spec.stop_time : s.description.stop_time;
+    const auto stop = spec.stop_time ? spec.stop_time : analysis::default_stop_time(system);  // as `cosim run`
     if (!stop)
         throw CampaignError(spec.system.string() + " has no DefaultExperiment stopTime: give stop_time in the spec");
     s.stop_time = *stop;

@@ -118,10 +118,11 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
             throw CosimError("--reference runs every component as Model Exchange: drop --cs");
         system_options.model_exchange_only = true;
     }
-    const auto stop = options.stop_time ? options.stop_time : description.stop_time;
-    if (!stop) throw CosimError(options.ssd.string() + " has no DefaultExperiment stopTime: give --stop-time");
-    check_time("--stop-time", *stop);
+    if (options.stop_time) check_time("--stop-time", *options.stop_time);
     System system(description, system_options);
+    // Without --stop-time: the .ssd's orbits of the truth (derived from its orbit), else its stopTime.
+    const auto stop = options.stop_time ? options.stop_time : analysis::default_stop_time(system);
+    if (!stop) throw CosimError(options.ssd.string() + " has no DefaultExperiment stopTime: give --stop-time");
     analysis::check_couplings(system, options.allow_mismatch, std::cerr);
 
     ExecutionOptions ex;

@@ -317,6 +317,8 @@ SystemDescription read_system_description(const std::filesystem::path& path) {
             out.output_interval = positive_attribute(o, "interval", ssd);
         if (const xmlNode* i = annotation(ex, execution_annotation, "Integrator"))
             out.max_step = positive_attribute(i, "maxStep", ssd);
+        if (const xmlNode* st = annotation(ex, execution_annotation, "Stop"))
+            out.stop_orbits = positive_attribute(st, "orbits", ssd);
     }
     return out;
 }

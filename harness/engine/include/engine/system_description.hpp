@@ -84,6 +84,9 @@ struct SystemDescription {
     std::optional<double> start_time, stop_time;
     std::optional<double> output_interval;  // DefaultExperiment's execution annotation <Output interval=".."/>
     std::optional<double> max_step;         // and <Integrator maxStep=".."/>
+    // and <Stop orbits=".."/>: the run lasts this many orbits of the system's truth, derived by the front
+    // end that knows the system (harness/systems/analysis) instead of written; stopTime stays for other tools.
+    std::optional<double> stop_orbits;
 };
 
 // An .ssd, or an .ssp archive (by its extension) unpacked first within the loader's archive limits

@@ -6,6 +6,7 @@
 
 #include "engine/cosim_error.hpp"
 #include "engine/value_text.hpp"
+#include "orbit/sgp4.hpp"
 #include "orbit/tle.hpp"
 
 namespace analysis {
@@ -41,27 +42,59 @@ std::optional<double> real(const cosim::System& s, std::size_t c, const std::str
     return cosim::parse_real(*text, s.components()[c].name + "." + variable);
 }
 
-// The truth's mean orbit radius and where it comes from.
-std::optional<std::pair<double, std::string>> truth_orbit_radius(const cosim::System& s, std::size_t env) {
+// The truth's orbit: its mean radius (m), where it comes from, and its period (s).
+struct TruthOrbit {
+    double radius, period;
+    std::string source;
+};
+
+std::optional<TruthOrbit> truth_orbit(const cosim::System& s, std::size_t env) {
     const std::string name = s.components()[env].name;
     if (item(s, env, "orbit_model") == "tle") {
         const auto line1 = s.initial_value(env, "tle_line1"), line2 = s.initial_value(env, "tle_line2");
         if (!line1 || !line2) return std::nullopt;
         try {
-            const orbit::Tle tle = orbit::parse_tle(*line1, *line2);
-            const double n = tle.mean_motion_rev_per_day * 2.0 * M_PI / 86400.0;  // rad/s
-            return std::pair{std::cbrt(earth_mu / (n * n)), name + "'s element set (semi-major axis)"};
+            // As the environment propagates it: SGP4's mean semi-major axis and period at epoch.
+            orbit::Sgp4<double> sgp4;
+            if (sgp4.initialize(orbit::parse_tle(*line1, *line2).mean_elements<double>()) != orbit::Sgp4Status::ok)
+                return std::nullopt;
+            return TruthOrbit{sgp4.semi_major_axis_km() * 1e3, sgp4.period_minutes() * 60.0,
+                              name + "'s element set (SGP4 semi-major axis)"};
         } catch (const orbit::TleError&) {
             return std::nullopt;  // the environment refuses it at initialization, with the column
         }
     }
     const auto altitude = real(s, env, "orbit_altitude");
     if (!altitude) return std::nullopt;
-    return std::pair{earth_equatorial_radius + *altitude,
-                     name + ".orbit_altitude " + cosim::format_real(*altitude / 1e3) + " km above 6378.137 km"};
+    const double a = earth_equatorial_radius + *altitude;
+    return TruthOrbit{a, 2.0 * M_PI * std::sqrt(a * a * a / earth_mu),
+                      name + ".orbit_altitude " + cosim::format_real(*altitude / 1e3) + " km above 6378.137 km"};
+}
+
+std::optional<std::size_t> environment(const cosim::System& s) {
+    for (std::size_t i = 0; i < s.components().size(); ++i)
+        if (identifier(s.components()[i]) == "environment") return i;
+    return std::nullopt;
 }
 
 }  // namespace
+
+std::optional<double> truth_orbit_period(const cosim::System& system) {
+    const auto env = environment(system);
+    if (!env) return std::nullopt;
+    const auto orbit = truth_orbit(system, *env);
+    return orbit ? std::optional<double>(orbit->period) : std::nullopt;
+}
+
+std::optional<double> default_stop_time(const cosim::System& system) {
+    const auto& d = system.description();
+    if (!d.stop_orbits) return d.stop_time;
+    const auto period = truth_orbit_period(system);
+    if (!period)
+        throw cosim::CosimError(d.file.string() + ": <Stop orbits=\"" + cosim::format_real(*d.stop_orbits) +
+                                "\"/> but no environment orbit to derive the period from: give --stop-time");
+    return d.start_time.value_or(0.0) + *d.stop_orbits * *period;
+}
 
 std::vector<std::string> coupling_mismatches(const cosim::System& system) {
     std::vector<std::size_t> envs, plants, ests;
@@ -98,20 +131,20 @@ std::vector<std::string> coupling_mismatches(const cosim::System& system) {
         }
     }
     for (std::size_t env : envs) {
-        const auto truth = truth_orbit_radius(system, env);
+        const auto truth = truth_orbit(system, env);
         if (!truth) continue;
         for (std::size_t e : ests) {
             const auto altitude = real(system, e, "orbit_altitude");
             if (!altitude) continue;
             const double radius = earth_mean_radius + *altitude;
-            const double difference = radius - truth->first;
+            const double difference = radius - truth->radius;
             if (std::abs(difference) <= max_orbit_radius_difference) continue;
-            const double suggested = std::round((truth->first - earth_mean_radius) / 1e3);
+            const double suggested = std::round((truth->radius - earth_mean_radius) / 1e3);
             out.push_back(comps[e].name + ".orbit_altitude " + cosim::format_real(*altitude / 1e3) +
                           " km (an orbit radius of " + cosim::format_real(std::round(radius / 1e3)) +
                           " km over the computer's 6371 km Earth) is " +
                           cosim::format_real(std::round(std::abs(difference) / 1e3)) + " km off the truth's " +
-                          cosim::format_real(std::round(truth->first / 1e3)) + " km (" + truth->second +
+                          cosim::format_real(std::round(truth->radius / 1e3)) + " km (" + truth->source +
                           "), more than the 20 km allowed (set " + comps[e].name +
                           ".orbit_altitude=" + cosim::format_real(suggested * 1e3) + ")");
         }

@@ -61,4 +61,21 @@ TEST(Couplings, ARunIsRefusedUnlessAllowed) {
     EXPECT_NE(warn.str().find("warning: est.angular_response"), std::string::npos);
 }
 
+TEST(Couplings, TheOrbitPeriodIsDerivedAsTheEnvironmentComputesIt) {
+    // leo_orbit's <Stop orbits="1"/>: one period of env's element set, which must be the environment's own
+    // calculated orbit_period (read from the FMU after initialization), not the 5764 s written for other tools.
+    cosim::SystemOptions options;
+    options.fmu_dirs = {PVATT_FMU_DIR};
+    cosim::System system(cosim::read_system_description(PVATT_SYSTEMS_SOURCE_DIR "/leo_orbit.ssd"), options);
+    const auto derived = analysis::default_stop_time(system);
+    ASSERT_TRUE(derived.has_value());
+    system.initialize(0.0, std::nullopt);
+    const std::size_t env = system.component_index("env");
+    const auto* period = system.components()[env].description().find_variable("orbit_period");
+    ASSERT_NE(period, nullptr);
+    const double computed = system.components()[env].instance->get_real(period->value_reference);
+    EXPECT_NEAR(*derived, computed, 1e-6);
+    EXPECT_NEAR(*derived, 5763.86, 0.01);  // environment_block_test's figure for the bundled set
+}
+
 }  // namespace

@@ -14,6 +14,7 @@
 // Components are recognized by their FMU's model identifier; a system without the blocks is not checked.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,15 @@ namespace analysis {
 // 20 km: the bundled orbit's radius swings +-8 km about its mean (eccentricity 0.0012); 20 km of
 // altitude move the cones' Earth disc by 0.4 deg at 570 km.
 inline constexpr double max_orbit_radius_difference = 20e3;  // m
+
+// The period (s) of the truth's orbit: SGP4's period of the environment's element set (what the
+// environment's orbit_period gives), or Kepler's for its circular orbit; nullopt without an environment.
+std::optional<double> truth_orbit_period(const cosim::System& system);
+
+// The stop time a run takes without --stop-time: the .ssd's <Stop orbits="N"/> times the truth's orbit
+// period (derived, not written), else its stopTime; nullopt when it gives neither. Throws CosimError when
+// the .ssd asks for orbits of a system with no orbit to derive them from.
+std::optional<double> default_stop_time(const cosim::System& system);
 
 // One line per contradiction found ("est.angular_response cosine but plant.angular_response kelly: ...").
 std::vector<std::string> coupling_mismatches(const cosim::System& system);
