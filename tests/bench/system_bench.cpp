@@ -80,7 +80,7 @@ Row run_plant_alone(double stop) {
     plant.setup_experiment(0.0, stop, std::nullopt);
     for (const auto& c : description.components)
         if (c.name == "plant")
-            for (const auto& p : c.parameters) plant.apply({"", p.name, p.value, p.type});
+            for (const auto& p : c.parameters) plant.apply(p);
     const auto& md = fmu.description();
     std::array<fmi2ValueReference, 4> vr{};
     for (int i = 0; i < 3; ++i) vr[i] = md.find_variable("sun_body[" + std::to_string(i + 1) + "]")->value_reference;

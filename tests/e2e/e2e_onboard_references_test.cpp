@@ -16,7 +16,7 @@ namespace {
 
 std::string parameter(const cosim::ComponentDescription& c, const std::string& name) {
     for (const auto& p : c.parameters)
-        if (p.name == name) return p.value;
+        if (p.variable == name) return p.value;
     return "";
 }
 

@@ -22,12 +22,6 @@ namespace campaign {
 
 namespace {
 
-// At every output point: a signal (Ctrl-C, SIGTERM, forwarded by mpirun) ends the campaign there
-// instead of being recorded as a failed run; the rows written so far stay.
-struct InterruptCheck : cosim::Observer {
-    void sample(double, cosim::System&) override { cosim::throw_if_interrupted(); }
-};
-
 // The variable a "component.variable=value" setting names.
 std::string setting_variable(const std::string& setting) {
     const cosim::Setting s = cosim::parse_setting(setting, true);
@@ -35,14 +29,15 @@ std::string setting_variable(const std::string& setting) {
 }
 
 void check_variable(const cosim::System& system, const std::string& name, const std::string& what) {
-    const auto dot = name.find('.');
-    const std::size_t c = system.component_index(name.substr(0, dot));
-    const auto* v = system.components()[c].description().find_variable(name.substr(dot + 1));
+    const auto split = cosim::split_variable_name(name);
+    if (!split) throw CampaignError(what + ": '" + name + "' is not component.variable");
+    const std::size_t c = system.component_index(split->component);
+    const auto* v = system.components()[c].description().find_variable(split->variable);
     if (!v)
-        throw CampaignError(what + ": " +
-                            cosim::unknown_variable_message(system.components()[c].description(), name.substr(0, dot),
-                                                            name.substr(dot + 1)) +
-                            " in " + system.description().file.string());
+        throw CampaignError(
+            what + ": " +
+            cosim::unknown_variable_message(system.components()[c].description(), split->component, split->variable) +
+            " in " + system.description().file.string());
     using fmi_loader::Causality;
     if (v->causality == Causality::output || v->causality == Causality::calculated_parameter ||
         v->causality == Causality::independent)
@@ -106,14 +101,13 @@ CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path
     if (!stop)
         throw CampaignError(spec.system.string() + " has no DefaultExperiment stopTime: give stop_time in the spec");
     s.stop_time = *stop;
-    if (!(s.stop_time > s.start_time)) throw CampaignError("the stop time must be after the start time");
     const cosim::RunDefaults defaults = cosim::run_defaults(system, s.start_time, s.stop_time);  // as `cosim run`
-    const double span = s.stop_time - s.start_time;
     s.output_interval = spec.output_interval.value_or(defaults.output_interval);
-    if (!(s.output_interval > 0.0) || !std::isfinite(s.output_interval) ||
-        span / s.output_interval > cosim::max_run_points)
-        throw CampaignError("the output interval must be positive and give at most " +
-                            std::to_string(cosim::max_run_points) + " output points per run (max_run_points)");
+    cosim::ExecutionOptions run;
+    run.start_time = s.start_time;
+    run.stop_time = s.stop_time;
+    run.output_interval = s.output_interval;
+    cosim::check_run_span(run, std::nullopt, false);  // the checks of `cosim run`
     s.tolerance = spec.tolerance.value_or(defaults.tolerance);
     // Run k takes grid combination k mod the grid's size: fewer runs leave combinations out, a count that is
     // no multiple gives some combinations one run more. Said, not refused (a short trial is legitimate).
@@ -139,7 +133,7 @@ RunResult run_one(const CampaignSetup& setup, long index, const std::optional<st
         cosim::System system(setup.description, options);
         analysis::check_couplings(system, false, std::cerr);  // a draw may make them disagree: this run fails
         MetricObserver metrics(setup.spec.metrics, system);
-        InterruptCheck interrupt;
+        cosim::InterruptCheck interrupt;  // a signal ends the campaign, not just this run
         std::vector<cosim::Observer*> observers = {&interrupt, &metrics};
         std::unique_ptr<cosim::CsvWriter> csv;
         if (full_csv) {

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "campaign_error.hpp"
+#include "engine/setting.hpp"
 #include "engine/value_text.hpp"
 #include "statistics.hpp"
 
@@ -97,9 +98,7 @@ double epoch_seconds(const Context& cx, const toml::node& n, const std::string& 
 
 // "env.q0": a component and a variable (prefix), both non-empty.
 void check_target(const Context& cx, const toml::node& at, const std::string& target, const std::string& what) {
-    const auto dot = target.find('.');
-    if (dot == std::string::npos || dot == 0 || dot + 1 == target.size() ||
-        target.find_first_of("=,\"\n") != std::string::npos)
+    if (!cosim::split_variable_name(target) || target.find_first_of("=,\"\n") != std::string::npos)
         cx.fail(at, what + ": '" + target + "' is not component.variable");
 }
 

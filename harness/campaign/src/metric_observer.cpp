@@ -5,6 +5,7 @@
 #include "analysis/angle_error.hpp"
 #include "campaign_error.hpp"
 #include "engine/name_hint.hpp"
+#include "engine/setting.hpp"
 #include "engine/value_text.hpp"
 #include "statistics.hpp"
 
@@ -29,18 +30,18 @@ std::vector<std::string> metric_columns(const CampaignSpec& spec) {
 
 MetricObserver::Column MetricObserver::resolve(const cosim::System& system, const std::string& name,
                                                const std::string& metric) {
-    const auto dot = name.find('.');
+    const auto split = cosim::split_variable_name(name).value_or(cosim::VariableName{name, ""});
     const auto& components = system.components();
     std::size_t index = components.size();
     for (std::size_t i = 0; i < components.size(); ++i)
-        if (components[i].name == name.substr(0, dot)) index = i;
+        if (components[i].name == split.component) index = i;
     if (index == components.size())
-        throw CampaignError("metric " + metric + ": no component named '" + name.substr(0, dot) + "'");
-    const auto* v = components[index].description().find_variable(name.substr(dot + 1));
+        throw CampaignError("metric " + metric + ": no component named '" + split.component + "'");
+    const auto* v = components[index].description().find_variable(split.variable);
     if (!v)
-        throw CampaignError("metric " + metric + ": " +
-                            cosim::unknown_variable_message(components[index].description(), name.substr(0, dot),
-                                                            name.substr(dot + 1)));
+        throw CampaignError(
+            "metric " + metric + ": " +
+            cosim::unknown_variable_message(components[index].description(), split.component, split.variable));
     if (v->type == fmi_loader::VariableType::string)
         throw CampaignError("metric " + metric + ": '" + name + "' is a String");
     return {index, v};

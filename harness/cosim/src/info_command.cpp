@@ -36,7 +36,8 @@ void print_system_info(const std::filesystem::path& path, std::ostream& out) {
                                          ? ", step " + format_real(*c.execution->communication_step) + " s"
                                          : std::string());
         out << "  " << c.name << "  " << c.source << "  " << how << "\n";
-        for (const auto& p : c.parameters) out << "      " << p.name << " = " << p.value << "  (" << p.type << ")\n";
+        for (const auto& p : c.parameters)
+            out << "      " << p.variable << " = " << p.value << "  (" << p.ssv_type << ")\n";
     }
     out << "connections:\n";
     for (const auto& c : d.connections)

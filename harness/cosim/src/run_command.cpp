@@ -9,7 +9,6 @@
 #include <cstdio>
 #include <iomanip>
 #include <iostream>
-#include <limits>
 #include <memory>
 
 #include "analysis/couplings.hpp"
@@ -31,35 +30,6 @@ void check_co_simulation_names(const SystemDescription& description, const std::
                                        [&](const auto& c) { return c.name == name; });
         if (!known) throw CosimError("--cs " + name + ": the system has no component of that name");
     }
-}
-
-void check_time(const char* what, double value) {
-    if (!std::isfinite(value)) throw CosimError(std::string(what) + " must be finite, got " + std::to_string(value));
-}
-
-// A run must have something to do and an end: a finite span, intervals that are positive, not longer
-// than the run and not so short that the number of points is absurd (max_run_points without --force).
-void check_intervals(const ExecutionOptions& ex, std::optional<double> communication_step, bool force) {
-    check_time("the start time", ex.start_time);
-    check_time("--stop-time", ex.stop_time);
-    const double span = ex.stop_time - ex.start_time;
-    if (!(span > 0.0))
-        throw CosimError("--stop-time " + format_real(ex.stop_time) + " s is not after the start time " +
-                         format_real(ex.start_time) + " s: nothing to simulate");
-    auto check_interval = [&](const char* what, double h) {
-        if (!std::isfinite(h) || !(h > 0.0))
-            throw CosimError(std::string(what) + " must be positive and finite, got " + format_real(h));
-        if (h > span)
-            throw CosimError(std::string(what) + " " + format_real(h) + " s is longer than the run (" +
-                             format_real(span) + " s): no point after the start");
-        const double points = span / h;
-        if (points > max_run_points && !force)
-            throw CosimError(std::string(what) + " " + format_real(h) + " s over " + format_real(span) + " s makes " +
-                             format_real(points) + " points, more than the limit of " + format_real(max_run_points) +
-                             " (give --force to run it anyway)");
-    };
-    check_interval("--output-interval", ex.output_interval);
-    if (communication_step) check_interval("--step", *communication_step);
 }
 
 // Before the run: say how large the CSV will be when it is large, and refuse what the disk cannot
@@ -93,15 +63,6 @@ void report_interrupted(const Interrupted& e, double last_time, const CsvWriter*
     report << "\n";
 }
 
-// The first observer: notices a signal at an output point (the only place a run may stop cleanly).
-struct InterruptCheck : Observer {
-    double last_time = 0.0;
-    void sample(double t, System&) override {
-        throw_if_interrupted();
-        last_time = t;
-    }
-};
-
 }  // namespace
 
 RunStatistics run_system(const RunOptions& options, std::ostream& report) {
@@ -118,7 +79,8 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
             throw CosimError("--reference runs every component as Model Exchange: drop --cs");
         system_options.model_exchange_only = true;
     }
-    if (options.stop_time) check_time("--stop-time", *options.stop_time);
+    if (options.stop_time && !std::isfinite(*options.stop_time))
+        throw CosimError("--stop-time must be finite, got " + format_real(*options.stop_time));
     System system(description, system_options);
     // Without --stop-time: the .ssd's orbits of the truth (derived from its orbit), else its stopTime.
     const auto stop = options.stop_time ? options.stop_time : analysis::default_stop_time(system);
@@ -146,7 +108,7 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
     ex.event_rows = options.event_rows;
     ex.reference = options.reference;
     ex.max_step = options.max_step;
-    check_intervals(ex, options.communication_step, options.force);
+    check_run_span(ex, options.communication_step, options.force);
 
     const bool tty = options.progress && isatty(fileno(stderr));
     const auto started = std::chrono::steady_clock::now();

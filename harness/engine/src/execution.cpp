@@ -10,6 +10,7 @@
 
 #include "engine/cosim_error.hpp"
 #include "engine/interrupt.hpp"
+#include "engine/time_rule.hpp"
 #include "integrator/cvode_integrator.hpp"
 #include "integrator/indicator_bisection.hpp"
 
@@ -19,10 +20,6 @@ namespace {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr int max_event_rounds = 100;
-
-bool reached(double t, double event_time) {
-    return t >= event_time - 1e-12 * std::max(1.0, std::abs(event_time));
-}
 
 // The wall-clock time at which `elapsed` seconds of simulated time are due (--realtime).
 std::chrono::steady_clock::time_point wall_due(std::chrono::steady_clock::time_point wall_start, double elapsed) {
@@ -320,7 +317,7 @@ struct Execution::Impl {
         sample();
 
         long k_out = 0;
-        const double tiny = 1e-12 * std::max(1.0, std::abs(stop));
+        const double tiny = time_resolution(stop);
         while (!terminate && t < stop - tiny) {
             throw_if_interrupted();  // between integrator steps and events, not only at output points
             for (auto* o : observers) o->between_steps();

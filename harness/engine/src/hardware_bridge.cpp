@@ -8,6 +8,7 @@
 #include "bridge/frame.hpp"
 #include "engine/cosim_error.hpp"
 #include "engine/interrupt.hpp"
+#include "engine/time_rule.hpp"
 #include "engine/value_text.hpp"
 
 namespace cosim {
@@ -18,11 +19,6 @@ using fmi_loader::Causality;
 using fmi_loader::VariableType;
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
-
-// The same tolerance as the execution's: an instant within rounding of the sample time is it.
-bool reached(double t, double event_time) {
-    return t >= event_time - 1e-12 * std::max(1.0, std::abs(event_time));
-}
 
 // Nearest-rank percentile of sorted values.
 double percentile(const std::vector<double>& sorted, double p) {
@@ -120,7 +116,7 @@ void HardwareBridge::exit_initialization_mode() {
         throw CosimError(name_ + ": sample_period must be positive, got " + format_real(period_));
     // Instants the tolerance cannot tell apart, or more of them than the count holds, are refused
     // before the board is told anything: the master would otherwise count them one at a time.
-    const double resolution = 1e-12 * std::max(1.0, std::abs(start_time_));
+    const double resolution = time_resolution(start_time_);
     const double span = stop_time_ ? *stop_time_ - start_time_ : 0.0;
     if (period_ <= resolution || (std::isfinite(span) && span / period_ > max_sample_index))
         throw CosimError(name_ + ": sample_period " + format_real(period_) + " s makes more than " +

@@ -5,6 +5,7 @@
 
 #include "engine/cosim_error.hpp"
 #include "engine/csv_table.hpp"
+#include "engine/interrupt.hpp"
 #include "engine/name_hint.hpp"
 #include "engine/value_text.hpp"
 
@@ -14,31 +15,43 @@ std::string io_reason() {
     return errno != 0 ? std::strerror(errno) : "input/output error";
 }
 
-CsvWriter::CsvWriter(const std::filesystem::path& file, const System& system, const std::vector<std::string>& columns)
-    : path_(file) {
+std::vector<OutputColumn> output_columns(const System& system, const std::vector<std::string>& names) {
     const auto& comps = system.components();
-    if (columns.empty()) {
+    std::vector<OutputColumn> columns;
+    if (names.empty()) {
         for (std::size_t i = 0; i < comps.size(); ++i)
             for (const auto& v : comps[i].description().model_variables)
-                if (v.causality == fmi_loader::Causality::output) columns_.push_back({i, &v});
-    } else {
-        for (const auto& name : columns) {
-            const auto dot = name.find('.');
-            if (dot == std::string::npos) throw CosimError("--columns expects component.variable, got '" + name + "'");
-            const std::size_t i = system.component_index(name.substr(0, dot));
-            const auto* v = comps[i].description().find_variable(name.substr(dot + 1));
-            if (!v)
-                throw CosimError("--columns: " +
-                                 unknown_variable_message(comps[i].description(), comps[i].name, name.substr(dot + 1)));
-            columns_.push_back({i, v});
-        }
+                if (v.causality == fmi_loader::Causality::output) columns.push_back({i, &v});
     }
+    for (const auto& name : names) {
+        const auto split = split_variable_name(name);
+        if (!split) throw CosimError("--columns expects component.variable, got '" + name + "'");
+        const std::size_t i = system.component_index(split->component);
+        const auto* v = comps[i].description().find_variable(split->variable);
+        if (!v)
+            throw CosimError("--columns: " +
+                             unknown_variable_message(comps[i].description(), comps[i].name, split->variable));
+        columns.push_back({i, v});
+    }
+    return columns;
+}
+
+void InterruptCheck::sample(double t, System&) {
+    throw_if_interrupted();
+    last_time = t;
+}
+
+CsvWriter::CsvWriter(const std::filesystem::path& file, const System& system, const std::vector<std::string>& columns,
+                     bool qualified)
+    : path_(file), columns_(output_columns(system, columns)) {
+    const auto& comps = system.components();
     pending_ = std::make_unique<PendingFile>(file);
     out_.open(pending_->path());
     if (!out_) throw CosimError("cannot write " + file.string() + ": " + std::strerror(errno));
     last_flush_ = std::chrono::steady_clock::now();
     out_ << "time";
-    for (const auto& c : columns_) out_ << "," << csv_field(comps[c.component].name + "." + c.variable->name);
+    for (const auto& c : columns_)
+        out_ << "," << csv_field(qualified ? comps[c.component].name + "." + c.variable->name : c.variable->name);
     out_ << "\n";
     check();
 }

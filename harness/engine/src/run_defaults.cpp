@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+
+#include "engine/cosim_error.hpp"
+#include "engine/value_text.hpp"
 
 namespace cosim {
 
@@ -22,6 +26,37 @@ RunDefaults run_defaults(const System& system, double start, double stop) {
     else if (!std::isfinite(d.output_interval) || d.output_interval < span / 1000.0)
         d.output_interval = span / 1000.0;
     return d;
+}
+
+namespace {
+
+void check_time(const char* what, double value) {
+    if (!std::isfinite(value)) throw CosimError(std::string(what) + " must be finite, got " + std::to_string(value));
+}
+
+}  // namespace
+
+void check_run_span(const ExecutionOptions& ex, std::optional<double> communication_step, bool force) {
+    check_time("the start time", ex.start_time);
+    check_time("--stop-time", ex.stop_time);
+    const double span = ex.stop_time - ex.start_time;
+    if (!(span > 0.0))
+        throw CosimError("--stop-time " + format_real(ex.stop_time) + " s is not after the start time " +
+                         format_real(ex.start_time) + " s: nothing to simulate");
+    auto check_interval = [&](const char* what, double h) {
+        if (!std::isfinite(h) || !(h > 0.0))
+            throw CosimError(std::string(what) + " must be positive and finite, got " + format_real(h));
+        if (h > span)
+            throw CosimError(std::string(what) + " " + format_real(h) + " s is longer than the run (" +
+                             format_real(span) + " s): no point after the start");
+        const double points = span / h;
+        if (points > max_run_points && !force)
+            throw CosimError(std::string(what) + " " + format_real(h) + " s over " + format_real(span) + " s makes " +
+                             format_real(points) + " points, more than the limit of " + format_real(max_run_points) +
+                             " (give --force to run it anyway)");
+    };
+    check_interval("--output-interval", ex.output_interval);
+    if (communication_step) check_interval("--step", *communication_step);
 }
 
 }  // namespace cosim

@@ -5,6 +5,12 @@
 
 namespace cosim {
 
+std::optional<VariableName> split_variable_name(std::string_view name) {
+    const auto dot = name.find('.');
+    if (dot == std::string_view::npos || dot == 0 || dot + 1 == name.size()) return std::nullopt;
+    return VariableName{std::string(name.substr(0, dot)), std::string(name.substr(dot + 1))};
+}
+
 Setting parse_setting(std::string_view text, bool with_component) {
     const auto eq = text.find('=');
     const std::string expected = with_component ? "component.variable=value" : "variable=value";
@@ -13,14 +19,13 @@ Setting parse_setting(std::string_view text, bool with_component) {
     Setting s;
     std::string_view name = text.substr(0, eq);
     s.value = std::string(text.substr(eq + 1));
-    if (with_component) {
-        const auto dot = name.find('.');
-        if (dot == std::string_view::npos || dot == 0 || dot + 1 == name.size())
-            throw CosimError("--set expects " + expected + ", got '" + std::string(text) + "'");
-        s.component = std::string(name.substr(0, dot));
-        name = name.substr(dot + 1);
-    }
     s.variable = std::string(name);
+    if (with_component) {
+        auto split = split_variable_name(name);
+        if (!split) throw CosimError("--set expects " + expected + ", got '" + std::string(text) + "'");
+        s.component = std::move(split->component);
+        s.variable = std::move(split->variable);
+    }
     return s;
 }
 

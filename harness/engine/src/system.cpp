@@ -2,11 +2,12 @@
 
 #include <algorithm>
 #include <cstring>
-#include <map>
+#include <set>
 
 #include "engine/cosim_error.hpp"
 #include "engine/fmi2_instance.hpp"
 #include "engine/hardware_bridge.hpp"
+#include "engine/import_cache.hpp"
 #include "engine/name_hint.hpp"
 #include "engine/ssp_archive.hpp"
 #include "engine/value_text.hpp"
@@ -97,13 +98,17 @@ void System::check_settings() const {
     // The .ssd's (and its .ssv files') bindings, named by file and line.
     for (std::size_t i = 0; i < components_.size(); ++i) {
         const auto& md = components_[i].description();
-        for (const auto& p : description_.components[i].parameters) {
-            const auto* v = md.find_variable(p.name);
-            if (!v) throw CosimError(p.place + ": " + unknown_variable_message(md, components_[i].name, p.name));
+        const auto& bindings = description_.components[i].parameters;
+        const auto& places = description_.components[i].parameter_places;
+        for (std::size_t k = 0; k < bindings.size(); ++k) {
+            const auto& p = bindings[k];
+            const std::string place = k < places.size() ? places[k] : description_.file.string();
+            const auto* v = md.find_variable(p.variable);
+            if (!v) throw CosimError(place + ": " + unknown_variable_message(md, components_[i].name, p.variable));
             try {
-                (void)typed_value(md, *v, {"", p.name, p.value, p.type}, components_[i].name + "." + p.name);
+                (void)typed_value(md, *v, p, components_[i].name + "." + p.variable);
             } catch (const CosimError& e) {
-                throw CosimError(p.place + ": " + e.what());
+                throw CosimError(place + ": " + e.what());
             }
         }
     }
@@ -135,7 +140,7 @@ std::optional<std::string> System::initial_value(std::size_t c, const std::strin
         if (it->first == c && it->second.variable == variable) return as_text(it->second);
     const auto& bound = description_.components.at(c).parameters;
     for (auto it = bound.rbegin(); it != bound.rend(); ++it)
-        if (it->name == variable) return as_text({"", it->name, it->value, it->type});
+        if (it->variable == variable) return as_text(*it);
     return v->start;
 }
 
@@ -154,10 +159,10 @@ std::filesystem::path System::resolve_source(const std::string& source, const Sy
 void System::load_components(const SystemOptions& options) {
     check_fmus_found(description_, options.fmu_dirs);
     std::size_t states = 0, indicators = 0;
-    // Each FMU file is unpacked once and shared by the components made from it (unless it may be
-    // instantiated only once per process); the loader's max_total_bytes counts the whole system: the
-    // .ssp's own unpacked bytes and every FMU's.
-    std::map<std::filesystem::path, std::shared_ptr<fmi_loader::Fmu>> unpacked;
+    // Each FMU file is imported once per process (import_cache.hpp) and shared by the components made
+    // from it; the loader's max_total_bytes counts the whole system: the .ssp's own unpacked bytes and
+    // every FMU's.
+    std::set<const fmi_loader::Fmu*> counted;
     fmi_loader::Limits budget;
     if (description_.archive)
         budget.max_total_bytes -= std::min(budget.max_total_bytes, unpacked_bytes(description_.archive->directory()));
@@ -167,22 +172,9 @@ void System::load_components(const SystemOptions& options) {
                 throw CosimError(description_.file.string() + ": two components named '" + cd.name + "'");
         Component c;
         c.name = cd.name;
-        const auto source = resolve_source(cd.source, options);
-        std::error_code ec;
-        auto key = std::filesystem::canonical(source, ec);
-        if (ec) key = source;
-        auto& shared = unpacked[key];
-        const auto once = [](const fmi_loader::ModelDescription& d) {
-            return (d.model_exchange && d.model_exchange->can_be_instantiated_only_once_per_process) ||
-                   (d.co_simulation && d.co_simulation->can_be_instantiated_only_once_per_process);
-        };
-        if (shared && !once(shared->description())) {
-            c.fmu = shared;
-        } else {
-            c.fmu = std::make_shared<fmi_loader::Fmu>(source, budget);
+        c.fmu = import_fmu(resolve_source(cd.source, options), budget);
+        if (counted.insert(c.fmu.get()).second)
             budget.max_total_bytes -= std::min(budget.max_total_bytes, unpacked_bytes(c.fmu->archive().directory()));
-            shared = c.fmu;
-        }
         const auto& md = c.fmu->description();
         const bool asked_cs = std::find(options.co_simulation.begin(), options.co_simulation.end(), cd.name) !=
                               options.co_simulation.end();
@@ -514,7 +506,7 @@ void System::initialize(double start_time, std::optional<double> stop_time) {
     for (std::size_t i = 0; i < components_.size(); ++i) {
         auto& c = components_[i];
         c.instance->setup_experiment(start_time, stop_time, tolerance_);
-        for (const auto& p : description_.components[i].parameters) c.instance->apply({"", p.name, p.value, p.type});
+        for (const auto& p : description_.components[i].parameters) c.instance->apply(p);
         for (const auto& [index, setting] : settings_)
             if (index == i) c.instance->apply(setting);
     }

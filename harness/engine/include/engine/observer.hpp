@@ -22,8 +22,23 @@ public:
     virtual void between_steps() {}
 };
 
-// Header `time` then `component.variable` for every output of every component (or the columns
-// asked for), full round-trip precision, fields quoted per RFC 4180 where needed. Every write is
+// Put first: notices a signal (install_interrupt_handlers) at an output point, the one place a run may
+// stop cleanly, by throwing Interrupted; remembers the last point passed.
+struct InterruptCheck : Observer {
+    double last_time = 0.0;
+    void sample(double t, System& system) override;
+};
+
+// A value a run reports: a variable of a component. The columns named (`component.variable`), or
+// every output of every component when none are.
+struct OutputColumn {
+    std::size_t component;
+    const fmi_loader::ScalarVariable* variable;
+};
+std::vector<OutputColumn> output_columns(const System& system, const std::vector<std::string>& names);
+
+// Header `time` then `component.variable` (or the variable's name alone: `qualified` false, for a
+// one-component run) for every output of every component (or the columns asked for), full round-trip precision, fields quoted per RFC 4180 where needed. Every write is
 // checked: a full disk is a CosimError naming the file and the reason, never a short file and exit 0.
 // The columns are checked before anything is written; the file is written under a temporary name and
 // takes its own name at the first row (the run has started: an existing file is never lost to a run
@@ -33,7 +48,8 @@ inline constexpr std::chrono::seconds csv_flush_interval{1};
 
 class CsvWriter : public Observer {
 public:
-    CsvWriter(const std::filesystem::path& file, const System& system, const std::vector<std::string>& columns);
+    CsvWriter(const std::filesystem::path& file, const System& system, const std::vector<std::string>& columns,
+              bool qualified = true);
     void sample(double t, System& system) override;
     void between_steps() override;
     // Flush and close, checked. Call it after the run (also after an interrupted one); the destructor
@@ -45,16 +61,12 @@ public:
 
 private:
     void check();
-    struct Column {
-        std::size_t component;
-        const fmi_loader::ScalarVariable* variable;
-    };
     std::filesystem::path path_;
     std::unique_ptr<PendingFile> pending_;
     std::ofstream out_;
     std::chrono::steady_clock::time_point last_flush_;
     bool unflushed_ = false;
-    std::vector<Column> columns_;
+    std::vector<OutputColumn> columns_;
     long rows_ = 0;
 };
 

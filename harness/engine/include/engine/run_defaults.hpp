@@ -1,7 +1,10 @@
-// What a run of a system takes when its request leaves it open, and the limit on its points: shared by
-// every front end (cosim run, simulate, campaign) so that they agree.
+// What a run of a system takes when its request leaves it open, and the checks of what it asks for:
+// shared by every front end (cosim run, simulate, campaign) so that they agree.
 #pragma once
 
+#include <optional>
+
+#include "engine/execution.hpp"
 #include "engine/system.hpp"
 
 namespace cosim {
@@ -17,5 +20,10 @@ struct RunDefaults {
     double output_interval, tolerance;
 };
 RunDefaults run_defaults(const System& system, double start, double stop);
+
+// A run must have something to do and an end: finite times, a stop after the start, an output interval
+// (and a communication step) positive, finite, not longer than the run and giving at most
+// max_run_points points unless `force`. Throws CosimError naming the option at fault.
+void check_run_span(const ExecutionOptions& run, std::optional<double> communication_step, bool force);
 
 }  // namespace cosim

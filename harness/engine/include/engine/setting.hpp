@@ -4,6 +4,7 @@
 // (typed_value), so every source takes the same path and meets the same checks.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -14,11 +15,18 @@
 namespace cosim {
 
 struct Setting {
-    std::string component;  // empty when the text named no component (cosim simulate)
+    std::string component;  // empty when the text named no component (cosim simulate, an .ssd binding)
     std::string variable;
     std::string value;     // as written
     std::string ssv_type;  // the binding's SSV type ("Real", "Integer", "Boolean", "String", "Enumeration"); empty: any
 };
+
+// "component.variable" at its first '.' (variable names may hold dots: "der(x.y)"); nullopt when there
+// is no dot or either part is empty. The one reading of such a name: settings, --columns, campaign targets.
+struct VariableName {
+    std::string component, variable;
+};
+std::optional<VariableName> split_variable_name(std::string_view name);
 
 // "component.variable=value" (with_component) or "variable=value"; the first '=' ends the name, the
 // first '.' of the name ends the component (variable names may hold dots: "der(x.y)").

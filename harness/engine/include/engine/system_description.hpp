@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/setting.hpp"
 #include "fmi_loader/fmu_archive.hpp"
 
 namespace cosim {
@@ -25,13 +26,6 @@ struct ConnectorDescription {
     ConnectorKind kind = ConnectorKind::unspecified;
     std::string type;  // "Real", "Integer", "Boolean", "String", "Enumeration" or "" when not given
     std::string unit;
-};
-
-struct ParameterValue {
-    std::string name;
-    std::string type;   // "Real", "Integer", "Boolean", "String", "Enumeration"
-    std::string value;  // as written
-    std::string place;  // "file:line" of its <ssv:Parameter> (the .ssd or .ssv), for messages
 };
 
 // A component run on external hardware instead of its FMU (README of harness/bridge): the .ssd
@@ -62,7 +56,8 @@ struct ComponentDescription {
     std::string name;
     std::string source;  // as written in the .ssd
     std::vector<ConnectorDescription> connectors;
-    std::vector<ParameterValue> parameters;
+    std::vector<Setting> parameters;            // its parameter bindings: variable, value and SSV type as written
+    std::vector<std::string> parameter_places;  // "file:line" of each binding (the .ssd or .ssv), for messages
     std::optional<BridgeDescription> bridge;
     std::optional<ExecutionHint> execution;
 };
