@@ -40,7 +40,9 @@ std::vector<std::string> closest_names(std::string_view name, const std::vector<
     }
     std::stable_sort(near.begin(), near.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
     std::vector<std::string> out;
-    for (std::size_t i = 0; i < near.size() && i < 3; ++i) out.push_back(near[i].second);
+    // The closest only: 'mag_bdy[1]' is one edit from mag_body[1] and two from mag_body[2].
+    for (std::size_t i = 0; i < near.size() && i < 3 && near[i].first == near.front().first; ++i)
+        out.push_back(near[i].second);
     return out;
 }
 

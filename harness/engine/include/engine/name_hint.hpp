@@ -12,7 +12,8 @@
 namespace cosim {
 
 // Up to three of `candidates` within a small edit distance of `name` (1, or a third of its length for
-// names of six characters and more; a swap of neighbours is one edit), closest first, each once.
+// names of six characters and more; a swap of neighbours is one edit), those at the smallest distance,
+// each once.
 std::vector<std::string> closest_names(std::string_view name, const std::vector<std::string>& candidates);
 
 // " (did you mean 'a' or 'b'?)", " (an array: q0[1] .. q0[4])", or "" when nothing is close.
