@@ -9,7 +9,7 @@
 //     when albedo is on);
 //   - est.orbit_altitude sizes the Earth the cones method's albedo model sees (the estimator's sphere of
 //     6371 km): its orbit radius must be the truth's mean orbit radius (the environment's circular
-//     altitude above 6378.137 km, or the semi-major axis of its element set) within
+//     altitude above 6378.137 km, or SGP4's mean semi-major axis of its element set) within
 //     max_orbit_radius_difference.
 // Components are recognized by their FMU's model identifier; a system without the blocks is not checked.
 #pragma once
