@@ -14,8 +14,8 @@ mkdir -p results
 # The run, its statistics and parameters kept for results/index.html.
 ./build/bin/cosim run harness/systems/seed_spin.ssd --stop-time "${SEED_STOP_TIME:-10}" --output results/seed_spin.csv \
   --output-interval 0.01 | tee results/run_statistics.txt
-{ echo; echo "Parameters bound in harness/systems/seed_spin.ssd (the FMUs' defaults otherwise):"
-  sed -nE 's/.*<ssv:Parameter name="([^"]*)"><ssv:([A-Za-z]*) value="([^"]*)".*/  \1 = \3/p' harness/systems/seed_spin.ssd
+{ echo; echo "The system (each component's bound parameters; the FMUs' defaults otherwise):"
+  ./build/bin/cosim info harness/systems/seed_spin.ssd
 } >> results/run_statistics.txt
 # A close-up of the bus over its first 0.2 s, every 5 us: the ripple of the 5 kHz PWM (results/ripple/). The
 # reference execution runs the plant in Model Exchange: the bundled one steps it in 1 ms Co-Simulation steps,

@@ -32,17 +32,29 @@ std::string escape(std::string_view text) {
     return out;
 }
 
+// An Enumeration's items with their numbers: an importer that sets it by value (FMPy's start_values,
+// fmi2SetInteger) needs the number, a reader the name.
+std::string items_with_numbers(const Variable& v) {
+    std::string out;
+    for (const auto& item : v.items) {
+        if (!out.empty()) out += ", ";
+        out += item.name + " = " + std::to_string(item.value);
+    }
+    return out;
+}
+
 std::string range_text(const Variable& v) {
-    if (v.type == ValueType::Enumeration) return v.item_names();
+    if (v.type == ValueType::Enumeration) return items_with_numbers(v);
     if (!v.min && !v.max) return "";
     return "[" + (v.min ? format_real(*v.min) : std::string("−∞")) + ", " +
            (v.max ? format_real(*v.max) : std::string("∞")) + "]";
 }
 
-// A choice's start by item name (the model description gives its integer).
+// A choice's start by item name and number (the model description gives only the number).
 std::string shown_start(const Variable& v, std::span<const std::byte> bytes) {
     if (v.type == ValueType::Enumeration)
-        if (const auto* item = v.item_valued(read_integer(bytes, v))) return item->name;
+        if (const auto* item = v.item_valued(read_integer(bytes, v)))
+            return item->name + " (" + std::to_string(item->value) + ")";
     return start_text(v, bytes);
 }
 

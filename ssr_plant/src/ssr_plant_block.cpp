@@ -110,7 +110,7 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
         .min(0.0);
     t.input("panel_temperature", &D::panel_temperature, "K",
             "Cell temperature of each face (+x, -x, +y, -y, +z, -z); at cell_temperature a face is the datasheet fit, "
-            "elsewhere the temperature coefficients move its curve (environment face_temperature)")
+            "elsewhere the temperature coefficients move its curve (panel_thermal face_temperature in leo_orbit)")
         .range(100.0, 500.0);
 
     t.choice("fidelity", &D::fidelity, {{"switching", Fidelity::switching}, {"averaged", Fidelity::averaged}},

@@ -80,4 +80,12 @@ TEST(Description, DocumentationListsEveryVariable) {
     for (const auto& v : model->table().variables()) EXPECT_NE(html.find(v.name), std::string::npos) << v.name;
 }
 
+TEST(Description, DocumentationGivesEachEnumerationItemItsNumber) {
+    // The test ball's material: rubber = 1 (its default), steel = 2 (fmus/tests/test_blocks.hpp). FMPy
+    // and fmi2SetInteger take the number, so the page gives it beside the name.
+    const std::string html = fmu::documentation_html(*fmu::make_model());
+    EXPECT_NE(html.find("rubber = 1, steel = 2"), std::string::npos);
+    EXPECT_NE(html.find("rubber (1)"), std::string::npos);
+}
+
 }  // namespace

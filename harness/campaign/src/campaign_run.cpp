@@ -1,12 +1,18 @@
 #include "campaign_run.hpp"
 
 #include <chrono>
+#include <cmath>
+#include <iostream>
+#include <limits>
 #include <memory>
 
+#include "analysis/couplings.hpp"
 #include "campaign_error.hpp"
 #include "draws.hpp"
+#include "engine/cosim_error.hpp"
 #include "engine/execution.hpp"
 #include "engine/interrupt.hpp"
+#include "engine/name_hint.hpp"
 #include "engine/observer.hpp"
 #include "engine/run_defaults.hpp"
 #include "engine/setting.hpp"
@@ -27,7 +33,11 @@ void check_variable(const cosim::System& system, const std::string& name, const 
     if (!split) throw CampaignError(what + ": '" + name + "' is not component.variable");
     const std::size_t c = system.component_index(split->component);
     const auto* v = system.components()[c].description().find_variable(split->variable);
-    if (!v) throw CampaignError(what + ": no variable '" + name + "' in " + system.description().file.string());
+    if (!v)
+        throw CampaignError(
+            what + ": " +
+            cosim::unknown_variable_message(system.components()[c].description(), split->component, split->variable) +
+            " in " + system.description().file.string());
     using fmi_loader::Causality;
     if (v->causality == Causality::output || v->causality == Causality::calculated_parameter ||
         v->causality == Causality::independent)
@@ -67,7 +77,14 @@ CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path
     }
     s.options.tolerance = spec.tolerance;
 
-    const cosim::System system(s.description, s.options);
+    // The system checks every setting's name and value as it is built: said as the spec's [set] (or --set).
+    const cosim::System system = [&] {
+        try {
+            return cosim::System(s.description, s.options);
+        } catch (const cosim::SettingError& e) {
+            throw CampaignError(std::string("[set] or --set: ") + e.what());
+        }
+    }();
     for (const auto& setting : s.options.settings) check_variable(system, setting_variable(setting), "[set]");
     for (const auto& d : spec.draws)
         for (const auto& v : drawn_variables(d)) check_variable(system, v, "draw of " + d.target);
@@ -77,9 +94,10 @@ CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path
         for (const auto& value : d.values) check_value(system, d.target + "=" + value.text, "draw of " + d.target);
     for (const auto& setting : draw_run(spec, 0).settings) check_value(system, setting, "draw " + setting);
     const MetricObserver check_metrics(spec.metrics, system);
+    analysis::check_couplings(system, false, std::cerr);  // the blocks agree before any draw (each run checks its own)
 
     s.start_time = s.description.start_time.value_or(0.0);
-    const auto stop = spec.stop_time ? spec.stop_time : s.description.stop_time;
+    const auto stop = spec.stop_time ? spec.stop_time : analysis::default_stop_time(system);  // as `cosim run`
     if (!stop)
         throw CampaignError(spec.system.string() + " has no DefaultExperiment stopTime: give stop_time in the spec");
     s.stop_time = *stop;
@@ -91,6 +109,14 @@ CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path
     run.output_interval = s.output_interval;
     cosim::check_run_span(run, std::nullopt, false);  // the checks of `cosim run`
     s.tolerance = spec.tolerance.value_or(defaults.tolerance);
+    // Run k takes grid combination k mod the grid's size: fewer runs leave combinations out, a count that is
+    // no multiple gives some combinations one run more. Said, not refused (a short trial is legitimate).
+    if (const long grid = grid_size(spec); grid > 1 && spec.runs % grid != 0)
+        std::cerr << "cosim campaign: warning: " << spec.runs << " runs do not cover the grid's " << grid
+                  << " combinations evenly"
+                  << (spec.runs < grid ? " (" + std::to_string(grid - spec.runs) + " combinations are never run)"
+                                       : std::string(" (some run once more than others)"))
+                  << "; give a multiple of " << grid << " in 'runs' or --runs\n";
     s.spec = std::move(spec);
     return s;
 }
@@ -105,6 +131,7 @@ RunResult run_one(const CampaignSetup& setup, long index, const std::optional<st
         cosim::SystemOptions options = setup.options;
         options.settings.insert(options.settings.end(), draws.settings.begin(), draws.settings.end());
         cosim::System system(setup.description, options);
+        analysis::check_couplings(system, false, std::cerr);  // a draw may make them disagree: this run fails
         MetricObserver metrics(setup.spec.metrics, system);
         cosim::InterruptCheck interrupt;  // a signal ends the campaign, not just this run
         std::vector<cosim::Observer*> observers = {&interrupt, &metrics};

@@ -3,6 +3,7 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -208,7 +209,8 @@ bool valid_stat(const std::string& s) {
 
 Metric read_metric(const Context& cx, const toml::table& t, std::size_t index) {
     const std::string where = "metric " + std::to_string(index + 1);
-    only_keys(cx, t, where, {"name", "kind", "a", "b", "column", "valid", "when", "after", "stats", "figure_stat"});
+    only_keys(cx, t, where,
+              {"name", "kind", "a", "b", "column", "valid", "when", "after", "condition", "stats", "figure_stat"});
     Metric m;
     m.name = string(cx, required(cx, t, "name", where), where + ": 'name'");
     if (m.name.empty() || m.name.find_first_of(",\"\n. ") != std::string::npos)
@@ -240,6 +242,26 @@ Metric read_metric(const Context& cx, const toml::table& t, std::size_t index) {
         check_target(cx, *w, m.when, where + ": 'when'");
     }
     if (const auto* a = t.get("after")) m.after = number(cx, *a, where + ": 'after'");
+    if (const auto* c = t.get("condition")) {
+        // "component.variable OP number", blanks around OP: the samples a split (sunlit, eclipse) keeps.
+        const std::string text = string(cx, *c, where + ": 'condition'");
+        std::istringstream in(text);
+        std::string column, op, value, rest;
+        in >> column >> op >> value >> rest;
+        static const std::set<std::string> ops = {"<", "<=", ">", ">=", "==", "!="};
+        double x = 0.0;
+        const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), x);
+        if (column.empty() || !ops.contains(op) || value.empty() || ec != std::errc() ||
+            end != value.data() + value.size() || !rest.empty() || !std::isfinite(x))
+            cx.fail(*c, where +
+                            ": 'condition' must be \"component.variable OP number\" with OP one of < <= > >= == != "
+                            "(e.g. \"env.irradiance > 0\"), got '" +
+                            text + "'");
+        check_target(cx, *c, column, where + ": 'condition'");
+        m.condition_column = column;
+        m.condition_op = op;
+        m.condition_value = x;
+    }
     if (const auto* s = t.get("stats")) {
         const auto* arr = s->as_array();
         if (!arr || arr->empty()) cx.fail(*s, where + ": 'stats' must be a non-empty array of strings");

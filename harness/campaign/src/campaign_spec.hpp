@@ -38,10 +38,14 @@ enum class MetricKind { quaternion_angle, vector_angle, column };
 struct Metric {
     std::string name;
     MetricKind kind = MetricKind::column;
-    std::string a, b;                // angle metrics: the two column groups' prefixes; column: a is the column
-    std::string valid;               // sample only while this column is true / nonzero ("" = always)
-    std::string when;                // sample only where this column changed since the last output point
-    double after = 0.0;              // ignore output points before this time (s)
+    std::string a, b;    // angle metrics: the two column groups' prefixes; column: a is the column
+    std::string valid;   // sample only while this column is true / nonzero ("" = always)
+    std::string when;    // sample only where this column changed since the last output point
+    double after = 0.0;  // ignore output points before this time (s)
+    // sample only where `condition_column condition_op condition_value` holds ("env.irradiance > 0": sunlit;
+    // "env.irradiance == 0": eclipse); empty column = always. Ops: <, <=, >, >=, ==, !=.
+    std::string condition_column, condition_op;
+    double condition_value = 0.0;
     std::vector<std::string> stats;  // mean, rms, min, max, final, count, pNN
     std::string figure_stat;         // the per-run value plotted against the drawn quantities
 };

@@ -4,6 +4,7 @@
 
 #include "analysis/angle_error.hpp"
 #include "campaign_error.hpp"
+#include "engine/name_hint.hpp"
 #include "engine/setting.hpp"
 #include "engine/value_text.hpp"
 #include "statistics.hpp"
@@ -37,11 +38,28 @@ MetricObserver::Column MetricObserver::resolve(const cosim::System& system, cons
     if (index == components.size())
         throw CampaignError("metric " + metric + ": no component named '" + split.component + "'");
     const auto* v = components[index].description().find_variable(split.variable);
-    if (!v) throw CampaignError("metric " + metric + ": no variable '" + name + "'");
+    if (!v)
+        throw CampaignError(
+            "metric " + metric + ": " +
+            cosim::unknown_variable_message(components[index].description(), split.component, split.variable));
     if (v->type == fmi_loader::VariableType::string)
         throw CampaignError("metric " + metric + ": '" + name + "' is a String");
     return {index, v};
 }
+
+namespace {
+
+// A metric's condition ("env.irradiance > 0") on the value read at an output point.
+bool holds(double x, const std::string& op, double value) {
+    if (op == "<") return x < value;
+    if (op == "<=") return x <= value;
+    if (op == ">") return x > value;
+    if (op == ">=") return x >= value;
+    if (op == "==") return x == value;
+    return x != value;
+}
+
+}  // namespace
 
 double MetricObserver::read(cosim::System& system, const Column& c) {
     auto& instance = *system.components()[c.component].instance;
@@ -57,7 +75,7 @@ double MetricObserver::read(cosim::System& system, const Column& c) {
 
 MetricObserver::MetricObserver(const std::vector<Metric>& metrics, const cosim::System& system) {
     for (const auto& m : metrics) {
-        Tracked t{&m, {}, {}, {}, {}, {}, {}};
+        Tracked t{&m, {}, {}, {}, {}, {}, {}, {}};
         const int n = m.kind == MetricKind::quaternion_angle ? 4 : 3;
         if (m.kind == MetricKind::column) {
             t.a.push_back(resolve(system, m.a, m.name));
@@ -67,6 +85,7 @@ MetricObserver::MetricObserver(const std::vector<Metric>& metrics, const cosim::
         }
         if (!m.valid.empty()) t.valid = resolve(system, m.valid, m.name);
         if (!m.when.empty()) t.when = resolve(system, m.when, m.name);
+        if (!m.condition_column.empty()) t.condition = resolve(system, m.condition_column, m.name);
         tracked_.push_back(std::move(t));
     }
 }
@@ -84,6 +103,7 @@ void MetricObserver::sample(double t, cosim::System& system) {
         }
         if (!changed || t < m.after) continue;
         if (k.valid && read(system, *k.valid) == 0.0) continue;
+        if (k.condition && !holds(read(system, *k.condition), m.condition_op, m.condition_value)) continue;
         double value = 0.0;
         if (m.kind == MetricKind::column) {
             value = read(system, k.a[0]);

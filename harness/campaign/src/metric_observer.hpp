@@ -36,7 +36,7 @@ private:
     struct Tracked {
         const Metric* metric;
         std::vector<Column> a, b;
-        std::optional<Column> valid, when;
+        std::optional<Column> valid, when, condition;
         std::optional<double> last_when;
         std::vector<double> values;
     };

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <set>
@@ -245,20 +246,56 @@ void write_summary(const std::filesystem::path& file, const CampaignSetup& setup
         md << "  - rank " << i << ": " << stats.ranks[i].runs << " runs, utilisation "
            << (stats.wall_time > 0 ? 100.0 * stats.ranks[i].busy / stats.wall_time : 0.0) << " %\n";
 
+    // Runs that finished without one valid sample of a metric (an orbit started in eclipse, a filter that
+    // never converged): counted and said, since their empty cells leave them out of its statistics.
+    for (const auto& m : spec.metrics) {
+        if (m.kind == MetricKind::column) continue;
+        const std::size_t c = table.column(m.name + "." + m.stats.front());
+        long finished = 0, empty = 0;
+        for (const auto& row : table.rows) {
+            if (row[status] == "failed") continue;
+            ++finished;
+            if (!number_in(row[c])) ++empty;
+        }
+        if (empty > 0)
+            md << "- " << m.name << ": " << empty << " of " << finished
+               << " finished runs had no valid sample (left out of its statistics)\n";
+    }
+
+    // One table over the rows `keep` selects.
+    auto metrics_table = [&](const std::function<bool(const std::vector<std::string>&)>& keep) {
+        md << "| column | runs | mean | min | p5 | p50 | p95 | max |\n|---|---|---|---|---|---|---|---|\n";
+        for (const auto& name : metric_columns(spec)) {
+            const std::size_t c = table.column(name);
+            std::vector<double> v;
+            for (const auto& row : table.rows)
+                if (row[status] != "failed" && keep(row))
+                    if (const auto x = number_in(row[c])) v.push_back(*x);
+            std::sort(v.begin(), v.end());
+            md << "| " << name << " | " << v.size();
+            for (const char* st : {"mean", "min", "p5", "p50", "p95", "max"})
+                md << " | " << (v.empty() ? std::string("–") : [&] {
+                    std::ostringstream cell;
+                    cell << std::setprecision(4) << statistic(st, v);
+                    return cell.str();
+                }());
+            md << " |\n";
+        }
+    };
     md << "\n## Metrics across runs\n\nPercentiles over the runs that finished (ok or stopped early) with a value; "
-          "angles in degrees.\n\n| column | runs | mean | min | p5 | p50 | p95 | max "
-          "|\n|---|---|---|---|---|---|---|---|\n";
-    for (const auto& name : metric_columns(spec)) {
-        auto v = table.finished_values(name);
-        std::sort(v.begin(), v.end());
-        md << "| " << name << " | " << v.size();
-        for (const char* s : {"mean", "min", "p5", "p50", "p95", "max"})
-            md << " | " << (v.empty() ? std::string("–") : [&] {
-                std::ostringstream cell;
-                cell << std::setprecision(4) << statistic(s, v);
-                return cell.str();
-            }());
-        md << " |\n";
+          "angles in degrees.\n\n";
+    metrics_table([](const auto&) { return true; });
+    // The compared designs apart: one table per value of each grid draw (averaging them together would
+    // mix what the grid separates).
+    for (const auto& d : spec.draws) {
+        if (d.kind != DrawKind::grid) continue;
+        const std::size_t g = table.column(d.target);
+        for (const auto& value : d.values) {
+            const long runs = std::count_if(table.rows.begin(), table.rows.end(),
+                                            [&](const auto& row) { return row[g] == value.text; });
+            md << "\n### " << d.target << " = " << value.text << " (" << runs << " runs)\n\n";
+            metrics_table([&](const std::vector<std::string>& row) { return row[g] == value.text; });
+        }
     }
     if (failed > 0) {
         md << "\n## Failed runs\n\n| run | message |\n|---|---|\n";

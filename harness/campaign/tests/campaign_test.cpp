@@ -282,3 +282,46 @@ TEST(Campaign, ValuesOfTheWrongTypeAreRefusedBeforeAnyRun) {
     }
     std::filesystem::remove_all(dir);
 }
+
+// The summary keeps apart what a grid separates and says which runs had nothing to measure (issue 31):
+// one table per sun method, and a metric whose condition never holds (irradiance is never negative)
+// counted as having no valid sample in every run.
+TEST(Campaign, SummaryPerGridValueAndRunsWithoutAValidSample) {
+    const auto dir = fresh_dir("per_grid");
+    std::filesystem::create_directories(dir);
+    std::ifstream in(std::string(CAMPAIGN_TEST_SPECS) + "/leo_short.toml");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string spec = text.str();
+    const std::string relative = "\"../../../systems/leo_orbit.ssd\"";
+    spec.replace(spec.find(relative), relative.size(),
+                 "\"" + std::string(CAMPAIGN_TEST_SPECS) + "/../../../systems/leo_orbit.ssd\"");
+    spec += R"(
+[[metric]]
+name = "never"
+kind = "quaternion_angle"
+a = "env.q_true"
+b = "est.q_est"
+valid = "est.valid"
+condition = "env.irradiance < 0"
+)";
+    const auto spec_file = dir / "per_grid.toml";
+    std::ofstream(spec_file) << spec;
+    CampaignOptions o;
+    o.spec = spec_file;
+    o.output = dir / "out";
+    o.fmu_dirs = {PVATT_FMU_DIR};
+    o.progress = false;
+    o.figures = false;
+    o.runs = 4;
+    o.stop_time = 4.0;
+    std::ostringstream out;
+    ASSERT_EQ(run_campaign(o, out), 0);
+    std::ifstream summary(dir / "out" / "summary.md");
+    std::stringstream s;
+    s << summary.rdbuf();
+    EXPECT_NE(s.str().find("### est.sun_method = difference (2 runs)"), std::string::npos) << s.str();
+    EXPECT_NE(s.str().find("### est.sun_method = cones (2 runs)"), std::string::npos) << s.str();
+    EXPECT_NE(s.str().find("- never: 4 of 4 finished runs had no valid sample"), std::string::npos) << s.str();
+    std::filesystem::remove_all(dir);
+}

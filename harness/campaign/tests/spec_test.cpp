@@ -147,3 +147,23 @@ TEST(Spec, DrawsThatOverflowAreRefused) {
             .find("overflows a double"),
         std::string::npos);
 }
+
+// A metric's condition splits it by a regime (sunlit, eclipse; issue 31): "column OP number".
+TEST(Spec, AMetricConditionIsAColumnAComparisonAndANumber) {
+    const std::string metric = R"(
+[[metric]]
+name = "e"
+kind = "quaternion_angle"
+a = "env.q_true"
+b = "est.q_filt"
+)";
+    const auto spec = parse_spec(head + metric + "condition = \"env.irradiance >= 1e-3\"\n", "/specs/test.toml");
+    ASSERT_EQ(spec.metrics.size(), 1u);
+    EXPECT_EQ(spec.metrics[0].condition_column, "env.irradiance");
+    EXPECT_EQ(spec.metrics[0].condition_op, ">=");
+    EXPECT_EQ(spec.metrics[0].condition_value, 1e-3);
+    for (const char* bad : {"env.irradiance > sunny", "env.irradiance => 0", "env.irradiance", "irradiance > 0",
+                            "env.irradiance > 0 and more"})
+        EXPECT_NE(error_of(head + metric + "condition = \"" + bad + "\"\n").find("'condition'"), std::string::npos)
+            << bad;
+}

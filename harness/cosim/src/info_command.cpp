@@ -5,22 +5,67 @@
 #include <string_view>
 
 #include "engine/system_description.hpp"
+#include "engine/value_text.hpp"
 #include "fmi_loader/fmu.hpp"
 
 namespace cosim {
 
 namespace {
-// A system (.ssd or .ssp): its components, their FMUs and bindings, its connections.
+
+std::string time_text(const std::optional<double>& t) {
+    return t ? format_real(*t) + " s" : std::string("not given");
+}
+
+// A system (.ssd or .ssp): its experiment, its components (how each runs, their FMUs and bindings), its
+// connections.
 void print_system_info(const std::filesystem::path& path, std::ostream& out) {
     const SystemDescription d = read_system_description(path);
     out << "system " << d.name << (d.archive ? " (SSP archive)" : "") << ": " << d.components.size() << " components, "
         << d.connections.size() << " connections\n";
+    out << "experiment: start " << time_text(d.start_time.value_or(0.0)) << ", stop " << time_text(d.stop_time)
+        << ", output interval "
+        << (d.output_interval ? format_real(*d.output_interval) + " s" : std::string("a thousandth of the run"))
+        << (d.max_step ? ", integrator steps of at most " + format_real(*d.max_step) + " s" : std::string()) << "\n";
+    out << "components:\n";
     for (const auto& c : d.components) {
-        out << "  " << c.name << "  " << c.source << (c.bridge ? "  (hardware bridge)" : "") << "\n";
+        std::string how = "Model Exchange (the master's CVODE)";
+        if (c.bridge)
+            how = "hardware bridge (" + c.bridge->transport + ")";
+        else if (c.execution && c.execution->co_simulation)
+            how = "Co-Simulation" + (c.execution->communication_step
+                                         ? ", step " + format_real(*c.execution->communication_step) + " s"
+                                         : std::string());
+        out << "  " << c.name << "  " << c.source << "  " << how << "\n";
         for (const auto& p : c.parameters)
             out << "      " << p.variable << " = " << p.value << "  (" << p.ssv_type << ")\n";
     }
+    out << "connections:\n";
+    for (const auto& c : d.connections)
+        out << "  " << c.start_element << "." << c.start_connector << " -> " << c.end_element << "." << c.end_connector
+            << "\n";
 }
+
+// A start value as the reader wants it: an Enumeration's item name with its number.
+std::string start_text(const fmi_loader::ModelDescription& md, const fmi_loader::ScalarVariable& v) {
+    if (!v.start) return "";
+    if (v.type == fmi_loader::VariableType::enumeration)
+        if (const auto* type = md.find_type(v.declared_type))
+            for (const auto& item : type->items)
+                if (std::to_string(item.value) == *v.start) return item.name + " (" + *v.start + ")";
+    return *v.start;
+}
+
+// An Enumeration's items with their numbers, after its description.
+std::string items_text(const fmi_loader::ModelDescription& md, const fmi_loader::ScalarVariable& v) {
+    if (v.type != fmi_loader::VariableType::enumeration) return "";
+    const auto* type = md.find_type(v.declared_type);
+    if (!type) return "";
+    std::string out = " [";
+    for (std::size_t i = 0; i < type->items.size(); ++i)
+        out += (i ? ", " : "") + type->items[i].name + " = " + std::to_string(type->items[i].value);
+    return out + "]";
+}
+
 }  // namespace
 
 void print_info(const std::filesystem::path& fmu_path, std::ostream& out) {
@@ -57,7 +102,7 @@ void print_info(const std::filesystem::path& fmu_path, std::ostream& out) {
         w_causality = std::max(w_causality, fmi_loader::to_string(v.causality).size());
         w_type = std::max(w_type, type_of(v).size());
         w_unit = std::max(w_unit, v.unit.size());
-        w_start = std::max(w_start, v.start.value_or("").size());
+        w_start = std::max(w_start, start_text(md, v).size());
     }
     auto row = [&](std::string_view name, std::string_view causality, std::string_view type, std::string_view unit,
                    std::string_view start, std::string_view description) {
@@ -70,7 +115,8 @@ void print_info(const std::filesystem::path& fmu_path, std::ostream& out) {
     row("variable", "causality", "type", "unit", "start", "description");
     for (const auto& v : md.model_variables) {
         if (v.causality == fmi_loader::Causality::local) continue;
-        row(v.name, fmi_loader::to_string(v.causality), type_of(v), v.unit, v.start.value_or(""), v.description);
+        row(v.name, fmi_loader::to_string(v.causality), type_of(v), v.unit, start_text(md, v),
+            v.description + items_text(md, v));
     }
 }
 

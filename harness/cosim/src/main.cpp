@@ -92,6 +92,9 @@ int main(int argc, char** argv) {
     run->add_flag("--reference", run_options.reference,
                   "The reference execution: every component as Model Exchange, every event through every component "
                   "with an integrator restart, every output point a stop (slow; to check the fast path against)");
+    run->add_flag("--allow-mismatch", run_options.allow_mismatch,
+                  "Run a system whose blocks disagree on a shared fact (the estimator's angular response or orbit "
+                  "altitude against the plant's and the truth's), with a warning instead of a refusal");
     run->add_flag(
         "--force", run_options.force,
         "Run even with more than 1e8 output or communication points, or a CSV larger than the free disk space");
@@ -100,6 +103,13 @@ int main(int argc, char** argv) {
     auto* plot = app.add_subcommand("plot", "Draw the standard figures of a results CSV as PNG files (gnuplot)");
     plot->add_option("csv", plot_csv, "Results CSV written by cosim run")->required();
     plot->add_option("--out-dir", plot_dir, "Folder for the PNG files")->capture_default_str();
+    analysis::PlotOptions plot_options;
+    plot->add_option("--format", plot_options.format, "png or svg")->capture_default_str();
+    plot->add_option("--columns", plot_options.columns,
+                     "Also draw these CSV columns against time in one figure (columns.png), e.g. est.q_filt[1]");
+    plot->add_option("--derived", plot_options.derived,
+                     "Write the derived signals (each estimate's attitude error: angle, roll, pitch, yaw; the "
+                     "filter's normalized error; the sun vector error) to this CSV");
 
     campaign::CampaignOptions campaign_options;
     std::string spec_path, campaign_output;
@@ -142,7 +152,7 @@ int main(int argc, char** argv) {
             cosim::run_system(run_options, std::cout);
         }
         if (*plot) {
-            for (const auto& png : analysis::plot_results(plot_csv, plot_dir, std::cerr))
+            for (const auto& png : analysis::plot_results(plot_csv, plot_dir, std::cerr, plot_options))
                 std::cout << png.string() << "\n";
         }
         if (*simulate) {

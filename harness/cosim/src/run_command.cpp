@@ -11,6 +11,7 @@
 #include <iostream>
 #include <memory>
 
+#include "analysis/couplings.hpp"
 #include "engine/cosim_error.hpp"
 #include "engine/interrupt.hpp"
 #include "engine/output_file.hpp"
@@ -78,16 +79,29 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
             throw CosimError("--reference runs every component as Model Exchange: drop --cs");
         system_options.model_exchange_only = true;
     }
-    const auto stop = options.stop_time ? options.stop_time : description.stop_time;
-    if (!stop) throw CosimError(options.ssd.string() + " has no DefaultExperiment stopTime: give --stop-time");
-    if (!std::isfinite(*stop)) throw CosimError("--stop-time must be finite, got " + format_real(*stop));
+    if (options.stop_time && !std::isfinite(*options.stop_time))
+        throw CosimError("--stop-time must be finite, got " + format_real(*options.stop_time));
     System system(description, system_options);
+    // Without --stop-time: the .ssd's orbits of the truth (derived from its orbit), else its stopTime.
+    const auto stop = options.stop_time ? options.stop_time : analysis::default_stop_time(system);
+    if (!stop) throw CosimError(options.ssd.string() + " has no DefaultExperiment stopTime: give --stop-time");
+    analysis::check_couplings(system, options.allow_mismatch, std::cerr);
 
     ExecutionOptions ex;
     ex.start_time = description.start_time.value_or(0.0);
     ex.stop_time = *stop;
     const RunDefaults defaults = run_defaults(system, ex.start_time, ex.stop_time);
     ex.output_interval = options.output_interval.value_or(defaults.output_interval);
+    const double span = ex.stop_time - ex.start_time;
+    if (!options.output_interval && span > 0.0 && std::isfinite(span) && ex.output_interval > span) {
+        // The system's interval is for its usual run: a shorter one still gets rows (a hundred), said once.
+        const double shortened = span / 100.0;
+        if (options.csv)
+            std::cerr << "cosim: the output interval " << format_real(ex.output_interval) << " s of "
+                      << options.ssd.filename().string() << " is longer than the run (" << format_real(span)
+                      << " s): a row every " << format_real(shortened) << " s instead (--output-interval to choose)\n";
+        ex.output_interval = shortened;
+    }
     ex.relative_tolerance = options.tolerance.value_or(defaults.tolerance);
     ex.realtime = options.realtime;
     ex.realtime_tolerance = options.realtime_tolerance;
@@ -134,6 +148,8 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
     if (csv) csv->close();
     if (tty && last_percent >= 0) std::fprintf(stderr, "\r%60s\r", "");
     print_statistics(stats, report);
+    // What this run changed from the .ssd, for a results page that shows what was run.
+    for (const auto& s : options.system.settings) report << "--set " << s << "\n";
     return stats;
 }
 

@@ -22,9 +22,10 @@ struct RunOptions {
     bool realtime = false;
     double realtime_tolerance = 1e-3;  // s
     bool event_rows = false;
-    bool reference = false;  // the reference execution (every component Model Exchange, every event everywhere)
-    bool progress = true;    // a progress bar when stderr is a terminal and the run is long
-    bool force = false;      // run even past max_run_points or a CSV larger than the free disk space
+    bool reference = false;       // the reference execution (every component Model Exchange, every event everywhere)
+    bool progress = true;         // a progress bar when stderr is a terminal and the run is long
+    bool force = false;           // run even past max_run_points or a CSV larger than the free disk space
+    bool allow_mismatch = false;  // blocks that must agree and do not (analysis/couplings.hpp): warn, run
 };
 
 // From this many rows on, the CSV's size is announced on stderr before the run.

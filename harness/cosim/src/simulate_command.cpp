@@ -9,6 +9,7 @@
 #include "engine/fmi3_instance.hpp"
 #include "engine/import_cache.hpp"
 #include "engine/interrupt.hpp"
+#include "engine/name_hint.hpp"
 #include "engine/output_file.hpp"
 #include "engine/run_defaults.hpp"
 #include "engine/value_text.hpp"
@@ -70,8 +71,11 @@ void simulate(const SimulateOptions& options, std::ostream& out) {
     description.file = options.fmu;
     description.name = md.model_name;
     const std::string name = md.model_name.find('.') == std::string::npos ? md.model_name : "fmu";
-    description.components.push_back(
-        {name, std::filesystem::absolute(options.fmu).string(), {}, {}, {}, ExecutionHint{true, h}});
+    ComponentDescription component;
+    component.name = name;
+    component.source = std::filesystem::absolute(options.fmu).string();
+    component.execution = ExecutionHint{true, h};
+    description.components.push_back(std::move(component));
     SystemOptions system_options;
     system_options.tolerance = options.tolerance ? options.tolerance : ex.tolerance;
     system_options.fmi3_event_mode = options.fmi3_event_mode;

@@ -278,7 +278,7 @@ TEST(CosimHostile, ARefusedRunLeavesAnExistingCsvAlone) {
     auto o = options_for(s.ssd(ball));
     o.csv = csv;
     o.columns = {"ball.hh"};  // a typo
-    expect_refused(o, "no variable 'hh'");
+    expect_refused(o, "no variable named 'hh'");
     expect_unchanged(csv, before);
     EXPECT_EQ(std::distance(fs::directory_iterator(s.root), fs::directory_iterator()), 3)
         << "a temporary file was left beside the CSV";  // system.ssd, results.csv, tmp/

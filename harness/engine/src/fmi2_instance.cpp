@@ -1,5 +1,6 @@
 #include "engine/fmi2_instance.hpp"
 
+#include <algorithm>
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
@@ -67,13 +68,26 @@ Fmi2Instance::~Fmi2Instance() {
     if (component_) lib_->fmi2FreeInstance(component_);
 }
 
+// Warnings and discards are printed as they come; an error's message is held and said once, in the
+// exception of the call that failed (it was printed here and again in that exception).
 void Fmi2Instance::record(fmi2Status status, std::string message) {
-    if (status >= fmi2Warning) std::cerr << name_ << " [" << status_name(status) << "] " << message << "\n";
+    if (status >= fmi2Error)
+        ++unreported_errors_;
+    else if (status >= fmi2Warning)
+        std::cerr << name_ << " [" << status_name(status) << "] " << message << "\n";
     messages_.emplace_back(status, std::move(message));
 }
 
 void Fmi2Instance::check(fmi2Status status, const char* function) {
-    if (status < fmi2Error) return;
+    const std::size_t held = std::min(unreported_errors_, messages_.size());
+    unreported_errors_ = 0;
+    if (status < fmi2Error) {
+        // An error logged by a call that did not fail: said now, not lost.
+        for (std::size_t i = messages_.size() - held; i < messages_.size(); ++i)
+            if (messages_[i].first >= fmi2Error)
+                std::cerr << name_ << " [" << status_name(messages_[i].first) << "] " << messages_[i].second << "\n";
+        return;
+    }
     std::string why = messages_.empty() ? "no message from the FMU" : messages_.back().second;
     throw CosimError(name_ + ": " + function + " returned " + status_name(status) + ": " + why);
 }

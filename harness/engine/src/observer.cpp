@@ -6,6 +6,7 @@
 #include "engine/cosim_error.hpp"
 #include "engine/csv_table.hpp"
 #include "engine/interrupt.hpp"
+#include "engine/name_hint.hpp"
 #include "engine/value_text.hpp"
 
 namespace cosim {
@@ -27,7 +28,9 @@ std::vector<OutputColumn> output_columns(const System& system, const std::vector
         if (!split) throw CosimError("--columns expects component.variable, got '" + name + "'");
         const std::size_t i = system.component_index(split->component);
         const auto* v = comps[i].description().find_variable(split->variable);
-        if (!v) throw CosimError("no variable '" + split->variable + "' in component '" + comps[i].name + "'");
+        if (!v)
+            throw CosimError("--columns: " +
+                             unknown_variable_message(comps[i].description(), comps[i].name, split->variable));
         columns.push_back({i, v});
     }
     return columns;

@@ -22,25 +22,61 @@ std::filesystem::path resolve_fmu(const SystemDescription& description, const st
                                   const std::vector<std::filesystem::path>& fmu_dirs) {
     // An .ssp is a closed world: its FMUs are inside it or the system is refused, never taken elsewhere.
     if (description.archive) return inside_archive(*description.archive, source, "component source");
+    if (auto found = find_fmu(description, source, fmu_dirs)) return *found;
+    std::string where;
+    for (const auto& t : fmu_candidates(description, source, fmu_dirs)) where += "\n  " + t.string();
+    throw CosimError(description.file.string() + ": FMU '" + source + "' not found; looked at:" + where);
+}
+
+std::vector<std::filesystem::path> fmu_candidates(const SystemDescription& description, const std::string& source,
+                                                  const std::vector<std::filesystem::path>& fmu_dirs) {
     std::filesystem::path p = source;
     if (source.starts_with("file:")) p = source.substr(source.starts_with("file://") ? 7 : 5);
-    std::vector<std::filesystem::path> tried;
-    auto found = [&](const std::filesystem::path& candidate) {
-        tried.push_back(candidate);
-        return std::filesystem::is_regular_file(candidate);
+    std::vector<std::filesystem::path> out;
+    auto add = [&](const std::filesystem::path& candidate) {
+        // Absolute and normalized, each once: the default FMU folder given again as --fmu-dir is one place.
+        const auto full = std::filesystem::absolute(candidate).lexically_normal();
+        if (std::find(out.begin(), out.end(), full) == out.end()) out.push_back(full);
     };
     if (p.is_absolute()) {
-        if (found(p)) return p;
+        add(p);
     } else {
-        if (auto beside = description.file.parent_path() / p; found(beside)) return beside;
+        add(description.file.parent_path() / p);
         for (const auto& dir : fmu_dirs) {
-            if (found(dir / p)) return dir / p;
-            if (found(dir / p.filename())) return dir / p.filename();
+            add(dir / p);
+            add(dir / p.filename());
         }
     }
-    std::string where;
-    for (const auto& t : tried) where += "\n  " + t.string();
-    throw CosimError(description.file.string() + ": FMU '" + source + "' not found; looked at:" + where);
+    return out;
+}
+
+std::optional<std::filesystem::path> find_fmu(const SystemDescription& description, const std::string& source,
+                                              const std::vector<std::filesystem::path>& fmu_dirs) {
+    for (const auto& c : fmu_candidates(description, source, fmu_dirs))
+        if (std::filesystem::is_regular_file(c)) return c;
+    return std::nullopt;
+}
+
+void check_fmus_found(const SystemDescription& description, const std::vector<std::filesystem::path>& fmu_dirs) {
+    if (description.archive) return;  // resolve_fmu refuses what the archive lacks, one by one
+    std::vector<std::string> missing;
+    std::vector<std::filesystem::path> folders;
+    for (const auto& c : description.components) {
+        if (std::find(missing.begin(), missing.end(), c.source) != missing.end()) continue;
+        if (find_fmu(description, c.source, fmu_dirs)) continue;
+        missing.push_back(c.source);
+        for (const auto& candidate : fmu_candidates(description, c.source, fmu_dirs))
+            if (std::find(folders.begin(), folders.end(), candidate.parent_path()) == folders.end())
+                folders.push_back(candidate.parent_path());
+    }
+    if (missing.empty()) return;
+    std::string text = description.file.string() + ": " + std::to_string(missing.size()) +
+                       (missing.size() == 1 ? " FMU" : " FMUs") + " not found:";
+    for (const auto& m : missing) text += " " + m;
+    text += "; looked in:";
+    for (const auto& f : folders) text += "\n  " + f.string();
+    text += "\n(build them, or give the folder that holds them with --fmu-dir)";
+    throw CosimError(text);
 }
 
 std::vector<std::filesystem::path> system_inputs(const SystemDescription& description,

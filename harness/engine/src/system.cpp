@@ -10,7 +10,9 @@
 #include "engine/fmi3_instance.hpp"
 #include "engine/hardware_bridge.hpp"
 #include "engine/import_cache.hpp"
+#include "engine/name_hint.hpp"
 #include "engine/ssp_archive.hpp"
+#include "engine/value_text.hpp"
 
 namespace cosim {
 
@@ -88,13 +90,68 @@ System::System(const SystemDescription& description, const SystemOptions& option
         Setting setting = parse_setting(text, true);
         settings_.emplace_back(component_index(setting.component), std::move(setting));
     }
+    check_settings();
     check_open_inputs();
+}
+
+// Every --set names a variable of its component and holds a value of its type, checked here, before any
+// run-time check: a misspelt name is the first thing reported, not a consequence of it.
+void System::check_settings() const {
+    // The .ssd's (and its .ssv files') bindings, named by file and line.
+    for (std::size_t i = 0; i < components_.size(); ++i) {
+        const auto& md = components_[i].description();
+        const auto& bindings = description_.components[i].parameters;
+        const auto& places = description_.components[i].parameter_places;
+        for (std::size_t k = 0; k < bindings.size(); ++k) {
+            const auto& p = bindings[k];
+            const std::string place = k < places.size() ? places[k] : description_.file.string();
+            const auto* v = md.find_variable(p.variable);
+            if (!v) throw CosimError(place + ": " + unknown_variable_message(md, components_[i].name, p.variable));
+            try {
+                (void)typed_value(md, *v, p, components_[i].name + "." + p.variable);
+            } catch (const CosimError& e) {
+                throw CosimError(place + ": " + e.what());
+            }
+        }
+    }
+    for (const auto& [index, setting] : settings_) {
+        const auto& md = components_[index].description();
+        const std::string where = components_[index].name + "." + setting.variable;
+        const auto* v = md.find_variable(setting.variable);
+        if (!v) throw SettingError(unknown_variable_message(md, components_[index].name, setting.variable));
+        try {
+            (void)typed_value(md, *v, setting, where);
+        } catch (const CosimError& e) {
+            throw SettingError(e.what());
+        }
+    }
+}
+
+std::optional<std::string> System::initial_value(std::size_t c, const std::string& variable) const {
+    const auto& md = components_.at(c).description();
+    const auto* v = md.find_variable(variable);
+    if (!v) return std::nullopt;
+    auto as_text = [&](const Setting& s) -> std::string {
+        const TypedValue x = typed_value(md, *v, s, components_[c].name + "." + variable);
+        if (const auto* r = std::get_if<double>(&x)) return format_real(*r);
+        if (const auto* i = std::get_if<fmi2Integer>(&x)) return std::to_string(*i);
+        if (const auto* b = std::get_if<bool>(&x)) return *b ? "true" : "false";
+        return std::get<std::string>(x);
+    };
+    for (auto it = settings_.rbegin(); it != settings_.rend(); ++it)
+        if (it->first == c && it->second.variable == variable) return as_text(it->second);
+    const auto& bound = description_.components.at(c).parameters;
+    for (auto it = bound.rbegin(); it != bound.rend(); ++it)
+        if (it->variable == variable) return as_text(*it);
+    return v->start;
 }
 
 std::size_t System::component_index(const std::string& name) const {
     for (std::size_t i = 0; i < components_.size(); ++i)
         if (components_[i].name == name) return i;
-    throw CosimError(description_.file.string() + ": no component named '" + name + "'");
+    std::vector<std::string> names;
+    for (const auto& c : components_) names.push_back(c.name);
+    throw CosimError(description_.file.string() + ": no component named '" + name + "'" + name_hint(name, names));
 }
 
 std::filesystem::path System::resolve_source(const std::string& source, const SystemOptions& options) const {
@@ -102,6 +159,7 @@ std::filesystem::path System::resolve_source(const std::string& source, const Sy
 }
 
 void System::load_components(const SystemOptions& options) {
+    check_fmus_found(description_, options.fmu_dirs);
     std::size_t states = 0, indicators = 0;
     // Each FMU file is imported once per process (import_cache.hpp) and shared by the components made
     // from it; the loader's max_total_bytes counts the whole system: the .ssp's own unpacked bytes and
@@ -191,29 +249,30 @@ void System::check_connectors() {
 }
 
 void System::connect() {
-    auto endpoint = [&](const std::string& comp, const std::string& conn) {
+    auto endpoint = [&](const std::string& comp, const std::string& conn, const std::string& place) {
         const std::size_t i = component_index(comp);
         const auto& declared = description_.components[i].connectors;
         if (!declared.empty() && std::none_of(declared.begin(), declared.end(),
                                               [&](const ConnectorDescription& d) { return d.name == conn; }))
-            throw CosimError(description_.file.string() + ": component '" + comp + "' declares no connector '" + conn +
-                             "'");
+            throw CosimError(place + ": component '" + comp + "' declares no connector '" + conn + "'");
         const auto v = connector_elements(components_[i].description(), conn);
-        if (v.empty()) throw CosimError(description_.file.string() + ": '" + comp + "' has no variable '" + conn + "'");
+        if (v.empty())
+            throw CosimError(place + ": " + unknown_variable_message(components_[i].description(), comp, conn));
         return std::pair{i, v};
     };
     for (const auto& cd : description_.connections) {
-        const auto [from, sources] = endpoint(cd.start_element, cd.start_connector);
-        const auto [to, targets] = endpoint(cd.end_element, cd.end_connector);
+        const std::string place = cd.place.empty() ? description_.file.string() : cd.place;
+        const auto [from, sources] = endpoint(cd.start_element, cd.start_connector, place);
+        const auto [to, targets] = endpoint(cd.end_element, cd.end_connector, place);
         if (sources.size() != targets.size())
-            throw CosimError(cd.start_element + "." + cd.start_connector + " -> " + cd.end_element + "." +
-                             cd.end_connector + ": " + std::to_string(sources.size()) + " elements to " +
+            throw CosimError(place + ": " + cd.start_element + "." + cd.start_connector + " -> " + cd.end_element +
+                             "." + cd.end_connector + ": " + std::to_string(sources.size()) + " elements to " +
                              std::to_string(targets.size()));
         for (std::size_t e = 0; e < sources.size(); ++e) {
             const auto* source = sources[e];
             const auto* target = targets[e];
             const std::string label =
-                cd.start_element + "." + source->name + " -> " + cd.end_element + "." + target->name;
+                place + ": " + cd.start_element + "." + source->name + " -> " + cd.end_element + "." + target->name;
             if (source->causality != Causality::output && source->causality != Causality::calculated_parameter)
                 throw CosimError(label + ": the start of a connection must be an output");
             if (target->causality != Causality::input)

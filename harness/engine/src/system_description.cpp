@@ -116,24 +116,27 @@ const xmlNode* type_child(const xmlNode* n) {
     return nullptr;
 }
 
-void read_parameter_set(const xmlNode* set, const std::filesystem::path& file, std::vector<Setting>& out) {
+void read_parameter_set(const xmlNode* set, const std::filesystem::path& file, std::vector<Setting>& out,
+                        std::vector<std::string>& places) {
     for_children(first_child(set, "Parameters"), "Parameter", [&](const xmlNode* p) {
         const xmlNode* t = type_child(p);
         if (!t) throw CosimError(file.string() + ":" + std::to_string(p->line) + ": parameter without a typed value");
         out.push_back(
             {"", required(p, "name", file), required(t, "value", file), reinterpret_cast<const char*>(t->name)});
+        places.push_back(file.string() + ":" + std::to_string(p->line));
     });
 }
 
 void read_bindings(const xmlNode* component, const std::filesystem::path& file, const fmi_loader::FmuArchive* archive,
-                   std::vector<Setting>& out, std::vector<std::filesystem::path>& parameter_files) {
+                   std::vector<Setting>& out, std::vector<std::string>& places,
+                   std::vector<std::filesystem::path>& parameter_files) {
     for_children(first_child(component, "ParameterBindings"), "ParameterBinding", [&](const xmlNode* binding) {
         if (auto prefix = attribute(binding, "prefix"); prefix && !prefix->empty())
             throw CosimError(file.string() + ":" + std::to_string(binding->line) +
                              ": parameter prefixes are not supported");
         if (const xmlNode* inline_values = first_child(binding, "ParameterValues")) {
             for_children(inline_values, "ParameterSet",
-                         [&](const xmlNode* set) { read_parameter_set(set, file, out); });
+                         [&](const xmlNode* set) { read_parameter_set(set, file, out, places); });
         } else if (auto source = attribute(binding, "source")) {
             const auto ssv =
                 archive ? inside_archive(*archive, *source, "parameter file") : file.parent_path() / *source;
@@ -142,7 +145,7 @@ void read_bindings(const xmlNode* component, const std::filesystem::path& file, 
             const xmlNode* root = xmlDocGetRootElement(doc.get());
             if (!is(root, "ParameterSet"))
                 throw CosimError(ssv.string() + ": the root element is not ssv:ParameterSet");
-            read_parameter_set(root, ssv, out);
+            read_parameter_set(root, ssv, out, places);
         }
     });
 }
@@ -292,7 +295,7 @@ SystemDescription read_system_description(const std::filesystem::path& path) {
             }
             c.connectors.push_back(std::move(conn));
         });
-        read_bindings(e, ssd, out.archive.get(), c.parameters, out.parameter_files);
+        read_bindings(e, ssd, out.archive.get(), c.parameters, c.parameter_places, out.parameter_files);
         c.bridge = read_bridge(e, ssd);
         c.execution = read_execution(e, ssd);
         out.components.push_back(std::move(c));
@@ -303,6 +306,7 @@ SystemDescription read_system_description(const std::filesystem::path& path) {
         conn.start_connector = required(k, "startConnector", ssd);
         conn.end_element = attribute(k, "endElement").value_or("");
         conn.end_connector = required(k, "endConnector", ssd);
+        conn.place = ssd.string() + ":" + std::to_string(k->line);
         if (conn.start_element.empty() || conn.end_element.empty())
             throw CosimError(ssd.string() + ":" + std::to_string(k->line) +
                              ": connections to the system's own connectors are not supported");
@@ -316,6 +320,8 @@ SystemDescription read_system_description(const std::filesystem::path& path) {
             out.output_interval = positive_attribute(o, "interval", ssd);
         if (const xmlNode* i = annotation(ex, execution_annotation, "Integrator"))
             out.max_step = positive_attribute(i, "maxStep", ssd);
+        if (const xmlNode* st = annotation(ex, execution_annotation, "Stop"))
+            out.stop_orbits = positive_attribute(st, "orbits", ssd);
     }
     return out;
 }

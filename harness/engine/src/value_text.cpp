@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "engine/cosim_error.hpp"
+#include "engine/name_hint.hpp"
 
 namespace cosim {
 
@@ -45,7 +46,10 @@ int parse_enumeration(const fmi_loader::ModelDescription& md, const fmi_loader::
         for (const auto& item : type->items)
             if (item.value == x) return x;
     }
-    throw CosimError(what + ": '" + std::string(text) + "' is not an item of " + v.declared_type + " (" + names + ")");
+    std::vector<std::string> items;
+    for (const auto& item : type->items) items.push_back(item.name);
+    throw CosimError(what + ": '" + std::string(text) + "' is not an item of " + v.declared_type + " (" + names + ")" +
+                     name_hint(text, items));
 }
 
 std::string format_real(double x) {

@@ -207,7 +207,7 @@ TEST(CosimSystem, AlgebraicLoopIsRefused) {
 TEST(CosimSystem, BrokenConnectionsAreRefused) {
     const auto two = component("a", "test_gain") + component("b", "test_integrator") + component("ball", "test_ball");
     expect_refused(system_body(two, connect("a", "y", "nobody", "u")), "no component named 'nobody'");
-    expect_refused(system_body(two, connect("a", "nothing", "b", "u")), "has no variable 'nothing'");
+    expect_refused(system_body(two, connect("a", "nothing", "b", "u")), "a: no variable named 'nothing'");
     expect_refused(system_body(two, connect("a", "u", "b", "u")), "must be an output");
     expect_refused(system_body(two, connect("ball", "y", "b", "u")), "unit mismatch");
     expect_refused(system_body(two, connect("ball", "bounces", "b", "u")), "type mismatch");

@@ -12,6 +12,13 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// A setting (--set, a campaign's [set] or draw) naming no variable of its component or holding no value
+// of its type: a front end may say where the setting came from.
+class SettingError : public CosimError {
+public:
+    using CosimError::CosimError;
+};
+
 // Why the last failed read or write failed (strerror of errno), for messages that name the file.
 std::string io_reason();
 

@@ -71,6 +71,7 @@ private:
     fmi2Component component_ = nullptr;
     std::vector<fmi2Integer> first_order_;  // the orders argument of fmi2SetRealInputDerivatives: all 1
     std::vector<std::pair<fmi2Status, std::string>> messages_;
+    std::size_t unreported_errors_ = 0;  // Error/Fatal messages held for the exception of the failing call
 };
 
 }  // namespace cosim

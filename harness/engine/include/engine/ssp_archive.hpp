@@ -16,6 +16,14 @@ namespace cosim {
 // file name). Throws CosimError listing every place looked at.
 std::filesystem::path resolve_fmu(const SystemDescription& description, const std::string& source,
                                   const std::vector<std::filesystem::path>& fmu_dirs);
+// The places resolve_fmu looks at, in order, absolute and each once; the first regular file among them.
+std::vector<std::filesystem::path> fmu_candidates(const SystemDescription& description, const std::string& source,
+                                                  const std::vector<std::filesystem::path>& fmu_dirs);
+std::optional<std::filesystem::path> find_fmu(const SystemDescription& description, const std::string& source,
+                                              const std::vector<std::filesystem::path>& fmu_dirs);
+// Refuses a system (not an .ssp) any of whose FMUs is not found, naming each missing source once and
+// every folder looked in, before anything is unpacked.
+void check_fmus_found(const SystemDescription& description, const std::vector<std::filesystem::path>& fmu_dirs);
 
 // Every file a run of the system reads: the .ssd and its FMUs and parameter files, or the .ssp alone.
 std::vector<std::filesystem::path> system_inputs(const SystemDescription& description,

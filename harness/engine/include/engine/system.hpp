@@ -115,6 +115,11 @@ public:
     // Setup, parameters, initialization mode with values propagated, exit.
     void initialize(double start_time, std::optional<double> stop_time);
 
+    // The value initialize() gives variable `variable` of component c: the last --set naming it, else the
+    // .ssd's binding, else the FMU's start value (as its text; an Enumeration as its number); nullopt when
+    // none (no such variable, or no start). For checks made before a run (front ends).
+    std::optional<std::string> initial_value(std::size_t c, const std::string& variable) const;
+
 private:
     std::filesystem::path resolve_source(const std::string& source, const SystemOptions& options) const;
     void load_components(const SystemOptions& options);
@@ -122,6 +127,7 @@ private:
     void connect();
     void order_connections();
     void check_open_inputs() const;
+    void check_settings() const;
     void mark_continuous_consumers();
     void group_transfers();
     bool read_sources(TransferGroup& g, std::string& text);

@@ -56,13 +56,15 @@ struct ComponentDescription {
     std::string name;
     std::string source;  // as written in the .ssd
     std::vector<ConnectorDescription> connectors;
-    std::vector<Setting> parameters;  // its parameter bindings: variable, value and SSV type as written
+    std::vector<Setting> parameters;            // its parameter bindings: variable, value and SSV type as written
+    std::vector<std::string> parameter_places;  // "file:line" of each binding (the .ssd or .ssv), for messages
     std::optional<BridgeDescription> bridge;
     std::optional<ExecutionHint> execution;
 };
 
 struct ConnectionDescription {
     std::string start_element, start_connector, end_element, end_connector;
+    std::string place;  // "file:line" of its <ssd:Connection>, for messages
 };
 
 struct SystemDescription {
@@ -77,6 +79,9 @@ struct SystemDescription {
     std::optional<double> start_time, stop_time;
     std::optional<double> output_interval;  // DefaultExperiment's execution annotation <Output interval=".."/>
     std::optional<double> max_step;         // and <Integrator maxStep=".."/>
+    // and <Stop orbits=".."/>: the run lasts this many orbits of the system's truth, derived by the front
+    // end that knows the system (harness/systems/analysis) instead of written; stopTime stays for other tools.
+    std::optional<double> stop_orbits;
 };
 
 // An .ssd, or an .ssp archive (by its extension) unpacked first within the loader's archive limits

@@ -1,9 +1,11 @@
 #include "analysis/result_figures.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iomanip>
 #include <iterator>
 #include <numbers>
 #include <optional>
@@ -11,6 +13,7 @@
 #include <string>
 
 #include "analysis/angle_error.hpp"
+#include "analysis/derived_signals.hpp"
 #include "engine/cosim_error.hpp"
 #include "engine/csv_table.hpp"
 #include "engine/gnuplot.hpp"
@@ -60,12 +63,18 @@ std::string flat_range(const std::vector<Series>& series, std::size_t first_row)
     return buf;
 }
 
+// How every figure of one plot_results call is drawn: the terminal, and the eclipse to shade.
+struct Style {
+    std::string format = "png";
+    const std::vector<double>* irradiance = nullptr;  // 0 in the Earth's shadow; null: no shading
+};
+
 // One figure: writes the data and a gnuplot script, runs gnuplot in out_dir (no path in the script),
-// returns the PNG.
-std::filesystem::path draw(const std::filesystem::path& out_dir, const std::string& name, const std::string& title,
-                           const std::string& ylabel, const std::vector<double>& time,
+// returns the image. The eclipse (irradiance 0) is shaded grey behind the series.
+std::filesystem::path draw(const std::filesystem::path& out_dir, const Style& style, const std::string& name,
+                           const std::string& title, const std::string& ylabel, const std::vector<double>& time,
                            const std::vector<Series>& series, std::size_t first_row = 0) {
-    const std::string data = name + ".dat", png = name + ".png";
+    const std::string data = name + ".dat", image = name + "." + style.format;
     struct Remove {
         std::filesystem::path file;
         ~Remove() {
@@ -73,27 +82,70 @@ std::filesystem::path draw(const std::filesystem::path& out_dir, const std::stri
             std::filesystem::remove(file, ec);
         }
     } remove_data{out_dir / data};
+    bool shaded = false;
     {
         std::ofstream d(out_dir / data);
         for (std::size_t r = first_row; r < time.size(); ++r) {
             d << time[r];
             for (const auto& s : series) d << ' ' << s.values[r];
-            d << '\n';
+            const bool eclipse = style.irradiance && (*style.irradiance)[r] <= 0.0;
+            shaded = shaded || eclipse;
+            d << ' ' << (eclipse ? "1" : "nan") << '\n';
         }
         d.flush();
         if (!d) throw CosimError("cannot write " + (out_dir / data).string());
     }
-    std::string script =
-        "set terminal pngcairo noenhanced size 1100,600 font 'sans,11'\nset output " + gnuplot_string(png) +
-        "\nset title " + gnuplot_string(title) + "\nset xlabel 'time (s)'\nset ylabel " + gnuplot_string(ylabel) +
-        "\nset grid\nset key outside right\nset datafile missing 'nan'\n" + flat_range(series, first_row) + "plot ";
+    const std::string terminal = style.format == "svg" ? "svg noenhanced size 1100,600 font 'sans,11'"
+                                                       : "pngcairo noenhanced size 1100,600 font 'sans,11'";
+    std::string script = "set terminal " + terminal + "\nset output " + gnuplot_string(image) + "\nset title " +
+                         gnuplot_string(title) + "\nset xlabel 'time (s)'\nset ylabel " + gnuplot_string(ylabel) +
+                         "\nset grid\nset key below\nset datafile missing 'nan'\n" + flat_range(series, first_row);
+    std::string plots;
+    if (shaded) {
+        // Eclipse rows as boxes of height 1 on the second y axis (0..1, not shown): grey bands behind.
+        script += "set y2range [0:1]\nunset y2tics\nset style fill transparent solid 0.15 noborder\n";
+        plots += gnuplot_string(data) + " using 1:" + std::to_string(series.size() + 2) +
+                 " axes x1y2 with boxes lc rgb 'gray30' title 'eclipse'";
+    }
     for (std::size_t i = 0; i < series.size(); ++i)
-        script += (i ? ", " : "") + gnuplot_string(data) + " using 1:" + std::to_string(i + 2) +
-                  (series[i].points ? " with points pt 7 ps 0.7" : " with lines lw 2") + " title " +
-                  gnuplot_string(series[i].title);
-    script += "\n";
-    run_gnuplot(out_dir, script, png);
-    return out_dir / png;
+        plots += (plots.empty() ? "" : ", ") + gnuplot_string(data) + " using 1:" + std::to_string(i + 2) +
+                 (series[i].points ? " with points pt 7 ps 0.7" : " with lines lw 2") + " title " +
+                 gnuplot_string(series[i].title);
+    script += "plot " + plots + "\n";
+    run_gnuplot(out_dir, script, image);
+    return out_dir / image;
+}
+
+// A derived signal of every row: NaN where it is not kept (no new sample, or invalid).
+struct Derived {
+    std::string name;
+    std::vector<double> values;
+};
+
+std::vector<double> kept(const std::vector<double>& values, const std::vector<bool>& use) {
+    std::vector<double> out(values.size(), std::nan(""));
+    for (std::size_t r = 0; r < values.size(); ++r)
+        if (use[r]) out[r] = values[r];
+    return out;
+}
+
+// --derived: time and every derived signal as CSV columns (empty cells where not kept).
+void write_derived(const std::filesystem::path& file, const std::vector<double>& time,
+                   const std::vector<Derived>& derived) {
+    std::ofstream out(file);
+    out << "time";
+    for (const auto& d : derived) out << "," << d.name;
+    out << "\n" << std::setprecision(17);
+    for (std::size_t r = 0; r < time.size(); ++r) {
+        out << time[r];
+        for (const auto& d : derived) {
+            out << ",";
+            if (std::isfinite(d.values[r])) out << d.values[r];
+        }
+        out << "\n";
+    }
+    out.flush();
+    if (!out) throw CosimError("cannot write " + file.string());
 }
 
 // Rows where the estimate changed (the on-board computer took a sample) while it was valid: where an error
@@ -117,7 +169,7 @@ Series error_series(const std::string& what, const std::vector<double>& error, c
     Series s{what, std::vector<double>(error.size(), std::nan("")), true};
     std::vector<double> kept;
     for (std::size_t r = 0; r < error.size(); ++r)
-        if (use[r]) {
+        if (use[r] && std::isfinite(error[r])) {  // no angle (a zero vector): no sample
             s.values[r] = error[r];
             kept.push_back(error[r]);
         }
@@ -129,19 +181,33 @@ Series error_series(const std::string& what, const std::vector<double>& error, c
     return s;
 }
 
+std::string html_escape(const std::string& text) {
+    std::string out;
+    for (char c : text)
+        out += c == '<'   ? std::string("&lt;")
+               : c == '&' ? std::string("&amp;")
+               : c == '"' ? std::string("&quot;")
+                          : std::string(1, c);
+    return out;
+}
+
 // results/index.html: every figure of the folder, the error statistics of this CSV, and the run's
 // statistics when a run_statistics.txt lies beside them (scripts/run_seed.sh writes it).
 void write_index(const std::filesystem::path& out_dir, const std::filesystem::path& csv, const std::string& summary) {
     std::vector<std::filesystem::path> pngs;
     for (const auto& e : std::filesystem::recursive_directory_iterator(out_dir))
-        if (e.path().extension() == ".png") pngs.push_back(std::filesystem::relative(e.path(), out_dir));
+        if (e.path().extension() == ".png" || e.path().extension() == ".svg")
+            pngs.push_back(std::filesystem::relative(e.path(), out_dir));
     std::sort(pngs.begin(), pngs.end());
     const auto index = out_dir / "index.html";
     std::ofstream h(index);
     h << "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>cosim results</title>"
          "<style>body{font-family:sans-serif;max-width:1150px;margin:auto}td,th{padding:2px 10px}"
          "img{max-width:100%}</style></head><body>\n<h1>Results</h1>\n<p>From <code>"
-      << csv.filename().string() << "</code>.</p>\n";
+      << html_escape(csv.filename().string()) << "</code> (<a href=\""
+      << html_escape(
+             std::filesystem::relative(std::filesystem::absolute(csv), std::filesystem::absolute(out_dir)).string())
+      << "\">the CSV</a>).</p>\n";
     if (!summary.empty())
         h << "<h2>Errors at the estimator's samples</h2>\n<table><tr><th>error</th><th>samples</th><th>median "
              "(deg)</th><th>95th percentile (deg)</th></tr>\n"
@@ -150,10 +216,7 @@ void write_index(const std::filesystem::path& out_dir, const std::filesystem::pa
     if (std::filesystem::exists(stats)) {
         std::ifstream in(stats);
         std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        std::string escaped;
-        for (char c : text)
-            escaped += c == '<' ? std::string("&lt;") : c == '&' ? std::string("&amp;") : std::string(1, c);
-        h << "<h2>Run statistics and parameters</h2>\n<pre>" << escaped << "</pre>\n";
+        h << "<h2>Run statistics and parameters</h2>\n<pre>" << html_escape(text) << "</pre>\n";
     }
     h << "<h2>Figures</h2>\n";
     for (const auto& p : pngs) h << "<h3>" << p.stem().string() << "</h3>\n<img src=\"" << p.string() << "\">\n";
@@ -165,7 +228,9 @@ void write_index(const std::filesystem::path& out_dir, const std::filesystem::pa
 }  // namespace
 
 std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv, const std::filesystem::path& out_dir,
-                                                std::ostream& notes) {
+                                                std::ostream& notes, const PlotOptions& options) {
+    if (options.format != "png" && options.format != "svg")
+        throw CosimError("--format " + options.format + ": png or svg");
     const CsvTable table = read_csv(csv);
     const auto time_col = table.find("time");
     if (!time_col) throw CosimError(csv.string() + ": no time column");
@@ -187,6 +252,20 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
         const auto i = table.find(name);
         return i ? &table.columns[*i] : nullptr;
     };
+    std::vector<Derived> derived;  // the derived signals, for --derived
+    Style style;
+    style.format = options.format;
+    style.irradiance = column("irradiance");
+    // --columns: any variables against time, in one figure.
+    if (!options.columns.empty()) {
+        std::vector<Series> chosen;
+        for (const auto& name : options.columns) {
+            const auto* c = column(name);
+            if (!c) throw CosimError(csv.string() + ": no column '" + name + "'");
+            chosen.push_back({name, *c});
+        }
+        add([&] { return draw(out_dir, style, "columns", "Chosen columns", "value", time, chosen); });
+    }
     // A CSV sampled finer than 50 us (a tenth of a 5 kHz PWM period) is a close-up of the bus: its ripple only.
     const bool close_up = time.size() > 2 && time[1] - time[0] <= 50e-6;
 
@@ -200,12 +279,12 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
         if (!real || !meas) continue;
         sun_real.push_back(real);
         sun_meas.push_back(meas);
-        const auto use = update_rows({meas}, nullptr);
+        const auto use = update_rows({meas}, column("sun_valid"));  // an invalid sample is no measurement
         Series acquired{std::string("acquired s") + axis[i - 1], std::vector<double>(time.size(), std::nan("")), true};
         for (std::size_t r = 0; r < time.size(); ++r)
             if (use[r]) acquired.values[r] = (*meas)[r];
         add([&] {
-            return draw(out_dir, std::string("sun_vector_") + axis[i - 1],
+            return draw(out_dir, style, std::string("sun_vector_") + axis[i - 1],
                         std::string("Sun vector, body ") + axis[i - 1] + ": real and acquired (seed 000 fig. 8)",
                         "component", time, {{std::string("real s") + axis[i - 1], *real}, acquired});
         });
@@ -213,18 +292,15 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
     if (!close_up && sun_meas.size() == 3) {
         std::vector<double> error(time.size());
         for (std::size_t r = 0; r < time.size(); ++r) {
-            double m[3], s[3];
-            for (int i = 0; i < 3; ++i) {
-                m[i] = (*sun_meas[i])[r];
-                s[i] = (*sun_real[i])[r];
-            }
-            const double angle = analysis::vector_angle_degrees(m, s);
-            error[r] = std::isfinite(angle) ? angle : 0.0;  // a zero vector (no sun acquired yet)
+            const double m[3] = {(*sun_meas[0])[r], (*sun_meas[1])[r], (*sun_meas[2])[r]},
+                         s[3] = {(*sun_real[0])[r], (*sun_real[1])[r], (*sun_real[2])[r]};
+            error[r] = vector_angle_degrees(m, s);  // NaN for a zero vector: no sun acquired, left out
         }
         const auto use = update_rows(sun_meas, column("sun_valid"));
+        derived.push_back({"sun_error_deg", kept(error, use)});
         add([&] {
-            return draw(out_dir, "sun_error", "Sun vector error at the estimator samples (while valid)", "degrees",
-                        time, {error_series("sun vector error", error, use, summary)});
+            return draw(out_dir, style, "sun_error", "Sun vector error at the estimator samples (while valid)",
+                        "degrees", time, {error_series("sun vector error", error, use, summary)});
         });
     } else if (!close_up) {
         notes << "no sun_body / sun_meas columns: sun vector figures skipped\n";
@@ -233,52 +309,133 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
     if (const auto* v = column("v_bus")) {
         if (!close_up)
             add([&] {
-                return draw(out_dir, "bus_voltage", "Bus voltage (seed 000 fig. 9)", "V", time, {{"v_bus", *v}});
+                return draw(out_dir, style, "bus_voltage", "Bus voltage (seed 000 fig. 9)", "V", time, {{"v_bus", *v}});
             });
         // The ripple: the last millisecond (five PWM periods at 5 kHz) of a close-up CSV.
         if (close_up) {
             std::size_t first = time.size() - 1;
             while (first > 0 && time.back() - time[first - 1] <= 1e-3) --first;
             add([&] {
-                return draw(out_dir, "bus_ripple", "Bus voltage ripple over the last millisecond (PWM at 5 kHz)", "V",
-                            time, {{"v_bus", *v}}, first);
+                return draw(out_dir, style, "bus_ripple", "Bus voltage ripple over the last millisecond (PWM at 5 kHz)",
+                            "V", time, {{"v_bus", *v}}, first);
             });
         }
     } else {
         notes << "no v_bus column: bus voltage figure skipped\n";
     }
 
-    const std::vector<double>* q_true[4];
-    std::vector<const std::vector<double>*> q_est(4);
-    bool have_q = !close_up;
-    for (int i = 0; i < 4 && have_q; ++i) {
-        q_true[i] = column("q_true[" + std::to_string(i + 1) + "]");
-        q_est[i] = column("q_est[" + std::to_string(i + 1) + "]");
-        have_q = have_q && q_true[i] && q_est[i];
-    }
-    if (have_q) {
-        std::vector<double> error(time.size());
-        for (std::size_t r = 0; r < time.size(); ++r) {
-            double a[4], b[4];
-            for (int i = 0; i < 4; ++i) {
-                a[i] = (*q_true[i])[r];
-                b[i] = (*q_est[i])[r];
-            }
-            error[r] = attitude_error_degrees(a, b);
+    // Every estimate the run holds, each against the truth at its own samples while it is valid, with its own
+    // median and p95: the single-frame Q-method (q_est, valid) and the filter (q_filt, filter_valid).
+    struct Estimate {
+        const char* column;
+        const char* valid;
+        const char* title;
+    };
+    const Estimate estimates[] = {{"q_est", "valid", "single-frame q_est"},
+                                  {"q_filt", "filter_valid", "filter q_filt"}};
+    std::vector<Series> attitude;
+    for (const auto& e : estimates) {
+        const std::vector<double>* q_true[4];
+        std::vector<const std::vector<double>*> q(4);
+        bool have = !close_up;
+        for (int i = 0; i < 4 && have; ++i) {
+            q_true[i] = column("q_true[" + std::to_string(i + 1) + "]");
+            q[i] = column(std::string(e.column) + "[" + std::to_string(i + 1) + "]");
+            have = have && q_true[i] && q[i];
         }
-        const auto use = update_rows(q_est, column("valid"));
+        if (!have) continue;
+        // The error vector of every row (analysis/derived_signals.hpp), kept at the estimate's updates.
+        std::vector<double> error(time.size()), axis_error[3];
+        for (auto& a : axis_error) a.resize(time.size());
+        std::vector<std::array<double, 3>> vectors(time.size());
+        for (std::size_t r = 0; r < time.size(); ++r) {
+            vectors[r] =
+                analysis::attitude_error_vector({(*q_true[0])[r], (*q_true[1])[r], (*q_true[2])[r], (*q_true[3])[r]},
+                                                {(*q[0])[r], (*q[1])[r], (*q[2])[r], (*q[3])[r]});
+            error[r] = std::hypot(vectors[r][0], vectors[r][1], vectors[r][2]) * 180.0 / std::numbers::pi;
+            for (int k = 0; k < 3; ++k)
+                axis_error[k][r] = vectors[r][static_cast<std::size_t>(k)] * 180.0 / std::numbers::pi;
+        }
+        const auto use = update_rows(q, column(e.valid));
+        if (std::none_of(use.begin(), use.end(), [](bool u) { return u; })) {
+            // A filter the system does not run (filter = none) or that never became valid: nothing to draw.
+            notes << e.title << ": no valid sample in the CSV, its figures skipped\n";
+            continue;
+        }
+        attitude.push_back(error_series(e.title, error, use, summary));
+        const std::string prefix = e.column;
+        derived.push_back({prefix + "_error_deg", kept(error, use)});
+        const char* axis_names[] = {"roll", "pitch", "yaw"};
+        std::vector<Series> axes;
+        for (int k = 0; k < 3; ++k) {
+            derived.push_back({prefix + "_" + axis_names[k] + "_deg", kept(axis_error[k], use)});
+            axes.push_back({std::string(axis_names[k]) + " (body x, y, z)", derived.back().values, true});
+        }
         add([&] {
-            return draw(out_dir, "attitude_error", "Attitude error at the estimator samples (while valid)", "degrees",
-                        time, {error_series("attitude error", error, use, summary)});
+            return draw(out_dir, style, "attitude_error_axes_" + prefix,
+                        std::string("Attitude error of ") + e.title + " about the body axes (while valid)", "degrees",
+                        time, axes);
+        });
+        // The filter's own view of its error: the 3-sigma bound on the figure, its coverage, and the
+        // normalized error per degree of freedom from the covariance factor (1 when consistent).
+        if (std::string(e.column) != "q_filt") continue;
+        if (const auto* bound = column("attitude_bound")) {
+            Series b{"filter 3-sigma bound", std::vector<double>(time.size(), std::nan("")), false};
+            std::size_t samples = 0, covered = 0;
+            for (std::size_t r = 0; r < time.size(); ++r) {
+                if (!use[r]) continue;
+                b.values[r] = (*bound)[r] * 180.0 / std::numbers::pi;
+                ++samples;
+                covered += error[r] <= b.values[r];
+            }
+            attitude.push_back(b);
+            summary << "<tr><td>filter q_filt within its 3-sigma bound</td><td>" << samples << "</td><td colspan=2>"
+                    << degrees(samples ? 100.0 * static_cast<double>(covered) / static_cast<double>(samples) : NAN)
+                    << " %</td></tr>\n";
+        }
+        std::vector<const std::vector<double>*> l;
+        for (int i = 1; i <= 6; ++i)
+            if (const auto* c = column("attitude_cov_sqrt[" + std::to_string(i) + "]")) l.push_back(c);
+        if (l.size() == 6) {
+            std::vector<double> nees(time.size(), std::nan(""));
+            double sum = 0.0;
+            std::size_t n = 0;
+            for (std::size_t r = 0; r < time.size(); ++r) {
+                if (!use[r]) continue;
+                nees[r] = analysis::normalized_error_per_dof(
+                    vectors[r], {(*l[0])[r], (*l[1])[r], (*l[2])[r], (*l[3])[r], (*l[4])[r], (*l[5])[r]});
+                if (std::isfinite(nees[r])) {
+                    sum += nees[r];
+                    ++n;
+                }
+            }
+            derived.push_back({"q_filt_nees_per_dof", nees});
+            summary << "<tr><td>filter q_filt normalized error per dof (mean; 1 = consistent)</td><td>" << n
+                    << "</td><td colspan=2>" << degrees(n ? sum / static_cast<double>(n) : NAN) << "</td></tr>\n";
+            add([&] {
+                return draw(out_dir, style, "filter_normalized_error",
+                            "Filter normalized error per degree of freedom (1 = consistent)", "NEES / 3", time,
+                            {{"q_filt NEES/dof", nees, true}});
+            });
+        }
+    }
+    if (!attitude.empty()) {
+        add([&] {
+            return draw(out_dir, style, "attitude_error",
+                        "Attitude error of each estimate at its samples (while valid)", "degrees", time, attitude);
         });
     } else if (!close_up) {
-        notes << "no q_true / q_est columns: attitude error figure skipped\n";
+        notes << "no q_true with q_est or q_filt columns: attitude error figure skipped\n";
     }
 
     if (const auto* soc = column("soc"); soc && !close_up)
-        add([&] { return draw(out_dir, "battery_soc", "Battery state of charge", "1", time, {{"soc", *soc}}); });
+        add([&] { return draw(out_dir, style, "battery_soc", "Battery state of charge", "1", time, {{"soc", *soc}}); });
     else if (!close_up)
         notes << "no soc column: battery figure skipped\n";
+    if (options.derived) {
+        write_derived(*options.derived, time, derived);
+        written.push_back(*options.derived);
+    }
     write_index(out_dir, csv, summary.str());
     written.push_back(out_dir / "index.html");
     if (failed)

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "analysis/result_figures.hpp"
+#include "engine/csv_table.hpp"
 
 namespace analysis {
 namespace {
@@ -39,8 +40,48 @@ TEST(CosimPlot, ErrorsAtTheEstimateUpdatesWhileValid) {
     EXPECT_TRUE(std::filesystem::exists(dir / "attitude_error.png"));
     std::ifstream in(dir / "index.html");
     const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    EXPECT_NE(html.find("<td>attitude error</td><td>4</td><td>0</td><td>0</td>"), std::string::npos) << html;
+    EXPECT_NE(html.find("<td>single-frame q_est</td><td>4</td><td>0</td><td>0</td>"), std::string::npos) << html;
     EXPECT_NE(html.find("attitude_error.png"), std::string::npos);
+    EXPECT_NE(html.find("<a href=\"run.csv\">"), std::string::npos) << html;  // the page links its CSV
+    std::filesystem::remove_all(dir);
+}
+
+TEST(CosimPlot, EveryEstimateWithItsOwnStatistics) {
+    // The filter's q_filt beside the single-frame q_est: each measured at its own samples while its own
+    // flag is valid. q_est is 2 deg off the truth (a rotation of 2 deg about z), q_filt 0.5 deg, the filter
+    // valid from the third sample on: 4 and 2 samples.
+    const auto dir = std::filesystem::temp_directory_path() /
+                     ("cosim_plot_both_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+    std::filesystem::create_directories(dir);
+    const auto csv = dir / "run.csv";
+    {
+        std::ofstream out(csv);
+        out << "time,env.q_true[1],env.q_true[2],env.q_true[3],env.q_true[4],est.q_est[1],est.q_est[2],est.q_est[3],"
+               "est.q_est[4],est.valid,est.q_filt[1],est.q_filt[2],est.q_filt[3],est.q_filt[4],est.filter_valid\n";
+        for (int k = 0; k < 4; ++k) {
+            const double t = 0.1 * k, truth = 0.1 * k, single = truth + 2.0 * M_PI / 180.0,
+                         filter = truth + 0.5 * M_PI / 180.0;
+            out << t << ",0,0," << std::sin(truth / 2) << "," << std::cos(truth / 2) << ",0,0," << std::sin(single / 2)
+                << "," << std::cos(single / 2) << ",1,0,0," << std::sin(filter / 2) << "," << std::cos(filter / 2)
+                << "," << (k >= 2 ? 1 : 0) << "\n";
+        }
+    }
+    std::ostringstream notes;
+    plot_results(csv, dir, notes);
+    std::ifstream in(dir / "index.html");
+    const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(html.find("<td>single-frame q_est</td><td>4</td><td>2</td><td>2</td>"), std::string::npos) << html;
+    EXPECT_NE(html.find("<td>filter q_filt</td><td>2</td><td>0.5</td><td>0.5</td>"), std::string::npos) << html;
+    // Derived signals on request: the filter is 0.5 deg ahead about body z, so the truth is -0.5 deg of yaw
+    // from it (to the CSV's 6 digits), at its valid samples only.
+    PlotOptions options;
+    options.derived = dir / "derived.csv";
+    plot_results(csv, dir, notes, options);
+    const auto derived = cosim::read_csv(dir / "derived.csv");
+    const auto yaw = derived.find("q_filt_yaw_deg");
+    ASSERT_TRUE(yaw.has_value());
+    EXPECT_TRUE(std::isnan(derived.columns[*yaw][0]));
+    EXPECT_NEAR(derived.columns[*yaw][3], -0.5, 1e-4);
     std::filesystem::remove_all(dir);
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace analysis {
@@ -20,12 +21,13 @@ inline double attitude_error_degrees(const double q_a[4], const double q_b[4]) {
     return 2.0 * std::acos(c) * 180.0 / std::numbers::pi;
 }
 
-// Angle in degrees between two 3-vectors (normalized here); NaN when one is zero.
+// Angle in degrees between two 3-vectors (not necessarily unit); NaN when one is zero. atan2 of |a x b|
+// and a . b: accurate at small and near-180 degree angles alike (acos of the cosine loses small ones).
 inline double vector_angle_degrees(const double a[3], const double b[3]) {
-    const double dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-    const double na = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-    const double nb = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
-    return std::acos(std::clamp(dot / (na * nb), -1.0, 1.0)) * 180.0 / std::numbers::pi;
+    const double c[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    const double na = std::hypot(a[0], a[1], a[2]), nb = std::hypot(b[0], b[1], b[2]);
+    if (na == 0.0 || nb == 0.0) return std::numeric_limits<double>::quiet_NaN();
+    return std::atan2(std::hypot(c[0], c[1], c[2]), a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) * 180.0 / std::numbers::pi;
 }
 
 }  // namespace analysis
