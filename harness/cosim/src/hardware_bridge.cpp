@@ -5,9 +5,9 @@
 #include <iostream>
 #include <limits>
 
-#include "bridge/frame.hpp"
 #include "cosim_error.hpp"
 #include "interrupt.hpp"
+#include "protocol/frame.hpp"
 #include "value_text.hpp"
 
 namespace cosim {

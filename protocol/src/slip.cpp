@@ -1,4 +1,4 @@
-#include "bridge/slip.hpp"
+#include "protocol/slip.hpp"
 
 namespace bridge {
 

@@ -6,8 +6,8 @@
 #include <atomic>
 #include <thread>
 
-#include "bridge/board_emulator.hpp"
-#include "bridge/frame.hpp"
+#include "emulator/board_emulator.hpp"
+#include "protocol/frame.hpp"
 
 namespace {
 

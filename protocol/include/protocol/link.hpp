@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include "bridge/slip.hpp"
+#include "protocol/slip.hpp"
 
 namespace bridge {
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "bridge/slip_codec.hpp"
+#include "protocol/slip_codec.hpp"
 
 namespace bridge {
 

@@ -1,4 +1,4 @@
-#include "bridge/board_emulator.hpp"
+#include "emulator/board_emulator.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,6 +7,7 @@
 
 #include "fmu/errors.hpp"
 #include "fmu/value_access.hpp"
+#include "fmu/value_check.hpp"
 
 namespace bridge {
 
@@ -25,29 +26,34 @@ bool exact_int32(double x) {
     return x == std::floor(x) && x >= -2147483648.0 && x <= 2147483647.0;
 }
 
-// Every value on the wire is an f64: Integers travel exactly up to 2^53, Booleans as 0 or 1.
-void write_value(std::span<std::byte> data, const fmu::Variable& v, double x) {
+// Every value on the wire is an f64: Integers travel exactly up to 2^53, Booleans as 0 or 1. Checked by
+// the runtime's rule for every writer (fmu/value_check.hpp: finite, range, items) before it is written.
+void check_value(const fmu::Variable& v, double x) {
     switch (v.type) {
         case fmu::ValueType::Real:
-            fmu::write_real(data, v, x);
-            break;
+            fmu::check_real(v, x);
+            return;
         case fmu::ValueType::Integer:
+        case fmu::ValueType::Enumeration:
             if (!exact_int32(x)) throw fmu::Error(v.name + " = " + std::to_string(x) + " is not a 32-bit integer");
-            fmu::write_integer(data, v, static_cast<std::int32_t>(x));
-            break;
-        case fmu::ValueType::Enumeration: {
-            if (!exact_int32(x) || !v.item_valued(static_cast<std::int32_t>(x)))
-                throw fmu::Error(v.name + " = " + std::to_string(x) + " is not the value of one of its items");
-            const auto value = static_cast<std::int32_t>(x);
-            fmu::write_integer(data, v, value);
-            break;
-        }
+            fmu::check_integer(v, static_cast<std::int32_t>(x));
+            return;
         case fmu::ValueType::Boolean:
-            fmu::write_boolean(data, v, x != 0.0);
-            break;
+            return;
         case fmu::ValueType::String:
-            throw fmu::Error(v.name + ": String variables cannot cross the link");
+            break;
     }
+    throw fmu::Error(v.name + ": String variables cannot cross the link");
+}
+
+void write_value(std::span<std::byte> data, const fmu::Variable& v, double x) {
+    check_value(v, x);
+    if (v.type == fmu::ValueType::Real)
+        fmu::write_real(data, v, x);
+    else if (v.type == fmu::ValueType::Boolean)
+        fmu::write_boolean(data, v, x != 0.0);
+    else
+        fmu::write_integer(data, v, static_cast<std::int32_t>(x));
 }
 
 double read_value(std::span<const std::byte> data, const fmu::Variable& v) {
@@ -83,24 +89,21 @@ BoardEmulator::BoardEmulator(std::unique_ptr<fmu::Model> model, const std::vecto
     apply_settings();
 }
 
+// The board's own settings, name=value as on its command line, through the runtime's checks.
 void BoardEmulator::apply_settings() {
     for (const auto& s : settings_) {
         const auto eq = s.find('=');
         if (eq == std::string::npos) throw fmu::Error("--set expects name=value, got '" + s + "'");
         const auto& v = runner_.table().by_name(s.substr(0, eq));
-        const std::string text = s.substr(eq + 1);
+        const std::string_view text = std::string_view(s).substr(eq + 1);
+        if (v.causality != fmu::Causality::parameter)
+            throw fmu::Error("--set " + v.name + ": only parameters are the board's settings");
         if (v.type == fmu::ValueType::String) {
-            if (text.size() > v.string_capacity) throw fmu::Error(v.name + ": value too long");
+            if (text.size() > v.string_capacity)
+                throw fmu::Error(v.name + " is limited to " + std::to_string(v.string_capacity) + " characters");
             fmu::write_string(runner_.model().bytes(), v, text);
-        } else if (v.type == fmu::ValueType::Enumeration && v.item_named(text)) {
-            fmu::write_integer(runner_.model().bytes(), v, v.item_named(text)->value);
-        } else if (v.type == fmu::ValueType::Boolean) {
-            fmu::write_boolean(runner_.model().bytes(), v, text == "true" || text == "1");
         } else {
-            std::size_t used = 0;
-            const double x = std::stod(text, &used);
-            if (used != text.size()) throw fmu::Error(v.name + ": '" + text + "' is not a number");
-            write_value(runner_.model().bytes(), v, x);
+            write_value(runner_.model().bytes(), v, fmu::checked_value_from_text(v, text));
         }
     }
 }
@@ -120,12 +123,11 @@ Frame BoardEmulator::configure(const Frame& frame) {
                          std::to_string(parameters_.size()) + " parameters");
     // Checked before any is kept: a value outside a parameter's declared range is refused whole.
     for (std::size_t i = 0; i < frame.values.size(); ++i) {
-        const fmu::Variable& v = *parameters_[frame.sequence + i];
-        const double x = frame.values[i];
-        if (!std::isfinite(x) || (v.min && x < *v.min) || (v.max && x > *v.max) ||
-            ((v.type == fmu::ValueType::Integer || v.type == fmu::ValueType::Enumeration) && !exact_int32(x)) ||
-            (v.type == fmu::ValueType::Enumeration && !v.item_valued(static_cast<std::int32_t>(x))))
-            throw FrameError("configuration: " + v.name + " = " + std::to_string(x) + " is not a value it takes");
+        try {
+            check_value(*parameters_[frame.sequence + i], frame.values[i]);
+        } catch (const fmu::Error& e) {
+            throw FrameError(std::string("configuration: ") + e.what());
+        }
     }
     if (configuration_.size() != parameters_.size()) {
         configuration_.assign(parameters_.size(), 0.0);

@@ -7,7 +7,7 @@
 #include <charconv>
 #include <iostream>
 
-#include "bridge/board_emulator.hpp"
+#include "emulator/board_emulator.hpp"
 
 int main(int argc, char** argv) {
     CLI::App app{"Board emulator: one block behind the hardware-bridge wire format"};

@@ -1,4 +1,4 @@
-#include "bridge/frame.hpp"
+#include "protocol/frame.hpp"
 
 #include <string>
 

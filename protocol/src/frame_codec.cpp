@@ -1,4 +1,4 @@
-#include "bridge/frame_codec.hpp"
+#include "protocol/frame_codec.hpp"
 
 #include <bit>
 

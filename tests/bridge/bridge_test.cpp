@@ -14,8 +14,8 @@
 #include <fstream>
 #include <thread>
 
-#include "bridge/board_emulator.hpp"
 #include "cosim_error.hpp"
+#include "emulator/board_emulator.hpp"
 #include "execution.hpp"
 #include "hardware_bridge.hpp"
 #include "interrupt.hpp"

@@ -1,4 +1,4 @@
-#include "bridge/slip_codec.hpp"
+#include "protocol/slip_codec.hpp"
 
 namespace bridge {
 

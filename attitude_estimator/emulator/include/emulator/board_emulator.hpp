@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "bridge/frame.hpp"
-#include "bridge/link.hpp"
 #include "fmu/model_runner.hpp"
+#include "protocol/frame.hpp"
+#include "protocol/link.hpp"
 
 namespace bridge {
 

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "bridge/frame_codec.hpp"
+#include "protocol/frame_codec.hpp"
 
 namespace bridge {
 

@@ -1,4 +1,4 @@
-#include "bridge/link.hpp"
+#include "protocol/link.hpp"
 
 #include <arpa/inet.h>
 #include <fcntl.h>
@@ -12,7 +12,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "bridge/frame.hpp"
+#include "protocol/frame.hpp"
 
 namespace bridge {
 

@@ -6,8 +6,8 @@
 #include <limits>
 #include <string>
 
-#include "bridge/frame.hpp"
-#include "bridge/slip.hpp"
+#include "protocol/frame.hpp"
+#include "protocol/slip.hpp"
 
 namespace bridge {
 namespace {
