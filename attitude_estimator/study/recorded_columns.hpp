@@ -24,8 +24,9 @@ public:
         for (std::size_t row = 2; std::getline(in, line); ++row) {
             const auto cells = fields(line);
             if (cells.size() != names_.size())
-                throw std::runtime_error(file + ": row " + std::to_string(row) + " has " + std::to_string(cells.size()) +
-                                         " cells, the header " + std::to_string(names_.size()));
+                throw std::runtime_error(file + ": row " + std::to_string(row) + " has " +
+                                         std::to_string(cells.size()) + " cells, the header " +
+                                         std::to_string(names_.size()));
             for (std::size_t i = 0; i < cells.size(); ++i) {
                 double x = std::numeric_limits<double>::quiet_NaN();
                 std::from_chars(cells[i].data(), cells[i].data() + cells[i].size(), x);
