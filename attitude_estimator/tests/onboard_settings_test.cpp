@@ -67,11 +67,27 @@ std::vector<double> numbers(const OnboardSettings<double>& s) {
          static_cast<double>(s.mag_calibration), s.sample_period, s.rate_interval,
          static_cast<double>(s.reference_source)});
     const MekfConfig<double>& f = s.mekf;
-    put({f.attitude_noise, f.rate_noise, f.offset_noise, f.scale_noise, f.sun_sigma, f.mag_sigma, f.face_sigma,
-         f.sun_correlation_time, f.mag_ref_sigma, f.mag_sigma_calibrated, f.init_attitude_sigma, f.init_rate_sigma,
-         f.init_offset_sigma, f.init_scale_sigma, static_cast<double>(f.estimate_offset),
-         static_cast<double>(f.estimate_scale), f.gate, f.face_gate, static_cast<double>(f.reset_after),
-         f.valid_bound, f.max_init_gap});
+    put({f.attitude_noise,
+         f.rate_noise,
+         f.offset_noise,
+         f.scale_noise,
+         f.sun_sigma,
+         f.mag_sigma,
+         f.face_sigma,
+         f.sun_correlation_time,
+         f.mag_ref_sigma,
+         f.mag_sigma_calibrated,
+         f.init_attitude_sigma,
+         f.init_rate_sigma,
+         f.init_offset_sigma,
+         f.init_scale_sigma,
+         static_cast<double>(f.estimate_offset),
+         static_cast<double>(f.estimate_scale),
+         f.gate,
+         f.face_gate,
+         static_cast<double>(f.reset_after),
+         f.valid_bound,
+         f.max_init_gap});
     put_all(f.inertia);
     const MagCalibrationConfig<double>& k = s.mag_cal;
     put({k.sigma, static_cast<double>(k.every), static_cast<double>(k.min_equations),
