@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # clang-tidy (.clang-tidy: the checks and why) over every C++ source of a configured and built tree,
-# from its compile_commands.json (the top-level CMakeLists.txt always writes one). By hand (about 4 minutes
+# from its compile_commands.json (the top-level CMakeLists.txt always writes one). By hand (about 5 minutes
 # on 2 cores, so not part of scripts/test.sh):
 #   bash scripts/tidy.sh [build-dir]      # default: build (configured and built: generated headers exist)
 # Fails when any file has a finding (WarningsAsErrors), printing every finding of the run.
