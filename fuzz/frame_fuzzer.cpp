@@ -7,7 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "bridge/frame.hpp"
+#include "protocol/frame.hpp"
 
 namespace {
 

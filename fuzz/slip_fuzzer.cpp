@@ -6,7 +6,7 @@
 #include <span>
 #include <vector>
 
-#include "bridge/slip.hpp"
+#include "protocol/slip.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     constexpr std::size_t max_size = 600;

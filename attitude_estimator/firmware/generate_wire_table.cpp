@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
          "// of "
       << model->info().model_identifier
       << ".fmu: do not edit. Inputs, outputs and non-String parameters in\n"
-         "// value-reference order, the order of the hardware bridge's frames (harness/bridge/README.md).\n"
+         "// value-reference order, the order of the hardware bridge's frames (protocol/README.md).\n"
          "#pragma once\n\n#include <cmath>\n#include <cstddef>\n#include <cstdint>\n\n"
          "#include \"attitude_estimator/estimator_data.hpp\"\n\n"
          "namespace attitude_estimator::wire {\n\n"

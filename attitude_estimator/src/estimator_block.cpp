@@ -481,7 +481,7 @@ void EstimatorBlock::update_spin() {
         d.history_head = (d.history_head + 1) % kMaxSpinWindow;
         d.history_filled = std::min(d.history_filled + 1, n);
     }
-    SpinSpectrum& spectrum = spin_.get(d.sample_period, n);
+    SpinSpectrum& spectrum = spin_.spectrum();
     SpinRates rates;  // not valid until the window is full
     if (d.history_filled >= n) {
         // The analyser gets the window afresh from the history, which (unlike the analyser) is FMU state.
@@ -500,11 +500,12 @@ void EstimatorBlock::update_spin() {
 
 SpinWorkspace::~SpinWorkspace() = default;
 
-SpinSpectrum& SpinWorkspace::get(double sample_period, std::int32_t window) {
-    if (!spectrum_ || spectrum_->sample_period() != sample_period ||
-        spectrum_->window() != static_cast<std::size_t>(window))
+void SpinWorkspace::configure(double sample_period, std::int32_t window) {
+    if (window == 0)
+        spectrum_.reset();
+    else if (!spectrum_ || spectrum_->sample_period() != sample_period ||
+             spectrum_->window() != static_cast<std::size_t>(window))
         spectrum_ = std::make_unique<SpinSpectrum>(sample_period, static_cast<std::size_t>(window));
-    return *spectrum_;
 }
 
 void EstimatorBlock::configure() {
@@ -535,6 +536,7 @@ void EstimatorBlock::configure() {
     }
     settings_ = onboard_settings_from<double>(data());
     settings_float_ = onboard_settings_from<float>(data());
+    spin_.configure(d.sample_period, d.spin_window);
 }
 
 void EstimatorBlock::initialize(double t) {

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "attitude_estimator/mekf.hpp"
-#include "engine/csv_table.hpp"
+#include "recorded_columns.hpp"
 
 namespace ae = attitude_estimator;
 
@@ -42,7 +42,7 @@ double angle_deg(const double* a, const double* b) {
 double pct(std::vector<double> v, double p) {
     if (v.empty()) return NAN;
     std::sort(v.begin(), v.end());
-    return v[std::min(v.size() - 1, static_cast<std::size_t>(p * static_cast<double>(v.size() - 1) + 0.5))];
+    return v[std::min(v.size() - 1, static_cast<std::size_t>(std::lround(p * static_cast<double>(v.size() - 1))))];
 }
 
 struct Options {
@@ -153,13 +153,8 @@ double nees_per_dof(const double* qt, const ae::MekfState<double>& s) {
 int main(int argc, char** argv) try {
     std::string file;
     const Options o = parse(argc, argv, file);
-    const cosim::CsvTable csv = cosim::read_csv(file);
-    auto col = [&](const std::string& name) -> const std::vector<double>& {
-        const auto i = csv.find(name);
-        if (!i) throw std::runtime_error("column " + name + " missing from " + file);
-        return csv.columns[*i];
-    };
-    auto has = [&](const std::string& name) { return csv.find(name).has_value(); };
+    const ae::study::RecordedColumns col(file);
+    auto has = [&](const std::string& name) { return col.has(name); };
     const auto& time = col("time");
     const bool have_irradiance = has("env.irradiance");
     const auto kelly = panel_response::kelly<double>();
@@ -204,7 +199,7 @@ int main(int argc, char** argv) try {
         rejected_faces = &col("est.rejected_faces");
         for (int k = 0; k < 6; ++k) faces[k] = &col("plant.i_face_sh[" + std::to_string(k + 1) + "]");
     }
-    for (std::size_t r = 0; r < csv.rows(); ++r) {
+    for (std::size_t r = 0; r < time.size(); ++r) {
         ae::MekfSampleInputs<double> in;
         in.t = time[r];
         in.attitude_valid = valid[r] > 0.5;

@@ -8,6 +8,7 @@
 #include "fmu/errors.hpp"
 #include "fmu/state_check.hpp"
 #include "fmu/value_access.hpp"
+#include "fmu/value_check.hpp"
 
 namespace fmu {
 
@@ -191,13 +192,6 @@ void Instance::check_settable(const Variable& v) const {
 
 namespace {
 
-void check_range(const Variable& v, double x) {
-    if (v.min && x < *v.min)
-        throw Error(v.name + " = " + format_real(x) + " is below its minimum " + format_real(*v.min));
-    if (v.max && x > *v.max)
-        throw Error(v.name + " = " + format_real(x) + " is above its maximum " + format_real(*v.max));
-}
-
 template <class T>
 void require_arrays(std::span<const fmi2ValueReference> vr, const T* values) {
     if (!vr.empty() && (vr.data() == nullptr || values == nullptr))
@@ -276,17 +270,11 @@ void Instance::set_values(std::span<const fmi2ValueReference> vr, const T* value
 }
 
 void Instance::set_real(std::span<const fmi2ValueReference> vr, const fmi2Real* values) {
-    set_values(
-        vr, values, ValueType::Real,
-        [](const Variable& v, double x) {
-            if (!std::isfinite(x)) throw Error(v.name + " cannot be set to " + format_real(x) + " (not finite)");
-            check_range(v, x);
-        },
-        [&](const Variable& v, double x) {
-            write_real(runner_.model().bytes(), v, x);
-            if (v.causality == Causality::input)
-                runner_.input_value_set(static_cast<std::size_t>(&v - runner_.table().variables().data()));
-        });
+    set_values(vr, values, ValueType::Real, check_real, [&](const Variable& v, double x) {
+        write_real(runner_.model().bytes(), v, x);
+        if (v.causality == Causality::input)
+            runner_.input_value_set(static_cast<std::size_t>(&v - runner_.table().variables().data()));
+    });
 }
 void Instance::set_real_input_derivatives(std::span<const fmi2ValueReference> vr, const fmi2Integer* order,
                                           const fmi2Real* values) {
@@ -309,15 +297,8 @@ void Instance::set_real_input_derivatives(std::span<const fmi2ValueReference> vr
 }
 
 void Instance::set_integer(std::span<const fmi2ValueReference> vr, const fmi2Integer* values) {
-    set_values(
-        vr, values, ValueType::Integer,
-        [](const Variable& v, fmi2Integer x) {
-            if (v.type == ValueType::Enumeration && !v.item_valued(x))
-                throw Error(v.name + " = " + std::to_string(x) + " is not an item of " + v.declared_type + " (" +
-                            v.item_names() + ")");
-            check_range(v, x);
-        },
-        [&](const Variable& v, fmi2Integer x) { write_integer(runner_.model().bytes(), v, x); });
+    set_values(vr, values, ValueType::Integer, check_integer,
+               [&](const Variable& v, fmi2Integer x) { write_integer(runner_.model().bytes(), v, x); });
 }
 
 void Instance::set_boolean(std::span<const fmi2ValueReference> vr, const fmi2Boolean* values) {

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "orbit/calendar.hpp"
+
 namespace orbit {
 
 namespace {
@@ -139,12 +141,6 @@ private:
     int number_;
 };
 
-// Julian date of 1 January 00:00 UTC of a Gregorian year.
-double julian_date_of_year_start(int year) {
-    const long y = year - 1;
-    return 1721425.5 + 365.0 * y + static_cast<double>(y / 4 - y / 100 + y / 400);
-}
-
 bool is_leap_year(int y) {
     return (y % 4 == 0 && y % 100 != 0) || y % 400 == 0;
 }
@@ -189,7 +185,7 @@ Tle parse_tle(std::string_view line1_text, std::string_view line2_text) {
         l1.fail(21, "epoch day " + std::to_string(tle.epoch_day) + " outside [1, " +
                         std::to_string(days_in_year + 1.0) + ") of year " + std::to_string(tle.epoch_year));
     }
-    tle.epoch_jd_utc = julian_date_of_year_start(tle.epoch_year) + (tle.epoch_day - 1.0);
+    tle.epoch_jd_utc = julian_date_at_midnight(tle.epoch_year, 1, 1) + (tle.epoch_day - 1.0);
     // The mean motion's derivatives are read for validation only: SGP4 does not use them.
     l1.number(34, 43, "first derivative of the mean motion");
     l1.implied_decimal(45, "second derivative of the mean motion");

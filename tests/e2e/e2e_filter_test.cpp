@@ -24,7 +24,7 @@ namespace {
 
 double p95_of(std::vector<double> v) {
     std::sort(v.begin(), v.end());
-    return v[static_cast<std::size_t>(0.95 * static_cast<double>(v.size() - 1) + 0.5)];
+    return v[static_cast<std::size_t>(std::lround(0.95 * static_cast<double>(v.size() - 1)))];
 }
 
 }  // namespace

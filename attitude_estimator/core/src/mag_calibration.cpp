@@ -115,8 +115,9 @@ bool mag_calibration_solve(MagCalibrationState<T>& s, const MagCalibrationConfig
     const T distortion = (gain - Eigen::Matrix<T, 3, 3>::Identity()).cwiseAbs().maxCoeff();
     if (!(distortion <= config.max_distortion) || !(b.norm() <= config.max_offset) || !b.allFinite()) return false;
     for (int i = 0; i < 3; ++i) {
-        s.offset[static_cast<std::size_t>(i)] = b(i);
-        for (int j = 0; j < 3; ++j) s.gain[static_cast<std::size_t>(3 * i + j)] = gain(i, j);
+        const auto row = static_cast<std::size_t>(i);
+        s.offset[row] = b(i);
+        for (int j = 0; j < 3; ++j) s.gain[3 * row + static_cast<std::size_t>(j)] = gain(i, j);
     }
     s.valid = true;
     return true;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "environment/almanac_formulas.hpp"
+#include "orbit/calendar.hpp"
 
 namespace attitude_estimator {
 
@@ -10,11 +11,11 @@ namespace f = environment::formulas;
 
 template <class T>
 OnboardClock<T> make_onboard_clock(const CalendarInstant& e) noexcept {
-    const double midnight = f::julian_date_at_midnight(e.year, e.month, e.day);
+    const double midnight = orbit::julian_date_at_midnight(e.year, e.month, e.day);
     const double seconds = e.hour * 3600.0 + e.minute * 60.0 + e.second;
     // Decimal year as the environment counts it (the calendar year's actual length).
-    const double jan1 = f::julian_date_at_midnight(e.year, 1, 1);
-    const double length = f::julian_date_at_midnight(e.year + 1, 1, 1) - jan1;
+    const double jan1 = orbit::julian_date_at_midnight(e.year, 1, 1);
+    const double length = orbit::julian_date_at_midnight(e.year + 1, 1, 1) - jan1;
     OnboardClock<T> c;
     c.midnight_days = static_cast<T>(midnight - f::kJ2000);
     c.epoch_seconds = static_cast<T>(seconds);

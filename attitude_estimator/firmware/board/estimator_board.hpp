@@ -1,4 +1,4 @@
-// The on-board computer behind the hardware bridge's wire protocol (harness/bridge/README.md), as the
+// The on-board computer behind the hardware bridge's wire protocol (protocol/README.md), as the
 // firmware runs it: configure frames set the parameters (kept, and applied at the start of each run),
 // request frames are samples, each answered with the block's outputs. Freestanding — no heap, no
 // exceptions, no operating system — so the same file runs on the Cortex-M (main.cpp beside this folder)
@@ -12,8 +12,8 @@
 #include <span>
 
 #include "attitude_estimator/estimator_data.hpp"
-#include "bridge/frame_codec.hpp"
 #include "estimator_wire_table.hpp"
+#include "protocol/frame_codec.hpp"
 
 namespace attitude_estimator {
 

@@ -10,10 +10,10 @@
 #include <cstdint>
 
 #include "attitude_estimator/onboard_references.hpp"
-#include "bridge/frame_codec.hpp"
 #include "cmsdk_uart.hpp"
 #include "estimator_board.hpp"
 #include "orbit/tle.hpp"
+#include "protocol/frame_codec.hpp"
 #include "stack_paint.hpp"
 
 namespace {

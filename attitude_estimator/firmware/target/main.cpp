@@ -3,10 +3,10 @@
 #include <array>
 #include <cstdint>
 
-#include "bridge/frame_codec.hpp"
-#include "bridge/slip_codec.hpp"
 #include "cmsdk_uart.hpp"
 #include "estimator_board.hpp"
+#include "protocol/frame_codec.hpp"
+#include "protocol/slip_codec.hpp"
 
 namespace {
 

@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "attitude_estimator/estimator_block.hpp"
-#include "bridge/board_emulator.hpp"
-#include "bridge/frame.hpp"
+#include "emulator/board_emulator.hpp"
 #include "estimator_board.hpp"
 #include "fmu/value_access.hpp"
+#include "protocol/frame.hpp"
 
 namespace attitude_estimator {
 namespace {

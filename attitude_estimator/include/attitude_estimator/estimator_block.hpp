@@ -14,16 +14,19 @@
 
 namespace attitude_estimator {
 
-// The FFTW workspace of the spin-rate analysis. Not part of the FMU state (the history it analyses is):
-// a copy of the block (FMU state, clone) starts without one and builds its own on first use.
+// The FFTW workspace of the spin-rate analysis, derived from two parameters and so built by the block's
+// configure(). Not part of the FMU state (the history it analyses is): a copy of the block (FMU state,
+// clone) keeps its own workspace, and the runtime configures a restored block before its next equation.
 class SpinWorkspace {
 public:
     SpinWorkspace() = default;
     SpinWorkspace(const SpinWorkspace&) {}
     SpinWorkspace& operator=(const SpinWorkspace&) { return *this; }
     ~SpinWorkspace();
-    // The analyser for this window and sample period (rebuilt when either changed).
-    SpinSpectrum& get(double sample_period, std::int32_t window);
+    // The analyser for this window and sample period (window 0: none), built anew only when either changed.
+    void configure(double sample_period, std::int32_t window);
+    // The analyser configure() built; the block calls it only with a window configured.
+    SpinSpectrum& spectrum() { return *spectrum_; }
 
 private:
     std::unique_ptr<SpinSpectrum> spectrum_;

@@ -34,6 +34,11 @@ enum class Precision : std::int32_t { double_precision = 0, single_precision = 1
 // of these too, set through the wire table generated from the block's table. Defaults of the sensor chain match the other
 // blocks: i_sc_norm is ssr_plant's short-circuit current of one panel at normal incidence and 1367 W/m²,
 // the voltage channel and sensitivity are the HMC2003's (magnetometer block).
+// Where the on-board computer's core has a default of its own, the parameter starts from it (written once,
+// in the core: EstimatorConfig, SunMethodConfig, MekfConfig, SetResetConfig, MagCalibrationConfig); the
+// block's own choices (the current channels' range, the face noise, the set/reset period) are written here,
+// and four the core keeps in structs holding the field model's tables (sample_period, rate_interval,
+// field_degree, reference_period: a 6 kB temporary each, which the firmware's stack should not carry).
 struct EstimatorData {
     // inputs. Their start values describe a consistent, lit, identity attitude (+x face towards the sun,
     // a 30 µT field along +z), so the block alone, unconnected, produces a valid estimate.
@@ -48,15 +53,16 @@ struct EstimatorData {
     // parameters
     double sample_period = 0.05;  // s: 20 Hz, the seed asks for more than 10 Hz
     Vec3d i_sc_norm{kPanelCurrentAt1Au<double>, kPanelCurrentAt1Au<double>,
-                    kPanelCurrentAt1Au<double>};           // A: ssr_plant's i_sc0 (000 eq. 5 denominators)
-    double mag_sensitivity = kHmc2003Sensitivity<double>;  // V/T: 1 V/gauss
-    double weight_sun = 0.5;                               // a_1 of 000 eq. 8 (normalized with weight_mag)
-    double weight_mag = 0.5;                               // a_2
-    std::int32_t adc_bits = 12;                            // TMS320F2808: 12 bits; 0 = ideal converter
-    double i_adc_min = -1.2;                               // A: current channels' full-scale range, ±1.4 i_sc0
+                    kPanelCurrentAt1Au<double>};               // A: ssr_plant's i_sc0 (000 eq. 5 denominators)
+    double mag_sensitivity = kHmc2003Sensitivity<double>;      // V/T: 1 V/gauss
+    double weight_sun = EstimatorConfig<double>{}.sun_weight;  // a_1 of 000 eq. 8 (normalized with weight_mag)
+    double weight_mag = EstimatorConfig<double>{}.mag_weight;  // a_2
+    std::int32_t adc_bits =
+        static_cast<std::int32_t>(EstimatorConfig<double>{}.mag_ref_adc.bits);  // TMS320F2808: 12; 0 = ideal
+    double i_adc_min = -1.2;  // A: current channels' full-scale range, ±1.4 i_sc0
     double i_adc_max = 1.2;
-    double v_adc_min = 0.0;  // V: voltage channels (HMC2003 outputs 0…5 V)
-    double v_adc_max = 5.0;
+    double v_adc_min = EstimatorConfig<double>{}.mag_ref_adc.min;  // V: voltage channels (HMC2003 outputs 0…5 V)
+    double v_adc_max = EstimatorConfig<double>{}.mag_ref_adc.max;
     SolverKind solver = EstimatorConfig<double>{}.solver;          // qmethod (the seeds' method) or fast
     double min_sun_norm = kDefaultMinSunNorm<double>;              // 1: eclipse threshold on |s|
     double mag_rail_margin = kDefaultRailMargin<double>;           // V: saturation margin at the range ends
@@ -68,40 +74,43 @@ struct EstimatorData {
     Faces kelly_angle{0.0, 30.0, 50.0, 60.0, 80.0, 85.0};        // deg: ssr_plant's Kelly table (000 fig. 4)
     Faces kelly_value{1.0, 0.866, 0.635, 0.450, 0.100, 0.0};     // 1: relative response at those angles
     Faces i_face_norm = SunMethodConfig<double>{}.i_face_norm;   // A: face current at β = 0
-    double face_dark_threshold = 0.02;                           // 1: a face is lit above this fraction of i_face_norm
-    double i_face_adc_max = 1.2;                                 // A: face-current channels span 0 … this
-    double cone_tolerance = 0.03;      // 1: cones' agreement tolerance on the relative response
-    double cube_max_step = 0.0;        // rad: cones may cross the panel cube's forbidden edges by this much
-    double orbit_altitude = 570e3;     // m: cones' Earth-albedo model sees the Earth from this height
-    double cone_fit_tolerance = 0.01;  // 1: cones' albedo-model fit accepted below this RMS misfit (0: off)
-    double cone_albedo_max = 0.4;      // 1: cones' largest fitted albedo on a face toward nadir
+    double face_dark_threshold = SunMethodConfig<double>{}.dark_threshold;  // 1: lit above this fraction of i_face_norm
+    double i_face_adc_max = EstimatorConfig<double>{}.face_adc[0].max;      // A: face-current channels span 0 … this
+    double cone_tolerance = SunMethodConfig<double>{}.cone_tolerance;  // 1: cones' agreement on the relative response
+    double cube_max_step =
+        SunMethodConfig<double>{}.cube_max_step;  // rad: cones may cross forbidden cube edges by this
+    double orbit_altitude = 570e3;                // m: cones' Earth-albedo model sees the Earth from this height
+    double cone_fit_tolerance =
+        SunMethodConfig<double>{}.cone_fit_tolerance;  // 1: albedo fit's RMS misfit bound (0: off)
+    double cone_albedo_max =
+        SunMethodConfig<double>{}.cone_albedo_max;  // 1: largest fitted albedo of a face toward nadir
     // Rates (rates.md): spin frequencies from the FFT of sun_meas; mean |ω| from successive q_est (004 eq. 4).
     std::int32_t spin_window = 512;  // samples per FFT window (0: off)
     double rate_interval = 2.0;      // s: shortest time between two attitudes in one eq. 4 increment
     std::int32_t rate_window = 8;    // increments averaged (1 = eq. 4 alone)
     // Recursive filter (mekf.hpp, docs/filter.md): none (the seeds' single-frame estimate only) or mekf.
     FilterKind filter = FilterKind::none;
-    Precision precision = Precision::double_precision;  // double, or float as on the Cortex-M firmware
-    double filter_sun_sigma = 0.02;                     // rad: sun vector noise and model error, 1σ per axis
-    double filter_mag_sigma = 0.3e-6;                   // T: field vector noise and model error, 1σ per axis
+    Precision precision = Precision::double_precision;         // double, or float as on the Cortex-M firmware
+    double filter_sun_sigma = MekfConfig<double>{}.sun_sigma;  // rad: sun vector noise and model error, 1σ per axis
+    double filter_mag_sigma = MekfConfig<double>{}.mag_sigma;  // T: field vector noise and model error, 1σ per axis
     // The sun's noise model per sun method (difference, inverse_response, cones, three_faces): 1σ per axis
     // (rad; 0: filter_sun_sigma) and the error's correlation time (s; 0: white). docs/filter.md.
     std::array<double, 4> filter_sun_sigma_method{};
     std::array<double, 4> filter_sun_correlation{};
-    double filter_mag_ref_sigma = 0.0;         // T: 1σ per axis of the reference field model's error
-    double filter_mag_sigma_calibrated = 0.0;  // T: filter_mag_sigma once mag_calibration applies (0: the same)
-    double filter_rate_noise = 2e-5;           // rad/s: 1σ rate change over 1 s (random walk density, rad/s/√s)
-    double filter_attitude_noise = 1e-6;       // rad: 1σ attitude drift over 1 s (random walk density, rad/√s)
-    bool filter_offset = true;                 // estimate the magnetometer offset (3 states)
-    bool filter_scale = false;                 // estimate a common panel scale (face-based sun methods)
-    double filter_face_sigma = 0.02;           // 1: relative face response noise and model error, 1σ
-    std::array<double, 9> inertia{};           // kg m², row-major; all zero = kinematic rate model
-    std::int32_t filter_reset_after = 40;      // samples with every update refused before a reset
+    double filter_mag_ref_sigma = MekfConfig<double>{}.mag_ref_sigma;  // T: 1σ per axis of the reference field's error
+    double filter_mag_sigma_calibrated = MekfConfig<double>{}.mag_sigma_calibrated;  // T: once calibrated (0: the same)
+    double filter_rate_noise = MekfConfig<double>{}.rate_noise;          // rad/s: 1σ rate change over 1 s (rad/s/√s)
+    double filter_attitude_noise = MekfConfig<double>{}.attitude_noise;  // rad: 1σ attitude drift over 1 s (rad/√s)
+    bool filter_offset = MekfConfig<double>{}.estimate_offset;           // estimate the magnetometer offset (3 states)
+    bool filter_scale = MekfConfig<double>{}.estimate_scale;  // estimate a common panel scale (face-based methods)
+    double filter_face_sigma = 0.02;                          // 1: relative face response noise and model error, 1σ
+    std::array<double, 9> inertia{};                          // kg m², row-major; all zero = kinematic rate model
+    std::int32_t filter_reset_after = MekfConfig<double>{}.reset_after;  // samples all refused before a reset
     // HMC2003 set/reset (set_reset.hpp): pulse every this many samples and average the offset over this
     // many set/reset pairs. 0 (default): no pulses, the offset stays in the field — the safe default for a
     // magnetometer whose set_reset_command is not wired to mag_set_reset (its readings never flip).
     std::int32_t mag_set_reset_samples = 0;
-    std::int32_t mag_offset_window = 20;
+    std::int32_t mag_offset_window = SetResetConfig{}.offset_window;
     // The reference vectors (onboard_references.hpp): the inputs sun_ref, mag_ref, sun_distance, or the
     // computer's own models from its element set at its clock.
     ReferenceSource reference_source = ReferenceSource::inputs;
@@ -127,9 +136,9 @@ struct EstimatorData {
     // offset against the reference field's magnitude; an equation every this many samples, applied once
     // this many equations are in; σ per axis of one field reading.
     bool mag_calibration = false;
-    double mag_calibration_sigma = 0.05e-6;   // T (the 12-bit steps alone: 0.035 µT rms)
-    std::int32_t mag_calibration_every = 20;  // samples
-    std::int32_t mag_calibration_min = 600;   // equations
+    double mag_calibration_sigma = MagCalibrationConfig<double>{}.sigma;  // T (the 12-bit steps alone: 0.035 µT rms)
+    std::int32_t mag_calibration_every = MagCalibrationConfig<double>{}.every;        // samples
+    std::int32_t mag_calibration_min = MagCalibrationConfig<double>{}.min_equations;  // equations
 
     // outputs (discrete: set at sample instants, held in between). Before the first sample: identity.
     std::array<double, 4> q_est{0.0, 0.0, 0.0, 1.0};                           // scalar-last [x, y, z, w], w >= 0

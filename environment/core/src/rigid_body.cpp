@@ -15,7 +15,7 @@ RigidBody::RigidBody(const RigidBodyParams& params) : params_(params) {
         throw std::invalid_argument("RigidBody: the inertia matrix must be finite and symmetric");
     }
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(j_);
-    const Eigen::Vector3d p = eig.eigenvalues();  // ascending
+    const Eigen::Vector3d& p = eig.eigenvalues();  // ascending
     if (!(p(0) > 0.0)) throw std::invalid_argument("RigidBody: the inertia matrix must be positive definite");
     // Principal moments of a real body obey the triangle inequality.
     if (p(2) > p(0) + p(1) * (1.0 + 1e-12)) {

@@ -5,6 +5,7 @@
 
 #include "environment/almanac_formulas.hpp"
 #include "environment/constants.hpp"
+#include "orbit/calendar.hpp"
 
 namespace environment {
 
@@ -20,9 +21,9 @@ double julian_date(const UtcDate& d) {
         throw std::invalid_argument("julian_date: calendar field out of range");
     }
     // Meeus, Astronomical Algorithms (2nd ed.), eq. 7.1, Gregorian calendar.
-    // (almanac_formulas.hpp, shared with the on-board computer)
+    // (orbit/calendar.hpp, shared with the TLE epochs and the on-board computer)
     const double day_fraction = (d.hour + (d.minute + d.second / 60.0) / 60.0) / 24.0;
-    return formulas::julian_date_at_midnight(d.year, d.month, d.day) + day_fraction;
+    return orbit::julian_date_at_midnight(d.year, d.month, d.day) + day_fraction;
 }
 
 double gmst(double jd_ut1) {

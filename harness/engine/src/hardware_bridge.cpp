@@ -5,11 +5,11 @@
 #include <iostream>
 #include <limits>
 
-#include "bridge/frame.hpp"
 #include "engine/cosim_error.hpp"
 #include "engine/interrupt.hpp"
 #include "engine/time_rule.hpp"
 #include "engine/value_text.hpp"
+#include "protocol/frame.hpp"
 
 namespace cosim {
 

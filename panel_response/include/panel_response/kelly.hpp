@@ -155,7 +155,7 @@ inline T response_from_angle(const Response<T>& r, T beta) noexcept {
 template <class T>
 inline T response_from_cos(const Response<T>& r, T cos_beta) noexcept {
     T c = cos_beta < T(-1) ? T(-1) : (cos_beta > T(1) ? T(1) : cos_beta);
-    if (!(c == c)) return T(0);  // NaN: no light
+    if (std::isnan(c)) return T(0);  // NaN: no light
     if (r.law == Law::cosine) return c > T(0) ? c : T(0);
     // Below the join the response is cos β itself: return c directly (acos is ill-conditioned there).
     if (c >= r.cos_join) return c;

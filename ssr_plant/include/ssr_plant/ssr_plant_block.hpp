@@ -133,6 +133,9 @@ public:
     // Fits the plant (panel fit ~0.2 ms) to the parameters: the runtime calls it after a parameter
     // change, a state restore or a reset.
     void configure() override;
+    // The core's parameters from the table: what configure() fits (checked parameter by parameter by
+    // tests/parameters_reach_core_test.cpp).
+    Parameters parameters() const;
 
 private:
     const ssr_plant::Model& plant() const;
@@ -144,7 +147,6 @@ private:
     State state() const;
     bool gate_output() const;
     std::int32_t pwm_period_output() const;
-    Parameters parameters() const;
 
     // Derived from the parameters by configure(), outside the FMU state.
     std::optional<ssr_plant::Model> model_;

@@ -1,8 +1,7 @@
 #pragma once
 // The published formulas the truth (environment) and the on-board computer (attitude_estimator/core, also
 // flashed onto the Cortex-M4F firmware) both evaluate: the Astronomical Almanac's low-precision sun, the
-// IAU 1982 Greenwich mean sidereal time and the Julian day of a calendar
-// date. Header-only, templated on the float type, no heap, no exceptions, no Eigen: one copy of each
+// IAU 1982 Greenwich mean sidereal time (the Julian date of a calendar day is orbit/calendar.hpp's). Header-only, templated on the float type, no heap, no exceptions, no Eigen: one copy of each
 // formula, for double (the environment) and float (the firmware). The IAU 1976 precession both use is
 // orbit/frames.hpp's (mod_from_j2000).
 #include <array>
@@ -12,18 +11,6 @@ namespace environment::formulas {
 
 inline constexpr double kJ2000 = 2451545.0;  // Julian date of 2000-01-01 12:00
 inline constexpr double kTwoPi = 6.28318530717958647692;
-
-/// Julian day number at 0 h of a Gregorian calendar date (Meeus, Astronomical Algorithms, ch. 7), an
-/// integer plus one half. No range check: the caller checks the calendar.
-inline double julian_date_at_midnight(int year, int month, int day) {
-    if (month <= 2) {
-        year -= 1;
-        month += 12;
-    }
-    const int a = year / 100;
-    const int b = 2 - a + a / 4;
-    return std::floor(365.25 * (year + 4716)) + std::floor(30.6001 * (month + 1)) + day + b - 1524.5;
-}
 
 /// The sun from the Astronomical Almanac's low-precision formula (section C; US Naval Observatory,
 /// "Approximate Solar Coordinates"), about 0.01 deg for 1950-2050. `days` = JD - 2451545.0.

@@ -2,7 +2,7 @@
 // modelDescription (ports, units and wiring as with the FMU) and acts as a Model Exchange component
 // without states: at each sample instant t0 + k * sample_period it sends one request frame with its
 // current inputs and applies the board's reply at that same instant. Between samples its outputs
-// hold, as the sampled block's do. Wire format and policies: harness/bridge/README.md.
+// hold, as the sampled block's do. Wire format and policies: protocol/README.md.
 #pragma once
 
 #include <cstdint>
@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "bridge/link.hpp"
 #include "engine/component_instance.hpp"
 #include "engine/system_description.hpp"
+#include "protocol/link.hpp"
 
 namespace cosim {
 

@@ -28,7 +28,7 @@ struct ConnectorDescription {
     std::string unit;
 };
 
-// A component run on external hardware instead of its FMU (README of harness/bridge): the .ssd
+// A component run on external hardware instead of its FMU (protocol/README.md): the .ssd
 // marks it with <ssc:Annotation type="org.pvatt.hardware-bridge"><hw:Bridge .../></ssc:Annotation>.
 inline constexpr const char* hardware_bridge_annotation = "org.pvatt.hardware-bridge";
 

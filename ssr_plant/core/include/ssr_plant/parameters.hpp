@@ -45,6 +45,8 @@ struct PanelDatasheet {
     // another temperature is derived from the fit: pv_panel.hpp, at_temperature().
     double isc_temperature_coefficient = 0.0005;  // 1/K, relative
     double voc_temperature_coefficient = -0.074;  // V/K, whole panel
+
+    friend bool operator==(const PanelDatasheet&, const PanelDatasheet&) = default;
 };
 
 // What the battery's hysteresis charge controller watches (seed 000 §2: it "connects the battery to the
@@ -108,6 +110,8 @@ struct BatteryParameters {
     // Charge (coulombic) efficiency: the fraction of the charging current that is stored (the rest drives
     // side reactions: gassing in lead-acid). Lead-acid ~0.85, lithium-ion > 0.99 (battery.hpp).
     double charge_efficiency = 0.85;
+
+    friend bool operator==(const BatteryParameters&, const BatteryParameters&) = default;
 };
 
 // How the switching plant's PWM turns the controller output into gate pulses (switching fidelity only).
@@ -150,6 +154,7 @@ struct Parameters {
 
     // Injected faults (faults.hpp); the defaults inject none.
     FaultParameters faults;
+    friend bool operator==(const Parameters&, const Parameters&) = default;
 };
 
 }  // namespace ssr_plant

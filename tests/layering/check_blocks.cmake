@@ -1,0 +1,40 @@
+# Fails, listing each, when a block reaches into harness/: the target edges found at configure time
+# (EDGES), and in the block's sources an #include naming a harness/ path or a CMake line (outside a
+# comment) naming one, which also covers the firmware's own CMake project built with the cross compiler.
+file(READ ${EDGES} found)
+string(STRIP "${found}" found)
+if(found)
+  string(REPLACE "\n" ";" problems "${found}")
+else()
+  set(problems "")
+endif()
+
+foreach(block IN LISTS BLOCKS)
+  if(NOT IS_DIRECTORY ${ROOT}/${block})
+    continue()
+  endif()
+  file(GLOB_RECURSE sources ${ROOT}/${block}/*.cpp ${ROOT}/${block}/*.hpp ${ROOT}/${block}/*.h ${ROOT}/${block}/*.c
+       ${ROOT}/${block}/CMakeLists.txt ${ROOT}/${block}/*.cmake)
+  foreach(file IN LISTS sources)
+    file(STRINGS ${file} lines REGEX "harness")
+    foreach(line IN LISTS lines)
+      if(file MATCHES "\\.(cpp|hpp|h|c)$")
+        set(bad_pattern "^[ \t]*#[ \t]*include[ \t]*[\"<][^\">]*harness/")
+      else()
+        string(REGEX REPLACE "#.*$" "" line "${line}")  # a CMake comment may name harness/
+        set(bad_pattern "(^|[^A-Za-z_])harness/")
+      endif()
+      if(line MATCHES "${bad_pattern}")
+        file(RELATIVE_PATH where ${ROOT} ${file})
+        list(APPEND problems "${where}: ${line}")
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
+
+if(problems)
+  list(JOIN problems "\n  " text)
+  message(FATAL_ERROR "blocks reaching into harness/ (the master stands on the blocks, never the reverse):\n  ${text}")
+endif()
+list(JOIN BLOCKS ", " names)
+message(STATUS "no block reaches into harness/ (${names})")
