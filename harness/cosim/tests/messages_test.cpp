@@ -144,6 +144,20 @@ TEST(Messages, AnFmusRefusalIsSaidOnceWithTheValue) {
     EXPECT_EQ(printed.find("[Error]"), std::string::npos) << printed;
 }
 
+TEST(Messages, AnFmi3FmusRefusalIsSaidOnceToo) {
+    // The same refusal from the integrator's FMI 3.0 archive: its error log line is held for the
+    // exception, not printed as well.
+    Scratch s;
+    auto o = options_for(s.ssd(R"(<ssd:Component name="int" source="fmi3/test_integrator.fmu"/>)"));
+    o.system.settings = {"int.tau=-1"};
+    ::testing::internal::CaptureStderr();
+    const std::string says = refusal(o);
+    const std::string printed = ::testing::internal::GetCapturedStderr();
+    EXPECT_NE(says.find("int: fmi3SetFloat64 returned Error"), std::string::npos) << says;
+    EXPECT_NE(says.find("-1"), std::string::npos) << says;
+    EXPECT_EQ(printed.find("[Error]"), std::string::npos) << printed;
+}
+
 TEST(Messages, EachMissingFmuOnceWithTheFoldersLookedIn) {
     Scratch s;
     auto o =

@@ -1,5 +1,6 @@
 #include "engine/fmi3_instance.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <limits>
@@ -116,13 +117,26 @@ Fmi3Instance::~Fmi3Instance() {
     if (instance_) lib_->fmi3FreeInstance(instance_);
 }
 
+// As Fmi2Instance::record: warnings printed as they come, an error's message said once, in the exception
+// of the call that failed.
 void Fmi3Instance::record(int status, std::string message) {
-    if (status >= fmi3Warning) std::cerr << name_ << " [" << status_name(status) << "] " << message << "\n";
+    if (status >= fmi3Error)
+        ++unreported_errors_;
+    else if (status >= fmi3Warning)
+        std::cerr << name_ << " [" << status_name(status) << "] " << message << "\n";
     messages_.emplace_back(status, std::move(message));
 }
 
 void Fmi3Instance::check(int status, const char* function) {
-    if (status < fmi3Error) return;
+    const std::size_t held = std::min(unreported_errors_, messages_.size());
+    unreported_errors_ = 0;
+    if (status < fmi3Error) {
+        // An error logged by a call that did not fail: said now, not lost.
+        for (std::size_t i = messages_.size() - held; i < messages_.size(); ++i)
+            if (messages_[i].first >= fmi3Error)
+                std::cerr << name_ << " [" << status_name(messages_[i].first) << "] " << messages_[i].second << "\n";
+        return;
+    }
     std::string why = messages_.empty() ? "no message from the FMU" : messages_.back().second;
     throw CosimError(name_ + ": " + function + " returned " + status_name(status) + ": " + why);
 }

@@ -121,6 +121,7 @@ private:
     std::vector<std::vector<std::int64_t>> int_arrays_;  // the same for integer arrays
     std::vector<std::function<void()>> deferred_;        // discrete input sets for the next Event Mode
     std::vector<std::pair<int, std::string>> messages_;
+    std::size_t unreported_errors_ = 0;  // Error/Fatal messages held for the exception of the failing call
 };
 
 }  // namespace cosim
