@@ -102,6 +102,10 @@ std::vector<double> numbers(const OnboardSettings<double>& s) {
         put_all(knot.position);
         put({knot.sun_distance, static_cast<double>(knot.valid)});
     }
+    const FaultDetectionConfig<double>& d = s.faults;
+    put({static_cast<double>(d.enabled), d.confirm_time, d.face_min_response, d.face_deficit, d.face_excess,
+         d.others_min_irradiance, d.others_min_predicted, d.bus_tolerance, d.flip_min_field, d.flip_fraction,
+         d.norm_tolerance});
     return out;
 }
 
