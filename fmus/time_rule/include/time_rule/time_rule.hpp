@@ -14,6 +14,8 @@ constexpr double resolution(double t) {
     return relative_tolerance * (magnitude > 1.0 ? magnitude : 1.0);
 }
 
-constexpr bool reached(double t, double event_time) { return t >= event_time - resolution(event_time); }
+constexpr bool reached(double t, double event_time) {
+    return t >= event_time - resolution(event_time);
+}
 
 }  // namespace time_rule
