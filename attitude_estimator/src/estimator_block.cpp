@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <string>
 
 #include "attitude_estimator/spin_spectrum.hpp"
@@ -91,7 +92,8 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
                 "below 90 (default ssr_plant's, 000 fig. 4)")
         .range(0.0, 90.0);
     t.parameter("kelly_value", &D::kelly_value, "1",
-                "Kelly table: relative response at kelly_angle, the first 1 (default ssr_plant's)")
+                "Kelly table: relative response at kelly_angle, the first 1, the second the cosine of its angle "
+                "(default ssr_plant's)")
         .range(0.0, 1.0);
     t.parameter(
          "i_face_norm", &D::i_face_norm, "A",
@@ -409,6 +411,10 @@ fmu::ModelInfo EstimatorBlock::describe() {
 }
 
 namespace {
+// How far kelly_value[2] may lie from the cosine of kelly_angle[2]: half a unit of the third decimal, to
+// which the Kelly table is tabulated (000 fig. 4: 0.866 at 30 deg).
+constexpr double kelly_join_tolerance = 5e-4;
+
 // The clock's epoch day must exist (30 February would be 2 March to the Julian-day formula).
 void check_calendar_day(std::int32_t year, std::int32_t month, std::int32_t day) {
     const bool leap = (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
@@ -436,6 +442,13 @@ void EstimatorBlock::validate() const {
             if (i >= 2 && d.kelly_value[i] > d.kelly_value[i - 1])
                 throw fmu::Error("kelly_value must not increase with the angle (the inverse needs a monotone curve)");
         }
+        // panel_response::table holds the cosine up to the second knot and takes its exact value there: a
+        // tabulated value other than that cosine (to the table's three decimals) would be silently replaced.
+        const double join = std::cos(d.kelly_angle[1] * std::numbers::pi / 180.0);
+        if (!(std::abs(d.kelly_value[1] - join) <= kelly_join_tolerance))
+            throw fmu::Error("kelly_value[2] must be cos(kelly_angle[2]) = " + std::to_string(join) + " within " +
+                             std::to_string(kelly_join_tolerance) +
+                             " (kelly_join_tolerance: the cosine holds up to the second knot)");
     }
     if (d.reference_source == ReferenceSource::onboard) {
         check_calendar_day(d.clock_epoch_year, d.clock_epoch_month, d.clock_epoch_day);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "magnetometer/held_noise.hpp"
+#include "time_rule/time_rule.hpp"
 
 namespace magnetometer {
 namespace {
@@ -31,10 +32,8 @@ const FaultTimes& times(const FaultParameters& f, MagnetometerFault kind) {
     }
 }
 
-// The runtime's test for a time event that is due (fmu::reached): t within 1e-12 relative of it.
-bool reached(double t, double event_time) {
-    return t >= event_time - 1e-12 * std::max(1.0, std::abs(event_time));
-}
+// A time event is due by the rule the runtime and the master use (time_rule/time_rule.hpp).
+using time_rule::reached;
 
 }  // namespace
 

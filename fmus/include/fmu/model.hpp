@@ -12,6 +12,7 @@
 
 #include "fmu/table.hpp"
 #include "fmu/version.hpp"
+#include "time_rule/time_rule.hpp"
 
 namespace fmu {
 
@@ -45,10 +46,8 @@ inline constexpr double no_time_event = std::numeric_limits<double>::infinity();
 
 // True when time t has reached event_time, allowing for the rounding of a host that computed t as a
 // sum of steps. Blocks use it in event_update; the runtime uses it to decide that a time event is due.
-inline bool reached(double t, double event_time) {
-    const double magnitude = event_time < 0 ? -event_time : event_time;
-    return t >= event_time - 1e-12 * (magnitude > 1.0 ? magnitude : 1.0);
-}
+// The rule is time_rule::reached (fmus/time_rule), the one the master and the blocks' cores use too.
+using time_rule::reached;
 
 class Model {
 public:

@@ -5,14 +5,13 @@
 #include "engine/cosim_error.hpp"
 #include "engine/hardware_bridge.hpp"  // max_sample_index: the same sample count as a bridged block's
 #include "engine/value_text.hpp"
+#include "time_rule/time_rule.hpp"
 
 namespace cosim {
 
 namespace {
 
-bool reached(double t, double instant) {
-    return t >= instant - 1e-12 * std::max(1.0, std::abs(instant));
-}
+using time_rule::reached;
 
 }  // namespace
 

@@ -10,9 +10,9 @@
 
 #include "engine/cosim_error.hpp"
 #include "engine/interrupt.hpp"
-#include "engine/time_rule.hpp"
 #include "integrator/cvode_integrator.hpp"
 #include "integrator/indicator_bisection.hpp"
+#include "time_rule/time_rule.hpp"
 
 namespace cosim {
 
@@ -317,7 +317,7 @@ struct Execution::Impl {
         sample();
 
         long k_out = 0;
-        const double tiny = time_resolution(stop);
+        const double tiny = time_rule::resolution(stop);
         while (!terminate && t < stop - tiny) {
             throw_if_interrupted();  // between integrator steps and events, not only at output points
             for (auto* o : observers) o->between_steps();
@@ -341,7 +341,7 @@ struct Execution::Impl {
             }
             bool time_event = false;
             for (auto i : me) {
-                if (!reached(t, comp(i).next_time_event)) continue;
+                if (!time_rule::reached(t, comp(i).next_time_event)) continue;
                 time_event = true;
                 if (!in_event[i]) join(i);
             }
@@ -352,7 +352,7 @@ struct Execution::Impl {
             bool communicated = false;
             for (auto i : cs) {
                 const double t_comm = next_communication(i);
-                if (!reached(t, t_comm)) continue;
+                if (!time_rule::reached(t, t_comm)) continue;
                 auto& s = stepping[i];
                 system.step_co_simulation(i, t_comm, t_comm - s.last);
                 terminate = terminate || comp(i).instance->terminate_requested();
@@ -378,8 +378,8 @@ struct Execution::Impl {
                     sample();
                 }
             }
-            if (reached(t, t_out) || t >= stop - tiny) {
-                while (reached(t, start + static_cast<double>(k_out + 1) * h_out)) ++k_out;
+            if (time_rule::reached(t, t_out) || t >= stop - tiny) {
+                while (time_rule::reached(t, start + static_cast<double>(k_out + 1) * h_out)) ++k_out;
                 if (t != last_sample) sample();
                 if (options.realtime) pace(wall_start, start);
                 if (options.progress) options.progress((t - start) / (stop - start));

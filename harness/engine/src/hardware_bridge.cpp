@@ -7,9 +7,9 @@
 
 #include "engine/cosim_error.hpp"
 #include "engine/interrupt.hpp"
-#include "engine/time_rule.hpp"
 #include "engine/value_text.hpp"
 #include "protocol/frame.hpp"
+#include "time_rule/time_rule.hpp"
 
 namespace cosim {
 
@@ -116,7 +116,7 @@ void HardwareBridge::exit_initialization_mode() {
         throw CosimError(name_ + ": sample_period must be positive, got " + format_real(period_));
     // Instants the tolerance cannot tell apart, or more of them than the count holds, are refused
     // before the board is told anything: the master would otherwise count them one at a time.
-    const double resolution = time_resolution(start_time_);
+    const double resolution = time_rule::resolution(start_time_);
     const double span = stop_time_ ? *stop_time_ - start_time_ : 0.0;
     if (period_ <= resolution || (std::isfinite(span) && span / period_ > max_sample_index))
         throw CosimError(name_ + ": sample_period " + format_real(period_) + " s makes more than " +
@@ -172,7 +172,7 @@ bool HardwareBridge::completed_integrator_step(bool* terminate) {
 
 fmi2EventInfo HardwareBridge::new_discrete_states() {
     // One exchange per sample instant, however many rounds the master's event iteration takes.
-    if (period_ > 0.0 && reached(time_, next_sample_time())) {
+    if (period_ > 0.0 && time_rule::reached(time_, next_sample_time())) {
         exchange();
         advance_sample_count();
     }
@@ -189,7 +189,7 @@ fmi2EventInfo HardwareBridge::new_discrete_states() {
 
 void HardwareBridge::advance_sample_count() {
     // As fmu::next_instant_index: the quotient first (in double, it can be beyond any integer), then at
-    // most a few steps for rounding and reached()'s tolerance.
+    // most a few steps for rounding and the reached-time rule's tolerance.
     const double periods = std::floor((time_ - start_time_) / period_);
     const auto beyond = [&] {
         return CosimError(name_ + ": t = " + format_real(time_) + " s is more than " + format_real(max_sample_index) +
@@ -198,8 +198,10 @@ void HardwareBridge::advance_sample_count() {
     };
     if (!(periods < max_sample_index)) throw beyond();
     long k = std::max(next_sample_ + 1, static_cast<long>(std::max(periods, 0.0)));
-    for (int step = 0; step < 4 && reached(time_, start_time_ + static_cast<double>(k) * period_); ++step) ++k;
-    if (static_cast<double>(k) > max_sample_index || reached(time_, start_time_ + static_cast<double>(k) * period_))
+    for (int step = 0; step < 4 && time_rule::reached(time_, start_time_ + static_cast<double>(k) * period_); ++step)
+        ++k;
+    if (static_cast<double>(k) > max_sample_index ||
+        time_rule::reached(time_, start_time_ + static_cast<double>(k) * period_))
         throw beyond();
     next_sample_ = k;
 }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "time_rule/time_rule.hpp"
+
 namespace ssr_plant {
 namespace {
 
@@ -15,10 +17,8 @@ void require(bool ok, const std::string& what) {
     if (!ok) throw ParameterError("ssr_plant parameters: " + what);
 }
 
-// The runtime's test for a time event that is due (fmu::reached): t within 1e-12 relative of it.
-bool reached(double t, double event_time) {
-    return t >= event_time - 1e-12 * std::max(1.0, std::abs(event_time));
-}
+// A time event is due by the rule the runtime and the master use (time_rule/time_rule.hpp).
+using time_rule::reached;
 
 }  // namespace
 
