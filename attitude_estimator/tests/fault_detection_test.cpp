@@ -362,6 +362,44 @@ TYPED_TEST(EstimatorCoreFaults, AStuckAxisAlongTheFieldIsNotTakenForTheStrap) {
     EXPECT_EQ(excluded_axes(s), 0b001);
 }
 
+TYPED_TEST(EstimatorCoreFaults, WithTheCalibrationsHardIronInThePredictionAWeakerFieldIsTested) {
+    using T = TypeParam;
+    Field<T> f;
+    // y sees 8 µT: below the 15 µT bar of an uncalibrated prediction, above a 5 µT bar once the
+    // calibration's hard iron is in it. y freezes at sample 100: failing from sample 101, declared at the
+    // 100th failing sample, 200 (t = 10 s), only with the calibrated prediction.
+    f.b = {T(25e-6), T(-8e-6), T(20e-6)};
+    auto c = enabled<T>();
+    c.flip_min_field_calibrated = T(5e-6);
+    const int stuck = 100;
+    const T frozen = f.observation(stuck).mag_reading[1];
+    for (const bool calibrated : {false, true}) {
+        FaultDetectionState<T> s;
+        for (int i = 0; i < 400; ++i) {
+            auto o = f.observation(i);
+            o.field_ref_norm = std::sqrt(T(25e-6 * 25e-6 + 8e-6 * 8e-6 + 20e-6 * 20e-6));
+            o.field_calibrated = calibrated;
+            if (i >= stuck) o.mag_reading[1] = frozen;
+            fault_detect(s, o, c);
+        }
+        EXPECT_EQ(s.axis_word[1], calibrated ? kFaultAxisNoFlip : 0u);
+        if (calibrated) {
+            EXPECT_NEAR(s.axis_time[1], 10.0, 0.051);
+        }
+        EXPECT_EQ(s.axis_word[0] | s.axis_word[2], 0u);
+        EXPECT_FALSE(s.strap_failed);
+    }
+    // Healthy, the same weak axis flips by its 8 µT ≥ 0.25 × 8: nothing declared.
+    FaultDetectionState<T> healthy;
+    for (int i = 0; i < 2000; ++i) {
+        auto o = f.observation(i);
+        o.field_ref_norm = std::sqrt(T(25e-6 * 25e-6 + 8e-6 * 8e-6 + 20e-6 * 20e-6));
+        o.field_calibrated = true;
+        fault_detect(healthy, o, c);
+    }
+    EXPECT_EQ(excluded_axes(healthy), 0);
+}
+
 TYPED_TEST(EstimatorCoreFaults, AnAxisAtARailIsDeclaredAndAWrongNormIsSeen) {
     using T = TypeParam;
     const Field<T> f;

@@ -136,7 +136,8 @@ void axis_tests(FaultDetectionState<T>& s, const FaultObservation<T>& o, const F
             declare(s.axis_word[k], s.axis_time[k], kFaultAxisRail, o.t);
         Outcome flips = Outcome::not_applicable;
         const T expected = o.field_body[k];
-        if (flip && !strap_suspect && o.predicted && !o.at_rail[k] && std::abs(expected) >= c.flip_min_field) {
+        const T min_field = o.field_calibrated ? c.flip_min_field_calibrated : c.flip_min_field;
+        if (flip && !strap_suspect && o.predicted && !o.at_rail[k] && std::abs(expected) >= min_field) {
             const T half = o.polarity * (o.mag_reading[k] - s.last_reading[k]) / (T(2) * o.sensitivity);
             const T along = expected > T(0) ? half : -half;
             flips = along >= c.flip_fraction * std::abs(expected) ? Outcome::pass : Outcome::fail;

@@ -185,6 +185,15 @@ FaultObservation<T> observe(const OnboardState<T>& s, const OnboardInputs<T>& in
     o.field = r.mag_field;
     o.field_ref_norm = std::sqrt(squared_norm(in.mag_ref));
     if (settings.filter == FilterKind::mekf && s.filter.stage == 2) predict(s.filter, in, t, o);
+    if (o.predicted && settings.mag_calibration && s.mag_cal.valid) {
+        // What the sensor sees is the calibration's model inverted: H = (I + D)⁻¹ (B + b), to first order in
+        // the small D: (B + b) − D (B + b) (D is a few per cent at most: an error of its square).
+        Vec3<T> v{};
+        for (std::size_t k = 0; k < 3; ++k) v[k] = o.field_body[k] + s.mag_cal.offset[k];
+        const Vec3<T> gv = multiply(s.mag_cal.gain, v);
+        for (std::size_t k = 0; k < 3; ++k) o.field_body[k] = T(2) * v[k] - gv[k];
+        o.field_calibrated = true;
+    }
     return o;
 }
 

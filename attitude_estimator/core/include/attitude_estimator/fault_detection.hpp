@@ -59,6 +59,9 @@ struct FaultDetectionConfig {
     // uses the same two numbers on the field left without its largest component (the least any two axes
     // show): applied where that is at least flip_min_field, failing below flip_fraction of it.
     T flip_min_field = T(15e-6);  // T
+    // The same once the in-flight calibration applies: its hard-iron estimate is then in the prediction (the
+    // spacecraft's own field, 7.3 µT at the sensor in leo_orbit, is what the 15 µT bar allows for).
+    T flip_min_field_calibrated = T(3e-6);  // T
     T flip_fraction = T(0.25);
     T norm_tolerance = T(12e-6);  // T: | |B| − |B_ref| |
 };
@@ -74,7 +77,8 @@ struct FaultObservation {
     bool bus_available = false;     // both i_sh and i_face are read (the bus test needs both)
     bool predicted = false;         // the filter runs: the two predictions below hold
     Vec3<T> sun_body{};             // unit sun direction predicted in body axes
-    Vec3<T> field_body{};           // T: field predicted in body axes
+    Vec3<T> field_body{};           // T: field predicted at the sensor, in body axes
+    bool field_calibrated = false;  // field_body includes the calibration's hard-iron estimate (and scale)
     Vec3<T> mag_reading{};          // V: digitized v_mag − v_mag_ref (offset and polarity still in)
     T polarity = T(1);              // the set/reset polarity the reading was taken in
     Vec3<T> mag_offset{};           // V: the sensor offset the computer takes out of this reading
