@@ -97,7 +97,8 @@ void strap_test(FaultDetectionState<T>& s, const FaultObservation<T>& o, const F
         const T b2 = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
         const T largest = std::max(b[0] * b[0], std::max(b[1] * b[1], b[2] * b[2]));
         const T least_two = b2 - largest;  // T²
-        if (least_two >= c.flip_min_field * c.flip_min_field) {
+        const T min_field = o.field_calibrated ? c.flip_min_field_calibrated : c.flip_min_field;
+        if (least_two >= min_field * min_field) {
             T h2 = T(0);
             for (std::size_t k = 0; k < 3; ++k) {
                 const T h = (o.mag_reading[k] - s.last_reading[k]) / (T(2) * o.sensitivity);
