@@ -15,6 +15,7 @@ FaultDetectionConfig<T> fault_settings_from(const EstimatorData& d) {
                                    .others_min_predicted = T(0.3),
                                    .bus_tolerance = static_cast<T>(d.detect_bus_tolerance),
                                    .flip_min_field = static_cast<T>(d.detect_flip_min_field),
+                                   .flip_min_field_calibrated = static_cast<T>(d.detect_flip_min_field_calibrated),
                                    .flip_fraction = static_cast<T>(d.detect_flip_fraction),
                                    .norm_tolerance = static_cast<T>(d.detect_norm_tolerance)};
 }

@@ -32,6 +32,10 @@ void declare_fault_variables(fmu::Table<EstimatorData>& t) {
                 "detect_faults: an axis' set/reset flip is tested where the predicted field along it is at least "
                 "this")
         .range(1e-7, 1e-3);
+    t.parameter("detect_flip_min_field_calibrated", &D::detect_flip_min_field_calibrated, "T",
+                "detect_faults: the same once the in-flight calibration applies (its hard-iron estimate is then "
+                "in the predicted field)")
+        .range(1e-7, 1e-3);
     t.parameter("detect_flip_fraction", &D::detect_flip_fraction, "1",
                 "detect_faults: an axis whose reading flips by less than this fraction of the predicted field "
                 "fails")

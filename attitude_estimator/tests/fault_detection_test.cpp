@@ -309,19 +309,95 @@ TYPED_TEST(EstimatorCoreFaults, AnAxisStuckAtItsLastValueDoesNotFlip) {
     EXPECT_EQ(excluded_axes(s), 0b010);
 }
 
-TYPED_TEST(EstimatorCoreFaults, AFailedStrapStopsEveryAxisFlipping) {
+TYPED_TEST(EstimatorCoreFaults, AFailedStrapIsDeclaredOnceAndKeepsTheFieldInTheStuckPolarity) {
     using T = TypeParam;
     const Field<T> f;
     FaultDetectionState<T> s;
-    // The strap no longer flips the permalloy: every reading is S B + v_os whatever the polarity commanded.
+    // The strap fails after sample 99 (a reset, p = −1): from sample 100 on every reading is −S B + v_os
+    // whatever the polarity commanded. The set/reset mean follows the stuck readings (here at once, the
+    // worst case): the offset offered from sample 100 on is −S B + v_os.
+    const int onset = 100;
     run_axes(s, 400, [&](int i) {
         auto o = f.observation(i);
-        for (std::size_t k = 0; k < 3; ++k) o.mag_reading[k] = f.s * f.b[k] + f.v_os;
-        // What the computer makes of it: p (r − v_os)/S alternates in sign; its norm is still |B|.
+        o.mag_offset = {f.v_os, f.v_os, f.v_os};
+        if (i >= onset)
+            for (std::size_t k = 0; k < 3; ++k) {
+                o.mag_reading[k] = -f.s * f.b[k] + f.v_os;
+                o.mag_offset[k] = o.mag_reading[k];
+            }
         return o;
     });
-    EXPECT_EQ(excluded_axes(s), 0b111);
-    for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(s.axis_word[k], kFaultAxisNoFlip);
+    // From sample 100 the half difference of the three axes is 0, where the field left without its largest
+    // component is √(20² + 20²) = 28.3 µT ≥ 15 µT: the 100th failing sample is 199 (t = 9.95 s). Every axis
+    // would fail its own flip test as well, but none is blamed: the strap is common to the three.
+    for (std::size_t k = 0; k < 3; ++k) {
+        EXPECT_EQ(s.axis_word[k], kFaultAxisStrap);
+        EXPECT_NEAR(s.axis_time[k], 9.95, 1e-3);
+    }
+    EXPECT_EQ(excluded_axes(s), 0);
+    EXPECT_TRUE(s.strap_failed);
+    // The film stayed reset; the offset is the one offered at the last pass (sample 99), v_os.
+    EXPECT_EQ(s.strap_polarity, T(-1));
+    for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(s.strap_offset[k], 0.02, 1e-7);
+}
+
+TYPED_TEST(EstimatorCoreFaults, AStuckAxisAlongTheFieldIsNotTakenForTheStrap) {
+    using T = TypeParam;
+    Field<T> f;
+    // The field almost along x, (40, 5, 5) µT: y and z together show √50 = 7.1 µT < 15 µT, so the strap
+    // test cannot tell a stuck x from a failed strap and does not run; x's own flip test (40 ≥ 15 µT) does.
+    f.b = {T(40e-6), T(5e-6), T(5e-6)};
+    FaultDetectionState<T> s;
+    const int stuck = 100;
+    const T frozen = f.observation(stuck).mag_reading[0];
+    run_axes(s, 400, [&](int i) {
+        auto o = f.observation(i);
+        o.field_ref_norm = std::sqrt(T(40e-6 * 40e-6 + 2 * 5e-6 * 5e-6));
+        if (i >= stuck) o.mag_reading[0] = frozen;
+        return o;
+    });
+    EXPECT_EQ(s.axis_word[0], kFaultAxisNoFlip);
+    EXPECT_NEAR(s.axis_time[0], 10.0, 0.051);
+    EXPECT_FALSE(s.strap_failed);
+    EXPECT_EQ(excluded_axes(s), 0b001);
+}
+
+TYPED_TEST(EstimatorCoreFaults, WithTheCalibrationsHardIronInThePredictionAWeakerFieldIsTested) {
+    using T = TypeParam;
+    Field<T> f;
+    // y sees 8 µT: below the 15 µT bar of an uncalibrated prediction, above a 5 µT bar once the
+    // calibration's hard iron is in it. y freezes at sample 100: failing from sample 101, declared at the
+    // 100th failing sample, 200 (t = 10 s), only with the calibrated prediction.
+    f.b = {T(25e-6), T(-8e-6), T(20e-6)};
+    auto c = enabled<T>();
+    c.flip_min_field_calibrated = T(5e-6);
+    const int stuck = 100;
+    const T frozen = f.observation(stuck).mag_reading[1];
+    for (const bool calibrated : {false, true}) {
+        FaultDetectionState<T> s;
+        for (int i = 0; i < 400; ++i) {
+            auto o = f.observation(i);
+            o.field_ref_norm = std::sqrt(T(25e-6 * 25e-6 + 8e-6 * 8e-6 + 20e-6 * 20e-6));
+            o.field_calibrated = calibrated;
+            if (i >= stuck) o.mag_reading[1] = frozen;
+            fault_detect(s, o, c);
+        }
+        EXPECT_EQ(s.axis_word[1], calibrated ? kFaultAxisNoFlip : 0u);
+        if (calibrated) {
+            EXPECT_NEAR(s.axis_time[1], 10.0, 0.051);
+        }
+        EXPECT_EQ(s.axis_word[0] | s.axis_word[2], 0u);
+        EXPECT_FALSE(s.strap_failed);
+    }
+    // Healthy, the same weak axis flips by its 8 µT ≥ 0.25 × 8: nothing declared.
+    FaultDetectionState<T> healthy;
+    for (int i = 0; i < 2000; ++i) {
+        auto o = f.observation(i);
+        o.field_ref_norm = std::sqrt(T(25e-6 * 25e-6 + 8e-6 * 8e-6 + 20e-6 * 20e-6));
+        o.field_calibrated = true;
+        fault_detect(healthy, o, c);
+    }
+    EXPECT_EQ(excluded_axes(healthy), 0);
 }
 
 TYPED_TEST(EstimatorCoreFaults, AnAxisAtARailIsDeclaredAndAWrongNormIsSeen) {

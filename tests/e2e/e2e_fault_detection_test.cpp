@@ -137,4 +137,21 @@ TEST(E2eLeoFaultDetection, AnAxisStuckAtItsLastValueIsDeclaredAloneAndTheFilterG
     EXPECT_LT(e, 1.0);
 }
 
+TEST(E2eLeoFaultDetection, AFailedStrapIsDeclaredAndTheFieldIsKept) {
+    const auto r = run({"mag.fault_strap_failed=true", "mag.fault_strap_onset=" + std::to_string(kOnset)}, 6600.0);
+    const Declared d = declared(r);
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(d.axes[k], 4) << "axis " << k + 1;  // kFaultAxisStrap alone: nothing excluded
+        EXPECT_GE(d.axis_time[k], kOnset);
+        EXPECT_LE(d.axis_time[k], kOnset + 60.0);
+    }
+    for (int k = 0; k < 6; ++k) EXPECT_EQ(d.faces[k], 0) << "face " << k + 1;
+    // Read in the stuck polarity, the field keeps the filter where the no-fault run is (sunlit p95 0.35 deg
+    // over these orbits' campaign runs); without the field (the three axes excluded) it was 4 deg.
+    const double e = p95(sunlit_errors(r, kOnset + 100.0));
+    std::printf("strap failed: declared %.0f s after the onset; filter sunlit p95 after it %.3f deg\n",
+                d.axis_time[0] - kOnset, e);
+    EXPECT_LT(e, 0.5);
+}
+
 }  // namespace

@@ -185,6 +185,15 @@ FaultObservation<T> observe(const OnboardState<T>& s, const OnboardInputs<T>& in
     o.field = r.mag_field;
     o.field_ref_norm = std::sqrt(squared_norm(in.mag_ref));
     if (settings.filter == FilterKind::mekf && s.filter.stage == 2) predict(s.filter, in, t, o);
+    if (o.predicted && settings.mag_calibration && s.mag_cal.valid) {
+        // What the sensor sees is the calibration's model inverted: H = (I + D)⁻¹ (B + b), to first order in
+        // the small D: (B + b) − D (B + b) (D is a few per cent at most: an error of its square).
+        Vec3<T> v{};
+        for (std::size_t k = 0; k < 3; ++k) v[k] = o.field_body[k] + s.mag_cal.offset[k];
+        const Vec3<T> gv = multiply(s.mag_cal.gain, v);
+        for (std::size_t k = 0; k < 3; ++k) o.field_body[k] = T(2) * v[k] - gv[k];
+        o.field_calibrated = true;
+    }
     return o;
 }
 
@@ -240,8 +249,12 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
         for (auto& v : config.sun.i_face_norm) v *= gain;
         for (auto& v : config.i_sc_norm) v *= gain;
     }
-    // The reading now at the inputs was taken in the polarity commanded at the previous sample.
-    const T reading_polarity = s.set_reset.polarity;
+    // The reading now at the inputs was taken in the polarity commanded at the previous sample; once the
+    // strap is declared failed, in the polarity the film stayed in, with the offset from before the failure.
+    const bool detecting = settings.faults.enabled;
+    const bool strap_failed = detecting && s.faults.strap_failed;
+    const T reading_polarity = strap_failed ? s.faults.strap_polarity : s.set_reset.polarity;
+    const Vec3<T> offset = strap_failed ? s.faults.strap_offset : applied_offset(s.set_reset, settings.set_reset);
     const SampleInputs<T> sample_in{.i_sh = in.i_sh,
                                     .i_face = in.i_face,
                                     .v_mag = in.v_mag,
@@ -249,12 +262,11 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
                                     .sun_ref = in.sun_ref,
                                     .mag_ref = in.mag_ref,
                                     .mag_polarity = reading_polarity,
-                                    .mag_offset = applied_offset(s.set_reset, settings.set_reset),
+                                    .mag_offset = offset,
                                     .mag_gain = s.mag_cal.gain,
                                     .mag_cal_offset = s.mag_cal.offset};
     // Excluded faces read nothing; an excluded axis reads its null, so that its rail does not take the
     // other two with it (its component is not used below).
-    const bool detecting = settings.faults.enabled;
     const std::uint8_t faces_out = detecting ? excluded_faces(s.faults) : std::uint8_t{0};
     const std::uint8_t axes_out = detecting ? excluded_axes(s.faults) : std::uint8_t{0};
     SampleInputs<T> used_in = sample_in;
@@ -265,7 +277,8 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
     out.sample = estimate_sample(used_in, config, s.sun);
     bool filter_mag_valid = out.sample.mag_valid;
     if (detecting) {
-        const FaultObservation<T> o = observe(s, in, settings, nominal, t, reading_polarity, out.sample, axes_out);
+        FaultObservation<T> o = observe(s, in, settings, nominal, t, reading_polarity, out.sample, axes_out);
+        o.mag_offset = offset;
         fault_detect(s.faults, o, settings.faults);
         // An excluded face that may be lit (predicted within 3° of its horizon or facing the sun, or no
         // prediction) leaves the sun vector without its light: no sun this sample. Dark, it changes nothing.
@@ -307,9 +320,12 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
     if (s.samples < std::numeric_limits<std::int32_t>::max()) ++s.samples;
     out.samples = s.samples;
     // The next reading is taken in the polarity commanded here.
-    set_reset_after_sample(s.set_reset, out.sample.mag_reading, out.sample.mag_reading_usable, settings.set_reset);
+    // (A failed strap's readings would pull the offset mean to S p B + v_os: they are not paired.)
+    const bool strap_failed_now = detecting && s.faults.strap_failed;
+    set_reset_after_sample(s.set_reset, out.sample.mag_reading, out.sample.mag_reading_usable && !strap_failed_now,
+                           settings.set_reset);
     out.mag_set_reset = s.set_reset.polarity > T(0);
-    out.mag_offset = applied_offset(s.set_reset, settings.set_reset);
+    out.mag_offset = strap_failed_now ? s.faults.strap_offset : applied_offset(s.set_reset, settings.set_reset);
     update_rates(s, settings, t, out.sample, out);
     if (settings.filter == FilterKind::mekf)
         update_filter(s, in, settings, t, out.sample, nominal, reading_polarity, filter_mag_valid,

@@ -179,16 +179,17 @@ struct EstimatorData {
 
     // Fault detection, isolation and recovery (fault_detection.hpp, docs/faults.md): parameters and outputs.
     bool detect_faults = false;
-    double detect_confirm_time = 5.0;          // s: a test fails this long before a fault is declared
-    double detect_face_min_response = 0.4;     // 1: face tests where the predicted response is at least this
-    double detect_face_deficit = 0.3;          // 1: a face reading this far below the prediction fails
-    double detect_face_excess = 0.6;           // 1: ... this far above it (albedo adds up to ~0.4)
-    double detect_irradiance_min = 0.5;        // 1: face tests while the other faces show this much sun
-    double detect_bus_tolerance = 0.02;        // A: |i_sh[k] − (i_face[2k] − i_face[2k+1])|
-    double detect_flip_min_field = 15e-6;      // T: flip test where the predicted field along the axis is this
-    double detect_flip_fraction = 0.25;        // 1: an axis flipping by less than this fraction of it fails
-    double detect_norm_tolerance = 12e-6;      // T: | |B| − |B_ref| |
-    std::array<std::int32_t, 6> fault_face{};  // declared faults per face (kFaultFace* bits), 0: healthy
+    double detect_confirm_time = 5.0;                // s: a test fails this long before a fault is declared
+    double detect_face_min_response = 0.4;           // 1: face tests where the predicted response is at least this
+    double detect_face_deficit = 0.3;                // 1: a face reading this far below the prediction fails
+    double detect_face_excess = 0.6;                 // 1: ... this far above it (albedo adds up to ~0.4)
+    double detect_irradiance_min = 0.5;              // 1: face tests while the other faces show this much sun
+    double detect_bus_tolerance = 0.02;              // A: |i_sh[k] − (i_face[2k] − i_face[2k+1])|
+    double detect_flip_min_field_calibrated = 3e-6;  // T: the same once the calibration's hard iron is in
+    double detect_flip_min_field = 15e-6;            // T: flip test where the predicted field along the axis is this
+    double detect_flip_fraction = 0.25;              // 1: an axis flipping by less than this fraction of it fails
+    double detect_norm_tolerance = 12e-6;            // T: | |B| − |B_ref| |
+    std::array<std::int32_t, 6> fault_face{};        // declared faults per face (kFaultFace* bits), 0: healthy
     Faces fault_face_time{-1.0, -1.0, -1.0, -1.0, -1.0, -1.0};  // s, when declared (−1: never)
     std::array<std::int32_t, 3> fault_mag_axis{};               // per magnetometer axis (kFaultAxis* bits)
     Vec3d fault_mag_axis_time{-1.0, -1.0, -1.0};

@@ -12,8 +12,11 @@
 //    (ssr_plant: i_sh[k] = i_face_sh[2k] − i_face_sh[2k+1] exactly when healthy);
 //  - axis rail: a magnetometer channel within the rail margin of its converter's range ends;
 //  - axis flip: with set/reset pulses, two readings of opposite polarity differ by 2 S B_k; an axis that
-//    does not flip (stuck, or its strap failed) shows no difference where the predicted field along it
-//    is large;
+//    does not flip (stuck) shows no difference where the predicted field along it is large;
+//  - strap: the half difference of the three axes together, |p (r_k − r_{k−1})/2S|, against the field any
+//    two axes would still show; it fails only when no axis flips (the strap, common to the three, failed).
+//    A failed strap is not excluded: the film stays in one polarity, so the computer reads the field in
+//    that polarity with the offset the set/reset estimate held before the test started failing;
 //  - field norm: |B| measured against |B_ref| (detection only: it names no axis).
 // Float or double, fixed sizes, no heap, no exceptions (the firmware runs it).
 #pragma once
@@ -33,6 +36,9 @@ inline constexpr std::uint32_t kFaultFaceBus = 4u;      // its axis' Hall curren
 // Bits of a magnetometer axis' fault word.
 inline constexpr std::uint32_t kFaultAxisRail = 1u;    // at a rail of its converter
 inline constexpr std::uint32_t kFaultAxisNoFlip = 2u;  // does not flip with the set/reset polarity
+// The set/reset strap failed (set on the three axes at once). Not an exclusion: the axes are read in the
+// polarity the film stayed in (FaultDetectionState::strap_polarity, strap_offset).
+inline constexpr std::uint32_t kFaultAxisStrap = 4u;
 
 template <class T>
 struct FaultDetectionConfig {
@@ -49,8 +55,13 @@ struct FaultDetectionConfig {
     T others_min_predicted = T(0.3);
     T bus_tolerance = T(0.02);  // A: |i_sh[k] − (i_face[2k] − i_face[2k+1])|
     // Flip test: applied where the predicted field along the axis is at least flip_min_field; fails when
-    // the measured half difference along the predicted sign is below flip_fraction of it.
+    // the measured half difference along the predicted sign is below flip_fraction of it. The strap test
+    // uses the same two numbers on the field left without its largest component (the least any two axes
+    // show): applied where that is at least flip_min_field, failing below flip_fraction of it.
     T flip_min_field = T(15e-6);  // T
+    // The same once the in-flight calibration applies: its hard-iron estimate is then in the prediction (the
+    // spacecraft's own field, 7.3 µT at the sensor in leo_orbit, is what the 15 µT bar allows for).
+    T flip_min_field_calibrated = T(3e-6);  // T
     T flip_fraction = T(0.25);
     T norm_tolerance = T(12e-6);  // T: | |B| − |B_ref| |
 };
@@ -66,9 +77,11 @@ struct FaultObservation {
     bool bus_available = false;     // both i_sh and i_face are read (the bus test needs both)
     bool predicted = false;         // the filter runs: the two predictions below hold
     Vec3<T> sun_body{};             // unit sun direction predicted in body axes
-    Vec3<T> field_body{};           // T: field predicted in body axes
+    Vec3<T> field_body{};           // T: field predicted at the sensor, in body axes
+    bool field_calibrated = false;  // field_body includes the calibration's hard-iron estimate (and scale)
     Vec3<T> mag_reading{};          // V: digitized v_mag − v_mag_ref (offset and polarity still in)
     T polarity = T(1);              // the set/reset polarity the reading was taken in
+    Vec3<T> mag_offset{};           // V: the sensor offset the computer takes out of this reading
     T sensitivity = T(1e4);         // V/T
     std::array<bool, 3> at_rail{};  // each channel within the rail margin of its converter's ends
     bool field_usable = false;      // the measured field below is complete (no axis excluded or at a rail)
@@ -96,6 +109,13 @@ struct FaultDetectionState {
     T last_polarity = T(0);
     T last_t = T(0);
     bool has_last = false;
+    // The strap test: its evidence, the offset at its last pass (the estimate from before a failure: the
+    // set/reset mean follows a failed strap's readings within a second), and once it is declared, the
+    // polarity the film stayed in (+1 set, −1 reset).
+    T strap_failing = T(0);
+    Vec3<T> strap_offset{};
+    bool strap_failed = false;
+    T strap_polarity = T(1);
 };
 
 // One sample of every test that the observation allows; declares faults whose test has failed for
@@ -103,7 +123,8 @@ struct FaultDetectionState {
 template <class T>
 void fault_detect(FaultDetectionState<T>& s, const FaultObservation<T>& o, const FaultDetectionConfig<T>& c) noexcept;
 
-// Faces excluded (bit k = face k) and axes excluded (bit k = axis k) by the faults declared so far.
+// Faces excluded (bit k = face k) and axes excluded (bit k = axis k: rail or no flip; a failed strap
+// excludes nothing) by the faults declared so far.
 template <class T>
 std::uint8_t excluded_faces(const FaultDetectionState<T>& s) noexcept;
 template <class T>
