@@ -106,7 +106,7 @@ std::vector<double> numbers(const OnboardSettings<double>& s) {
     const FaultDetectionConfig<double>& d = s.faults;
     put({static_cast<double>(d.enabled), d.confirm_time, d.face_min_response, d.face_deficit, d.face_excess,
          d.others_min_irradiance, d.others_min_predicted, d.bus_tolerance, d.flip_min_field, d.flip_fraction,
-         d.norm_tolerance});
+         d.norm_tolerance, d.flip_min_field_calibrated});
     return out;
 }
 
