@@ -140,6 +140,7 @@ void pvatt_run_options_init(pvatt_run_options* options) {
 pvatt_status pvatt_run(pvatt_system* system, const pvatt_run_options* options, const char* const* columns,
                        size_t column_count, pvatt_result** out) {
     std::unique_ptr<pvatt_result> result;
+    bool recording = false;  // a result is handed out once its columns are known (not for a bad column name)
     const pvatt_status status = guarded([&] {
         required(out, "out");
         *out = nullptr;
@@ -149,6 +150,7 @@ pvatt_status pvatt_run(pvatt_system* system, const pvatt_run_options* options, c
         const auto ex = execution_options(*system, *sys, options);
         result = std::make_unique<pvatt_result>();
         Recorder recorder(*sys, columns, column_count, *result);
+        recording = true;
         const std::size_t rows = static_cast<std::size_t>((ex.stop_time - ex.start_time) / ex.output_interval) + 2;
         result->data.reserve(rows * result->names.size());
         cosim::Execution execution(*sys, ex);
@@ -159,7 +161,7 @@ pvatt_status pvatt_run(pvatt_system* system, const pvatt_run_options* options, c
             throw;
         }
     });
-    if (out && result) *out = result.release();  // the rows so far, also after an interrupt or a failure
+    if (out && result && recording) *out = result.release();  // the rows so far, also after an interrupt or a failure
     return status;
 }
 

@@ -54,6 +54,8 @@ int main(int argc, char** argv) {
     result = NULL;
     CHECK(pvatt_run(system, &options, unknown, 1, &result) == PVATT_INVALID_ARGUMENT);
     CHECK(strstr(pvatt_last_error(), "nothing") != NULL);
+    CHECK(result == NULL); /* no table for a column that does not exist */
+    pvatt_result_free(result);
     pvatt_system_close(system);
     if (failures == 0) printf("capi_c_test: all checks passed\n");
     return failures == 0 ? 0 : 1;

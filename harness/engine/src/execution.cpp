@@ -185,7 +185,10 @@ struct Execution::Impl {
     }
     bool integrator_sees_a_change() {
         what_the_integrator_sees(seen_after);
-        return std::memcmp(seen_before.data(), seen_after.data(), seen_before.size() * sizeof(double)) != 0;
+        // memcmp takes no null pointer, even for zero bytes: a system of components without states or
+        // indicators has empty vectors.
+        return !seen_before.empty() &&
+               std::memcmp(seen_before.data(), seen_after.data(), seen_before.size() * sizeof(double)) != 0;
     }
 
     // Hard instants stop CVODE exactly: time events of components whose right-hand side or
