@@ -290,6 +290,11 @@ void MagnetometerBlock::check_state() const {
     for (const std::int32_t phase : d.fault_phase)
         fmu::require_range(phase, fault_pending, fault_cleared, "fault_phase");
     fmu::require_finite(d.fault_stuck_value, "fault_stuck_value");
+    // An active stuck axis indexes the outputs by fault_stuck_axis: bytes saying it is active with no
+    // axis (0) or one out of 1 ... 3 are no state this block could have reached (found by fuzz_state).
+    if (d.fault_phase[fault_stuck] == fault_active && (d.fault_stuck_axis < 1 || d.fault_stuck_axis > 3))
+        throw fmu::Error("restored FMU state: a stuck axis is active with fault_stuck_axis " +
+                         std::to_string(d.fault_stuck_axis) + " (not 1 ... 3)");
 }
 
 // The noise enters the outputs only (after the filter), never a derivative: a new sample is a jump of
