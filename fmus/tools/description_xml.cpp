@@ -88,34 +88,15 @@ std::string model_description_xml(const Model& model) {
             w.start("SimpleType");
             w.attribute("name", v.declared_type);
             w.start("Enumeration");
-            for (const auto& item : v.items) {
-                w.start("Item");
-                w.attribute("name", item.name);
-                w.attribute("value", item.value);
-                w.end();
-            }
+            write_items(w, v.items);
             w.end();
             w.end();
         }
         w.end();
     }
 
-    w.start("LogCategories");
-    for (std::size_t i = 0; i < std::size(log_categories); ++i) {
-        w.start("Category");
-        w.attribute("name", log_categories[i]);
-        w.attribute("description", log_category_descriptions[i]);
-        w.end();
-    }
-    w.end();
-
-    const auto& ex = info.default_experiment;
-    w.start("DefaultExperiment");
-    w.attribute("startTime", format_real(ex.start_time));
-    w.attribute("stopTime", format_real(ex.stop_time));
-    w.attribute("tolerance", format_real(ex.tolerance));
-    w.attribute("stepSize", format_real(ex.step_size));
-    w.end();
+    write_log_categories(w, log_categories, log_category_descriptions);
+    write_default_experiment(w, info.default_experiment);
 
     w.start("ModelVariables");
     for (std::size_t i = 0; i < vars.size(); ++i) {

@@ -12,6 +12,7 @@
 
 #include "fmu/description.hpp"
 #include "fmu/errors.hpp"
+#include "fmu/model.hpp"
 #include "fmu/units.hpp"
 #include "fmu/variable.hpp"
 
@@ -89,6 +90,39 @@ inline bool is_initial_unknown(const Variable& v) {
     const bool calculated = v.initial == Initial::approx || v.initial == Initial::calculated;
     return (v.causality == Causality::output && calculated) || v.causality == Causality::calculated_parameter ||
            ((v.is_state() || v.is_derivative()) && calculated);
+}
+
+// An enumeration's <Item> elements, spelt alike in FMI 2.0's <Enumeration> and FMI 3.0's <EnumerationType>.
+inline void write_items(Writer& w, const std::vector<EnumerationItem>& items) {
+    for (const auto& item : items) {
+        w.start("Item");
+        w.attribute("name", item.name);
+        w.attribute("value", item.value);
+        w.end();
+    }
+}
+
+// <LogCategories> from the runtime's names and descriptions (both versions spell it alike).
+template <std::size_t N>
+void write_log_categories(Writer& w, const char* const (&names)[N], const char* const (&descriptions)[N]) {
+    w.start("LogCategories");
+    for (std::size_t i = 0; i < N; ++i) {
+        w.start("Category");
+        w.attribute("name", names[i]);
+        w.attribute("description", descriptions[i]);
+        w.end();
+    }
+    w.end();
+}
+
+// <DefaultExperiment> (both versions spell it alike).
+inline void write_default_experiment(Writer& w, const DefaultExperiment& ex) {
+    w.start("DefaultExperiment");
+    w.attribute("startTime", format_real(ex.start_time));
+    w.attribute("stopTime", format_real(ex.stop_time));
+    w.attribute("tolerance", format_real(ex.tolerance));
+    w.attribute("stepSize", format_real(ex.step_size));
+    w.end();
 }
 
 }  // namespace fmu
