@@ -1,0 +1,95 @@
+// The magnetometer tests of the on-board fault detection (fault_detection.hpp): rail, set/reset flip per
+// axis, the strap common to the three axes, and the field norm.
+#include <algorithm>
+#include <cmath>
+
+#include "fault_detection_detail.hpp"
+
+namespace attitude_estimator::fault_detail {
+
+namespace {
+
+// The strap test: with every axis read (none at a rail; an axis excluded for not flipping is still read) and a prediction, the measured half
+// difference vector h = p (r_k − r_{k−1})/2S is S B (the whole field) when the strap works, S B less one
+// component when a single axis is stuck, about nothing when the strap failed. Applied where the field left
+// without its largest component is at least flip_min_field, so that a stuck axis always passes.
+template <class T>
+void strap_test(FaultDetectionState<T>& s, const FaultObservation<T>& o, const FaultDetectionConfig<T>& c, T dt,
+                bool flip) {
+    if (s.strap_failed) return;
+    Outcome strap = Outcome::not_applicable;
+    if (flip && o.predicted && !o.at_rail[0] && !o.at_rail[1] && !o.at_rail[2]) {
+        const Vec3<T>& b = o.field_body;
+        const T b2 = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
+        const T largest = std::max(b[0] * b[0], std::max(b[1] * b[1], b[2] * b[2]));
+        const T least_two = b2 - largest;  // T²
+        const T min_field = o.field_calibrated ? c.flip_min_field_calibrated : c.flip_min_field;
+        if (least_two >= min_field * min_field) {
+            T h2 = T(0);
+            for (std::size_t k = 0; k < 3; ++k) {
+                const T h = (o.mag_reading[k] - s.last_reading[k]) / (T(2) * o.sensitivity);
+                h2 += h * h;
+            }
+            strap = h2 >= c.flip_fraction * c.flip_fraction * least_two ? Outcome::pass : Outcome::fail;
+        }
+    }
+    if (strap == Outcome::pass) s.strap_offset = o.mag_offset;
+    if (!confirmed(s.strap_failing, strap, dt, c.confirm_time)) return;
+    s.strap_failed = true;
+    // The reading is S p B + v_os with p the polarity the film stayed in: its sign against the prediction.
+    T along = T(0);
+    for (std::size_t k = 0; k < 3; ++k) along += (o.mag_reading[k] - s.strap_offset[k]) * o.field_body[k];
+    s.strap_polarity = along >= T(0) ? T(1) : T(-1);
+    // The strap explains any axis declared for not flipping: read again, marked as the strap.
+    for (std::size_t k = 0; k < 3; ++k) {
+        s.axis_word[k] &= ~kFaultAxisNoFlip;
+        s.axis_failing[k][1] = T(0);
+        declare(s.axis_word[k], s.axis_time[k], kFaultAxisStrap, o.t);
+    }
+}
+
+}  // namespace
+
+template <class T>
+void axis_tests(FaultDetectionState<T>& s, const FaultObservation<T>& o, const FaultDetectionConfig<T>& c, T dt) {
+    const std::uint8_t excluded = excluded_axes(s);
+    // Two readings in a row of opposite polarity: p (r_k − r_{k−1}) / 2 = S B_k (the offset cancels).
+    const bool flip = s.has_last && o.polarity * s.last_polarity < T(0) && o.t - s.last_t <= T(1.5) * o.sample_period;
+    strap_test(s, o, c, dt, flip);
+    // While the strap test fails (or once the strap is declared) no axis is blamed for not flipping.
+    const bool strap_suspect = s.strap_failed || s.strap_failing > T(0);
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (excluded >> k & 1u) continue;
+        const Outcome rail = o.at_rail[k] ? Outcome::fail : Outcome::pass;
+        if (confirmed(s.axis_failing[k][0], rail, dt, c.confirm_time))
+            declare(s.axis_word[k], s.axis_time[k], kFaultAxisRail, o.t);
+        Outcome flips = Outcome::not_applicable;
+        const T expected = o.field_body[k];
+        const T min_field = o.field_calibrated ? c.flip_min_field_calibrated : c.flip_min_field;
+        if (flip && !strap_suspect && o.predicted && !o.at_rail[k] && std::abs(expected) >= min_field) {
+            const T half = o.polarity * (o.mag_reading[k] - s.last_reading[k]) / (T(2) * o.sensitivity);
+            const T along = expected > T(0) ? half : -half;
+            flips = along >= c.flip_fraction * std::abs(expected) ? Outcome::pass : Outcome::fail;
+        }
+        if (confirmed(s.axis_failing[k][1], flips, dt, c.confirm_time))
+            declare(s.axis_word[k], s.axis_time[k], kFaultAxisNoFlip, o.t);
+    }
+    s.last_reading = o.mag_reading;
+    s.last_polarity = o.polarity;
+    s.last_t = o.t;
+    s.has_last = true;
+
+    Outcome norm = Outcome::not_applicable;
+    if (o.field_usable && o.field_ref_norm > T(0)) {
+        const T n = std::sqrt(o.field[0] * o.field[0] + o.field[1] * o.field[1] + o.field[2] * o.field[2]);
+        norm = std::abs(n - o.field_ref_norm) <= c.norm_tolerance ? Outcome::pass : Outcome::fail;
+    }
+    if (confirmed(s.norm_failing, norm, dt, c.confirm_time)) declare(s.norm_word, s.norm_time, 1u, o.t);
+}
+
+template void axis_tests(FaultDetectionState<float>&, const FaultObservation<float>&, const FaultDetectionConfig<float>&,
+                         float);
+template void axis_tests(FaultDetectionState<double>&, const FaultObservation<double>&,
+                         const FaultDetectionConfig<double>&, double);
+
+}  // namespace attitude_estimator::fault_detail
