@@ -101,7 +101,9 @@ TEST_P(E2eLeoFaultDetectionHealthy, ThreeOrbitsDeclareNothing) {
     EXPECT_EQ(d.norm, 0);
 }
 
-INSTANTIATE_TEST_SUITE_P(TwoNoiseSeeds, E2eLeoFaultDetectionHealthy, ::testing::Values(1, 7));
+// One noise seed in the test suite (three orbits cost about 85 s under the sanitizers); the fault-free orbits
+// counted for the no-false-alarm figure are the fault campaign's controls (docs/faults.md).
+INSTANTIATE_TEST_SUITE_P(OneNoiseSeed, E2eLeoFaultDetectionHealthy, ::testing::Values(7));
 
 TEST(E2eLeoFaultDetection, AnOpenStringIsDeclaredOnItsFaceAloneAndTheFilterRidesThrough) {
     const auto r =
