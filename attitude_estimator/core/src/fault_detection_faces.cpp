@@ -68,8 +68,8 @@ void face_tests(FaultDetectionState<T>& s, const FaultObservation<T>& o, const F
     }
 }
 
-template void face_tests(FaultDetectionState<float>&, const FaultObservation<float>&, const FaultDetectionConfig<float>&,
-                         float);
+template void face_tests(FaultDetectionState<float>&, const FaultObservation<float>&,
+                         const FaultDetectionConfig<float>&, float);
 template void face_tests(FaultDetectionState<double>&, const FaultObservation<double>&,
                          const FaultDetectionConfig<double>&, double);
 

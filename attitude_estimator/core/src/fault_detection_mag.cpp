@@ -87,8 +87,8 @@ void axis_tests(FaultDetectionState<T>& s, const FaultObservation<T>& o, const F
     if (confirmed(s.norm_failing, norm, dt, c.confirm_time)) declare(s.norm_word, s.norm_time, 1u, o.t);
 }
 
-template void axis_tests(FaultDetectionState<float>&, const FaultObservation<float>&, const FaultDetectionConfig<float>&,
-                         float);
+template void axis_tests(FaultDetectionState<float>&, const FaultObservation<float>&,
+                         const FaultDetectionConfig<float>&, float);
 template void axis_tests(FaultDetectionState<double>&, const FaultObservation<double>&,
                          const FaultDetectionConfig<double>&, double);
 

@@ -45,26 +45,28 @@ std::size_t EstimatorBoard::configure(std::span<const std::uint8_t> frame, const
     return n ? n : refuse(Refusal::reply_too_long);
 }
 
+bool EstimatorBoard::open_run() noexcept {
+    // From the block's defaults, then the master's configuration; the precision and the spin window
+    // are this firmware's whatever the master left at their defaults.
+    std::destroy_at(&data_);
+    std::construct_at(&data_);
+    for (std::size_t p = 0; p < wire::kParameterCount; ++p)
+        if (configured_[p]) wire::set_parameter(data_, p, configuration_[p]);
+    data_.precision = Precision::single_precision;
+    data_.spin_window = 0;
+    // On-board references need the element set, which reaches the board as numbers (tle_elements: the
+    // text lines are not on the wire); without it there is no orbit to run.
+    if (data_.reference_source == ReferenceSource::onboard && !(data_.tle_elements[0] > 0.0)) return false;
+    settings_ = onboard_settings_from<float>(data_);
+    onboard_start(data_.onboard_float, settings_);
+    return true;
+}
+
 std::size_t EstimatorBoard::sample(std::span<const std::uint8_t> frame, const bridge::FrameHeader& h,
                                    std::span<std::uint8_t> reply) noexcept {
     if (h.count != wire::kInputCount) return refuse(Refusal::wrong_input_count);
     if (h.sequence == 1) running_ = false;  // sequence 1 opens a run
-    if (!running_) {
-        // From the block's defaults, then the master's configuration; the precision and the spin window
-        // are this firmware's whatever the master left at their defaults.
-        std::destroy_at(&data_);
-        std::construct_at(&data_);
-        for (std::size_t p = 0; p < wire::kParameterCount; ++p)
-            if (configured_[p]) wire::set_parameter(data_, p, configuration_[p]);
-        data_.precision = Precision::single_precision;
-        data_.spin_window = 0;
-        // On-board references need the element set, which reaches the board as numbers (tle_elements: the
-        // text lines are not on the wire); without it there is no orbit to run.
-        if (data_.reference_source == ReferenceSource::onboard && !(data_.tle_elements[0] > 0.0))
-            return refuse(Refusal::not_on_this_board);
-        settings_ = onboard_settings_from<float>(data_);
-        onboard_start(data_.onboard_float, settings_);
-    }
+    if (!running_ && !open_run()) return refuse(Refusal::not_on_this_board);
     for (std::size_t i = 0; i < wire::kInputCount; ++i) wire::set_input(data_, i, bridge::frame_value(frame, i));
     store_outputs(data_, onboard_sample(data_.onboard_float, onboard_inputs_from<float>(data_), settings_,
                                         static_cast<float>(h.time)));

@@ -46,6 +46,10 @@ private:
     std::size_t sample(std::span<const std::uint8_t> frame, const bridge::FrameHeader& h,
                        std::span<std::uint8_t> reply) noexcept;
     std::size_t refuse(Refusal why) noexcept;
+    // Opens a run: the block's defaults, the master's configuration, the on-board settings. Its own
+    // function, kept out of line, so that the settings it builds (4.5 kB on the target) are on the stack
+    // only while a run opens, not under every sample's computation.
+    [[gnu::noinline]] bool open_run() noexcept;
 
     EstimatorData data_{};
     OnboardSettings<float> settings_{};
