@@ -9,7 +9,7 @@ bash scripts/install_deps.sh --firmware
 bash scripts/format.sh --check
 build=${PVATT_TEST_BUILD_DIR:-build-sanitize}
 # CMakePresets.json. Debug information is line tables only (-g1): a sanitizer report still names file and
-# line, and the heaviest translation unit (the filter's) compiles a fifth faster, its object 63 MB -> 13 MB.
+# line, and the filter's translation unit (one of the heaviest) compiles a fifth faster, its object 63 MB -> 13 MB.
 cmake --preset sanitize -B "$build"
 cmake --build "$build" -j"$(nproc)"
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0:strict_string_checks=1}
