@@ -325,3 +325,51 @@ condition = "env.irradiance < 0"
     EXPECT_NE(s.str().find("- never: 4 of 4 finished runs had no valid sample"), std::string::npos) << s.str();
     std::filesystem::remove_all(dir);
 }
+
+// Cases and a detection metric (issue 28): a control and a magnetometer axis stuck at its rail on a
+// drawn axis, paired. The rail test confirms in 5 s (5 samples at 1 Hz): the fault is declared on the
+// drawn axis alone, 4 to 6 s after the onset (the first sample after the onset starts the count); the
+// control declares nothing. The summary has a row per case and the pair's ratio.
+TEST(Campaign, CasesWithADetectionMetric) {
+    const auto dir = fresh_dir("cases");
+    auto o = options_for("leo_fault_cases.toml", dir);
+    o.figures = false;
+    std::ostringstream out;
+    ASSERT_EQ(run_campaign(o, out), 0);
+    const auto lines = lines_of(dir / "results.csv");
+    ASSERT_EQ(lines.size(), 5u);
+    const auto header = split_csv_line(lines[0]);
+    auto cell = [&](std::size_t row, const std::string& name) {
+        const auto at = std::find(header.begin(), header.end(), name);
+        EXPECT_NE(at, header.end()) << name;
+        return split_csv_line(lines.at(row + 1)).at(static_cast<std::size_t>(at - header.begin()));
+    };
+    for (std::size_t r = 0; r < 4; ++r) {
+        EXPECT_EQ(cell(r, "status"), "ok") << cell(r, "message");
+        EXPECT_EQ(cell(r, "case"), r % 2 == 0 ? "control" : "rail");
+        EXPECT_EQ(cell(r, "mag.noise_seed"), cell(r - r % 2, "mag.noise_seed"));  // the pair's scene
+    }
+    for (std::size_t r : {0u, 2u}) {
+        EXPECT_EQ(cell(r, "detect.declared"), "0");
+        EXPECT_EQ(cell(r, "detect.isolated"), "1");
+        EXPECT_EQ(cell(r, "mag.fault_stuck_axis"), "");
+        EXPECT_EQ(std::stod(cell(r, "detect.orbits")), 40.0 / 5764.0);
+    }
+    for (std::size_t r : {1u, 3u}) {
+        EXPECT_EQ(cell(r, "detect.detected"), "1");
+        EXPECT_EQ(cell(r, "detect.isolated"), "1");
+        EXPECT_EQ(cell(r, "detect.which"), "est.fault_mag_axis[" + cell(r, "mag.fault_stuck_axis") + "]=1");
+        const double time = std::stod(cell(r, "detect.time"));
+        EXPECT_GT(time, 4.0);
+        EXPECT_LE(time, 6.0);
+    }
+    std::ifstream summary(dir / "summary.md");
+    std::stringstream s;
+    s << summary.rdbuf();
+    EXPECT_NE(s.str().find("### case = rail (2 runs)"), std::string::npos) << s.str();
+    EXPECT_NE(s.str().find("| control | 2 | 0 | – | – | 2 | – | 0 (0 in 0.01388) | – |"), std::string::npos) << s.str();
+    EXPECT_NE(s.str().find("| rail | 2 | 2 | "), std::string::npos) << s.str();
+    EXPECT_NE(s.str().find(" | 2 | 2 | 1: 2 | – | 0 |"), std::string::npos) << s.str();
+    EXPECT_NE(s.str().find("## Against the paired control"), std::string::npos) << s.str();
+    std::filesystem::remove_all(dir);
+}
