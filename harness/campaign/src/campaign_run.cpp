@@ -116,7 +116,7 @@ CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path
         for (const auto& d : c.draws)
             for (const auto& value : d.values)
                 check_value(system, d.target + "=" + value.text, what + ": draw of " + d.target);
-        for (const auto& setting : draw_run(spec, k).settings) check_value(system, setting, what + ": " + setting);
+        for (const auto& setting : draw_run(spec, k).settings) check_value(system, setting, what);
         const MetricObserver check_case(spec.metrics, system, &c);
     }
     analysis::check_couplings(system, false, std::cerr);  // the blocks agree before any draw (each run checks its own)

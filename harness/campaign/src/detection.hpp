@@ -38,8 +38,8 @@ private:
         double time, word;
     };
     std::vector<std::string> elements_;
-    std::vector<double> last_;                 // each element's word at the previous output point
-    std::vector<std::size_t> open_;            // each element's declaration while its word is nonzero
+    std::vector<double> last_;       // each element's word at the previous output point
+    std::vector<std::size_t> open_;  // each element's declaration while its word is nonzero
     std::vector<Declaration> declarations_;
     std::optional<double> first_t_, last_t_;
 };

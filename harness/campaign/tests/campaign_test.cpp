@@ -14,7 +14,9 @@
 
 #include "campaign_command.hpp"
 #include "campaign_error.hpp"
+#include "campaign_run.hpp"
 #include "campaign_spec.hpp"
+#include "draws.hpp"
 #include "engine/csv_table.hpp"
 #include "results_table.hpp"
 
@@ -372,4 +374,22 @@ TEST(Campaign, CasesWithADetectionMetric) {
     EXPECT_NE(s.str().find(" | 2 | 2 | 1: 2 | – | 0 |"), std::string::npos) << s.str();
     EXPECT_NE(s.str().find("## Against the paired control"), std::string::npos) << s.str();
     std::filesystem::remove_all(dir);
+}
+
+// Every bundled campaign (harness/campaigns) is prepared as `cosim campaign` would before its first run:
+// the system loaded, every set and drawn variable, value and metric column checked, each case's too.
+// A renamed output or parameter breaks the spec here, not after hours of runs.
+TEST(Campaign, BundledSpecsArePrepared) {
+    const auto folder = std::filesystem::path(CAMPAIGN_TEST_SPECS) / "../../../campaigns";
+    long specs = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+        if (entry.path().extension() != ".toml") continue;
+        ++specs;
+        SCOPED_TRACE(entry.path().string());
+        EXPECT_NO_THROW({
+            const CampaignSetup setup = prepare(read_spec(entry.path()), {PVATT_FMU_DIR}, {});
+            for (long k = 0; k < setup.spec.runs; ++k) (void)draw_run(setup.spec, k);
+        });
+    }
+    EXPECT_GE(specs, 4);
 }

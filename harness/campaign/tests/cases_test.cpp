@@ -112,8 +112,8 @@ TEST(Cases, RunsCycleThroughTheCasesAndPairedScenesAreShared) {
               "case mag.noise_seed est.sun_method plant.fault_string_open_face plant.fault_string_open_onset "
               "mag.fault_strap_onset ");
     EXPECT_EQ(campaign::grid_size(spec), 6);
-    const char* expected[][2] = {{"control", "difference"},     {"open_string", "difference"}, {"strap", "difference"},
-                                 {"control", "cones"},          {"open_string", "cones"},      {"strap", "cones"},
+    const char* expected[][2] = {{"control", "difference"}, {"open_string", "difference"}, {"strap", "difference"},
+                                 {"control", "cones"},      {"open_string", "cones"},      {"strap", "cones"},
                                  {"control", "difference"}};
     for (long i = 0; i < 7; ++i) {
         const auto run = draw_run(spec, i);
@@ -147,8 +147,8 @@ TEST(Cases, RunsCycleThroughTheCasesAndPairedScenesAreShared) {
 
 // Without cases nothing changes: the same columns and values as before cases existed.
 TEST(Cases, ASpecWithoutCasesDrawsAsBefore) {
-    const auto spec = parse_spec(head + "[[draw]]\nkind = \"grid\"\ntarget = \"a.g\"\nvalues = [1, 2]\n",
-                                 "/specs/test.toml");
+    const auto spec =
+        parse_spec(head + "[[draw]]\nkind = \"grid\"\ntarget = \"a.g\"\nvalues = [1, 2]\n", "/specs/test.toml");
     EXPECT_EQ(campaign::draw_columns(spec).at(0).name, "a.g");
     EXPECT_FALSE(campaign::case_of(spec, 3));
     EXPECT_EQ(draw_run(spec, 3).cells, (std::vector<std::string>{"2"}));
@@ -165,7 +165,8 @@ TEST(Cases, MistakesAreRefusedByName) {
         {a + "draw = 3\n", "case 'a': its draws are written [[case.draw]]"},
         {a + "[[case.draw]]\nkind = \"uniform\"\ntarget = \"a.x\"\nmin = 1\nmax = 0\n",
          "case 'a': draw 1: 'max' must be above 'min'"},
-        {a + "[[case.draw]]\nkind = \"grid\"\ntarget = \"a.x\"\nvalues = [1]\n", "case 'a': draw 1: a case holds no grid"},
+        {a + "[[case.draw]]\nkind = \"grid\"\ntarget = \"a.x\"\nvalues = [1]\n",
+         "case 'a': draw 1: a case holds no grid"},
         {a + "onset = 3\n", "case 'a': 'onset' must be a string"},
         {a + "onset = \"x\"\n", "case 'a': 'onset': 'x' is not component.variable"},
         {a + "onset = \"a.t\"\nexpect = 2\n", "case 'a': 'expect' must be a table"},
@@ -210,5 +211,6 @@ TEST(Cases, DetectionMetricMistakesAreRefusedByName) {
         {m + "words = \"a.w\"\nperiod = 1\nvalid = \"a.v\"\n", "metric 1: unknown key 'valid'"},
     };
     for (const auto& [text, message] : bad)
-        EXPECT_NE(error_of(head + text).find(message), std::string::npos) << text << "\n gave: " << error_of(head + text);
+        EXPECT_NE(error_of(head + text).find(message), std::string::npos)
+            << text << "\n gave: " << error_of(head + text);
 }
