@@ -267,20 +267,18 @@ std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir
         }
         for (const auto& f : data_files) std::filesystem::remove(f);
 
-        // The same distribution split by the values of the first grid draw (the compared designs).
-        if (const auto grid = std::find_if(spec.draws.begin(), spec.draws.end(),
-                                           [](const Draw& d) { return d.kind == DrawKind::grid; });
-            grid != spec.draws.end()) {
+        // The same distribution split by the values of the first grid draw (the compared designs), and by
+        // case where the spec has cases.
+        auto split_cdf = [&](const std::string& column, const std::vector<std::string>& labels) {
             const std::string stat_column = m.name + "." + m.figure_stat;
-            const std::size_t g = table.column(grid->target), y = table.column(stat_column),
-                              status = table.header.size() - 2;
-            const auto by = dir / ("cdf_" + file_name(m.name) + "_by_" + file_name(grid->target) + ".png");
+            const std::size_t g = table.column(column), y = table.column(stat_column), status = table.header.size() - 2;
+            const auto by = dir / ("cdf_" + file_name(m.name) + "_by_" + file_name(column) + ".png");
             std::string lines;
             std::vector<std::filesystem::path> files;
-            for (const auto& value : grid->values) {
+            for (const auto& label : labels) {
                 std::vector<double> values;
                 for (const auto& row : table.rows)
-                    if (row[status] != "failed" && row[g] == value.text)
+                    if (row[status] != "failed" && row[g] == label)
                         if (const auto v = number_in(row[y])) values.push_back(*v);
                 if (values.empty()) continue;
                 std::sort(values.begin(), values.end());
@@ -288,21 +286,33 @@ std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir
                 for (std::size_t i = 0; i < values.size(); ++i)
                     text << cosim::format_real(values[i]) << ' '
                          << static_cast<double>(i + 1) / static_cast<double>(values.size()) << '\n';
-                files.push_back(dir / ("cdf_by_" + file_name(m.name) + "_" + file_name(value.text) + ".dat"));
+                files.push_back(dir / ("cdf_by_" + file_name(m.name) + "_" + file_name(label) + ".dat"));
                 temporary.files.push_back(files.back());
                 write_data(files.back(), text.str());
                 lines += std::string(lines.empty() ? "plot " : ", ") +
                          gnuplot_string(files.back().filename().string()) + " using 1:2 with steps lw 2 title " +
-                         gnuplot_string(value.text);
+                         gnuplot_string(label);
             }
             if (!lines.empty()) {
-                if (run_gnuplot(preamble(by, stat_column + " by " + grid->target + ": distribution over runs",
-                                         "degrees", "fraction of runs") +
+                if (run_gnuplot(preamble(by, stat_column + " by " + column + ": distribution over runs", "degrees",
+                                         "fraction of runs") +
                                     "set yrange [0:1]\n" + lines + "\n",
                                 by))
                     written.push_back(by);
             }
             for (const auto& f : files) std::filesystem::remove(f);
+        };
+        if (const auto grid = std::find_if(spec.draws.begin(), spec.draws.end(),
+                                           [](const Draw& d) { return d.kind == DrawKind::grid; });
+            grid != spec.draws.end()) {
+            std::vector<std::string> labels;
+            for (const auto& value : grid->values) labels.push_back(value.text);
+            split_cdf(grid->target, labels);
+        }
+        if (!spec.cases.empty()) {
+            std::vector<std::string> labels;
+            for (const auto& c : spec.cases) labels.push_back(c.name);
+            split_cdf("case", labels);
         }
 
         // The metric's figure statistic against each drawn quantity; text values as categories.
