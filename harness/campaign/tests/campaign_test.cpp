@@ -393,3 +393,12 @@ TEST(Campaign, BundledSpecsArePrepared) {
     }
     EXPECT_GE(specs, 4);
 }
+
+// A case's own settings and draws come after --set and would silently override it: refused by name.
+TEST(Campaign, SetOfAVariableACaseSetsOrDrawsIsRefused) {
+    auto o = options_for("leo_fault_cases.toml", fresh_dir("case_set"));
+    o.settings = {"mag.fault_stuck_mode=last"};
+    EXPECT_NE(refusal(o).find("'mag.fault_stuck_mode' is set by case 'rail'"), std::string::npos) << refusal(o);
+    o.settings = {"mag.fault_stuck_axis=2"};
+    EXPECT_NE(refusal(o).find("'mag.fault_stuck_axis' is drawn by case 'rail'"), std::string::npos) << refusal(o);
+}
