@@ -1,11 +1,21 @@
 // A detection metric's arithmetic on small tables made by hand: declarations (a word turning nonzero, at
-// its time column's value or else the output point), counted from the onset, against the expected element.
+// its time column's value or else the output point), counted from the onset, against the expected element;
+// and the summary's tables per case from a results table made by hand.
 #include <gtest/gtest.h>
 
-#include <cmath>
-#include <limits>
+#include <unistd.h>
 
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include "campaign_spec.hpp"
 #include "detection.hpp"
+#include "results_table.hpp"
+#include "summary.hpp"
 
 using campaign::DetectionTracker;
 
@@ -80,4 +90,64 @@ TEST(Detection, NothingDeclaredIsIsolatedOnlyWhenNothingWasExpected) {
     EXPECT_TRUE(std::isnan(o.time));
     // A run that sampled nothing has nothing to say.
     EXPECT_TRUE(std::isnan(DetectionTracker({"f"}).outcome(1.0, {}, 0.0, 5.0).declared));
+}
+
+// The summary's detection and paired tables from a table made by hand: two scenes of a control and a fault.
+TEST(Detection, SummaryPerCaseFromAHandMadeTable) {
+    campaign::CampaignSetup setup;
+    setup.spec = campaign::parse_spec(R"(
+system = "s.ssd"
+runs = 4
+seed = 1
+paired = true
+[[case]]
+name = "control"
+control = true
+[[case]]
+name = "fault"
+onset = "a.onset"
+expect = { "a.w" = 2 }
+[[case.draw]]
+kind = "uniform"
+target = "a.onset"
+min = 100
+max = 101
+[[metric]]
+name = "err"
+kind = "quaternion_angle"
+a = "a.q"
+b = "b.q"
+stats = ["p95"]
+[[metric]]
+name = "det"
+kind = "detection"
+words = "a.w"
+period = 5764
+within = 60
+)",
+                                      "/t/spec.toml");
+    // run, case, a.onset, err.p95, det.{detected,time,isolated,declared,before,orbits,which}, wall_time, status, message
+    const std::map<long, std::string> rows = {
+        {0, "0,control,,0.5,0,nan,1,0,0,1.5,,1,ok,"},
+        {1, "1,fault,100,1,1,10,1,1,0,1,a.w[2]=1,1,ok,"},
+        {2, "2,control,,0.25,1,nan,0,2,0,1.5,a.w[1]=4 a.w[1]=4,1,ok,"},
+        {3, "3,fault,100,1,1,70,0,2,1,1,a.w[2]=2 a.w[1]=1,1,ok,"},
+    };
+    const auto table = campaign::split_rows(campaign::table_header(setup.spec), rows);
+    const auto file = std::filesystem::temp_directory_path() / ("detection_summary_" + std::to_string(::getpid()));
+    campaign::write_summary(file, setup, table, {}, {}, "");
+    std::ifstream in(file);
+    std::stringstream s;
+    s << in.rdbuf();
+    std::filesystem::remove(file);
+    // Control: 2 false alarms in 1.5 + 1.5 periods = 0.6667 per period; word 4 in one run.
+    EXPECT_NE(s.str().find("| control | 2 | 1 | – | – | 1 | 4: 1 | 0.6667 (2 in 3) | – |"), std::string::npos)
+        << s.str();
+    // Fault: times 10 and 70 s: median 40, p95 10 + 0.95 * 60 = 67, max 70; one within 60 s; run 1 isolated;
+    // word 1 in both runs, word 2 in one; one declaration before the onset.
+    EXPECT_NE(s.str().find("| fault | 2 | 2 | 40 / 67 / 70 | 1 | 1 | 1: 2, 2: 1 | – | 1 |"), std::string::npos)
+        << s.str();
+    // Pairs (1, 0) and (3, 2): p95 1 / 0.5 = 2 and 1 / 0.25 = 4: median 3, p95 2 + 0.95 * 2 = 3.9, max 4; the
+    // controls' median (0.5 + 0.25) / 2 = 0.375.
+    EXPECT_NE(s.str().find("| fault | 2 | 1 | 0.375 | 3 / 3.9 / 4 |"), std::string::npos) << s.str();
 }
