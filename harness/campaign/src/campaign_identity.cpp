@@ -18,6 +18,18 @@ std::string join(const std::vector<std::string>& items) {
     return out;
 }
 
+// Everything a draw decides, on one line.
+std::string draw_line(const Draw& d) {
+    std::vector<std::string> values;
+    for (const auto& v : d.values) values.push_back(v.text);
+    std::vector<std::string> weights;
+    for (double w : d.weights) weights.push_back(format_real(w));
+    return "draw " + d.target + " kind " + std::to_string(static_cast<int>(d.kind)) + " min " + format_real(d.min) +
+           " max " + format_real(d.max) + " mean " + format_real(d.mean) + " sd " + format_real(d.sd) + " values [" +
+           join(values) + "] weights [" + join(weights) + "] epoch " + format_real(d.epoch_from) + " " +
+           format_real(d.epoch_to) + (d.stream.empty() ? "" : " stream " + d.stream);
+}
+
 }  // namespace
 
 std::string campaign_identity(const CampaignSetup& s) {
@@ -27,20 +39,29 @@ std::string campaign_identity(const CampaignSetup& s) {
     id << "output_interval " << format_real(s.output_interval) << "\ntolerance " << format_real(s.tolerance) << "\n";
     id << "seed " << s.spec.seed << "\npaired " << (s.spec.paired ? "true" : "false") << "\n";
     for (const auto& setting : s.options.settings) id << "set " << setting << "\n";
-    for (const auto& d : s.spec.draws) {
-        std::vector<std::string> values;
-        for (const auto& v : d.values) values.push_back(v.text);
-        std::vector<std::string> weights;
-        for (double w : d.weights) weights.push_back(format_real(w));
-        id << "draw " << d.target << " kind " << static_cast<int>(d.kind) << " min " << format_real(d.min) << " max "
-           << format_real(d.max) << " mean " << format_real(d.mean) << " sd " << format_real(d.sd) << " values ["
-           << join(values) << "] weights [" << join(weights) << "] epoch " << format_real(d.epoch_from) << " "
-           << format_real(d.epoch_to) << "\n";
-    }
+    for (const auto& d : s.spec.draws) id << draw_line(d) << "\n";
     for (const auto& m : s.spec.metrics)
         id << "metric " << m.name << " kind " << static_cast<int>(m.kind) << " a " << m.a << " b " << m.b << " valid "
-           << m.valid << " when " << m.when << " after " << format_real(m.after) << " stats [" << join(m.stats)
-           << "]\n";
+           << m.valid << " when " << m.when << " after " << format_real(m.after) << " stats [" << join(m.stats) << "]"
+           << (m.condition_column.empty()
+                   ? std::string()
+                   : " condition " + m.condition_column + " " + m.condition_op + " " + format_real(m.condition_value))
+           << (m.kind == MetricKind::detection
+                   ? " words [" + join(m.words) + "] times [" + join(m.times) + "] period " + format_real(m.period) +
+                         " within " + format_real(m.within)
+                   : std::string())
+           << "\n";
+    // The cases (only in a spec that has them: the identity of a spec without is as before).
+    for (const auto& c : s.spec.cases) {
+        id << "case " << c.name << (c.control ? " control" : "") << " onset " << c.onset << "\n";
+        for (const auto& setting : c.settings) id << "case " << c.name << " set " << setting << "\n";
+        for (const auto& e : c.expect) {
+            std::vector<std::string> elements;
+            for (long k : e.elements) elements.push_back(std::to_string(k));
+            id << "case " << c.name << " expect " << e.words << " " << e.variable << " [" << join(elements) << "]\n";
+        }
+        for (const auto& d : c.draws) id << "case " << c.name << " " << draw_line(d) << "\n";
+    }
     return id.str();
 }
 

@@ -73,6 +73,18 @@ CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path
                 if (setting_variable(setting) == v)
                     throw CampaignError("--set " + setting + ": '" + v +
                                         "' is drawn by the spec; remove the draw or the --set");
+        // A case's own settings and draws come after --set: they would silently win.
+        for (const auto& c : spec.cases) {
+            for (const auto& d : c.draws)
+                for (const auto& v : drawn_variables(d))
+                    if (setting_variable(setting) == v)
+                        throw CampaignError("--set " + setting + ": '" + v + "' is drawn by case '" + c.name +
+                                            "'; remove the draw or the --set");
+            for (const auto& own : c.settings)
+                if (setting_variable(setting) == setting_variable(own))
+                    throw CampaignError("--set " + setting + ": '" + setting_variable(own) + "' is set by case '" +
+                                        c.name + "'; change the case or drop the --set");
+        }
         s.options.settings.push_back(setting);
     }
     s.options.tolerance = spec.tolerance;
@@ -94,6 +106,19 @@ CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path
         for (const auto& value : d.values) check_value(system, d.target + "=" + value.text, "draw of " + d.target);
     for (const auto& setting : draw_run(spec, 0).settings) check_value(system, setting, "draw " + setting);
     const MetricObserver check_metrics(spec.metrics, system);
+    // Each case: its settings and draws (names and values, one run's worth), its onset and expectations.
+    for (long k = 0; k < static_cast<long>(spec.cases.size()); ++k) {
+        const Case& c = spec.cases[static_cast<std::size_t>(k)];
+        const std::string what = "case '" + c.name + "'";
+        for (const auto& setting : c.settings) check_variable(system, setting_variable(setting), what + " [case.set]");
+        for (const auto& d : c.draws)
+            for (const auto& v : drawn_variables(d)) check_variable(system, v, what + ": draw of " + d.target);
+        for (const auto& d : c.draws)
+            for (const auto& value : d.values)
+                check_value(system, d.target + "=" + value.text, what + ": draw of " + d.target);
+        for (const auto& setting : draw_run(spec, k).settings) check_value(system, setting, what);
+        const MetricObserver check_case(spec.metrics, system, &c);
+    }
     analysis::check_couplings(system, false, std::cerr);  // the blocks agree before any draw (each run checks its own)
 
     s.start_time = s.description.start_time.value_or(0.0);
@@ -112,8 +137,8 @@ CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path
     // Run k takes grid combination k mod the grid's size: fewer runs leave combinations out, a count that is
     // no multiple gives some combinations one run more. Said, not refused (a short trial is legitimate).
     if (const long grid = grid_size(spec); grid > 1 && spec.runs % grid != 0)
-        std::cerr << "cosim campaign: warning: " << spec.runs << " runs do not cover the grid's " << grid
-                  << " combinations evenly"
+        std::cerr << "cosim campaign: warning: " << spec.runs << " runs do not cover the "
+                  << (spec.cases.empty() ? "grid's " : "cases' and grid's ") << grid << " combinations evenly"
                   << (spec.runs < grid ? " (" + std::to_string(grid - spec.runs) + " combinations are never run)"
                                        : std::string(" (some run once more than others)"))
                   << "; give a multiple of " << grid << " in 'runs' or --runs\n";
@@ -132,7 +157,8 @@ RunResult run_one(const CampaignSetup& setup, long index, const std::optional<st
         options.settings.insert(options.settings.end(), draws.settings.begin(), draws.settings.end());
         cosim::System system(setup.description, options);
         analysis::check_couplings(system, false, std::cerr);  // a draw may make them disagree: this run fails
-        MetricObserver metrics(setup.spec.metrics, system);
+        const auto which = case_of(setup.spec, index);
+        MetricObserver metrics(setup.spec.metrics, system, which ? &setup.spec.cases[*which] : nullptr);
         cosim::InterruptCheck interrupt;  // a signal ends the campaign, not just this run
         std::vector<cosim::Observer*> observers = {&interrupt, &metrics};
         std::unique_ptr<cosim::CsvWriter> csv;

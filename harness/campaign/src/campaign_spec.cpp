@@ -111,8 +111,8 @@ std::vector<SpecValue> value_list(const Context& cx, const toml::table& t, const
     return out;
 }
 
-Draw read_draw(const Context& cx, const toml::table& t, std::size_t index) {
-    const std::string where = "draw " + std::to_string(index + 1);
+Draw read_draw(const Context& cx, const toml::table& t, std::size_t index, const std::string& prefix = "") {
+    const std::string where = prefix + "draw " + std::to_string(index + 1);
     Draw d;
     const std::string kind = string(cx, required(cx, t, "kind", where), where + ": 'kind'");
     d.target = string(cx, required(cx, t, "target", where), where + ": 'target'");
@@ -126,11 +126,11 @@ Draw read_draw(const Context& cx, const toml::table& t, std::size_t index) {
         if (!std::isfinite(d.max - d.min)) cx.fail(t, where + ": '" + hi + "' - '" + lo + "' overflows a double");
     };
     if (kind == "uniform") {
-        only_keys(cx, t, where, {"kind", "target", "figure", "min", "max"});
+        only_keys(cx, t, where, {"kind", "target", "figure", "stream", "min", "max"});
         d.kind = DrawKind::uniform;
         range("min", "max", false);
     } else if (kind == "normal") {
-        only_keys(cx, t, where, {"kind", "target", "figure", "mean", "sd", "min", "max"});
+        only_keys(cx, t, where, {"kind", "target", "figure", "stream", "mean", "sd", "min", "max"});
         d.kind = DrawKind::normal;
         d.mean = number(cx, required(cx, t, "mean", where), where + ": 'mean'");
         d.sd = number(cx, required(cx, t, "sd", where), where + ": 'sd'");
@@ -149,13 +149,13 @@ Draw read_draw(const Context& cx, const toml::table& t, std::size_t index) {
                            " of the normal distribution, below the limit " + std::to_string(min_truncated_normal_mass) +
                            " (use a uniform draw)");
     } else if (kind == "integer") {
-        only_keys(cx, t, where, {"kind", "target", "figure", "min", "max"});
+        only_keys(cx, t, where, {"kind", "target", "figure", "stream", "min", "max"});
         d.kind = DrawKind::integer;
         range("min", "max", true);
         if (d.min != std::floor(d.min) || d.max != std::floor(d.max) || d.min < -2147483648.0 || d.max > 2147483647.0)
             cx.fail(t, where + ": 'min' and 'max' must be 32-bit integers");
     } else if (kind == "choice") {
-        only_keys(cx, t, where, {"kind", "target", "figure", "values", "weights"});
+        only_keys(cx, t, where, {"kind", "target", "figure", "stream", "values", "weights"});
         d.kind = DrawKind::choice;
         d.values = value_list(cx, t, where);
         if (const auto* w = t.get("weights")) {
@@ -172,19 +172,19 @@ Draw read_draw(const Context& cx, const toml::table& t, std::size_t index) {
             if (!std::isfinite(sum)) cx.fail(*w, where + ": the weights' sum overflows a double");
         }
     } else if (kind == "grid" || kind == "list") {
-        only_keys(cx, t, where, {"kind", "target", "figure", "values"});
+        only_keys(cx, t, where, {"kind", "target", "figure", "stream", "values"});
         d.kind = DrawKind::grid;
         d.values = value_list(cx, t, where);
     } else if (kind == "quaternion") {
-        only_keys(cx, t, where, {"kind", "target", "figure"});
+        only_keys(cx, t, where, {"kind", "target", "figure", "stream"});
         d.kind = DrawKind::quaternion;
     } else if (kind == "tumble") {
-        only_keys(cx, t, where, {"kind", "target", "figure", "min", "max"});
+        only_keys(cx, t, where, {"kind", "target", "figure", "stream", "min", "max"});
         d.kind = DrawKind::tumble;
         range("min", "max", true);
         if (d.min < 0.0) cx.fail(t, where + ": the rate range must not be negative");
     } else if (kind == "epoch") {
-        only_keys(cx, t, where, {"kind", "target", "figure", "from", "to"});
+        only_keys(cx, t, where, {"kind", "target", "figure", "stream", "from", "to"});
         d.kind = DrawKind::epoch;
         d.epoch_from = epoch_seconds(cx, required(cx, t, "from", where), where + ": 'from'");
         d.epoch_to = epoch_seconds(cx, required(cx, t, "to", where), where + ": 'to'");
@@ -198,6 +198,11 @@ Draw read_draw(const Context& cx, const toml::table& t, std::size_t index) {
         if (!f->is_boolean()) cx.fail(*f, where + ": 'figure' must be true or false");
         d.figure = *f->value<bool>();
     }
+    if (const auto* n = t.get("stream")) {
+        d.stream = string(cx, *n, where + ": 'stream'");
+        if (d.stream.empty()) cx.fail(*n, where + ": 'stream' must not be empty");
+        if (d.kind == DrawKind::grid) cx.fail(*n, where + ": a grid draw is not random: it takes no 'stream'");
+    }
     return d;
 }
 
@@ -207,15 +212,56 @@ bool valid_stat(const std::string& s) {
     return percentile_of(s).has_value();
 }
 
+// A column or group name, or a non-empty array of them.
+std::vector<std::string> name_list(const Context& cx, const toml::node& n, const std::string& what) {
+    std::vector<std::string> out;
+    if (n.is_string()) {
+        out.push_back(string(cx, n, what));
+    } else if (const auto* arr = n.as_array(); arr && !arr->empty()) {
+        for (const auto& x : *arr) out.push_back(string(cx, x, what));
+    } else {
+        cx.fail(n, what + " must be a string or a non-empty array of strings");
+    }
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        check_target(cx, n, out[i], what);
+        for (std::size_t j = 0; j < i; ++j)
+            if (out[i] == out[j]) cx.fail(n, what + ": '" + out[i] + "' listed twice");
+    }
+    return out;
+}
+
+// kind = "detection": fault words and their declaration times, compared per run with what the run's case
+// expects (README.md of this folder).
+Metric read_detection(const Context& cx, const toml::table& t, const std::string& where, Metric m) {
+    only_keys(cx, t, where, {"name", "kind", "words", "times", "after", "period", "within"});
+    m.kind = MetricKind::detection;
+    m.words = name_list(cx, required(cx, t, "words", where), where + ": 'words'");
+    if (const auto* n = t.get("times")) {
+        m.times = name_list(cx, *n, where + ": 'times'");
+        if (m.times.size() != m.words.size())
+            cx.fail(*n, where + ": 'times' must name one column or group per entry of 'words'");
+    }
+    if (const auto* a = t.get("after")) m.after = number(cx, *a, where + ": 'after'");
+    m.period = number(cx, required(cx, t, "period", where), where + ": 'period'");
+    if (m.period <= 0.0) cx.fail(t, where + ": 'period' must be positive");
+    m.within = 60.0;
+    if (const auto* w = t.get("within")) m.within = number(cx, *w, where + ": 'within'");
+    if (m.within <= 0.0) cx.fail(t, where + ": 'within' must be positive");
+    m.stats = detection_cells;
+    m.figure_stat = "time";
+    return m;
+}
+
 Metric read_metric(const Context& cx, const toml::table& t, std::size_t index) {
     const std::string where = "metric " + std::to_string(index + 1);
-    only_keys(cx, t, where,
-              {"name", "kind", "a", "b", "column", "valid", "when", "after", "condition", "stats", "figure_stat"});
     Metric m;
     m.name = string(cx, required(cx, t, "name", where), where + ": 'name'");
     if (m.name.empty() || m.name.find_first_of(",\"\n. ") != std::string::npos)
         cx.fail(t, where + ": 'name' must be non-empty without commas, quotes, dots or spaces");
     const std::string kind = string(cx, required(cx, t, "kind", where), where + ": 'kind'");
+    if (kind == "detection") return read_detection(cx, t, where, std::move(m));
+    only_keys(cx, t, where,
+              {"name", "kind", "a", "b", "column", "valid", "when", "after", "condition", "stats", "figure_stat"});
     if (kind == "quaternion_angle" || kind == "vector_angle") {
         m.kind = kind == "quaternion_angle" ? MetricKind::quaternion_angle : MetricKind::vector_angle;
         m.a = string(cx, required(cx, t, "a", where), where + ": 'a'");
@@ -231,7 +277,7 @@ Metric read_metric(const Context& cx, const toml::table& t, std::size_t index) {
         if (t.contains("a") || t.contains("b")) cx.fail(t, where + ": 'a' and 'b' belong to the angle kinds");
         m.stats = {"mean", "min", "max", "final"};
     } else {
-        cx.fail(t, where + ": unknown kind '" + kind + "' (quaternion_angle, vector_angle, column)");
+        cx.fail(t, where + ": unknown kind '" + kind + "' (quaternion_angle, vector_angle, column, detection)");
     }
     if (const auto* v = t.get("valid")) {
         m.valid = string(cx, *v, where + ": 'valid'");
@@ -288,6 +334,112 @@ Metric read_metric(const Context& cx, const toml::table& t, std::size_t index) {
     return m;
 }
 
+// "component.variable" = value entries of a [set] table.
+std::vector<std::string> read_settings(const Context& cx, const toml::node& n, const std::string& where) {
+    const auto* t = n.as_table();
+    if (!t) cx.fail(n, where + " must be a table of \"component.variable\" = value");
+    std::vector<std::string> out;
+    for (const auto& [key, value] : *t) {
+        const std::string name(key.str());
+        check_target(cx, value, name, where);
+        out.push_back(name + "=" + scalar(cx, value, where + " " + name).text);
+    }
+    return out;
+}
+
+Case read_case(const Context& cx, const toml::table& t, std::size_t index) {
+    const std::string numbered = "case " + std::to_string(index + 1);
+    Case c;
+    c.name = string(cx, required(cx, t, "name", numbered), numbered + ": 'name'");
+    if (c.name.empty() || c.name.find_first_of(",\"\n ") != std::string::npos)
+        cx.fail(t, numbered + ": 'name' must be non-empty without commas, quotes or spaces");
+    const std::string where = "case '" + c.name + "'";
+    only_keys(cx, t, where, {"name", "control", "set", "draw", "onset", "expect"});
+    if (const auto* n = t.get("control")) {
+        if (!n->is_boolean()) cx.fail(*n, where + ": 'control' must be true or false");
+        c.control = *n->value<bool>();
+    }
+    if (const auto* n = t.get("set")) c.settings = read_settings(cx, *n, where + ": [case.set]");
+    if (const auto* n = t.get("draw")) {
+        const auto* arr = n->as_array();
+        if (!arr || !arr->is_array_of_tables()) cx.fail(*n, where + ": its draws are written [[case.draw]]");
+        for (std::size_t i = 0; i < arr->size(); ++i) {
+            c.draws.push_back(read_draw(cx, *arr->get(i)->as_table(), i, where + ": "));
+            if (c.draws.back().kind == DrawKind::grid)
+                cx.fail(*arr->get(i), where + ": draw " + std::to_string(i + 1) +
+                                          ": a case holds no grid draw (the cases are walked like a grid)");
+        }
+    }
+    if (const auto* n = t.get("onset")) {
+        c.onset = string(cx, *n, where + ": 'onset'");
+        check_target(cx, *n, c.onset, where + ": 'onset'");
+    }
+    if (const auto* n = t.get("expect")) {
+        const auto* table = n->as_table();
+        if (!table) cx.fail(*n, where + ": 'expect' must be a table of \"words\" = element(s)");
+        for (const auto& [key, value] : *table) {
+            Expectation e;
+            e.words = std::string(key.str());
+            check_target(cx, value, e.words, where + ": 'expect'");
+            const std::string what = where + ": 'expect' " + e.words;
+            if (value.is_string()) {
+                e.variable = string(cx, value, what);
+                check_target(cx, value, e.variable, what);
+            } else if (value.is_integer() || (value.is_array() && !value.as_array()->empty())) {
+                auto element = [&](const toml::node& x) {
+                    if (!x.is_integer() || *x.value<std::int64_t>() < 1 || *x.value<std::int64_t>() > 1'000'000)
+                        cx.fail(x, what + ": elements are integers from 1 (the first of the group) to 1000000");
+                    e.elements.push_back(static_cast<long>(*x.value<std::int64_t>()));
+                };
+                if (value.is_integer())
+                    element(value);
+                else
+                    for (const auto& x : *value.as_array()) element(x);
+            } else {
+                cx.fail(value, what + " must be a variable's name, an element number or a non-empty array of them");
+            }
+            c.expect.push_back(std::move(e));
+        }
+    }
+    if (c.control && (!c.onset.empty() || !c.expect.empty()))
+        cx.fail(t, where + ": the control expects no fault: it takes no 'onset' or 'expect'");
+    if (!c.expect.empty() && c.onset.empty())
+        cx.fail(t, where + ": 'expect' needs 'onset' (declarations count from the fault's onset)");
+    return c;
+}
+
+// What no single table can check: names unique across cases, one control, a variable either set or
+// drawn, expectations naming a detection metric's words.
+void check_cases(const Context& cx, const CampaignSpec& spec) {
+    std::set<std::string> names, top_drawn;
+    for (const auto& d : spec.draws) top_drawn.insert(d.target);
+    std::set<std::string> words;
+    for (const auto& m : spec.metrics) words.insert(m.words.begin(), m.words.end());
+    const Case* control = nullptr;
+    for (const auto& c : spec.cases) {
+        const std::string where = "case '" + c.name + "'";
+        if (!names.insert(c.name).second) cx.fail("two cases named '" + c.name + "'");
+        if (c.control) {
+            if (control) cx.fail("cases '" + control->name + "' and '" + c.name + "' are both the control");
+            control = &c;
+        }
+        std::set<std::string> drawn;
+        for (const auto& d : c.draws) {
+            if (top_drawn.contains(d.target))
+                cx.fail(where + ": '" + d.target + "' is also drawn for every run (a [[draw]] of the spec)");
+            if (!drawn.insert(d.target).second) cx.fail(where + ": '" + d.target + "' is drawn twice");
+        }
+        for (const auto& setting : c.settings) {
+            const std::string variable = setting.substr(0, setting.find('='));
+            if (drawn.contains(variable) || top_drawn.contains(variable))
+                cx.fail(where + ": '" + variable + "' is both set by the case and drawn");
+        }
+        for (const auto& e : c.expect)
+            if (!words.contains(e.words))
+                cx.fail(where + ": 'expect' names '" + e.words + "', which is no detection metric's 'words'");
+    }
+}
+
 std::filesystem::path relative_to(const std::filesystem::path& base, const std::string& p) {
     const std::filesystem::path path = p;
     return (path.is_absolute() ? path : base / path).lexically_normal();
@@ -306,7 +458,7 @@ CampaignSpec parse_spec(const std::string& text, const std::filesystem::path& fi
     }
     only_keys(cx, root, "campaign",
               {"system", "stop_time", "output_interval", "tolerance", "runs", "seed", "paired", "fmu_dirs", "output",
-               "set", "draw", "metric"});
+               "set", "draw", "metric", "case"});
     CampaignSpec spec;
     spec.file = file;
     const auto base = file.parent_path();
@@ -341,15 +493,7 @@ CampaignSpec parse_spec(const std::string& text, const std::filesystem::path& fi
     else
         spec.output = file.stem().string() + "_results";
 
-    if (const auto* n = root.get("set")) {
-        const auto* t = n->as_table();
-        if (!t) cx.fail(*n, "[set] must be a table of \"component.variable\" = value");
-        for (const auto& [key, value] : *t) {
-            const std::string name(key.str());
-            check_target(cx, value, name, "[set]");
-            spec.settings.push_back(name + "=" + scalar(cx, value, "[set] " + name).text);
-        }
-    }
+    if (const auto* n = root.get("set")) spec.settings = read_settings(cx, *n, "[set]");
     if (const auto* n = root.get("draw")) {
         const auto* arr = n->as_array();
         if (!arr || !arr->is_array_of_tables()) cx.fail(*n, "draws are written [[draw]]");
@@ -360,6 +504,12 @@ CampaignSpec parse_spec(const std::string& text, const std::filesystem::path& fi
         if (!arr || !arr->is_array_of_tables()) cx.fail(*n, "metrics are written [[metric]]");
         for (std::size_t i = 0; i < arr->size(); ++i)
             spec.metrics.push_back(read_metric(cx, *arr->get(i)->as_table(), i));
+    }
+    if (const auto* n = root.get("case")) {
+        const auto* arr = n->as_array();
+        if (!arr || !arr->is_array_of_tables()) cx.fail(*n, "cases are written [[case]]");
+        for (std::size_t i = 0; i < arr->size(); ++i) spec.cases.push_back(read_case(cx, *arr->get(i)->as_table(), i));
+        check_cases(cx, spec);
     }
     std::set<std::string> targets, names;
     for (const auto& d : spec.draws)

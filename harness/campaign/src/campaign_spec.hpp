@@ -31,9 +31,16 @@ struct Draw {
     std::vector<double> weights;                            // choice (empty: equal)
     double epoch_from = 0.0, epoch_to = 0.0;                // epoch: seconds since 1970-01-01T00:00:00 UTC
     bool figure = true;                                     // draw the metrics against it (false for a noise seed)
+    // The name its generator is seeded from (default: the target): draws of different targets that name
+    // one stream draw the same numbers in a scene (a fault's onset shared by every case).
+    std::string stream;
 };
 
-enum class MetricKind { quaternion_angle, vector_angle, column };
+enum class MetricKind { quaternion_angle, vector_angle, column, detection };
+
+// The cells of a detection metric, in table order (README.md of this folder says what each holds).
+inline const std::vector<std::string> detection_cells = {"detected", "time",   "isolated", "declared",
+                                                         "before",   "orbits", "which"};
 
 struct Metric {
     std::string name;
@@ -48,6 +55,30 @@ struct Metric {
     double condition_value = 0.0;
     std::vector<std::string> stats;  // mean, rms, min, max, final, count, pNN
     std::string figure_stat;         // the per-run value plotted against the drawn quantities
+    // detection: the fault words (each a column, or the prefix of a [1..n] group), the declaration times
+    // beside them (same shapes; empty = the output point where the word became nonzero), the period a
+    // declaration rate is given per (an orbit, s), and the summary's "within N s" of the onset.
+    std::vector<std::string> words, times;
+    double period = 0.0, within = 0.0;
+};
+
+// What a case expects a detection metric to declare: the elements of the word group `words`, given by
+// a variable of the run (its value is the element; 0: none) or listed.
+struct Expectation {
+    std::string words;
+    std::string variable;        // "" when listed
+    std::vector<long> elements;  // listed, 1-based
+};
+
+// One of the named alternatives a campaign cycles through (a fault type, or the no-fault control): its
+// own fixed settings and draws, and what its detection metrics are to find.
+struct Case {
+    std::string name;
+    bool control = false;               // the paired reference of every other case (at most one)
+    std::vector<std::string> settings;  // after the spec's [set], before the draws
+    std::vector<Draw> draws;
+    std::string onset;  // the variable holding the fault's onset (s), "" = none
+    std::vector<Expectation> expect;
 };
 
 struct CampaignSpec {
@@ -63,6 +94,7 @@ struct CampaignSpec {
     std::vector<std::string> settings;  // "component.variable=value", before the draws
     std::vector<Draw> draws;
     std::vector<Metric> metrics;
+    std::vector<Case> cases;  // empty: every run alike
 };
 
 // Limits, named in the errors that enforce them.

@@ -1,10 +1,12 @@
 // The values one run draws, from the campaign's base seed and the run's index alone: every draw has
 // its own generator seeded from (seed, index, target name), so a run can be replayed by itself, and
 // adding, removing or reordering draws changes no other draw. Grid draws are not random: the run
-// index walks their Cartesian product, the first grid draw varying fastest.
+// index walks their Cartesian product, the first grid draw varying fastest. A spec's cases are walked the
+// same way, before the grid draws: run k takes case k mod the number of cases.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,8 +28,14 @@ struct RunDraws {
 std::vector<DrawColumn> draw_columns(const CampaignSpec& spec);
 // The FMU variables a draw sets ("env.q0[1]", ...), to check them against the system before running.
 std::vector<std::string> drawn_variables(const Draw& draw);
-// Combinations of the grid draws (1 when there are none).
+// Combinations of the cases and the grid draws (1 when there are none); the cases vary fastest.
 long grid_size(const CampaignSpec& spec);
+long case_count(const CampaignSpec& spec);  // 1 when the spec has no cases
+// The case run `index` takes (none without cases): index mod the number of cases.
+std::optional<std::size_t> case_of(const CampaignSpec& spec, long index);
+// The run of the control case with the same scene and grid combination as run `index`, for a paired
+// spec with a control case.
+std::optional<long> paired_control(const CampaignSpec& spec, long index);
 
 RunDraws draw_run(const CampaignSpec& spec, long index);
 

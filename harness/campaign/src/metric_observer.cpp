@@ -1,6 +1,7 @@
 #include "metric_observer.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "analysis/angle_error.hpp"
 #include "campaign_error.hpp"
@@ -73,11 +74,67 @@ double MetricObserver::read(cosim::System& system, const Column& c) {
     }
 }
 
-MetricObserver::MetricObserver(const std::vector<Metric>& metrics, const cosim::System& system) {
+namespace {
+
+// A fault word (or time) column, or the prefix of a [1..n] group: the names of its elements.
+std::vector<std::string> word_group(const cosim::System& system, const std::string& name) {
+    const auto split = cosim::split_variable_name(name);
+    const auto& components = system.components();
+    for (const auto& c : components)
+        if (split && c.name == split->component) {
+            if (c.description().find_variable(split->variable)) return {name};
+            std::vector<std::string> out;
+            while (c.description().find_variable(split->variable + "[" + std::to_string(out.size() + 1) + "]"))
+                out.push_back(name + "[" + std::to_string(out.size() + 1) + "]");
+            if (!out.empty()) return out;
+        }
+    return {name};  // resolve() names what is missing
+}
+
+}  // namespace
+
+MetricObserver::MetricObserver(const std::vector<Metric>& metrics, const cosim::System& system, const Case* run_case) {
+    if (run_case && !run_case->onset.empty())
+        onset_ = resolve(system, run_case->onset, "onset of case " + run_case->name);
     for (const auto& m : metrics) {
-        Tracked t{&m, {}, {}, {}, {}, {}, {}, {}};
+        Tracked t{&m, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
         const int n = m.kind == MetricKind::quaternion_angle ? 4 : 3;
-        if (m.kind == MetricKind::column) {
+        if (m.kind == MetricKind::detection) {
+            std::vector<std::string> names;
+            for (std::size_t g = 0; g < m.words.size(); ++g) {
+                const auto words = word_group(system, m.words[g]);
+                t.group_start.push_back(names.size());
+                t.group_size.push_back(words.size());
+                for (const auto& w : words) {
+                    t.a.push_back(resolve(system, w, m.name));
+                    names.push_back(w);
+                }
+                if (!m.times.empty()) {
+                    const auto times = word_group(system, m.times[g]);
+                    if (times.size() != words.size())
+                        throw CampaignError("metric " + m.name + ": '" + m.times[g] + "' has " +
+                                            std::to_string(times.size()) + " columns where '" + m.words[g] + "' has " +
+                                            std::to_string(words.size()));
+                    for (const auto& c : times) t.times.push_back(resolve(system, c, m.name));
+                }
+                if (!run_case) continue;
+                for (const auto& e : run_case->expect) {
+                    if (e.words != m.words[g]) continue;
+                    if (!e.variable.empty()) {
+                        t.expect_variables.emplace_back(
+                            g, resolve(system, e.variable, "expect of case " + run_case->name));
+                        continue;
+                    }
+                    for (long k : e.elements) {
+                        if (k > static_cast<long>(words.size()))
+                            throw CampaignError("case " + run_case->name + ": 'expect' element " + std::to_string(k) +
+                                                " of '" + e.words + "', which has " + std::to_string(words.size()));
+                        t.expected.push_back(t.group_start[g] + static_cast<std::size_t>(k - 1));
+                    }
+                }
+            }
+            t.detection.emplace(names);
+        } else if (m.kind == MetricKind::column) {
             t.a.push_back(resolve(system, m.a, m.name));
         } else {
             for (const auto& c : group(m.a, n)) t.a.push_back(resolve(system, c, m.name));
@@ -91,8 +148,31 @@ MetricObserver::MetricObserver(const std::vector<Metric>& metrics, const cosim::
 }
 
 void MetricObserver::sample(double t, cosim::System& system) {
+    if (first_) {
+        // The case's onset and expected elements are parameters: read once, at the first output point.
+        first_ = false;
+        if (onset_) onset_value_ = read(system, *onset_);
+        for (auto& k : tracked_)
+            for (const auto& [g, column] : k.expect_variables) {
+                const double v = read(system, column);
+                if (v == 0.0) continue;  // no element: none expected
+                const auto size = static_cast<double>(k.group_size[g]);
+                if (v != std::floor(v) || v < 1.0 || v > size)
+                    throw CampaignError("metric " + k.metric->name + ": the expected element " + cosim::format_real(v) +
+                                        " is not one of 1 to " + cosim::format_real(size) + " of '" +
+                                        k.metric->words[g] + "'");
+                k.expected.push_back(k.group_start[g] + static_cast<std::size_t>(v) - 1);
+            }
+    }
     for (auto& k : tracked_) {
         const Metric& m = *k.metric;
+        if (k.detection) {
+            std::vector<double> words, times;
+            for (const auto& c : k.a) words.push_back(read(system, c));
+            for (const auto& c : k.times) times.push_back(read(system, c));
+            k.detection->sample(t, words, times);
+            continue;
+        }
         // The change detector follows every output point, also those before `after` or while invalid,
         // so that a new estimate is recognised by comparison with the previous point.
         bool changed = true;
@@ -126,8 +206,17 @@ void MetricObserver::sample(double t, cosim::System& system) {
 
 std::vector<std::string> MetricObserver::cells() const {
     std::vector<std::string> out;
-    for (const auto& k : tracked_)
+    for (const auto& k : tracked_) {
+        if (k.detection) {
+            const Metric& m = *k.metric;
+            const DetectionOutcome o = k.detection->outcome(onset_value_, k.expected, m.after, m.period);
+            for (double x : {o.detected, o.time, o.isolated, o.declared, o.before, o.orbits})
+                out.push_back(cosim::format_real(x));
+            out.push_back(o.which);
+            continue;
+        }
         for (const auto& s : k.metric->stats) out.push_back(cosim::format_real(statistic(s, k.values)));
+    }
     return out;
 }
 

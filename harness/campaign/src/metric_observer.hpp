@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "campaign_spec.hpp"
+#include "detection.hpp"
 #include "engine/observer.hpp"
 
 namespace campaign {
@@ -22,8 +23,9 @@ std::vector<std::string> metric_columns(const CampaignSpec& spec);
 
 class MetricObserver : public cosim::Observer {
 public:
-    // Throws CampaignError naming a column the system does not have or that is not numeric.
-    MetricObserver(const std::vector<Metric>& metrics, const cosim::System& system);
+    // Throws CampaignError naming a column the system does not have or that is not numeric. `run_case`:
+    // the case the run takes (its onset and expectations for the detection metrics), or none.
+    MetricObserver(const std::vector<Metric>& metrics, const cosim::System& system, const Case* run_case = nullptr);
     void sample(double t, cosim::System& system) override;
     // One cell per metric_columns() entry (round-trip text; "nan" where a metric sampled nothing).
     std::vector<std::string> cells() const;
@@ -39,11 +41,21 @@ private:
         std::optional<Column> valid, when, condition;
         std::optional<double> last_when;
         std::vector<double> values;
+        // detection: the words and times of every element, what the case expects (each a column whose
+        // value is an element of a group, or fixed elements), read at the first output point.
+        std::vector<Column> times;
+        std::vector<std::size_t> group_start, group_size;
+        std::vector<std::pair<std::size_t, Column>> expect_variables;  // group, column
+        std::vector<std::size_t> expected;
+        std::optional<DetectionTracker> detection;
     };
     static Column resolve(const cosim::System& system, const std::string& name, const std::string& metric);
     static double read(cosim::System& system, const Column& c);
 
     std::vector<Tracked> tracked_;
+    std::optional<Column> onset_;
+    std::optional<double> onset_value_;
+    bool first_ = true;
 };
 
 }  // namespace campaign

@@ -95,6 +95,141 @@ void write_data(const std::filesystem::path& file, const std::string& text) {
     if (!out) throw CampaignError("cannot write " + file.string());
 }
 
+// A number as the summary writes it ("–" for none).
+std::string figure(double x) {
+    if (!std::isfinite(x)) return "–";
+    std::ostringstream cell;
+    cell << std::setprecision(4) << x;
+    return cell.str();
+}
+
+// The rows of each case (all rows under one name "all runs" when the spec has none), failed runs left out.
+std::vector<std::pair<std::string, std::vector<const std::vector<std::string>*>>> rows_by_case(
+    const CampaignSpec& spec, const ResultRows& table) {
+    const std::size_t status = table.header.size() - 2;
+    std::vector<std::pair<std::string, std::vector<const std::vector<std::string>*>>> out;
+    if (spec.cases.empty()) out.emplace_back("all runs", std::vector<const std::vector<std::string>*>{});
+    for (const auto& c : spec.cases) out.emplace_back(c.name, std::vector<const std::vector<std::string>*>{});
+    const std::size_t k = spec.cases.empty() ? 0 : table.column("case");
+    for (const auto& row : table.rows) {
+        if (row[status] == "failed") continue;
+        for (auto& [name, rows] : out)
+            if (spec.cases.empty() || row[k] == name) rows.push_back(&row);
+    }
+    return out;
+}
+
+// Per detection metric, one row per case: how often and how fast the fault was declared, whether the
+// right element was, which words were declared, and the false alarms.
+void write_detection(std::ostream& md, const CampaignSpec& spec, const ResultRows& table) {
+    for (const auto& m : spec.metrics) {
+        if (m.kind != MetricKind::detection) continue;
+        auto col = [&](const char* cell) { return table.column(m.name + "." + cell); };
+        const std::size_t detected = col("detected"), time = col("time"), isolated = col("isolated"),
+                          declared = col("declared"), before = col("before"), orbits = col("orbits"),
+                          which = col("which");
+        md << "\n## Detection: " << m.name << "\n\n"
+           << "Per case over its finished runs: detected (a declaration at or after the onset), the time from the "
+              "onset to the first declaration, isolated right (exactly the expected elements declared after the "
+              "onset), the words declared (word: runs), the declarations per period of "
+           << figure(m.period) << " s over the whole run (from " << figure(m.after)
+           << " s) in a case without an onset (the control's false alarms: declarations in periods), and the "
+              "declarations before the onset in a case with one.\n\n"
+           << "| case | runs | detected | time to detect median / p95 / max (s) | within " << figure(m.within)
+           << " s | isolated right | words declared | declarations per period | before the onset |\n"
+           << "|---|---|---|---|---|---|---|---|---|\n";
+        for (const auto& [name, rows] : rows_by_case(spec, table)) {
+            const Case* c = nullptr;
+            for (const auto& x : spec.cases)
+                if (x.name == name) c = &x;
+            const bool has_onset = c && !c->onset.empty();
+            long n = 0, hits = 0, right = 0, within = 0;
+            double count = 0.0, span = 0.0, early = 0.0;
+            std::vector<double> times;
+            std::map<std::string, long> words;
+            for (const auto* row : rows) {
+                ++n;
+                hits += number_in((*row)[detected]).value_or(0.0) == 1.0;
+                right += number_in((*row)[isolated]).value_or(0.0) == 1.0;
+                if (const auto t = number_in((*row)[time])) {
+                    times.push_back(*t);
+                    within += *t <= m.within;
+                }
+                count += number_in((*row)[declared]).value_or(0.0);
+                span += number_in((*row)[orbits]).value_or(0.0);
+                early += number_in((*row)[before]).value_or(0.0);
+                std::set<std::string> seen;  // each word once per run
+                std::istringstream items((*row)[which]);
+                for (std::string item; items >> item;) seen.insert(item.substr(item.rfind('=') + 1));
+                for (const auto& w : seen) ++words[w];
+            }
+            std::sort(times.begin(), times.end());
+            std::string declared_words;
+            for (const auto& [w, runs] : words)
+                declared_words += (declared_words.empty() ? "" : ", ") + w + ": " + std::to_string(runs);
+            md << "| " << name << " | " << n << " | " << hits << " | "
+               << (times.empty() ? std::string("–")
+                                 : figure(percentile(times, 50)) + " / " + figure(percentile(times, 95)) + " / " +
+                                       figure(times.back()))
+               << " | " << (has_onset ? std::to_string(within) : "–") << " | " << right << " | "
+               << (declared_words.empty() ? "–" : declared_words) << " | "
+               << (!has_onset && span > 0 ? figure(count / span) + " (" + figure(count) + " in " + figure(span) + ")"
+                                          : std::string("–"))
+               << " | " << (has_onset ? figure(early) : "–") << " |\n";
+        }
+    }
+}
+
+// Each case against its paired control (the same scene and grid combination without the fault): for every
+// angle metric with a p95, the p95s side by side and their ratio per pair.
+void write_paired(std::ostream& md, const CampaignSpec& spec, const ResultRows& table) {
+    const auto control = std::find_if(spec.cases.begin(), spec.cases.end(), [](const Case& c) { return c.control; });
+    if (control == spec.cases.end()) return;
+    md << "\n## Against the paired control\n\n";
+    if (!spec.paired) {
+        md << "The spec is not `paired`: its runs share no scene with a control run, so no ratio is formed.\n";
+        return;
+    }
+    std::map<long, const std::vector<std::string>*> by_run;
+    const std::size_t status = table.header.size() - 2;
+    for (const auto& row : table.rows)
+        if (row[status] != "failed")
+            if (const auto i = number_in(row[run_column])) by_run[static_cast<long>(*i)] = &row;
+    md << "Per case, over the runs whose paired control (case " << control->name
+       << ", the same scene) finished: the median of the runs' p95 against the controls', and the ratio run / "
+          "control per pair (median / p95 / max).\n\n";
+    for (const auto& m : spec.metrics) {
+        if (m.kind == MetricKind::column || m.kind == MetricKind::detection) continue;
+        if (std::find(m.stats.begin(), m.stats.end(), "p95") == m.stats.end()) continue;
+        const std::size_t c = table.column(m.name + ".p95");
+        md << "\n### " << m.name
+           << ".p95\n\n| case | pairs | run p95 median | control p95 median | ratio median / "
+              "p95 / max |\n|---|---|---|---|---|\n";
+        for (const auto& [name, rows] : rows_by_case(spec, table)) {
+            if (name == control->name) continue;
+            std::vector<double> runs, controls, ratios;
+            for (const auto* row : rows) {
+                const auto i = number_in((*row)[run_column]);
+                const auto pair = i ? paired_control(spec, static_cast<long>(*i)) : std::nullopt;
+                const auto other = pair ? by_run.find(*pair) : by_run.end();
+                if (other == by_run.end()) continue;
+                const auto a = number_in((*row)[c]), b = number_in((*other->second)[c]);
+                if (!a || !b || *b <= 0.0) continue;
+                runs.push_back(*a);
+                controls.push_back(*b);
+                ratios.push_back(*a / *b);
+            }
+            for (auto* v : {&runs, &controls, &ratios}) std::sort(v->begin(), v->end());
+            md << "| " << name << " | " << ratios.size() << " | " << figure(percentile(runs, 50)) << " | "
+               << figure(percentile(controls, 50)) << " | "
+               << (ratios.empty() ? std::string("–")
+                                  : figure(percentile(ratios, 50)) + " / " + figure(percentile(ratios, 95)) + " / " +
+                                        figure(ratios.back()))
+               << " |\n";
+        }
+    }
+}
+
 }  // namespace
 
 std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir, const CampaignSpec& spec,
@@ -103,7 +238,7 @@ std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir
     TemporaryFiles temporary;
     const auto columns = draw_columns(spec);
     for (const auto& m : spec.metrics) {
-        if (m.kind == MetricKind::column) continue;
+        if (m.kind == MetricKind::column || m.kind == MetricKind::detection) continue;
         // CDF over runs of each of the metric's per-run statistics.
         const auto png = dir / ("cdf_" + file_name(m.name) + ".png");
         std::string plots;
@@ -132,20 +267,18 @@ std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir
         }
         for (const auto& f : data_files) std::filesystem::remove(f);
 
-        // The same distribution split by the values of the first grid draw (the compared designs).
-        if (const auto grid = std::find_if(spec.draws.begin(), spec.draws.end(),
-                                           [](const Draw& d) { return d.kind == DrawKind::grid; });
-            grid != spec.draws.end()) {
+        // The same distribution split by the values of the first grid draw (the compared designs), and by
+        // case where the spec has cases.
+        auto split_cdf = [&](const std::string& column, const std::vector<std::string>& labels) {
             const std::string stat_column = m.name + "." + m.figure_stat;
-            const std::size_t g = table.column(grid->target), y = table.column(stat_column),
-                              status = table.header.size() - 2;
-            const auto by = dir / ("cdf_" + file_name(m.name) + "_by_" + file_name(grid->target) + ".png");
+            const std::size_t g = table.column(column), y = table.column(stat_column), status = table.header.size() - 2;
+            const auto by = dir / ("cdf_" + file_name(m.name) + "_by_" + file_name(column) + ".png");
             std::string lines;
             std::vector<std::filesystem::path> files;
-            for (const auto& value : grid->values) {
+            for (const auto& label : labels) {
                 std::vector<double> values;
                 for (const auto& row : table.rows)
-                    if (row[status] != "failed" && row[g] == value.text)
+                    if (row[status] != "failed" && row[g] == label)
                         if (const auto v = number_in(row[y])) values.push_back(*v);
                 if (values.empty()) continue;
                 std::sort(values.begin(), values.end());
@@ -153,21 +286,33 @@ std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir
                 for (std::size_t i = 0; i < values.size(); ++i)
                     text << cosim::format_real(values[i]) << ' '
                          << static_cast<double>(i + 1) / static_cast<double>(values.size()) << '\n';
-                files.push_back(dir / ("cdf_by_" + file_name(m.name) + "_" + file_name(value.text) + ".dat"));
+                files.push_back(dir / ("cdf_by_" + file_name(m.name) + "_" + file_name(label) + ".dat"));
                 temporary.files.push_back(files.back());
                 write_data(files.back(), text.str());
                 lines += std::string(lines.empty() ? "plot " : ", ") +
                          gnuplot_string(files.back().filename().string()) + " using 1:2 with steps lw 2 title " +
-                         gnuplot_string(value.text);
+                         gnuplot_string(label);
             }
             if (!lines.empty()) {
-                if (run_gnuplot(preamble(by, stat_column + " by " + grid->target + ": distribution over runs",
-                                         "degrees", "fraction of runs") +
+                if (run_gnuplot(preamble(by, stat_column + " by " + column + ": distribution over runs", "degrees",
+                                         "fraction of runs") +
                                     "set yrange [0:1]\n" + lines + "\n",
                                 by))
                     written.push_back(by);
             }
             for (const auto& f : files) std::filesystem::remove(f);
+        };
+        if (const auto grid = std::find_if(spec.draws.begin(), spec.draws.end(),
+                                           [](const Draw& d) { return d.kind == DrawKind::grid; });
+            grid != spec.draws.end()) {
+            std::vector<std::string> labels;
+            for (const auto& value : grid->values) labels.push_back(value.text);
+            split_cdf(grid->target, labels);
+        }
+        if (!spec.cases.empty()) {
+            std::vector<std::string> labels;
+            for (const auto& c : spec.cases) labels.push_back(c.name);
+            split_cdf("case", labels);
         }
 
         // The metric's figure statistic against each drawn quantity; text values as categories.
@@ -249,7 +394,7 @@ void write_summary(const std::filesystem::path& file, const CampaignSetup& setup
     // Runs that finished without one valid sample of a metric (an orbit started in eclipse, a filter that
     // never converged): counted and said, since their empty cells leave them out of its statistics.
     for (const auto& m : spec.metrics) {
-        if (m.kind == MetricKind::column) continue;
+        if (m.kind == MetricKind::column || m.kind == MetricKind::detection) continue;
         const std::size_t c = table.column(m.name + "." + m.stats.front());
         long finished = 0, empty = 0;
         for (const auto& row : table.rows) {
@@ -266,6 +411,7 @@ void write_summary(const std::filesystem::path& file, const CampaignSetup& setup
     auto metrics_table = [&](const std::function<bool(const std::vector<std::string>&)>& keep) {
         md << "| column | runs | mean | min | p5 | p50 | p95 | max |\n|---|---|---|---|---|---|---|---|\n";
         for (const auto& name : metric_columns(spec)) {
+            if (name.ends_with(".which")) continue;  // a detection's text: in its own table below
             const std::size_t c = table.column(name);
             std::vector<double> v;
             for (const auto& row : table.rows)
@@ -297,6 +443,18 @@ void write_summary(const std::filesystem::path& file, const CampaignSetup& setup
             metrics_table([&](const std::vector<std::string>& row) { return row[g] == value.text; });
         }
     }
+    // Each case apart, as a grid value.
+    if (!spec.cases.empty()) {
+        const std::size_t k = table.column("case");
+        for (const auto& c : spec.cases) {
+            const long runs =
+                std::count_if(table.rows.begin(), table.rows.end(), [&](const auto& row) { return row[k] == c.name; });
+            md << "\n### case = " << c.name << " (" << runs << " runs)\n\n";
+            metrics_table([&](const std::vector<std::string>& row) { return row[k] == c.name; });
+        }
+    }
+    write_detection(md, spec, table);
+    write_paired(md, spec, table);
     if (failed > 0) {
         md << "\n## Failed runs\n\n| run | message |\n|---|---|\n";
         long listed = 0;
