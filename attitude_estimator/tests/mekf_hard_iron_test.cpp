@@ -30,9 +30,9 @@ Eigen::Matrix3d matrix_from(const Quaternion<T>& q) {
 }
 
 struct Case {
-    Eigen::Vector3d omega{0.02, -0.012, 0.016};      // rad/s, a slow LEO tumble
+    Eigen::Vector3d omega{0.02, -0.012, 0.016};         // rad/s, a slow LEO tumble
     Eigen::Vector3d hard_iron{1.0e-6, 1.0e-6, 7.1e-6};  // T, body-fixed (leo_orbit's calibration found this)
-    Eigen::Vector3d offset{0.2e-6, -0.1e-6, 0.1e-6};   // T, the sensor's own, flips with the polarity
+    Eigen::Vector3d offset{0.2e-6, -0.1e-6, 0.1e-6};    // T, the sensor's own, flips with the polarity
     double calibrated_from = 400.0;                     // s: from here the field comes calibrated (b taken out)
     double duration = 600.0;                            // s, 20 Hz
 };
