@@ -158,6 +158,11 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.parameter("filter_mag_sigma_calibrated", &D::filter_mag_sigma_calibrated, "T",
                 "mekf: filter_mag_sigma once the in-flight magnetometer calibration applies (0 = filter_mag_sigma)")
         .range(0.0, 1e-4);
+    t.parameter("filter_mag_hard_iron", &D::filter_mag_hard_iron, "T",
+                "mekf: 1-sigma per axis of the spacecraft's own field at the magnetometer (the uplinked prior of its "
+                "hard iron) until the in-flight calibration applies; the offset state then estimates it fixed in "
+                "body axes (0 = not modelled)")
+        .range(0.0, 1e-4);
     t.parameter("filter_rate_noise", &D::filter_rate_noise, "rad/s",
                 "mekf: 1-sigma unpredictable change of the body rate over 1 s (a random walk: it grows as the "
                 "square root of time; the rate random-walk density in rad/s per root second)")

@@ -91,6 +91,7 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
     m.sun_correlation_time = static_cast<T>(d.filter_sun_correlation[method]);
     m.mag_ref_sigma = static_cast<T>(d.filter_mag_ref_sigma);
     m.mag_sigma_calibrated = static_cast<T>(d.filter_mag_sigma_calibrated);
+    m.mag_hard_iron_sigma = static_cast<T>(d.filter_mag_hard_iron);
     m.mag_sigma = static_cast<T>(d.filter_mag_sigma);
     m.rate_noise = static_cast<T>(d.filter_rate_noise);
     m.attitude_noise = static_cast<T>(d.filter_attitude_noise);

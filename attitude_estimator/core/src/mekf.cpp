@@ -157,6 +157,20 @@ bool finite(const MekfState<T>& s) {
     return true;
 }
 
+// Whether the offset state holds the spacecraft's own field, fixed in body axes (MekfConfig::
+// mag_hard_iron_sigma: before the in-flight calibration applies), rather than the sensor's offset left by
+// the set/reset estimate, whose sign follows the polarity.
+template <class T>
+bool holds_hard_iron(const MekfState<T>& s, const MekfConfig<T>& c) noexcept {
+    return c.mag_hard_iron_sigma > T(0) && s.mag_calibrated == 0;
+}
+
+// The offset state's initial 1σ per axis: the hard iron's prior while it holds the hard iron.
+template <class T>
+T offset_prior_sigma(const MekfState<T>& s, const MekfConfig<T>& c) noexcept {
+    return holds_hard_iron(s, c) ? c.mag_hard_iron_sigma : c.init_offset_sigma;
+}
+
 // The field's correction changed (the in-flight calibration started or stopped applying): the offset state
 // holds what the old field needed, which may be the hard iron the calibration now takes out (a constant
 // field the polarity-following state can only hold by refusing the other polarity's readings). It starts
@@ -168,7 +182,8 @@ void restart_offset(MekfState<T>& s, const MekfConfig<T>& c) noexcept {
         s.mag_offset[static_cast<std::size_t>(i)] = T(0);
         p.row(kMekfOffset + i).setZero();
         p.col(kMekfOffset + i).setZero();
-        p(kMekfOffset + i, kMekfOffset + i) = c.init_offset_sigma * c.init_offset_sigma;
+        const T sigma = offset_prior_sigma(s, c);
+        p(kMekfOffset + i, kMekfOffset + i) = sigma * sigma;
     }
     store_p<T>(s, p);
 }
@@ -187,7 +202,8 @@ void mekf_start(MekfState<T>& s, const Quaternion<T>& q, const Vec3<T>& omega, T
     for (int i = 0; i < 3; ++i) {
         p(kMekfAttitude + i, kMekfAttitude + i) = sa * sa;
         p(kMekfRate + i, kMekfRate + i) = sw * sw;
-        if (c.estimate_offset) p(kMekfOffset + i, kMekfOffset + i) = c.init_offset_sigma * c.init_offset_sigma;
+        const T so = offset_prior_sigma(s, c);
+        if (c.estimate_offset) p(kMekfOffset + i, kMekfOffset + i) = so * so;
     }
     if (c.estimate_scale) p(kMekfScale, kMekfScale) = c.init_scale_sigma * c.init_scale_sigma;
     store_p<T>(s, p);
@@ -374,11 +390,13 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
     }
     if (in.mag_valid) {
         const std::int32_t calibrated = in.mag_calibrated ? 1 : 0;
-        if (calibrated != s.mag_calibrated && c.estimate_offset) restart_offset(s, c);
+        const bool changed = calibrated != s.mag_calibrated;
         s.mag_calibrated = calibrated;
+        if (changed && c.estimate_offset) restart_offset(s, c);
         MekfConfig<T> mag_config = c;
         if (in.mag_calibrated && c.mag_sigma_calibrated > T(0)) mag_config.mag_sigma = c.mag_sigma_calibrated;
-        result.mag = mekf_update_field(s, in.mag_ref, in.mag_body, in.polarity, mag_config, in.mag_axes);
+        const T polarity = holds_hard_iron(s, c) ? T(1) : in.polarity;
+        result.mag = mekf_update_field(s, in.mag_ref, in.mag_body, polarity, mag_config, in.mag_axes);
         ++offered;
         accepted += result.mag.accepted;
     }

@@ -47,6 +47,13 @@ struct MekfConfig {
     // an uncalibrated HMC2003 carries its 0.3 % cross-axis coupling (0.1 µT), a calibrated one little more
     // than its 12-bit steps (0.12 µT / √12).
     T mag_sigma_calibrated = T(0);
+    // The spacecraft's own field at the sensor before the in-flight calibration applies (the uplinked prior
+    // of its hard iron, 1σ per axis, T; 0: not modelled). Fixed in body axes, it is no white noise: weighed
+    // as one, thousands of readings pin the attitude to a field that is several µT off (NEES/dof 4 over the
+    // first half hour of leo_orbit). With it, the offset state holds that body-fixed field (its sign no
+    // longer follows the polarity) from this prior until the calibration applies, so that the filter
+    // estimates it with the attitude and the covariance carries what is not yet known of it.
+    T mag_hard_iron_sigma = T(0);
     // --- initial uncertainty (at the Q-method initialisation)
     T init_attitude_sigma = T(0.05);  // rad, per axis
     T init_rate_sigma = T(0.02);      // rad/s, per axis, after the two-sample rate
@@ -73,6 +80,7 @@ struct MekfState {
     Quaternion<T> q{};                             // attitude estimate, scalar-last, A(q) maps inertial to body
     Vec3<T> omega{};                               // rad/s, body rate
     Vec3<T> mag_offset{};                          // T: after polarity p a reading is A B_ref + p·mag_offset
+                                                   // (+ mag_offset, body-fixed, while the hard iron is held)
     T panel_scale = T(0);                          // ε: face currents are (1 + ε) × the nominal normalization
     std::array<T, kMekfStates * kMekfStates> p{};  // error covariance, row-major
     // 0: nothing yet; 1: one single-frame attitude held (q_first at t_first), waiting for a second one
