@@ -79,7 +79,7 @@ void face_tests(FaultDetectionState<T>& s, const FaultObservation<T>& o, const F
         Outcome deficit = Outcome::not_applicable, excess = Outcome::not_applicable, stuck = Outcome::not_applicable;
         if (o.predicted && o.response != nullptr) {
             const T f = irradiance_without(r, predicted, excluded, k, c.others_min_predicted);
-            if (f >= c.others_min_irradiance) {
+            if (f >= c.others_min_irradiance && !o.near_shadow) {
                 // Two bars, either failing fails: far below a well-lit prediction (absolute margin), or a small
                 // fraction of a prediction low in the sun once the calibrated attitude makes that trustworthy.
                 const T expected = f * predicted[k];
@@ -143,20 +143,19 @@ template void face_tests(FaultDetectionState<double>&, const FaultObservation<do
 namespace attitude_estimator {
 
 template <class T>
-bool deep_umbra(const Vec3<T>& position_km, const Vec3<T>& sun_unit, T margin_km) noexcept {
+T shadow_depth_km(const Vec3<T>& position_km, const Vec3<T>& sun_unit) noexcept {
     constexpr T kEarthRadiusKm = T(6378.137);
     const T along = position_km[0] * sun_unit[0] + position_km[1] * sun_unit[1] + position_km[2] * sun_unit[2];
-    if (!(along < T(0))) return false;  // on the sun's side (or no position)
+    if (!(along < T(0))) return T(-1e9);  // on the sun's side (or no position)
     T off2 = T(0);
     for (std::size_t i = 0; i < 3; ++i) {
         const T d = position_km[i] - along * sun_unit[i];
         off2 += d * d;
     }
-    const T inner = kEarthRadiusKm - margin_km;
-    return inner > T(0) && off2 < inner * inner;
+    return kEarthRadiusKm - std::sqrt(off2);
 }
 
-template bool deep_umbra(const Vec3<float>&, const Vec3<float>&, float) noexcept;
-template bool deep_umbra(const Vec3<double>&, const Vec3<double>&, double) noexcept;
+template float shadow_depth_km(const Vec3<float>&, const Vec3<float>&) noexcept;
+template double shadow_depth_km(const Vec3<double>&, const Vec3<double>&) noexcept;
 
 }  // namespace attitude_estimator

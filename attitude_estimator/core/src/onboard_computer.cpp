@@ -212,10 +212,11 @@ OnboardInputs<T> with_face_scales(const OnboardInputs<T>& in, const FaultDetecti
     return c;
 }
 
-// Panel faults: the spacecraft counts as deep in the umbra 100 km inside the Earth's shadow cylinder (the
-// umbra cone narrows by ~30 km at LEO; the penumbra is as wide again outside it).
+// Panel faults: the spacecraft counts as deep in the umbra 100 km inside the Earth's shadow cylinder, and near
+// the shadow from 100 km outside it (the umbra cone narrows by ~30 km at LEO, the penumbra is as wide outside
+// the cylinder; the rest for the atmosphere's dimming and the on-board orbit's error).
 template <class T>
-constexpr T kUmbraMarginKm = T(100);
+constexpr T kShadowMarginKm = T(100);
 
 // No attitude from this sample's single frame (a vector it needs is excluded).
 template <class T>
@@ -300,7 +301,9 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
     if (detecting) {
         FaultObservation<T> o = observe(s, in, settings, nominal, t, reading_polarity, out.sample, axes_out);
         o.mag_offset = offset;
-        o.umbra = deep_umbra(out.references.position, in.sun_ref, kUmbraMarginKm<T>);
+        const T depth = shadow_depth_km(out.references.position, in.sun_ref);
+        o.umbra = depth > kShadowMarginKm<T>;
+        o.near_shadow = depth > -kShadowMarginKm<T>;
         fault_detect(s.faults, o, settings.faults);
         // An excluded face that may be lit (predicted within 3° of its horizon or facing the sun, or no
         // prediction) leaves the sun vector without its light: no sun this sample. Dark, it changes nothing.

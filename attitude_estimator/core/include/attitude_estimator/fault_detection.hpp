@@ -113,7 +113,10 @@ struct FaultObservation {
     T field_ref_norm = T(0);        // T: |B_ref| (0: no reference)
     T sample_period = T(0.05);      // s
     const panel_response::Response<T>* response = nullptr;  // the panels' angular law
-    bool umbra = false;  // the on-board orbit and sun put the spacecraft deep in the Earth's umbra (panel faults)
+    // Panel faults, from the on-board orbit and sun: deep in the Earth's umbra (no face lit), or near or in its
+    // shadow (penumbra: the irradiance changes faster than the other faces can tell, no deficit or stuck test).
+    bool umbra = false;
+    bool near_shadow = false;
 };
 
 // Trivially copyable (part of the FMU state and of the firmware's memory).
@@ -167,11 +170,12 @@ std::uint8_t excluded_faces(const FaultDetectionState<T>& s) noexcept;
 template <class T>
 std::uint8_t excluded_axes(const FaultDetectionState<T>& s) noexcept;
 
-// The spacecraft deep in the Earth's umbra: behind the Earth along the sun and within
-// (Earth's radius − margin_km) of the Earth–sun line (a cylinder: at LEO the umbra cone narrows by ~30 km, the
-// margin holds it and the penumbra). position_km any Earth-centred inertial frame, sun_unit the same frame.
+// How deep the spacecraft is in the Earth's shadow cylinder (km): the Earth's radius less its distance from the
+// Earth–sun line when it is behind the Earth along the sun, so positive inside; −1e9 on the sun's side or with no
+// position (zero). At LEO the umbra cone is ~30 km narrower than the cylinder and the penumbra as wide outside it.
+// position_km any Earth-centred inertial frame, sun_unit the same frame.
 template <class T>
-bool deep_umbra(const Vec3<T>& position_km, const Vec3<T>& sun_unit, T margin_km) noexcept;
+T shadow_depth_km(const Vec3<T>& position_km, const Vec3<T>& sun_unit) noexcept;
 
 extern template void fault_detect(FaultDetectionState<float>&, const FaultObservation<float>&,
                                   const FaultDetectionConfig<float>&) noexcept;
@@ -181,7 +185,7 @@ extern template std::uint8_t excluded_faces(const FaultDetectionState<float>&) n
 extern template std::uint8_t excluded_faces(const FaultDetectionState<double>&) noexcept;
 extern template std::uint8_t excluded_axes(const FaultDetectionState<float>&) noexcept;
 extern template std::uint8_t excluded_axes(const FaultDetectionState<double>&) noexcept;
-extern template bool deep_umbra(const Vec3<float>&, const Vec3<float>&, float) noexcept;
-extern template bool deep_umbra(const Vec3<double>&, const Vec3<double>&, double) noexcept;
+extern template float shadow_depth_km(const Vec3<float>&, const Vec3<float>&) noexcept;
+extern template double shadow_depth_km(const Vec3<double>&, const Vec3<double>&) noexcept;
 
 }  // namespace attitude_estimator
