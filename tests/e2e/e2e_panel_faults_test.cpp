@@ -85,16 +85,18 @@ TEST(E2eLeoPanelFaults, AShadowIsCompensatedAndAHallOffsetIsDeclaredInTheUmbra) 
     const auto healthy = run({}, 1860.0);
     for (int k = 1; k <= 6; ++k) EXPECT_EQ(last(healthy, "est.fault_face", k), 0.0) << "face " << k;
     const double with = sunlit_p95(r, 1500.0, kEclipseStart), without = sunlit_p95(healthy, 1500.0, kEclipseStart);
-    std::printf("shadow on +x declared at %.1f s, scale %.3f; Hall offset on +y at %.1f s; sunlit p95 %.2f / %.2f deg\n",
-                last(r, "est.fault_face_time", 1), last(r, "est.fault_face_scale", 1),
-                last(r, "est.fault_face_time", 3), with, without);
+    std::printf(
+        "shadow on +x declared at %.1f s, scale %.3f; Hall offset on +y at %.1f s; sunlit p95 %.2f / %.2f deg\n",
+        last(r, "est.fault_face_time", 1), last(r, "est.fault_face_scale", 1), last(r, "est.fault_face_time", 3), with,
+        without);
     EXPECT_LT(with, 1.5 * without);
 }
 
 TEST(E2eLeoPanelFaults, AHallChannelStuckAtALitValueIsDeclaredWhenItsLightMoves) {
     // +x's Hall channel sticks at 1520 s, +x near the sun (0.72 A); the face first turns further in (its
     // predicted response moves less than 0.15), then away.
-    const auto r = run({"plant.fault_hall_face=1", "plant.fault_hall_mode=stuck", "plant.fault_hall_onset=1520"}, 1700.0);
+    const auto r =
+        run({"plant.fault_hall_face=1", "plant.fault_hall_mode=stuck", "plant.fault_hall_onset=1520"}, 1700.0);
     EXPECT_EQ(last(r, "est.fault_face", 1), 32.0);
     EXPECT_GE(last(r, "est.fault_face_time", 1), 1520.0);
     EXPECT_LE(last(r, "est.fault_face_time", 1), 1680.0);
