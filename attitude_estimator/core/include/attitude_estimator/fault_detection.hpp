@@ -18,6 +18,13 @@
 //    A failed strap is not excluded: the film stays in one polarity, so the computer reads the field in
 //    that polarity with the offset the set/reset estimate held before the test started failing;
 //  - field norm: |B| measured against |B_ref| (detection only: it names no axis).
+//  Panel faults (fault_detection_faces.cpp; docs/faults.md, "Panel faults"):
+//  - face ratio: once the calibration applies, a face low in the sun reading a small fraction of its
+//    expectation (an open string as soon as the face turns a little toward the sun); same bit as the deficit;
+//  - face scale: a confirmed deficit that read a steady fraction of the expectation (a shadow, degraded
+//    cells) is that fraction, compensated (the face read divided by it), not excluded;
+//  - face dark: current on a face while the on-board orbit puts the spacecraft in the umbra (a Hall offset);
+//  - face stuck: a reading that stands still while the predicted response moves (a stuck Hall channel).
 // Float or double, fixed sizes, no heap, no exceptions (the firmware runs it).
 #pragma once
 
