@@ -2,6 +2,7 @@
 // panels, each expectation worked out here from the cosine law and the definition of the test, never from
 // the code under test.
 #include "attitude_estimator/fault_detection.hpp"
+#include "attitude_estimator/onboard_computer.hpp"
 
 #include <cmath>
 
@@ -295,6 +296,41 @@ TYPED_TEST(EstimatorCoreFaceFaults, NearTheShadowAFaceWithAnOffsetDoesNotMakeThe
     }
     for (std::size_t k = 0; k < 6; ++k) EXPECT_EQ(s.face_word[k], 0u) << "face " << k;
     EXPECT_EQ(without.face_word[0], kFaultFaceDeficit);  // what the orbit's shadow prevents
+}
+
+TYPED_TEST(EstimatorCoreFaceFaults, TheComputerReadsAScaledFaceDividedByItsScale) {
+    using T = TypeParam;
+    OnboardSettings<T> settings;
+    settings.faults.enabled = true;
+    // Sun at (0.8, 0.48, 0.36) in body axes (the inputs' references: the identity attitude). Healthy: each lit
+    // face gives 0.84754 A × its cosine, and i_sh[k] = i_face[2k] − i_face[2k+1].
+    OnboardInputs<T> healthy;
+    healthy.sun_ref = {T(0.8), T(0.48), T(0.36)};
+    healthy.mag_ref = {T(2e-5), T(0), T(0)};
+    healthy.i_face = {T(0.8 * 0.84754), T(0), T(0.48 * 0.84754), T(0), T(0.36 * 0.84754), T(0)};
+    for (std::size_t k = 0; k < 3; ++k) healthy.i_sh[k] = healthy.i_face[2 * k] - healthy.i_face[2 * k + 1];
+    // Half of +x shadowed: its channel and the x Hall difference read half.
+    OnboardInputs<T> shadowed = healthy;
+    shadowed.i_face[0] *= T(0.5);
+    shadowed.i_sh[0] *= T(0.5);
+    OnboardState<T> a, b, c;
+    onboard_start(a, settings);
+    onboard_start(b, settings);
+    onboard_start(c, settings);
+    // b knows the face's scale (declared before), c does not.
+    b.faults.face_word[0] = kFaultFaceScale;
+    b.faults.face_scale[0] = T(0.5);
+    const auto ra = onboard_sample(a, healthy, settings, T(0));
+    const auto rb = onboard_sample(b, shadowed, settings, T(0));
+    const auto rc = onboard_sample(c, shadowed, settings, T(0));
+    ASSERT_TRUE(ra.sample.sun_valid);
+    ASSERT_TRUE(rb.sample.sun_valid);
+    // Read divided by 0.5, the shadowed face gives the healthy sun to the converters' quantization (12 bits
+    // over 1.2 A: 0.3 mA, doubled, against 0.85 A).
+    for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(rb.sample.sun_meas[i], ra.sample.sun_meas[i], 2e-3) << i;
+    EXPECT_EQ(rb.fault_face_scale[0], T(0.5));
+    // Without it the x component is off by far more.
+    EXPECT_GT(std::abs(rc.sample.sun_meas[0] - ra.sample.sun_meas[0]), T(0.05));
 }
 
 }  // namespace

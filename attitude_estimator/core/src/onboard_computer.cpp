@@ -204,7 +204,8 @@ template <class T>
 OnboardInputs<T> with_face_scales(const OnboardInputs<T>& in, const FaultDetectionState<T>& f) {
     OnboardInputs<T> c = in;
     for (std::size_t k = 0; k < 6; ++k) {
-        if (!(f.face_word[k] & kFaultFaceScale) || !(f.face_scale[k] > T(0))) continue;
+        // Only a face that is kept: an excluded one reads 0 (its light in i_sh drops the sun while it may be lit).
+        if (f.face_word[k] != kFaultFaceScale || !(f.face_scale[k] > T(0))) continue;
         const T extra = in.i_face[k] * (T(1) / f.face_scale[k] - T(1));
         c.i_face[k] += extra;
         c.i_sh[k / 2] += k % 2 == 0 ? extra : -extra;
