@@ -10,6 +10,12 @@ FaultDetectionConfig<T> fault_settings_from(const EstimatorData& d) {
                                    .confirm_time = static_cast<T>(d.detect_confirm_time),
                                    .face_min_response = static_cast<T>(d.detect_face_min_response),
                                    .face_deficit = static_cast<T>(d.detect_face_deficit),
+                                   .face_ratio_min_response = static_cast<T>(d.detect_face_ratio_min_response),
+                                   .face_ratio = static_cast<T>(d.detect_face_ratio),
+                                   .face_scale_min = static_cast<T>(d.detect_face_scale_min),
+                                   .face_dark_max = static_cast<T>(d.detect_face_dark_max),
+                                   .face_stuck_change = static_cast<T>(d.detect_face_stuck_change),
+                                   .face_stuck_tolerance = static_cast<T>(d.detect_face_stuck_tolerance),
                                    .face_excess = static_cast<T>(d.detect_face_excess),
                                    .others_min_irradiance = static_cast<T>(d.detect_irradiance_min),
                                    .others_min_predicted = T(0.3),
@@ -32,6 +38,7 @@ void store_fault_outputs(EstimatorData& d, const OnboardOutputs<T>& out) {
     }
     d.fault_mag_norm = static_cast<std::int32_t>(out.fault_mag_norm);
     d.fault_mag_norm_time = static_cast<double>(out.fault_mag_norm_time);
+    for (std::size_t k = 0; k < 6; ++k) d.fault_face_scale[k] = static_cast<double>(out.fault_face_scale[k]);
 }
 
 template FaultDetectionConfig<float> fault_settings_from(const EstimatorData&);

@@ -17,6 +17,29 @@ void declare_fault_variables(fmu::Table<EstimatorData>& t) {
     t.parameter("detect_face_deficit", &D::detect_face_deficit, "1",
                 "detect_faults: a face reading this far below its predicted relative response fails")
         .range(0.01, 1.0);
+    // Panel faults (helper panelfd).
+    t.parameter("detect_face_ratio_min_response", &D::detect_face_ratio_min_response, "1",
+                "detect_faults: once the in-flight calibration applies, a face is also tested where the irradiance "
+                "times its predicted relative response is at least this")
+        .range(0.01, 1.0);
+    t.parameter("detect_face_ratio", &D::detect_face_ratio, "1",
+                "detect_faults: ... and fails reading below this fraction of that (an open string reads 0)")
+        .range(0.0, 1.0);
+    t.parameter("detect_face_scale_min", &D::detect_face_scale_min, "1",
+                "detect_faults: a confirmed deficit whose mean measured/expected ratio is at least this is a lower "
+                "scale (shadow, degradation): the face is read divided by it (fault_face_scale), not excluded")
+        .range(0.0, 1.0);
+    t.parameter("detect_face_dark_max", &D::detect_face_dark_max, "1",
+                "detect_faults: a face reading more than this fraction of full sun while the on-board orbit puts "
+                "the spacecraft deep in the umbra fails (a Hall offset or a stuck channel)")
+        .range(0.001, 1.0);
+    t.parameter("detect_face_stuck_change", &D::detect_face_stuck_change, "1",
+                "detect_faults: a sunlit face whose reading does not move while its predicted response spans this "
+                "fails (a stuck Hall channel)")
+        .range(0.01, 1.0);
+    t.parameter("detect_face_stuck_tolerance", &D::detect_face_stuck_tolerance, "1",
+                "detect_faults: a reading within this (relative to full sun) of where it started has not moved")
+        .range(1e-5, 0.5);
     t.parameter("detect_face_excess", &D::detect_face_excess, "1",
                 "detect_faults: a face reading this far above its predicted relative response fails (albedo "
                 "adds up to about 0.4 on a face toward nadir)")
@@ -45,7 +68,14 @@ void declare_fault_variables(fmu::Table<EstimatorData>& t) {
         .range(1e-8, 1e-3);
     t.output("fault_face", &D::fault_face, "",
              "detect_faults: fault word per face (+x, -x, +y, -y, +z, -z), 0 healthy; bits 1 reads below the "
-             "prediction, 2 above it, 4 disagrees with its axis' i_sh; a declared face is excluded")
+             "prediction, 2 above it, 4 disagrees with its axis' i_sh, 8 reads a steady fraction of its light "
+             "(compensated by fault_face_scale, not excluded), 16 reads current in the umbra, 32 does not move "
+             "while its light does; every bit but 8 excludes the face")
+        .discrete()
+        .depends_on({});
+    t.output("fault_face_scale", &D::fault_face_scale, "1",
+             "detect_faults: the scale a face with bit 8 (reads a steady fraction of its light) is divided by; 1 "
+             "otherwise")
         .discrete()
         .depends_on({});
     t.output("fault_face_time", &D::fault_face_time, "s",

@@ -17,7 +17,8 @@ template <class T>
 std::uint8_t excluded_faces(const FaultDetectionState<T>& s) noexcept {
     std::uint8_t mask = 0;
     for (std::size_t k = 0; k < 6; ++k)
-        if (s.face_word[k] != 0) mask = static_cast<std::uint8_t>(mask | (1u << k));
+        // A face with a lower scale alone is compensated, not excluded.
+        if ((s.face_word[k] & ~kFaultFaceScale) != 0u) mask = static_cast<std::uint8_t>(mask | (1u << k));
     return mask;
 }
 

@@ -27,6 +27,40 @@ T irradiance_without(const std::array<T, 6>& measured, const std::array<T, 6>& p
 
 }  // namespace
 
+// A confirmed deficit: a dead face (open string, switch stuck off, Hall channel at 0) is excluded; one that
+// read a steady fraction of the light while failing (shadow, degradation) gets that fraction as its scale.
+template <class T>
+void declare_deficit(FaultDetectionState<T>& s, std::size_t k, const FaultDetectionConfig<T>& c, T t) {
+    const T n = s.deficit_ratio_count[k];
+    const T ratio = n > T(0) ? s.deficit_ratio_sum[k] / n : T(0);
+    if (ratio >= c.face_scale_min && ratio < T(1)) {
+        s.face_scale[k] *= ratio;
+        declare(s.face_word[k], s.face_time[k], kFaultFaceScale, t);
+    } else {
+        declare(s.face_word[k], s.face_time[k], kFaultFaceDeficit, t);
+    }
+    s.face_failing[k][0] = T(0);
+    s.deficit_ratio_sum[k] = T(0);
+    s.deficit_ratio_count[k] = T(0);
+}
+
+// The stuck test's outcome for face k reading r (compensated) where the response `expected` is predicted
+// (sunlit).
+template <class T>
+Outcome stuck_outcome(FaultDetectionState<T>& s, std::size_t k, T r, T expected, const FaultDetectionConfig<T>& c) {
+    if (!s.stuck_started[k] || std::abs(r - s.stuck_anchor[k]) > c.face_stuck_tolerance) {
+        s.stuck_started[k] = true;
+        s.stuck_anchor[k] = r;
+        s.stuck_low[k] = expected;
+        s.stuck_high[k] = expected;
+        return Outcome::pass;
+    }
+    s.stuck_low[k] = std::min(s.stuck_low[k], expected);
+    s.stuck_high[k] = std::max(s.stuck_high[k], expected);
+    if (s.stuck_anchor[k] < c.face_dark_max) return Outcome::not_applicable;  // dark: the deficit test's
+    return s.stuck_high[k] - s.stuck_low[k] >= c.face_stuck_change ? Outcome::fail : Outcome::not_applicable;
+}
+
 template <class T>
 void face_tests(FaultDetectionState<T>& s, const FaultObservation<T>& o, const FaultDetectionConfig<T>& c, T dt) {
     std::array<T, 6> predicted{};
@@ -36,22 +70,53 @@ void face_tests(FaultDetectionState<T>& s, const FaultObservation<T>& o, const F
             predicted[k] = panel_response::response_from_cos(*o.response, cos_beta);
         }
     }
+    // Each face's reading with its declared scale taken out (kFaultFaceScale).
+    std::array<T, 6> r{};
+    for (std::size_t k = 0; k < 6; ++k) r[k] = s.face_scale[k] > T(0) ? o.face_r[k] / s.face_scale[k] : o.face_r[k];
     const std::uint8_t excluded = excluded_faces(s);
     for (std::size_t k = 0; k < 6; ++k) {
         if (excluded >> k & 1u) continue;
-        Outcome deficit = Outcome::not_applicable, excess = Outcome::not_applicable;
+        Outcome deficit = Outcome::not_applicable, excess = Outcome::not_applicable, stuck = Outcome::not_applicable;
         if (o.predicted && o.response != nullptr) {
-            const T f = irradiance_without(o.face_r, predicted, excluded, k, c.others_min_predicted);
-            if (f >= c.others_min_irradiance && predicted[k] >= c.face_min_response)
-                deficit = o.face_r[k] < f * predicted[k] - c.face_deficit ? Outcome::fail : Outcome::pass;
+            const T f = irradiance_without(r, predicted, excluded, k, c.others_min_predicted);
+            if (f >= c.others_min_irradiance && !o.near_shadow) {
+                // Two bars, either failing fails: far below a well-lit prediction (absolute margin), or a small
+                // fraction of a prediction low in the sun once the calibrated attitude makes that trustworthy.
+                const T expected = f * predicted[k];
+                const bool high = predicted[k] >= c.face_min_response;
+                const bool low = o.field_calibrated && expected >= c.face_ratio_min_response;
+                if (high || low) {
+                    const bool fail =
+                        (high && r[k] < expected - c.face_deficit) || (low && r[k] < c.face_ratio * expected);
+                    deficit = fail ? Outcome::fail : Outcome::pass;
+                }
+                // On the prediction alone: the irradiance (the other faces' best ratio) jumps when one of
+                // them is faulty; in penumbra the reading moves and so passes.
+                stuck = stuck_outcome(s, k, r[k], predicted[k], c);
+                if (deficit == Outcome::pass) {
+                    s.deficit_ratio_sum[k] = T(0);
+                    s.deficit_ratio_count[k] = T(0);
+                } else if (deficit == Outcome::fail && expected >= c.others_min_predicted) {
+                    s.deficit_ratio_sum[k] += r[k] / expected;
+                    s.deficit_ratio_count[k] += T(1);
+                }
+            }
             // More than the full sun and albedo can give (at full irradiance: another face's fault must not
-            // lower the bar).
+            // lower the bar). On the reading as it is: a lower scale (a shadow) takes none of the albedo, so the
+            // compensated reading carries albedo / scale.
             excess = o.face_r[k] > predicted[k] + c.face_excess ? Outcome::fail : Outcome::pass;
         }
-        if (confirmed(s.face_failing[k][0], deficit, dt, c.confirm_time))
-            declare(s.face_word[k], s.face_time[k], kFaultFaceDeficit, o.t);
+        if (confirmed(s.face_failing[k][0], deficit, dt, c.confirm_time)) declare_deficit(s, k, c, o.t);
         if (confirmed(s.face_failing[k][1], excess, dt, c.confirm_time))
             declare(s.face_word[k], s.face_time[k], kFaultFaceExcess, o.t);
+        if (confirmed(s.stuck_failing[k], stuck, dt, c.confirm_time))
+            declare(s.face_word[k], s.face_time[k], kFaultFaceStuck, o.t);
+        // In the umbra nothing lights a face: current there is the Hall channel's own (offset, stuck).
+        const Outcome dark = !o.umbra                 ? Outcome::not_applicable
+                             : r[k] > c.face_dark_max ? Outcome::fail
+                                                      : Outcome::pass;
+        if (confirmed(s.dark_failing[k], dark, dt, c.confirm_time))
+            declare(s.face_word[k], s.face_time[k], kFaultFaceDark, o.t);
     }
     if (!o.bus_available) return;
     for (std::size_t axis = 0; axis < 3; ++axis) {
@@ -74,3 +139,23 @@ template void face_tests(FaultDetectionState<double>&, const FaultObservation<do
                          const FaultDetectionConfig<double>&, double);
 
 }  // namespace attitude_estimator::fault_detail
+
+namespace attitude_estimator {
+
+template <class T>
+T shadow_depth_km(const Vec3<T>& position_km, const Vec3<T>& sun_unit) noexcept {
+    constexpr T kEarthRadiusKm = T(6378.137);
+    const T along = position_km[0] * sun_unit[0] + position_km[1] * sun_unit[1] + position_km[2] * sun_unit[2];
+    if (!(along < T(0))) return T(-1e9);  // on the sun's side (or no position)
+    T off2 = T(0);
+    for (std::size_t i = 0; i < 3; ++i) {
+        const T d = position_km[i] - along * sun_unit[i];
+        off2 += d * d;
+    }
+    return kEarthRadiusKm - std::sqrt(off2);
+}
+
+template float shadow_depth_km(const Vec3<float>&, const Vec3<float>&) noexcept;
+template double shadow_depth_km(const Vec3<double>&, const Vec3<double>&) noexcept;
+
+}  // namespace attitude_estimator

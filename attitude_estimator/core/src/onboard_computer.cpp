@@ -197,6 +197,28 @@ FaultObservation<T> observe(const OnboardState<T>& s, const OnboardInputs<T>& in
     return o;
 }
 
+// Panel faults: a face declared reading a steady fraction of its light (kFaultFaceScale: a shadow over part of
+// it, degraded cells) is read divided by that fraction, and so is its share of the per-axis Hall difference
+// (i_sh[k] = i_face[2k] − i_face[2k+1]), so that every sun method keeps the face.
+template <class T>
+OnboardInputs<T> with_face_scales(const OnboardInputs<T>& in, const FaultDetectionState<T>& f) {
+    OnboardInputs<T> c = in;
+    for (std::size_t k = 0; k < 6; ++k) {
+        // Only a face that is kept: an excluded one reads 0 (its light in i_sh drops the sun while it may be lit).
+        if (f.face_word[k] != kFaultFaceScale || !(f.face_scale[k] > T(0))) continue;
+        const T extra = in.i_face[k] * (T(1) / f.face_scale[k] - T(1));
+        c.i_face[k] += extra;
+        c.i_sh[k / 2] += k % 2 == 0 ? extra : -extra;
+    }
+    return c;
+}
+
+// Panel faults: the spacecraft counts as deep in the umbra 100 km inside the Earth's shadow cylinder, and near
+// the shadow from 100 km outside it (the umbra cone narrows by ~30 km at LEO, the penumbra is as wide outside
+// the cylinder; the rest for the atmosphere's dimming and the on-board orbit's error).
+template <class T>
+constexpr T kShadowMarginKm = T(100);
+
 // No attitude from this sample's single frame (a vector it needs is excluded).
 template <class T>
 void drop_single_frame(SampleResult<T>& r) {
@@ -252,11 +274,12 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
     // The reading now at the inputs was taken in the polarity commanded at the previous sample; once the
     // strap is declared failed, in the polarity the film stayed in, with the offset from before the failure.
     const bool detecting = settings.faults.enabled;
+    const OnboardInputs<T> scaled_in = detecting ? with_face_scales(in, s.faults) : in;
     const bool strap_failed = detecting && s.faults.strap_failed;
     const T reading_polarity = strap_failed ? s.faults.strap_polarity : s.set_reset.polarity;
     const Vec3<T> offset = strap_failed ? s.faults.strap_offset : applied_offset(s.set_reset, settings.set_reset);
-    const SampleInputs<T> sample_in{.i_sh = in.i_sh,
-                                    .i_face = in.i_face,
+    const SampleInputs<T> sample_in{.i_sh = scaled_in.i_sh,
+                                    .i_face = scaled_in.i_face,
                                     .v_mag = in.v_mag,
                                     .v_mag_ref = in.v_mag_ref,
                                     .sun_ref = in.sun_ref,
@@ -279,6 +302,9 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
     if (detecting) {
         FaultObservation<T> o = observe(s, in, settings, nominal, t, reading_polarity, out.sample, axes_out);
         o.mag_offset = offset;
+        const T depth = shadow_depth_km(out.references.position, in.sun_ref);
+        o.umbra = depth > kShadowMarginKm<T>;
+        o.near_shadow = depth > -kShadowMarginKm<T>;
         fault_detect(s.faults, o, settings.faults);
         // An excluded face that may be lit (predicted within 3° of its horizon or facing the sun, or no
         // prediction) leaves the sun vector without its light: no sun this sample. Dark, it changes nothing.
@@ -308,6 +334,7 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
     out.fault_mag_axis_time = fd.axis_time;
     out.fault_mag_norm = fd.norm_word;
     out.fault_mag_norm_time = fd.norm_time;
+    out.fault_face_scale = fd.face_scale;
     if (settings.mag_calibration && out.sample.mag_reading_usable && axes_out == 0) {
         // Against the reference field's magnitude only: no attitude needed (the next sample applies it).
         const T ref =
@@ -328,7 +355,7 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
     out.mag_offset = strap_failed_now ? s.faults.strap_offset : applied_offset(s.set_reset, settings.set_reset);
     update_rates(s, settings, t, out.sample, out);
     if (settings.filter == FilterKind::mekf)
-        update_filter(s, in, settings, t, out.sample, nominal, reading_polarity, filter_mag_valid,
+        update_filter(s, scaled_in, settings, t, out.sample, nominal, reading_polarity, filter_mag_valid,
                       static_cast<std::uint8_t>(~axes_out & 7u), out);
     return out;
 }

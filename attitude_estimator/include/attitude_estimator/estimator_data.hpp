@@ -190,7 +190,15 @@ struct EstimatorData {
     double detect_flip_min_field = 15e-6;            // T: flip test where the predicted field along the axis is this
     double detect_flip_fraction = 0.25;              // 1: an axis flipping by less than this fraction of it fails
     double detect_norm_tolerance = 12e-6;            // T: | |B| − |B_ref| |
-    std::array<std::int32_t, 6> fault_face{};        // declared faults per face (kFaultFace* bits), 0: healthy
+    // Panel faults (helper panelfd): the ratio test for faces low in the sun (once the calibration applies).
+    double detect_face_ratio_min_response = 0.1;  // 1: tested where irradiance × predicted response is this
+    double detect_face_ratio = 0.3;               // 1: a face reading below this fraction of it fails
+    double detect_face_scale_min = 0.2;           // 1: a deficit reading at least this fraction is a lower scale
+    double detect_face_dark_max = 0.03;           // 1: most a face may read in the predicted umbra
+    double detect_face_stuck_change = 0.15;  // 1: a reading that does not move while the prediction spans this fails
+    double detect_face_stuck_tolerance = 0.003;            // 1: ... "does not move": within this of where it started
+    Faces fault_face_scale{1.0, 1.0, 1.0, 1.0, 1.0, 1.0};  // 1: a kFaultFaceScale face's scale (1: none)
+    std::array<std::int32_t, 6> fault_face{};              // declared faults per face (kFaultFace* bits), 0: healthy
     Faces fault_face_time{-1.0, -1.0, -1.0, -1.0, -1.0, -1.0};  // s, when declared (−1: never)
     std::array<std::int32_t, 3> fault_mag_axis{};               // per magnetometer axis (kFaultAxis* bits)
     Vec3d fault_mag_axis_time{-1.0, -1.0, -1.0};

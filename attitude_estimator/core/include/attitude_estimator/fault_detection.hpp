@@ -18,6 +18,13 @@
 //    A failed strap is not excluded: the film stays in one polarity, so the computer reads the field in
 //    that polarity with the offset the set/reset estimate held before the test started failing;
 //  - field norm: |B| measured against |B_ref| (detection only: it names no axis).
+//  Panel faults (fault_detection_faces.cpp; docs/faults.md, "Panel faults"):
+//  - face ratio: once the calibration applies, a face low in the sun reading a small fraction of its
+//    expectation (an open string as soon as the face turns a little toward the sun); same bit as the deficit;
+//  - face scale: a confirmed deficit that read a steady fraction of the expectation (a shadow, degraded
+//    cells) is that fraction, compensated (the face read divided by it), not excluded;
+//  - face dark: current on a face while the on-board orbit puts the spacecraft in the umbra (a Hall offset);
+//  - face stuck: a reading that stands still while the predicted response moves (a stuck Hall channel).
 // Float or double, fixed sizes, no heap, no exceptions (the firmware runs it).
 #pragma once
 
@@ -33,6 +40,12 @@ namespace attitude_estimator {
 inline constexpr std::uint32_t kFaultFaceDeficit = 1u;  // reads well below the predicted response
 inline constexpr std::uint32_t kFaultFaceExcess = 2u;   // reads well above it (more than albedo can add)
 inline constexpr std::uint32_t kFaultFaceBus = 4u;      // its axis' Hall current disagrees with the face pair
+// Panel faults (helper panelfd): a face reading a steady fraction of its light (shadow, degradation) is
+// compensated, not excluded (FaultDetectionState::face_scale); a Hall channel reading current in the Earth's
+// umbra (offset, stuck) or not moving while the light on it does (stuck) is excluded.
+inline constexpr std::uint32_t kFaultFaceScale = 8u;   // reads face_scale of the prediction: divided by it
+inline constexpr std::uint32_t kFaultFaceDark = 16u;   // reads current in the predicted umbra
+inline constexpr std::uint32_t kFaultFaceStuck = 32u;  // its reading does not move while the prediction does
 // Bits of a magnetometer axis' fault word.
 inline constexpr std::uint32_t kFaultAxisRail = 1u;    // at a rail of its converter
 inline constexpr std::uint32_t kFaultAxisNoFlip = 2u;  // does not flip with the set/reset polarity
@@ -50,7 +63,25 @@ struct FaultDetectionConfig {
     // eclipse, not deep in penumbra). The deficit test compares with the prediction times that irradiance.
     T face_min_response = T(0.4);
     T face_deficit = T(0.3);  // fail below (irradiance × predicted − this), relative to full sun
-    T face_excess = T(0.6);   // fail above (predicted + this): albedo adds at most ~0.4 on a nadir face
+    // Panel faults (issue 28, helper panelfd): the ratio test, a second deficit test for faces low in the sun.
+    // Once the in-flight magnetometer calibration applies (the filter's attitude then within about a degree), a
+    // face is also tested where irradiance × predicted is only face_ratio_min_response, and fails when it reads
+    // below face_ratio of that: an open string (0) is seen as soon as the face turns a little toward the sun.
+    T face_ratio_min_response = T(0.1);
+    T face_ratio = T(0.3);
+    // A confirmed deficit whose mean measured-to-expected ratio over its failing samples (those expected at
+    // others_min_predicted or more) is at least face_scale_min is a lower scale (a shadow over part of the face,
+    // degraded cells), not a dead face: declared kFaultFaceScale with that ratio, and the face read divided by it.
+    T face_scale_min = T(0.2);
+    // In the predicted umbra no face is lit (no sun, and the Earth below is dark): a face reading more than this
+    // (relative to full sun) fails the dark test.
+    T face_dark_max = T(0.03);
+    // Stuck test, in the sun: a reading that stays within face_stuck_tolerance (relative) of where it started
+    // while the predicted response spans face_stuck_change fails. A reading stuck below
+    // face_dark_max is left to the deficit test (an open string's).
+    T face_stuck_change = T(0.15);
+    T face_stuck_tolerance = T(0.003);
+    T face_excess = T(0.6);  // fail above (predicted + this): albedo adds at most ~0.4 on a nadir face
     T others_min_irradiance = T(0.5);
     T others_min_predicted = T(0.3);
     T bus_tolerance = T(0.02);  // A: |i_sh[k] − (i_face[2k] − i_face[2k+1])|
@@ -89,6 +120,10 @@ struct FaultObservation {
     T field_ref_norm = T(0);        // T: |B_ref| (0: no reference)
     T sample_period = T(0.05);      // s
     const panel_response::Response<T>* response = nullptr;  // the panels' angular law
+    // Panel faults, from the on-board orbit and sun: deep in the Earth's umbra (no face lit), or near or in its
+    // shadow (penumbra: the irradiance changes faster than the other faces can tell, no deficit or stuck test).
+    bool umbra = false;
+    bool near_shadow = false;
 };
 
 // Trivially copyable (part of the FMU state and of the firmware's memory).
@@ -116,6 +151,18 @@ struct FaultDetectionState {
     Vec3<T> strap_offset{};
     bool strap_failed = false;
     T strap_polarity = T(1);
+    // Panel faults (helper panelfd). The deficit test's mean measured-to-expected ratio (sum and count over
+    // its failing samples); the scale a kFaultFaceScale face is read divided by (1: none); the stuck test's
+    // window: the reading it started at and the range of the predicted response since.
+    std::array<T, 6> deficit_ratio_sum{};
+    std::array<T, 6> deficit_ratio_count{};
+    std::array<T, 6> face_scale{T(1), T(1), T(1), T(1), T(1), T(1)};
+    std::array<T, 6> stuck_anchor{};
+    std::array<T, 6> stuck_low{};
+    std::array<T, 6> stuck_high{};
+    std::array<bool, 6> stuck_started{};
+    std::array<T, 6> stuck_failing{};  // seconds failing: stuck and dark tests
+    std::array<T, 6> dark_failing{};
 };
 
 // One sample of every test that the observation allows; declares faults whose test has failed for
@@ -130,6 +177,13 @@ std::uint8_t excluded_faces(const FaultDetectionState<T>& s) noexcept;
 template <class T>
 std::uint8_t excluded_axes(const FaultDetectionState<T>& s) noexcept;
 
+// How deep the spacecraft is in the Earth's shadow cylinder (km): the Earth's radius less its distance from the
+// Earth–sun line when it is behind the Earth along the sun, so positive inside; −1e9 on the sun's side or with no
+// position (zero). At LEO the umbra cone is ~30 km narrower than the cylinder and the penumbra as wide outside it.
+// position_km any Earth-centred inertial frame, sun_unit the same frame.
+template <class T>
+T shadow_depth_km(const Vec3<T>& position_km, const Vec3<T>& sun_unit) noexcept;
+
 extern template void fault_detect(FaultDetectionState<float>&, const FaultObservation<float>&,
                                   const FaultDetectionConfig<float>&) noexcept;
 extern template void fault_detect(FaultDetectionState<double>&, const FaultObservation<double>&,
@@ -138,5 +192,7 @@ extern template std::uint8_t excluded_faces(const FaultDetectionState<float>&) n
 extern template std::uint8_t excluded_faces(const FaultDetectionState<double>&) noexcept;
 extern template std::uint8_t excluded_axes(const FaultDetectionState<float>&) noexcept;
 extern template std::uint8_t excluded_axes(const FaultDetectionState<double>&) noexcept;
+extern template float shadow_depth_km(const Vec3<float>&, const Vec3<float>&) noexcept;
+extern template double shadow_depth_km(const Vec3<double>&, const Vec3<double>&) noexcept;
 
 }  // namespace attitude_estimator

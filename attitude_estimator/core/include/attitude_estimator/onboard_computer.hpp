@@ -108,6 +108,7 @@ struct OnboardOutputs {
     std::array<T, 3> fault_mag_axis_time{T(-1), T(-1), T(-1)};
     std::uint32_t fault_mag_norm = 0;
     T fault_mag_norm_time = T(-1);
+    std::array<T, 6> fault_face_scale{T(1), T(1), T(1), T(1), T(1), T(1)};  // panel faults: kFaultFaceScale's scale
 };
 
 // Power-up: nothing remembered, the sensor set, and no pulse at the first sample (a host re-reads the

@@ -1,0 +1,337 @@
+// The panel side of the on-board fault detection (fault_detection_faces.cpp): hand-made scenes of cosine
+// panels, each expectation worked out here from the cosine law and the definition of the test, never from
+// the code under test.
+#include "attitude_estimator/fault_detection.hpp"
+#include "attitude_estimator/onboard_computer.hpp"
+
+#include <cmath>
+
+#include "test_support.hpp"
+
+namespace attitude_estimator::test {
+namespace {
+
+template <class T>
+class EstimatorCoreFaceFaults : public ::testing::Test {};
+TYPED_TEST_SUITE(EstimatorCoreFaceFaults, Scalars, ScalarName);
+
+constexpr double kPeriod = 0.05;  // s: 20 Hz, the bundled sample rate
+
+// The sun low on +y: body direction (x, y, 0.2) with y = 0.12 (or as given) and x = sqrt(1 − y² − 0.04)
+// (0.9724 for 0.12), cosine panels. Faces +x, +y, +z read their cosines; the others nothing.
+template <class T>
+struct LowScene {
+    panel_response::Response<T> cosine = panel_response::cosine<T>();
+    Vec3<T> sun{};
+    std::array<T, 6> r{};
+    T i_norm = T(0.84754);  // A at full sun
+    bool calibrated = true;
+
+    explicit LowScene(double y = 0.12) {
+        // x chosen so that |s| = 1 with z = 0.2: x = sqrt(1 − y² − 0.04).
+        const double x = std::sqrt(1.0 - y * y - 0.04);
+        sun = {T(x), T(y), T(0.2)};
+        r = {T(x), T(0), T(y), T(0), T(0.2), T(0)};
+    }
+
+    FaultObservation<T> observation(T t) const {
+        FaultObservation<T> o;
+        o.t = t;
+        o.sample_period = T(kPeriod);
+        o.response = &cosine;
+        o.predicted = true;
+        o.field_calibrated = calibrated;
+        o.sun_body = sun;
+        o.face_r = r;
+        for (std::size_t k = 0; k < 6; ++k) o.i_face[k] = r[k] * i_norm;
+        for (std::size_t k = 0; k < 3; ++k) o.i_sh[k] = o.i_face[2 * k] - o.i_face[2 * k + 1];
+        o.bus_available = true;
+        return o;
+    }
+};
+
+template <class T>
+FaultDetectionConfig<T> enabled() {
+    FaultDetectionConfig<T> c;
+    c.enabled = true;
+    return c;
+}
+
+// Face +y (index 2) reads `reading` (its Hall pair consistent) for n samples from t0.
+template <class T>
+void run_plus_y(FaultDetectionState<T>& s, const LowScene<T>& scene, int n, double t0, T reading) {
+    const auto c = enabled<T>();
+    for (int i = 0; i < n; ++i) {
+        auto o = scene.observation(T(t0 + i * kPeriod));
+        o.face_r[2] = reading;
+        o.i_face[2] = reading * scene.i_norm;
+        o.i_sh[1] = o.i_face[2] - o.i_face[3];
+        fault_detect(s, o, c);
+    }
+}
+
+TYPED_TEST(EstimatorCoreFaceFaults, AnOpenStringLowInTheSunIsDeclaredOnceTheCalibrationApplies) {
+    using T = TypeParam;
+    LowScene<T> scene;
+    FaultDetectionState<T> s;
+    // +y's string is open (reads 0) where the cosine law says 0.12. The irradiance is +x's ratio, 1: the
+    // expectation is 0.12, below the deficit test's 0.4 bar and above the ratio test's 0.1. Without the
+    // calibration only the deficit test runs: nothing for 20 s.
+    scene.calibrated = false;
+    run_plus_y(s, scene, 400, 0.0, T(0));
+    EXPECT_EQ(s.face_word[2], 0u);
+    // With it, 0 < 0.3 × 0.12 fails; the 100th failing sample (5 s) is at 20 + 99 × 0.05 = 24.95 s.
+    scene.calibrated = true;
+    run_plus_y(s, scene, 200, 20.0, T(0));
+    EXPECT_EQ(s.face_word[2], kFaultFaceDeficit);
+    EXPECT_NEAR(s.face_time[2], 24.95, 0.051);
+    EXPECT_EQ(excluded_faces(s), 0b000100);
+}
+
+TYPED_TEST(EstimatorCoreFaceFaults, TheRatioTestsBarIsAFractionOfTheExpectation) {
+    using T = TypeParam;
+    const LowScene<T> scene;
+    // 0.04 is a third of 0.12, above 0.3 × 0.12 = 0.036: a healthy face half a degree off reads more.
+    FaultDetectionState<T> healthy;
+    run_plus_y(healthy, scene, 2000, 0.0, T(0.04));
+    EXPECT_EQ(healthy.face_word[2], 0u);
+    // 0.03 is below it: declared after 5 s.
+    FaultDetectionState<T> low;
+    run_plus_y(low, scene, 200, 0.0, T(0.03));
+    EXPECT_EQ(low.face_word[2], kFaultFaceDeficit);
+    EXPECT_NEAR(low.face_time[2], 4.95, 0.051);
+}
+
+TYPED_TEST(EstimatorCoreFaceFaults, AFaceBelowTheRatioTestsBarOrInPenumbraIsNotTested) {
+    using T = TypeParam;
+    // +y at cos β = 0.08: below the bar of 0.1; reading 0 declares nothing.
+    const LowScene<T> grazing(0.08);
+    FaultDetectionState<T> s;
+    run_plus_y(s, grazing, 2000, 0.0, T(0));
+    EXPECT_EQ(s.face_word[2], 0u);
+    // Penumbra: every face at 55 % (the irradiance from +x is 0.55 ≥ 0.5, tested), so +y's expectation is
+    // 0.55 × 0.12 = 0.066 < 0.1: a dark +y is not tested.
+    LowScene<T> dim;
+    for (auto& v : dim.r) v *= T(0.55);
+    FaultDetectionState<T> p;
+    run_plus_y(p, dim, 2000, 0.0, T(0));
+    EXPECT_EQ(p.face_word[2], 0u);
+}
+
+// The scene of tests/fault_detection_test.cpp: sun at (c, 0.8 √(1 − c²), 0.6 √(1 − c²)) in body axes, so with
+// c = 0.8 faces +x, +y, +z read 0.8, 0.48, 0.36 of full sun (cosine panels); the others nothing.
+template <class T>
+FaultObservation<T> lit(const panel_response::Response<T>& law, T t, double c = 0.8) {
+    const double s = std::sqrt(1.0 - c * c);
+    FaultObservation<T> o;
+    o.t = t;
+    o.sample_period = T(kPeriod);
+    o.response = &law;
+    o.predicted = true;
+    o.field_calibrated = true;
+    o.sun_body = {T(c), T(0.8 * s), T(0.6 * s)};
+    o.face_r = {T(c), T(0), T(0.8 * s), T(0), T(0.6 * s), T(0)};
+    o.bus_available = true;
+    return o;
+}
+
+// Sets face k's relative reading, its current (0.84754 A at full sun) and the Hall pair consistently.
+template <class T>
+void set_face(FaultObservation<T>& o, std::size_t k, T r) {
+    o.face_r[k] = r;
+    for (std::size_t j = 0; j < 6; ++j) o.i_face[j] = o.face_r[j] * T(0.84754);
+    for (std::size_t j = 0; j < 3; ++j) o.i_sh[j] = o.i_face[2 * j] - o.i_face[2 * j + 1];
+}
+
+TYPED_TEST(EstimatorCoreFaceFaults, AHalfShadowedFaceIsGivenItsScaleAndKeptThenAnOpenStringExcludesIt) {
+    using T = TypeParam;
+    const auto law = panel_response::cosine<T>();
+    const auto c = enabled<T>();
+    FaultDetectionState<T> s;
+    // Half of +x shadowed from t = 0: it reads 0.4 where the cosine law says 0.8 (the irradiance from +y and
+    // +z is 1). 0.4 < 0.8 − 0.3 fails the deficit test; its ratio is 0.4 / 0.8 = 0.5 ≥ 0.2 on every failing
+    // sample: at the 100th (4.95 s) +x is declared with scale 0.5 and stays in (not excluded).
+    for (int i = 0; i < 2000; ++i) {
+        auto o = lit(law, T(i * kPeriod));
+        set_face(o, 0, T(0.4));
+        fault_detect(s, o, c);
+    }
+    EXPECT_EQ(s.face_word[0], kFaultFaceScale);
+    EXPECT_NEAR(s.face_time[0], 4.95, 0.051);
+    EXPECT_NEAR(s.face_scale[0], 0.5, 1e-5);
+    EXPECT_EQ(excluded_faces(s), 0);
+    // The Earth adds 0.35 of full sun on +x for 100 s (albedo is not shadowed): it reads 0.4 + 0.35 = 0.75,
+    // compensated 1.5. Against the excess bar 0.8 + 0.6 = 1.4 the reading as it is (0.75) counts: no excess.
+    for (int i = 0; i < 2000; ++i) {
+        auto o = lit(law, T(100 + i * kPeriod));
+        set_face(o, 0, T(0.75));
+        fault_detect(s, o, c);
+    }
+    EXPECT_EQ(s.face_word[0], kFaultFaceScale);
+    // Then its string opens (from 200 s):
+    // 0 / 0.5 = 0 fails with a ratio of 0 < 0.2: a dead face, excluded 4.95 s later.
+    for (int i = 0; i < 400; ++i) {
+        auto o = lit(law, T(200 + i * kPeriod));
+        set_face(o, 0, T(0));
+        fault_detect(s, o, c);
+    }
+    EXPECT_EQ(s.face_word[0], kFaultFaceScale | kFaultFaceDeficit);
+    EXPECT_EQ(excluded_faces(s), 1);
+    for (std::size_t k = 1; k < 6; ++k) EXPECT_EQ(s.face_word[k], 0u) << "face " << k;
+}
+
+TYPED_TEST(EstimatorCoreFaceFaults, CurrentInTheUmbraIsAHallChannelsOwn) {
+    using T = TypeParam;
+    const auto law = panel_response::cosine<T>();
+    const auto c = enabled<T>();
+    // Umbra: nothing lit. +y's Hall channel reads 0.05 of full sun (a 42 mA offset) > 0.03: declared after
+    // 5 s; −z reading 0.02 (below 0.03) is not.
+    FaultDetectionState<T> s;
+    for (int i = 0; i < 400; ++i) {
+        auto o = lit(law, T(i * kPeriod));
+        o.umbra = true;
+        o.face_r = {};
+        set_face(o, 2, T(0.05));
+        set_face(o, 5, T(0.02));
+        fault_detect(s, o, c);
+    }
+    EXPECT_EQ(s.face_word[2], kFaultFaceDark);
+    EXPECT_NEAR(s.face_time[2], 4.95, 0.051);
+    EXPECT_EQ(s.face_word[5], 0u);
+    EXPECT_EQ(excluded_faces(s), 0b000100);
+    // The same readings where the orbit does not say umbra: no test (the other faces show no sun either).
+    FaultDetectionState<T> n;
+    for (int i = 0; i < 400; ++i) {
+        auto o = lit(law, T(i * kPeriod));
+        o.face_r = {};
+        set_face(o, 2, T(0.05));
+        fault_detect(n, o, c);
+    }
+    EXPECT_EQ(n.face_word[2], 0u);
+}
+
+TYPED_TEST(EstimatorCoreFaceFaults, AReadingThatDoesNotFollowTheSunIsStuck) {
+    using T = TypeParam;
+    const auto law = panel_response::cosine<T>();
+    const auto c = enabled<T>();
+    // The sun turns off +x: its cosine c(t) = 0.8 − 0.01 t over 30 s (the irradiance from +y, 1). +x's channel
+    // stays at 0.8. The expected reading has spanned 0.15 from t = 15 s (0.8 − 0.65): failing from then on,
+    // declared 5 s later, at 19.95 s (20.0 s if the 15 s sample rounds below the span). The deficit and excess
+    // tests pass (0.8 against 0.5 … 0.8).
+    FaultDetectionState<T> s, healthy;
+    for (int i = 0; i < 600; ++i) {
+        const double t = i * kPeriod;
+        auto o = lit(law, T(t), 0.8 - 0.01 * t);
+        fault_detect(healthy, o, c);
+        set_face(o, 0, T(0.8));
+        fault_detect(s, o, c);
+    }
+    EXPECT_EQ(s.face_word[0], kFaultFaceStuck);
+    EXPECT_GE(s.face_time[0], T(19.95 - 0.001));
+    EXPECT_LE(s.face_time[0], T(20.0 + 0.001));
+    EXPECT_EQ(excluded_faces(s), 1);
+    for (std::size_t k = 0; k < 6; ++k) EXPECT_EQ(healthy.face_word[k], 0u) << "face " << k;
+    // Stuck at 0 (below 0.03): the stuck test leaves it to the deficit test, which calls it dead.
+    FaultDetectionState<T> zero;
+    for (int i = 0; i < 600; ++i) {
+        const double t = i * kPeriod;
+        auto o = lit(law, T(t), 0.8 - 0.01 * t);
+        set_face(o, 0, T(0));
+        fault_detect(zero, o, c);
+    }
+    EXPECT_EQ(zero.face_word[0], kFaultFaceDeficit);
+}
+
+TYPED_TEST(EstimatorCoreFaceFaults, AnotherFacesShadowComingAndGoingDoesNotMakeASteadyFaceStuck) {
+    using T = TypeParam;
+    const auto law = panel_response::cosine<T>();
+    const auto c = enabled<T>();
+    // A steady sun: +x reads 0.8 throughout, as predicted. +y is 30 % shadowed (0.336 of 0.48) and +z every
+    // other 10 s too (0.252 of 0.36): the irradiance the others show (their best ratio) goes 1, 0.7, 1, ...,
+    // so irradiance × prediction on +x spans 0.8 − 0.56 = 0.24 > 0.15 while its reading stays. The predicted
+    // response itself does not move: +x is not stuck.
+    FaultDetectionState<T> s;
+    for (int i = 0; i < 2000; ++i) {
+        const double t = i * kPeriod;
+        auto o = lit(law, T(t));
+        set_face(o, 0, T(0.8));
+        set_face(o, 2, T(0.7 * 0.48));
+        if (static_cast<int>(t / 10.0) % 2 == 1) set_face(o, 4, T(0.7 * 0.36));
+        fault_detect(s, o, c);
+    }
+    EXPECT_EQ(s.face_word[0], 0u);
+}
+
+TYPED_TEST(EstimatorCoreFaceFaults, TheShadowDepthIsTheEarthsRadiusLessTheDistanceFromTheSunLine) {
+    using T = TypeParam;
+    const Vec3<T> sun{T(1), T(0), T(0)};
+    // 6878 km from the centre (500 km up): straight behind the Earth, 6378.137 km deep; 6270 km off the axis
+    // behind it, 108.137 km; beside the Earth or on the sun's side (or no position), not in the shadow.
+    EXPECT_NEAR(shadow_depth_km(Vec3<T>{T(-6878), T(0), T(0)}, sun), 6378.137, 1e-3);
+    EXPECT_NEAR(shadow_depth_km(Vec3<T>{T(-2000), T(6270), T(0)}, sun), 108.137, 2e-3);
+    EXPECT_NEAR(shadow_depth_km(Vec3<T>{T(-10), T(6878), T(0)}, sun), 6378.137 - 6878.0, 2e-3);
+    EXPECT_LT(shadow_depth_km(Vec3<T>{T(6878), T(0), T(0)}, sun), T(-1e6));
+    EXPECT_LT(shadow_depth_km(Vec3<T>{}, sun), T(-1e6));
+}
+
+TYPED_TEST(EstimatorCoreFaceFaults, NearTheShadowAFaceWithAnOffsetDoesNotMakeTheOthersLookDark) {
+    using T = TypeParam;
+    const auto law = panel_response::cosine<T>();
+    const auto c = enabled<T>();
+    // Entering the penumbra: the sun fades to 10 %, but +y's Hall channel adds 0.34 of full sun (0.29 A), so
+    // +y reads 0.048 + 0.34 = 0.388 and its ratio to 0.48 is 0.81: the irradiance the others see for +x is
+    // 0.81 where the truth is 0.1, and +x (0.08 against 0.81 × 0.8 − 0.3 = 0.35) fails the deficit test. With
+    // the orbit saying near the shadow the test does not run: nothing declared.
+    const auto fading = [&](T t, bool near) {
+        auto o = lit(law, t);
+        for (auto& v : o.face_r) v *= T(0.1);
+        o.near_shadow = near;
+        set_face(o, 2, T(0.048 + 0.34));
+        return o;
+    };
+    FaultDetectionState<T> s, without;
+    for (int i = 0; i < 400; ++i) {
+        fault_detect(s, fading(T(i * kPeriod), true), c);
+        fault_detect(without, fading(T(i * kPeriod), false), c);
+    }
+    for (std::size_t k = 0; k < 6; ++k) EXPECT_EQ(s.face_word[k], 0u) << "face " << k;
+    EXPECT_EQ(without.face_word[0], kFaultFaceDeficit);  // what the orbit's shadow prevents
+}
+
+TYPED_TEST(EstimatorCoreFaceFaults, TheComputerReadsAScaledFaceDividedByItsScale) {
+    using T = TypeParam;
+    OnboardSettings<T> settings;
+    settings.faults.enabled = true;
+    // Sun at (0.8, 0.48, 0.36) in body axes (the inputs' references: the identity attitude). Healthy: each lit
+    // face gives 0.84754 A × its cosine, and i_sh[k] = i_face[2k] − i_face[2k+1].
+    OnboardInputs<T> healthy;
+    healthy.sun_ref = {T(0.8), T(0.48), T(0.36)};
+    healthy.mag_ref = {T(2e-5), T(0), T(0)};
+    healthy.i_face = {T(0.8 * 0.84754), T(0), T(0.48 * 0.84754), T(0), T(0.36 * 0.84754), T(0)};
+    for (std::size_t k = 0; k < 3; ++k) healthy.i_sh[k] = healthy.i_face[2 * k] - healthy.i_face[2 * k + 1];
+    // Half of +x shadowed: its channel and the x Hall difference read half.
+    OnboardInputs<T> shadowed = healthy;
+    shadowed.i_face[0] *= T(0.5);
+    shadowed.i_sh[0] *= T(0.5);
+    OnboardState<T> a, b, c;
+    onboard_start(a, settings);
+    onboard_start(b, settings);
+    onboard_start(c, settings);
+    // b knows the face's scale (declared before), c does not.
+    b.faults.face_word[0] = kFaultFaceScale;
+    b.faults.face_scale[0] = T(0.5);
+    const auto ra = onboard_sample(a, healthy, settings, T(0));
+    const auto rb = onboard_sample(b, shadowed, settings, T(0));
+    const auto rc = onboard_sample(c, shadowed, settings, T(0));
+    ASSERT_TRUE(ra.sample.sun_valid);
+    ASSERT_TRUE(rb.sample.sun_valid);
+    // Read divided by 0.5, the shadowed face gives the healthy sun to the converters' quantization (12 bits
+    // over 1.2 A: 0.3 mA, doubled, against 0.85 A).
+    for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(rb.sample.sun_meas[i], ra.sample.sun_meas[i], 2e-3) << i;
+    EXPECT_EQ(rb.fault_face_scale[0], T(0.5));
+    // Without it the x component is off by far more.
+    EXPECT_GT(std::abs(rc.sample.sun_meas[0] - ra.sample.sun_meas[0]), T(0.05));
+}
+
+}  // namespace
+}  // namespace attitude_estimator::test
