@@ -4,20 +4,42 @@
 
 namespace attitude_estimator {
 
+namespace {
+
+// The magnetometer's further tests (frozen axis, spikes, bias jump).
+template <class T>
+void mag_fault_settings_from(const EstimatorData& d, FaultDetectionConfig<T>& c) {
+    c.frozen_min_field = static_cast<T>(d.detect_frozen_min_field);
+    c.frozen_tolerance = static_cast<T>(d.detect_frozen_tolerance);
+    c.spike_sigma = static_cast<T>(d.detect_spike_sigma);
+    c.spike_gate = static_cast<T>(d.detect_spike_gate);
+    c.spike_window = static_cast<T>(d.detect_spike_window);
+    c.spike_count = d.detect_spike_count;
+}
+
+template <class T>
+void store_mag_fault_outputs(EstimatorData& d, const OnboardOutputs<T>& out) {
+    d.fault_mag_spikes = out.fault_mag_spikes;
+}
+
+}  // namespace
+
 template <class T>
 FaultDetectionConfig<T> fault_settings_from(const EstimatorData& d) {
-    return FaultDetectionConfig<T>{.enabled = d.detect_faults,
-                                   .confirm_time = static_cast<T>(d.detect_confirm_time),
-                                   .face_min_response = static_cast<T>(d.detect_face_min_response),
-                                   .face_deficit = static_cast<T>(d.detect_face_deficit),
-                                   .face_excess = static_cast<T>(d.detect_face_excess),
-                                   .others_min_irradiance = static_cast<T>(d.detect_irradiance_min),
-                                   .others_min_predicted = T(0.3),
-                                   .bus_tolerance = static_cast<T>(d.detect_bus_tolerance),
-                                   .flip_min_field = static_cast<T>(d.detect_flip_min_field),
-                                   .flip_min_field_calibrated = static_cast<T>(d.detect_flip_min_field_calibrated),
-                                   .flip_fraction = static_cast<T>(d.detect_flip_fraction),
-                                   .norm_tolerance = static_cast<T>(d.detect_norm_tolerance)};
+    FaultDetectionConfig<T> c{.enabled = d.detect_faults,
+                              .confirm_time = static_cast<T>(d.detect_confirm_time),
+                              .face_min_response = static_cast<T>(d.detect_face_min_response),
+                              .face_deficit = static_cast<T>(d.detect_face_deficit),
+                              .face_excess = static_cast<T>(d.detect_face_excess),
+                              .others_min_irradiance = static_cast<T>(d.detect_irradiance_min),
+                              .others_min_predicted = T(0.3),
+                              .bus_tolerance = static_cast<T>(d.detect_bus_tolerance),
+                              .flip_min_field = static_cast<T>(d.detect_flip_min_field),
+                              .flip_min_field_calibrated = static_cast<T>(d.detect_flip_min_field_calibrated),
+                              .flip_fraction = static_cast<T>(d.detect_flip_fraction),
+                              .norm_tolerance = static_cast<T>(d.detect_norm_tolerance)};
+    mag_fault_settings_from(d, c);
+    return c;
 }
 
 template <class T>
@@ -32,6 +54,7 @@ void store_fault_outputs(EstimatorData& d, const OnboardOutputs<T>& out) {
     }
     d.fault_mag_norm = static_cast<std::int32_t>(out.fault_mag_norm);
     d.fault_mag_norm_time = static_cast<double>(out.fault_mag_norm_time);
+    store_mag_fault_outputs(d, out);
 }
 
 template FaultDetectionConfig<float> fault_settings_from(const EstimatorData&);

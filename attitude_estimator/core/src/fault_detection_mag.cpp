@@ -9,6 +9,10 @@ namespace attitude_estimator::fault_detail {
 
 namespace {
 
+// The frozen test's prediction must stand this many of its own σ clear of zero.
+template <class T>
+constexpr T kFrozenSigmas = T(4);
+
 // The strap test: with every axis read (none at a rail; an axis excluded for not flipping is still read) and a prediction, the measured half
 // difference vector h = p (r_k − r_{k−1})/2S is S B (the whole field) when the strap works, S B less one
 // component when a single axis is stuck, about nothing when the strap failed. Applied where the field left
@@ -48,6 +52,35 @@ void strap_test(FaultDetectionState<T>& s, const FaultObservation<T>& o, const F
     }
 }
 
+// At most this many outliers in a row are spikes.
+constexpr std::int32_t kSpikeMaxRun = 2;
+
+// The spike test of one axis (fault_detection.hpp, FaultDetectionConfig::spike_*).
+template <class T>
+void spike_test(FaultDetectionState<T>& s, const FaultObservation<T>& o, const FaultDetectionConfig<T>& c,
+                std::size_t k) {
+    if (!(o.predicted && o.field_calibrated && o.field_measured && o.field_ref_norm > T(0)) || o.at_rail[k]) {
+        s.outlier_run[k] = 0;
+        return;
+    }
+    const T d = o.field_uncalibrated[k] - o.field_body[k];
+    const T bound2 =
+        c.spike_gate * c.spike_gate * (o.field_sigma[k] * o.field_sigma[k] + c.spike_sigma * c.spike_sigma);
+    if (!(d * d > bound2)) {
+        s.outlier_run[k] = 0;
+        return;
+    }
+    ++s.outlier_run[k];
+    if (s.outlier_run[k] > kSpikeMaxRun) return;
+    s.spike_now = static_cast<std::uint8_t>(s.spike_now | (1u << k));
+    ++s.spikes[k];
+    if (s.spike_window_start[k] < T(0) || o.t - s.spike_window_start[k] >= c.spike_window) {
+        s.spike_window_start[k] = o.t;
+        s.spike_window_count[k] = 0;
+    }
+    if (++s.spike_window_count[k] >= c.spike_count) declare(s.axis_word[k], s.axis_time[k], kFaultAxisSpiking, o.t);
+}
+
 }  // namespace
 
 template <class T>
@@ -58,8 +91,10 @@ void axis_tests(FaultDetectionState<T>& s, const FaultObservation<T>& o, const F
     strap_test(s, o, c, dt, flip);
     // While the strap test fails (or once the strap is declared) no axis is blamed for not flipping.
     const bool strap_suspect = s.strap_failed || s.strap_failing > T(0);
+    s.spike_now = 0;
     for (std::size_t k = 0; k < 3; ++k) {
         if (excluded >> k & 1u) continue;
+        spike_test(s, o, c, k);
         const Outcome rail = o.at_rail[k] ? Outcome::fail : Outcome::pass;
         if (confirmed(s.axis_failing[k][0], rail, dt, c.confirm_time))
             declare(s.axis_word[k], s.axis_time[k], kFaultAxisRail, o.t);
@@ -70,6 +105,16 @@ void axis_tests(FaultDetectionState<T>& s, const FaultObservation<T>& o, const F
             const T half = o.polarity * (o.mag_reading[k] - s.last_reading[k]) / (T(2) * o.sensitivity);
             const T along = expected > T(0) ? half : -half;
             flips = along >= c.flip_fraction * std::abs(expected) ? Outcome::pass : Outcome::fail;
+        }
+        if (flips == Outcome::not_applicable && flip && !strap_suspect && o.predicted && o.field_calibrated &&
+            !o.at_rail[k]) {
+            // Frozen: too weak a field for the flip test, yet clearly not zero: a healthy axis flips by
+            // about 2 S B_k, one stuck at its last value not at all.
+            const T bar = std::max(c.frozen_min_field, kFrozenSigmas<T> * o.field_sigma[k]);
+            if (std::abs(expected) >= bar) {
+                const T half = (o.mag_reading[k] - s.last_reading[k]) / (T(2) * o.sensitivity);
+                flips = std::abs(half) < c.frozen_tolerance ? Outcome::fail : Outcome::pass;
+            }
         }
         if (confirmed(s.axis_failing[k][1], flips, dt, c.confirm_time))
             declare(s.axis_word[k], s.axis_time[k], kFaultAxisNoFlip, o.t);
@@ -87,8 +132,8 @@ void axis_tests(FaultDetectionState<T>& s, const FaultObservation<T>& o, const F
     if (confirmed(s.norm_failing, norm, dt, c.confirm_time)) declare(s.norm_word, s.norm_time, 1u, o.t);
 }
 
-template void axis_tests(FaultDetectionState<float>&, const FaultObservation<float>&, const FaultDetectionConfig<float>&,
-                         float);
+template void axis_tests(FaultDetectionState<float>&, const FaultObservation<float>&,
+                         const FaultDetectionConfig<float>&, float);
 template void axis_tests(FaultDetectionState<double>&, const FaultObservation<double>&,
                          const FaultDetectionConfig<double>&, double);
 

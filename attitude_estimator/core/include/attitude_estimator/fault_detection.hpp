@@ -39,6 +39,9 @@ inline constexpr std::uint32_t kFaultAxisNoFlip = 2u;  // does not flip with the
 // The set/reset strap failed (set on the three axes at once). Not an exclusion: the axes are read in the
 // polarity the film stayed in (FaultDetectionState::strap_polarity, strap_offset).
 inline constexpr std::uint32_t kFaultAxisStrap = 4u;
+// Spikes: one-sample outliers against the prediction come faster than spike_count per spike_window. Not an
+// exclusion: each outlier's sample is skipped (FaultDetectionState::spike_now), the axis stays in use.
+inline constexpr std::uint32_t kFaultAxisSpiking = 8u;
 
 template <class T>
 struct FaultDetectionConfig {
@@ -64,6 +67,23 @@ struct FaultDetectionConfig {
     T flip_min_field_calibrated = T(3e-6);  // T
     T flip_fraction = T(0.25);
     T norm_tolerance = T(12e-6);  // T: | |B| − |B_ref| |
+    // Magnetometer (fault_detection_mag.cpp). Frozen test: an axis stuck at its last value reads exactly the
+    // same across a set/reset flip, a healthy one flips by 2 S B_k. Where the flip test's bar is not reached
+    // (a weak field along the axis) but the calibrated prediction is at least frozen_min_field and 4 σ of
+    // its own uncertainty (FaultObservation::field_sigma), the axis fails when its half difference is below
+    // frozen_tolerance (the sensor's noise is a few 10 nT: a healthy axis crosses that band in a fraction
+    // of a second).
+    T frozen_min_field = T(1e-6);     // T
+    T frozen_tolerance = T(0.02e-6);  // T
+    // Spike test: an axis' measured field (before the calibration) further from the prediction than
+    // spike_gate × √(field_sigma_k² + spike_sigma²) is an outlier; spike_sigma is what a healthy axis
+    // strays besides the attitude's uncertainty (noise, the on-board field model's truncation, the
+    // calibration's residual). At most kSpikeMaxRun outliers in a row are spikes (skipped); a longer run
+    // is a change of the field or of the filter, not a spike, and is let through.
+    T spike_sigma = T(0.5e-6);     // T
+    T spike_gate = T(6);           // 1
+    T spike_window = T(60);        // s
+    std::int32_t spike_count = 5;  // spikes in one window that declare the axis spiking
 };
 
 // What one sample offers the tests. Predictions are those of the filter (zero / false when it is not
@@ -78,6 +98,7 @@ struct FaultObservation {
     bool predicted = false;         // the filter runs: the two predictions below hold
     Vec3<T> sun_body{};             // unit sun direction predicted in body axes
     Vec3<T> field_body{};           // T: field predicted at the sensor, in body axes
+    Vec3<T> field_sigma{};          // T: 1σ of field_body per axis from the filter's attitude covariance
     bool field_calibrated = false;  // field_body includes the calibration's hard-iron estimate (and scale)
     Vec3<T> mag_reading{};          // V: digitized v_mag − v_mag_ref (offset and polarity still in)
     T polarity = T(1);              // the set/reset polarity the reading was taken in
@@ -86,6 +107,8 @@ struct FaultObservation {
     std::array<bool, 3> at_rail{};  // each channel within the rail margin of its converter's ends
     bool field_usable = false;      // the measured field below is complete (no axis excluded or at a rail)
     Vec3<T> field{};                // T: measured field (offset removed, calibrated when the calibration applies)
+    bool field_measured = false;    // field_uncalibrated holds this sample's reading (each axis: !at_rail)
+    Vec3<T> field_uncalibrated{};   // T: measured field at the sensor, set/reset offset removed, no calibration
     T field_ref_norm = T(0);        // T: |B_ref| (0: no reference)
     T sample_period = T(0.05);      // s
     const panel_response::Response<T>* response = nullptr;  // the panels' angular law
@@ -116,6 +139,13 @@ struct FaultDetectionState {
     Vec3<T> strap_offset{};
     bool strap_failed = false;
     T strap_polarity = T(1);
+    // Spike test: this sample's spikes (bit k = axis k: its field is to be skipped), outliers in a row,
+    // spikes so far, and the current window's start and count.
+    std::uint8_t spike_now = 0;
+    std::array<std::int32_t, 3> outlier_run{};
+    std::array<std::int32_t, 3> spikes{};
+    std::array<T, 3> spike_window_start{T(-1), T(-1), T(-1)};
+    std::array<std::int32_t, 3> spike_window_count{};
 };
 
 // One sample of every test that the observation allows; declares faults whose test has failed for

@@ -108,6 +108,8 @@ struct OnboardOutputs {
     std::array<T, 3> fault_mag_axis_time{T(-1), T(-1), T(-1)};
     std::uint32_t fault_mag_norm = 0;
     T fault_mag_norm_time = T(-1);
+    // The magnetometer's spikes so far per axis (one-sample outliers skipped; fault_detection.hpp).
+    std::array<std::int32_t, 3> fault_mag_spikes{};
 };
 
 // Power-up: nothing remembered, the sensor set, and no pulse at the first sample (a host re-reads the

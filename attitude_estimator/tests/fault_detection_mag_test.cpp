@@ -1,0 +1,179 @@
+// The magnetometer's further fault tests (fault_detection_mag.cpp): hand-made set/reset readings, each
+// expectation worked out here from the reading model v − v_ref = p S B + v_os and the definition of the
+// test, never from the code under test.
+#include "attitude_estimator/fault_detection.hpp"
+
+#include <cmath>
+
+#include "test_support.hpp"
+
+namespace attitude_estimator::test {
+namespace {
+
+template <class T>
+class EstimatorCoreMagFaults : public ::testing::Test {};
+TYPED_TEST_SUITE(EstimatorCoreMagFaults, Scalars, ScalarName);
+
+constexpr double kPeriod = 0.05;  // s: 20 Hz, the bundled sample rate
+
+// Field B in body axes (calibrated prediction), S = 1 V/gauss = 1e4 V/T, offset 20 mV; readings alternate
+// set (p = +1) and reset (p = −1).
+template <class T>
+struct Field {
+    Vec3<T> b{T(25e-6), T(-2e-6), T(-40e-6)};
+    T s = T(1e4), v_os = T(0.02);
+    T sigma = T(0.1e-6);  // the prediction's 1σ per axis
+    FaultObservation<T> observation(int i) const {
+        FaultObservation<T> o;
+        o.t = T(i * kPeriod);
+        o.sample_period = T(kPeriod);
+        o.predicted = true;
+        o.field_calibrated = true;
+        o.sun_body = {T(1), T(0), T(0)};
+        o.field_body = b;
+        o.field_sigma = {sigma, sigma, sigma};
+        o.polarity = i % 2 == 0 ? T(1) : T(-1);
+        o.sensitivity = s;
+        for (std::size_t k = 0; k < 3; ++k) o.mag_reading[k] = o.polarity * s * b[k] + v_os;
+        o.field_usable = true;
+        o.field = b;
+        o.field_ref_norm = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+        return o;
+    }
+};
+
+template <class T>
+FaultDetectionConfig<T> enabled() {
+    FaultDetectionConfig<T> c;
+    c.enabled = true;
+    return c;
+}
+
+// y stuck at its sample-100 reading in a field of −2 µT along y: below the flip test's 3 µT bar, so only
+// the frozen test (bar max(1 µT, 4 × 0.1 µT) = 1 µT) can see it.
+template <class T>
+FaultDetectionState<T> stuck_weak_axis(const Field<T>& f, const FaultDetectionConfig<T>& c) {
+    FaultDetectionState<T> s;
+    const int stuck = 100;
+    const T frozen = f.observation(stuck).mag_reading[1];
+    for (int i = 0; i < 400; ++i) {
+        auto o = f.observation(i);
+        if (i >= stuck) o.mag_reading[1] = frozen;
+        fault_detect(s, o, c);
+    }
+    return s;
+}
+
+TYPED_TEST(EstimatorCoreMagFaults, AnAxisStuckInAWeakFieldIsDeclaredFrozen) {
+    using T = TypeParam;
+    const Field<T> f;
+    // From sample 101 on (the first pair with the frozen reading on both sides) y's half difference is 0
+    // < 0.02 µT: the 100th failing sample is 200, t = 10 s.
+    const FaultDetectionState<T> s = stuck_weak_axis(f, enabled<T>());
+    EXPECT_EQ(s.axis_word[1], kFaultAxisNoFlip);
+    EXPECT_NEAR(s.axis_time[1], 10.0, 0.051);
+    EXPECT_EQ(s.axis_word[0] | s.axis_word[2], 0u);
+    EXPECT_EQ(excluded_axes(s), 0b010);
+    // Without the frozen test (its bar out of reach) the 2 µT axis is never tested: nothing declared.
+    auto c = enabled<T>();
+    c.frozen_min_field = T(1e-3);
+    EXPECT_EQ(stuck_weak_axis(f, c).axis_word[1], 0u);
+}
+
+TYPED_TEST(EstimatorCoreMagFaults, AnUncertainPredictionDoesNotTestTheFrozenAxis) {
+    using T = TypeParam;
+    Field<T> f;
+    // The prediction's σ 0.6 µT: the bar is 4 × 0.6 = 2.4 µT > 2 µT: not tested, nothing declared.
+    f.sigma = T(0.6e-6);
+    EXPECT_EQ(stuck_weak_axis(f, enabled<T>()).axis_word[1], 0u);
+    // Nor before the calibration applies (the prediction then lacks the spacecraft's own field).
+    f.sigma = T(0.1e-6);
+    FaultDetectionState<T> s;
+    const T frozen = f.observation(100).mag_reading[1];
+    for (int i = 0; i < 400; ++i) {
+        auto o = f.observation(i);
+        o.field_calibrated = false;
+        if (i >= 100) o.mag_reading[1] = frozen;
+        fault_detect(s, o, enabled<T>());
+    }
+    EXPECT_EQ(s.axis_word[1], 0u);
+}
+
+TYPED_TEST(EstimatorCoreMagFaults, AHealthyAxisCrossingZeroIsNotTakenForFrozen) {
+    using T = TypeParam;
+    Field<T> f;
+    // The field along y sweeps from −3 µT to +3 µT at 0.74 µT/s (45 µT turning at the bundled 0.94 deg/s)
+    // while the prediction is 0.8 µT off (a 1 deg attitude error on 45 µT), with ±0.03 µT of noise
+    // alternating on the readings. |B_y| < 0.02 + 0.03 µT lasts 0.1 µT / 0.74 µT/s = 0.14 s, three samples:
+    // never the 100 failing samples in a row that would confirm.
+    FaultDetectionState<T> s;
+    const auto c = enabled<T>();
+    const int n = 163;  // 8.1 s: −3 … +3 µT
+    for (int i = 0; i < n; ++i) {
+        auto o = f.observation(i);
+        const T by = T(-3e-6) + T(0.74e-6) * o.t;
+        o.field_body[1] = by + T(0.8e-6);
+        const T noise = (i / 2) % 2 == 0 ? T(0.03e-6) : T(-0.03e-6);
+        o.mag_reading[1] = o.polarity * f.s * (by + noise) + f.v_os;
+        fault_detect(s, o, c);
+    }
+    EXPECT_EQ(s.axis_word[1], 0u);
+    EXPECT_LT(s.axis_failing[1][1], T(0.5));
+}
+
+// The spike test's observation: the measured field before the calibration is B plus `extra` on x.
+template <class T>
+FaultObservation<T> with_field(const Field<T>& f, int i, T extra) {
+    auto o = f.observation(i);
+    o.field_measured = true;
+    o.field_uncalibrated = f.b;
+    o.field_uncalibrated[0] += extra;
+    return o;
+}
+
+TYPED_TEST(EstimatorCoreMagFaults, SpikesAreSkippedCountedAndDeclaredWhenFrequent) {
+    using T = TypeParam;
+    const Field<T> f;
+    const auto c = enabled<T>();
+    // The bound: 6 × √(0.1² + 0.5²) µT = 3.06 µT. A 5 µT outlier on x every 2 s (samples 100, 140, …).
+    FaultDetectionState<T> s;
+    for (int i = 0; i < 400; ++i) {
+        const bool spike = i >= 100 && (i - 100) % 40 == 0;
+        fault_detect(s, with_field(f, i, spike ? T(5e-6) : T(0)), c);
+        EXPECT_EQ(s.spike_now, spike ? 1u : 0u) << "sample " << i;
+    }
+    // Spikes at samples 100, 140, …, 380: 8. The fifth (sample 260, t = 13 s) falls in the window opened
+    // by the first (5 s + 60 s): the axis is declared spiking then, and stays in use.
+    EXPECT_EQ(s.spikes[0], 8);
+    EXPECT_EQ(s.spikes[1] + s.spikes[2], 0);
+    EXPECT_EQ(s.axis_word[0], kFaultAxisSpiking);
+    EXPECT_NEAR(s.axis_time[0], 13.0, 1e-4);
+    EXPECT_EQ(excluded_axes(s), 0);
+}
+
+TYPED_TEST(EstimatorCoreMagFaults, SmallOutliersAndStepsAreNotSpikes) {
+    using T = TypeParam;
+    const Field<T> f;
+    const auto c = enabled<T>();
+    // 2.5 µT < 3.06 µT: within the bound, never an outlier.
+    FaultDetectionState<T> small;
+    for (int i = 0; i < 400; ++i) fault_detect(small, with_field(f, i, i % 40 == 0 ? T(2.5e-6) : T(0)), c);
+    EXPECT_EQ(small.spikes[0], 0);
+    // A step of 5 µT from sample 100 on: its first two samples are taken for spikes (skipped), the third
+    // outlier in a row on is a change, not a spike: let through, not counted.
+    FaultDetectionState<T> step;
+    for (int i = 0; i < 400; ++i) {
+        fault_detect(step, with_field(f, i, i >= 100 ? T(5e-6) : T(0)), c);
+        EXPECT_EQ(step.spike_now, i == 100 || i == 101 ? 1u : 0u) << "sample " << i;
+    }
+    EXPECT_EQ(step.spikes[0], 2);
+    EXPECT_EQ(step.axis_word[0], 0u);
+    // Spikes every 20 s: at most three in a 60 s window, fewer than five: counted, never declared.
+    FaultDetectionState<T> rare;
+    for (int i = 0; i < 4000; ++i) fault_detect(rare, with_field(f, i, i % 400 == 0 ? T(5e-6) : T(0)), c);
+    EXPECT_EQ(rare.spikes[0], 10);
+    EXPECT_EQ(rare.axis_word[0], 0u);
+}
+
+}  // namespace
+}  // namespace attitude_estimator::test
