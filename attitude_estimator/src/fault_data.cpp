@@ -15,11 +15,16 @@ void mag_fault_settings_from(const EstimatorData& d, FaultDetectionConfig<T>& c)
     c.spike_gate = static_cast<T>(d.detect_spike_gate);
     c.spike_window = static_cast<T>(d.detect_spike_window);
     c.spike_count = d.detect_spike_count;
+    c.bias_window = static_cast<T>(d.detect_bias_window);
+    c.bias_threshold = static_cast<T>(d.detect_bias_threshold);
+    c.bias_noise_factor = static_cast<T>(d.detect_bias_noise_factor);
 }
 
 template <class T>
 void store_mag_fault_outputs(EstimatorData& d, const OnboardOutputs<T>& out) {
     d.fault_mag_spikes = out.fault_mag_spikes;
+    for (std::size_t k = 0; k < 3; ++k) d.fault_mag_bias[k] = static_cast<double>(out.fault_mag_bias[k]);
+    d.fault_mag_strap_cleared_time = static_cast<double>(out.fault_mag_strap_cleared_time);
 }
 
 }  // namespace

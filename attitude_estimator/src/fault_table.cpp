@@ -31,6 +31,28 @@ void declare_mag_fault_variables(fmu::Table<EstimatorData>& t) {
                 "detect_faults: this many spikes on an axis within one window declare it spiking (bit 8; not "
                 "excluded)")
         .range(1, 1000000);
+    t.parameter("detect_bias_window", &D::detect_bias_window, "s",
+                "detect_faults: the bias-jump test averages each axis' innovation (measured minus predicted "
+                "field) over this time (exponential window)")
+        .range(1.0, 86400.0);
+    t.parameter("detect_bias_threshold", &D::detect_bias_threshold, "T",
+                "detect_faults: an axis whose mean innovation exceeds this fails the bias-jump test; confirmed, "
+                "the calibration's offset takes the jump and re-learns it (bit 16; not excluded)")
+        .range(1e-9, 1e-3);
+    t.parameter("detect_bias_noise_factor", &D::detect_bias_noise_factor, "1",
+                "detect_faults: after a bias jump the filter's field noise is raised by this factor until the "
+                "calibration has re-learnt its offset")
+        .range(1.0, 1000.0);
+    t.output("fault_mag_bias", &D::fault_mag_bias, "T",
+             "detect_faults: the bias-jump test's mean innovation per magnetometer axis (measured minus "
+             "predicted field, sensor axes)")
+        .discrete()
+        .depends_on({});
+    t.output("fault_mag_strap_cleared_time", &D::fault_mag_strap_cleared_time, "s",
+             "detect_faults: when a failed set/reset strap (bit 4) was last seen working again, its readings "
+             "flipping with the commanded polarity for detect_confirm_time: set/reset resumes (-1: never)")
+        .discrete()
+        .depends_on({});
     t.output("fault_mag_spikes", &D::fault_mag_spikes, "",
              "detect_faults: one-sample outliers (spikes) skipped so far per magnetometer axis")
         .discrete()
@@ -91,7 +113,7 @@ void declare_fault_variables(fmu::Table<EstimatorData>& t) {
     t.output("fault_mag_axis", &D::fault_mag_axis, "",
              "detect_faults: fault word per magnetometer axis, 0 healthy; bits 1 at a rail, 2 does not flip with "
              "the set/reset polarity (both exclude the axis), 4 the set/reset strap failed (read in its stuck "
-             "polarity), 8 spiking (outliers skipped)")
+             "polarity), 8 spiking (outliers skipped), 16 a bias jump (the calibration re-learns its offset)")
         .discrete()
         .depends_on({});
     t.output("fault_mag_axis_time", &D::fault_mag_axis_time, "s",

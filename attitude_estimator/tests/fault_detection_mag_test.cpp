@@ -3,7 +3,11 @@
 // test, never from the code under test.
 #include "attitude_estimator/fault_detection.hpp"
 
+#include <Eigen/Dense>
 #include <cmath>
+#include <random>
+
+#include "attitude_estimator/mag_calibration.hpp"
 
 #include "test_support.hpp"
 
@@ -173,6 +177,118 @@ TYPED_TEST(EstimatorCoreMagFaults, SmallOutliersAndStepsAreNotSpikes) {
     for (int i = 0; i < 4000; ++i) fault_detect(rare, with_field(f, i, i % 400 == 0 ? T(5e-6) : T(0)), c);
     EXPECT_EQ(rare.spikes[0], 10);
     EXPECT_EQ(rare.axis_word[0], 0u);
+}
+
+TYPED_TEST(EstimatorCoreMagFaults, ABiasJumpIsDeclaredWithItsSize) {
+    using T = TypeParam;
+    const Field<T> f;
+    const auto c = enabled<T>();
+    // 5 µT more on x from sample 100 on. Samples 100 and 101 are spikes (5 > 3.06 µT: left out of the
+    // means); from 102 on the slow mean (α = 0.05/60) is 5 (1 − (1 − α)^n) µT after n samples, past
+    // 1 µT at n = ln 0.8 / ln(1 − α) = 267.7, so sample 369 fails first and the 100th failing one,
+    // sample 468 (t = 23.4 s), declares. The recent mean (α = 0.005) then holds 5 (1 − 0.995^367) = 4.206 µT.
+    FaultDetectionState<T> s;
+    bool declared_now = false;
+    for (int i = 0; i < 700; ++i) {
+        fault_detect(s, with_field(f, i, i >= 100 ? T(5e-6) : T(0)), c);
+        if (s.bias_jump_now) {
+            EXPECT_FALSE(declared_now) << "declared twice, sample " << i;
+            declared_now = true;
+            EXPECT_NEAR(s.bias_jump[0], 4.206e-6, 0.005e-6);
+            EXPECT_NEAR(s.bias_jump[1], 0.0, 1e-12);
+            EXPECT_NEAR(s.bias_jump[2], 0.0, 1e-12);
+        }
+    }
+    EXPECT_TRUE(declared_now);
+    EXPECT_EQ(s.axis_word[0], kFaultAxisBias);
+    EXPECT_NEAR(s.axis_time[0], 23.4, 1e-3);
+    EXPECT_TRUE(s.bias_recovering);
+    EXPECT_EQ(excluded_axes(s), 0);
+    // 0.9 µT (below the 1 µT threshold) for as long: nothing.
+    FaultDetectionState<T> small;
+    for (int i = 0; i < 4000; ++i) fault_detect(small, with_field(f, i, i >= 100 ? T(0.9e-6) : T(0)), c);
+    EXPECT_EQ(small.axis_word[0], 0u);
+}
+
+TYPED_TEST(EstimatorCoreMagFaults, AStrapThatWorksAgainIsNoticedAndSetResetResumes) {
+    using T = TypeParam;
+    const Field<T> f;
+    const auto c = enabled<T>();
+    // The strap fails after sample 99 (a reset): readings −S B + v_os whatever the command, until it works
+    // again from sample 300 on (p S B + v_os with p the command). The field left without its largest
+    // component is √(25² + 2²) = 25.1 µT ≥ 3 µT: the strap test runs. Failing from sample 100 (the pair
+    // 99–100 shows no difference), declared at the 100th failing sample, 199 (t = 9.95 s), in the reset
+    // polarity. Paired by the command, the readings flip again from the pair 299–300: the 100th passing
+    // sample, 399 (t = 19.95 s), clears the failure.
+    FaultDetectionState<T> s;
+    for (int i = 0; i < 600; ++i) {
+        auto o = f.observation(i);
+        o.commanded_polarity = o.polarity;
+        o.mag_offset = {f.v_os, f.v_os, f.v_os};
+        if (i >= 100 && i < 300)
+            for (std::size_t k = 0; k < 3; ++k) o.mag_reading[k] = -f.s * f.b[k] + f.v_os;
+        // The computer reads in the stuck polarity while the failure is declared (onboard_computer.cpp).
+        if (s.strap_failed) o.polarity = s.strap_polarity;
+        fault_detect(s, o, c);
+        if (i == 298) {
+            EXPECT_TRUE(s.strap_failed);
+            EXPECT_EQ(s.strap_polarity, T(-1));
+        }
+    }
+    EXPECT_FALSE(s.strap_failed);
+    EXPECT_NEAR(s.strap_cleared_time, 19.95, 1e-3);
+    for (std::size_t k = 0; k < 3; ++k) {
+        EXPECT_EQ(s.axis_word[k], kFaultAxisStrap) << k;  // the record stays; nothing else declared since
+        EXPECT_NEAR(s.axis_time[k], 9.95, 1e-3);
+    }
+    EXPECT_EQ(excluded_axes(s), 0);
+}
+
+// The calibration re-learns a new offset (mag_calibration_reopen_offset): a sensor reading M B + b_own
+// (the HMC2003 model's cross-axis 0.003, its scale errors) calibrated over 2000 field directions and
+// magnitudes, then b_own jumps by (3, −2, 1) µT. Re-opened (with a shift a fifth off), 2000 more equations
+// give b = M⁻¹ b_own' and the same I + D = M⁻¹ (noise-free: to rounding); without it the old equations hold
+// the solution away from the new offset.
+TEST(EstimatorCoreMagFaultsCalibration, AReopenedOffsetIsRelearntTheScaleKept) {
+    Eigen::Matrix3d m;
+    const double x = 0.003;
+    m << 1.01, x, x, x, 0.995, x, x, x, 1.004;
+    const Eigen::Vector3d b_old(0.4e-6, -0.25e-6, 0.1e-6), jump(3e-6, -2e-6, 1e-6);
+    MagCalibrationConfig<double> cfg;
+    cfg.every = 1;
+    cfg.min_equations = 2000;
+    cfg.solve_every = 2000;
+    cfg.sigma = 1e-9;
+    std::mt19937 gen(3);
+    std::normal_distribution<double> n01(0.0, 1.0);
+    std::uniform_real_distribution<double> mag(20e-6, 50e-6);
+    const auto feed = [&](MagCalibrationState<double>& s, const Eigen::Vector3d& b_own) {
+        for (int k = 0; k < 2000; ++k) {
+            const Eigen::Vector3d b = Eigen::Vector3d(n01(gen), n01(gen), n01(gen)).normalized() * mag(gen);
+            const Eigen::Vector3d h = m * b + b_own;
+            mag_calibration_offer(s, Vec3<double>{h(0), h(1), h(2)}, b.norm(), cfg);
+        }
+    };
+    MagCalibrationState<double> s;
+    feed(s, b_old);
+    ASSERT_TRUE(s.valid);
+    MagCalibrationState<double> kept = s;
+    const Eigen::Vector3d shift = 0.8 * (m.inverse() * jump);
+    mag_calibration_reopen_offset(s, Vec3<double>{shift(0), shift(1), shift(2)});
+    const Eigen::Vector3d before = m.inverse() * b_old;
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(s.offset[static_cast<std::size_t>(i)], before(i) + shift(i), 1e-15);
+    feed(s, b_old + jump);
+    feed(kept, b_old + jump);
+    const Eigen::Matrix3d inv = m.inverse();
+    const Eigen::Vector3d b_new = inv * (b_old + jump);
+    double kept_error = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        const auto r = static_cast<std::size_t>(i);
+        EXPECT_NEAR(s.offset[r], b_new(i), 1e-12) << i;
+        for (int j = 0; j < 3; ++j) EXPECT_NEAR(s.gain[3 * r + static_cast<std::size_t>(j)], inv(i, j), 1e-8);
+        kept_error = std::max(kept_error, std::abs(kept.offset[r] - b_new(i)));
+    }
+    EXPECT_GT(kept_error, 0.5e-6);
 }
 
 }  // namespace

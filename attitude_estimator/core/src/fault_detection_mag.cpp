@@ -18,9 +18,53 @@ constexpr T kFrozenSigmas = T(4);
 // component when a single axis is stuck, about nothing when the strap failed. Applied where the field left
 // without its largest component is at least flip_min_field, so that a stuck axis always passes.
 template <class T>
+Outcome strap_outcome(const FaultDetectionState<T>& s, const FaultObservation<T>& o, const FaultDetectionConfig<T>& c,
+                      bool flip);
+
+// After a declared strap failure: the readings paired by the commanded polarity flip again (the strap test
+// passes) for the confirmation time without a failure in between: the strap works again.
+template <class T>
+void strap_recovery(FaultDetectionState<T>& s, const FaultObservation<T>& o, const FaultDetectionConfig<T>& c, T dt) {
+    const bool flip = s.has_last && o.commanded_polarity * s.last_commanded_polarity < T(0) &&
+                      o.t - s.last_t <= T(1.5) * o.sample_period;
+    const Outcome strap = strap_outcome(s, o, c, flip);
+    if (strap == Outcome::fail) s.strap_passing = T(0);
+    if (strap != Outcome::pass) return;
+    s.strap_passing += dt;
+    if (s.strap_passing + T(0.5) * dt < c.confirm_time) return;
+    s.strap_failed = false;
+    s.strap_passing = T(0);
+    s.strap_failing = T(0);
+    s.strap_cleared_time = o.t;
+}
+
+template <class T>
 void strap_test(FaultDetectionState<T>& s, const FaultObservation<T>& o, const FaultDetectionConfig<T>& c, T dt,
                 bool flip) {
-    if (s.strap_failed) return;
+    if (s.strap_failed) {
+        strap_recovery(s, o, c, dt);
+        return;
+    }
+    const Outcome strap = strap_outcome(s, o, c, flip);
+    if (strap == Outcome::pass) s.strap_offset = o.mag_offset;
+    if (!confirmed(s.strap_failing, strap, dt, c.confirm_time)) return;
+    s.strap_failed = true;
+    s.strap_passing = T(0);
+    // The reading is S p B + v_os with p the polarity the film stayed in: its sign against the prediction.
+    T along = T(0);
+    for (std::size_t k = 0; k < 3; ++k) along += (o.mag_reading[k] - s.strap_offset[k]) * o.field_body[k];
+    s.strap_polarity = along >= T(0) ? T(1) : T(-1);
+    // The strap explains any axis declared for not flipping: read again, marked as the strap.
+    for (std::size_t k = 0; k < 3; ++k) {
+        s.axis_word[k] &= ~kFaultAxisNoFlip;
+        s.axis_failing[k][1] = T(0);
+        declare(s.axis_word[k], s.axis_time[k], kFaultAxisStrap, o.t);
+    }
+}
+
+template <class T>
+Outcome strap_outcome(const FaultDetectionState<T>& s, const FaultObservation<T>& o, const FaultDetectionConfig<T>& c,
+                      bool flip) {
     Outcome strap = Outcome::not_applicable;
     if (flip && o.predicted && !o.at_rail[0] && !o.at_rail[1] && !o.at_rail[2]) {
         const Vec3<T>& b = o.field_body;
@@ -37,19 +81,7 @@ void strap_test(FaultDetectionState<T>& s, const FaultObservation<T>& o, const F
             strap = h2 >= c.flip_fraction * c.flip_fraction * least_two ? Outcome::pass : Outcome::fail;
         }
     }
-    if (strap == Outcome::pass) s.strap_offset = o.mag_offset;
-    if (!confirmed(s.strap_failing, strap, dt, c.confirm_time)) return;
-    s.strap_failed = true;
-    // The reading is S p B + v_os with p the polarity the film stayed in: its sign against the prediction.
-    T along = T(0);
-    for (std::size_t k = 0; k < 3; ++k) along += (o.mag_reading[k] - s.strap_offset[k]) * o.field_body[k];
-    s.strap_polarity = along >= T(0) ? T(1) : T(-1);
-    // The strap explains any axis declared for not flipping: read again, marked as the strap.
-    for (std::size_t k = 0; k < 3; ++k) {
-        s.axis_word[k] &= ~kFaultAxisNoFlip;
-        s.axis_failing[k][1] = T(0);
-        declare(s.axis_word[k], s.axis_time[k], kFaultAxisStrap, o.t);
-    }
+    return strap;
 }
 
 // At most this many outliers in a row are spikes.
@@ -78,7 +110,42 @@ void spike_test(FaultDetectionState<T>& s, const FaultObservation<T>& o, const F
         s.spike_window_start[k] = o.t;
         s.spike_window_count[k] = 0;
     }
-    if (++s.spike_window_count[k] >= c.spike_count) declare(s.axis_word[k], s.axis_time[k], kFaultAxisSpiking, o.t);
+    // Not declared while the axis' flip test or the strap test is failing: a stuck axis or a failed strap,
+    // read in alternating polarities, strays on every other sample; its own test names it.
+    const bool other_fault = s.axis_failing[k][1] > T(0) || s.strap_failing > T(0) || s.strap_failed;
+    if (++s.spike_window_count[k] >= c.spike_count && !other_fault)
+        declare(s.axis_word[k], s.axis_time[k], kFaultAxisSpiking, o.t);
+}
+
+// The bias-jump test of the three axes (fault_detection.hpp, FaultDetectionConfig::bias_*).
+template <class T>
+void bias_test(FaultDetectionState<T>& s, const FaultObservation<T>& o, const FaultDetectionConfig<T>& c, T dt,
+               std::uint8_t excluded) {
+    s.bias_jump_now = false;
+    if (!(o.predicted && o.field_calibrated && o.field_measured && o.field_ref_norm > T(0))) return;
+    const T alpha = std::min(T(1), dt / c.bias_window);
+    const T alpha_recent = std::min(T(1), T(6) * dt / c.bias_window);
+    bool jump = false;
+    for (std::size_t k = 0; k < 3; ++k) {
+        if ((excluded >> k & 1u) || o.at_rail[k] || (s.spike_now >> k & 1u)) continue;
+        const T d = o.field_uncalibrated[k] - o.field_body[k];
+        s.bias_mean[k] += alpha * (d - s.bias_mean[k]);
+        s.bias_recent[k] += alpha_recent * (d - s.bias_recent[k]);
+        const Outcome o_k = std::abs(s.bias_mean[k]) > c.bias_threshold ? Outcome::fail : Outcome::pass;
+        if (confirmed(s.bias_failing[k], o_k, dt, c.confirm_time)) {
+            declare(s.axis_word[k], s.axis_time[k], kFaultAxisBias, o.t);
+            jump = true;
+        }
+    }
+    if (!jump) return;
+    // The jump: the recent means of every axis (a field has three components; those below the threshold
+    // too). The slow mean lags a step; the recent one has caught up with it by the declaration.
+    s.bias_jump_now = true;
+    s.bias_jump = s.bias_recent;
+    s.bias_recovering = true;
+    s.bias_mean = Vec3<T>{};
+    s.bias_recent = Vec3<T>{};
+    s.bias_failing = {};
 }
 
 }  // namespace
@@ -119,8 +186,10 @@ void axis_tests(FaultDetectionState<T>& s, const FaultObservation<T>& o, const F
         if (confirmed(s.axis_failing[k][1], flips, dt, c.confirm_time))
             declare(s.axis_word[k], s.axis_time[k], kFaultAxisNoFlip, o.t);
     }
+    bias_test(s, o, c, dt, excluded);
     s.last_reading = o.mag_reading;
     s.last_polarity = o.polarity;
+    s.last_commanded_polarity = o.commanded_polarity;
     s.last_t = o.t;
     s.has_last = true;
 

@@ -49,6 +49,18 @@ Matrix3RowMajor<T> attitude_covariance_sqrt(const MekfState<T>& m) {
     return l;
 }
 
+// While the calibration re-learns its offset after a bias jump, the field's noise in the filter is raised
+// by settings.faults.bias_noise_factor (what is left of the jump is a bias the white noise does not cover).
+template <class T>
+MekfConfig<T> field_recovery_config(const OnboardState<T>& s, const OnboardSettings<T>& settings) {
+    MekfConfig<T> c = settings.mekf;
+    if (settings.faults.enabled && s.faults.bias_recovering) {
+        c.mag_sigma *= settings.faults.bias_noise_factor;
+        c.mag_sigma_calibrated *= settings.faults.bias_noise_factor;
+    }
+    return c;
+}
+
 template <class T>
 void update_filter(OnboardState<T>& s, const OnboardInputs<T>& in, const OnboardSettings<T>& settings, T t,
                    const SampleResult<T>& r, const EstimatorConfig<T>& nominal, T polarity, bool mag_valid,
@@ -81,7 +93,7 @@ void update_filter(OnboardState<T>& s, const OnboardInputs<T>& in, const Onboard
         }
         f.response = &nominal.sun.response;
     }
-    const MekfSampleResult<T> result = mekf_sample(s.filter, f, settings.mekf);
+    const MekfSampleResult<T> result = mekf_sample(s.filter, f, field_recovery_config(s, settings));
     const MekfState<T>& m = s.filter;
     const bool running = m.stage == 2;
     out.q_filt = running ? m.q : Quaternion<T>{};
@@ -207,6 +219,7 @@ FaultObservation<T> observe(const OnboardState<T>& s, const OnboardInputs<T>& in
         o.at_rail[k] = !(v > adc.min + nominal.mag_rail_margin && v < adc.max - nominal.mag_rail_margin);
     }
     o.polarity = polarity;
+    o.commanded_polarity = s.set_reset.polarity;
     o.sensitivity = nominal.mag_sensitivity;
     o.field_usable = axes_out == 0 && r.mag_valid;
     o.field = r.mag_field;
@@ -359,13 +372,24 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
     out.fault_mag_norm = fd.norm_word;
     out.fault_mag_norm_time = fd.norm_time;
     out.fault_mag_spikes = fd.spikes;
+    out.fault_mag_bias = fd.bias_mean;
+    out.fault_mag_strap_cleared_time = fd.strap_cleared_time;
     const bool spike = detecting && fd.spike_now != 0;
+    if (detecting && fd.bias_jump_now && settings.mag_calibration && s.mag_cal.valid) {
+        // A bias jump (fault_detection.hpp): the calibration's offset takes it at once, by (I + D) times the
+        // jump seen before the correction, and re-learns it from the equations to come.
+        mag_calibration_reopen_offset(s.mag_cal, multiply(s.mag_cal.gain, fd.bias_jump));
+    }
+    const Vec3<T> cal_offset_before = s.mag_cal.offset;
     if (settings.mag_calibration && out.sample.mag_reading_usable && axes_out == 0 && !spike) {
         // Against the reference field's magnitude only: no attitude needed (the next sample applies it).
         const T ref =
             std::sqrt(in.mag_ref[0] * in.mag_ref[0] + in.mag_ref[1] * in.mag_ref[1] + in.mag_ref[2] * in.mag_ref[2]);
         mag_calibration_offer(s.mag_cal, out.sample.mag_field_uncalibrated, ref, settings.mag_cal);
     }
+    // The re-learnt offset is applied (a solve changed it): the recovery from a bias jump is over.
+    if (detecting && s.faults.bias_recovering && !fd.bias_jump_now && s.mag_cal.offset != cal_offset_before)
+        s.faults.bias_recovering = false;
     out.mag_cal_valid = s.mag_cal.valid;
     out.mag_cal_gain = s.mag_cal.gain;
     out.mag_cal_offset = s.mag_cal.offset;

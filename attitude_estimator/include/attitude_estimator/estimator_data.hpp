@@ -202,7 +202,12 @@ struct EstimatorData {
     double detect_spike_gate = 6.0;            // 1: an outlier is this many of its σ from the prediction
     double detect_spike_window = 60.0;         // s: spikes are counted over windows this long
     std::int32_t detect_spike_count = 5;       // spikes in one window that declare the axis spiking
+    double detect_bias_window = 60.0;          // s: the bias-jump test's averaging time
+    double detect_bias_threshold = 1e-6;       // T: an axis' mean innovation beyond this fails it
+    double detect_bias_noise_factor = 1.0;     // 1: the filter's field noise factor while the offset re-learns
     std::array<std::int32_t, 3> fault_mag_spikes{};  // spikes skipped so far per axis
+    Vec3d fault_mag_bias{};                          // T: the mean innovation per axis
+    double fault_mag_strap_cleared_time = -1.0;      // s: a failed strap seen working again (−1: never)
 
     // discrete state
     double t_start = 0.0;  // s, the start time: sample k is due at t_start + k·sample_period

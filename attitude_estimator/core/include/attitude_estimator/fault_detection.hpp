@@ -42,6 +42,10 @@ inline constexpr std::uint32_t kFaultAxisStrap = 4u;
 // Spikes: one-sample outliers against the prediction come faster than spike_count per spike_window. Not an
 // exclusion: each outlier's sample is skipped (FaultDetectionState::spike_now), the axis stays in use.
 inline constexpr std::uint32_t kFaultAxisSpiking = 8u;
+// A bias jump: a new field at the sensor (it flips with the set/reset polarity as the earth's does, so the
+// set/reset difference keeps it) seen as the axis' mean innovation. Not an exclusion: the calibration's
+// offset takes the jump and re-learns it (FaultDetectionState::bias_jump_now, bias_jump).
+inline constexpr std::uint32_t kFaultAxisBias = 16u;
 
 template <class T>
 struct FaultDetectionConfig {
@@ -84,6 +88,13 @@ struct FaultDetectionConfig {
     T spike_gate = T(6);           // 1
     T spike_window = T(60);        // s
     std::int32_t spike_count = 5;  // spikes in one window that declare the axis spiking
+    // Bias-jump test: the innovation (measured minus predicted field, before the calibration, spikes left
+    // out) averaged per axis with an exponential window of bias_window; an axis fails while |mean| >
+    // bias_threshold (the attitude error's share turns with the tumble and averages out; a field fixed in
+    // the sensor does not).
+    T bias_window = T(60);       // s
+    T bias_threshold = T(1e-6);  // T
+    T bias_noise_factor = T(1);  // the filter's field noise is raised this much until the offset is re-learnt
 };
 
 // What one sample offers the tests. Predictions are those of the filter (zero / false when it is not
@@ -102,6 +113,9 @@ struct FaultObservation {
     bool field_calibrated = false;  // field_body includes the calibration's hard-iron estimate (and scale)
     Vec3<T> mag_reading{};          // V: digitized v_mag − v_mag_ref (offset and polarity still in)
     T polarity = T(1);              // the set/reset polarity the reading was taken in
+    // The polarity the computer commanded for it (differs from `polarity` once a failed strap is declared:
+    // the recovery test pairs readings by the command).
+    T commanded_polarity = T(1);
     Vec3<T> mag_offset{};           // V: the sensor offset the computer takes out of this reading
     T sensitivity = T(1e4);         // V/T
     std::array<bool, 3> at_rail{};  // each channel within the rail margin of its converter's ends
@@ -139,6 +153,11 @@ struct FaultDetectionState {
     Vec3<T> strap_offset{};
     bool strap_failed = false;
     T strap_polarity = T(1);
+    // Recovery: once failed, the strap test goes on pairing readings by the commanded polarity; passing
+    // for the confirmation time clears strap_failed (the kFaultAxisStrap bits stay as the record).
+    T strap_passing = T(0);
+    T last_commanded_polarity = T(0);
+    T strap_cleared_time = T(-1);  // s, when the strap was last seen working again (−1: never)
     // Spike test: this sample's spikes (bit k = axis k: its field is to be skipped), outliers in a row,
     // spikes so far, and the current window's start and count.
     std::uint8_t spike_now = 0;
@@ -146,6 +165,15 @@ struct FaultDetectionState {
     std::array<std::int32_t, 3> spikes{};
     std::array<T, 3> spike_window_start{T(-1), T(-1), T(-1)};
     std::array<std::int32_t, 3> spike_window_count{};
+    // Bias-jump test: the innovation's mean per axis, its evidence; a jump declared at this sample (the
+    // computer moves the calibration's offset by bias_jump, the means at the declaration) and, until the
+    // calibration has re-learnt its offset, bias_recovering.
+    Vec3<T> bias_mean{};
+    Vec3<T> bias_recent{};  // the same over a sixth of the window: the jump's size at the declaration
+    std::array<T, 3> bias_failing{};
+    bool bias_jump_now = false;
+    Vec3<T> bias_jump{};
+    bool bias_recovering = false;
 };
 
 // One sample of every test that the observation allows; declares faults whose test has failed for
