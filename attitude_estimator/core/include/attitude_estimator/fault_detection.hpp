@@ -169,7 +169,7 @@ struct FaultDetectionState {
     // computer moves the calibration's offset by bias_jump, the means at the declaration) and, until the
     // calibration has re-learnt its offset, bias_recovering.
     Vec3<T> bias_mean{};
-    Vec3<T> bias_recent{};  // the same over a sixth of the window: the jump's size at the declaration
+    Vec3<T> bias_recent{};  // the same over a twentieth of the window: the jump's size at the declaration
     std::array<T, 3> bias_failing{};
     bool bias_jump_now = false;
     Vec3<T> bias_jump{};
