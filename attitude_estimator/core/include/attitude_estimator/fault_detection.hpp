@@ -82,8 +82,9 @@ struct FaultDetectionConfig {
     // Spike test: an axis' measured field (before the calibration) further from the prediction than
     // spike_gate × √(field_sigma_k² + spike_sigma²) is an outlier; spike_sigma is what a healthy axis
     // strays besides the attitude's uncertainty (noise, the on-board field model's truncation, the
-    // calibration's residual). At most kSpikeMaxRun outliers in a row are spikes (skipped); a longer run
-    // is a change of the field or of the filter, not a spike, and is let through.
+    // calibration's residual). At most two outliers in a row are spikes (skipped; ten once the axis is
+    // declared spiking); a longer run is a change of the field or of the filter, not a spike, and is let
+    // through.
     T spike_sigma = T(0.5e-6);     // T
     T spike_gate = T(6);           // 1
     T spike_window = T(60);        // s
