@@ -155,6 +155,29 @@ TYPED_TEST(EstimatorCoreMagFaults, SpikesAreSkippedCountedAndDeclaredWhenFrequen
     EXPECT_EQ(excluded_axes(s), 0);
 }
 
+TYPED_TEST(EstimatorCoreMagFaults, OnASpikingAxisLongerRunsAreSkipped) {
+    using T = TypeParam;
+    const Field<T> f;
+    const auto c = enabled<T>();
+    // Five single 5 µT spikes (samples 100, 140, …, 260) declare x spiking at sample 260; then a run of
+    // five outliers (samples 300–304) is skipped whole (up to ten on a spiking axis), a run of twelve
+    // (samples 400–411) for its first ten samples only: 5 + 5 + 10 = 20 spikes.
+    FaultDetectionState<T> s;
+    int skipped_in_long_run = 0;
+    for (int i = 0; i < 500; ++i) {
+        const bool single = i >= 100 && i <= 260 && (i - 100) % 40 == 0;
+        const bool run5 = i >= 300 && i < 305, run12 = i >= 400 && i < 412;
+        fault_detect(s, with_field(f, i, single || run5 || run12 ? T(5e-6) : T(0)), c);
+        if (run5) {
+            EXPECT_EQ(s.spike_now, 1u) << "sample " << i;
+        }
+        if (run12 && s.spike_now == 1u) ++skipped_in_long_run;
+    }
+    EXPECT_EQ(s.axis_word[0], kFaultAxisSpiking);
+    EXPECT_EQ(skipped_in_long_run, 10);
+    EXPECT_EQ(s.spikes[0], 20);
+}
+
 TYPED_TEST(EstimatorCoreMagFaults, SmallOutliersAndStepsAreNotSpikes) {
     using T = TypeParam;
     const Field<T> f;
