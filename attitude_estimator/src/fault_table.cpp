@@ -3,6 +3,64 @@
 
 namespace attitude_estimator {
 
+namespace {
+
+// The magnetometer's further tests and recovery (frozen axis, spikes, bias jump, strap recovery).
+void declare_mag_fault_variables(fmu::Table<EstimatorData>& t) {
+    using D = EstimatorData;
+    t.parameter("detect_frozen_min_field", &D::detect_frozen_min_field, "T",
+                "detect_faults: an axis too weak for the flip test is tested for not changing at all across a "
+                "set/reset flip (stuck at its last value) where the calibrated predicted field along it is at "
+                "least this and 4 sigma of the prediction's own uncertainty")
+        .range(1e-8, 1e-3);
+    t.parameter("detect_frozen_tolerance", &D::detect_frozen_tolerance, "T",
+                "detect_faults: an axis whose half set/reset difference is below this fails the frozen test")
+        .range(1e-10, 1e-5);
+    t.parameter("detect_spike_sigma", &D::detect_spike_sigma, "T",
+                "detect_faults: how far a healthy magnetometer axis strays from the filter's prediction besides "
+                "the attitude's own uncertainty (noise, field model truncation, calibration residual)")
+        .range(1e-9, 1e-3);
+    t.parameter("detect_spike_gate", &D::detect_spike_gate, "1",
+                "detect_faults: an axis reading further than this many sigma from the prediction is an outlier "
+                "(one or two in a row: a spike, that sample's field is skipped)")
+        .range(1.0, 1000.0);
+    t.parameter("detect_spike_window", &D::detect_spike_window, "s",
+                "detect_faults: spikes are counted over windows this long")
+        .range(0.1, 86400.0);
+    t.parameter("detect_spike_count", &D::detect_spike_count, "",
+                "detect_faults: this many spikes on an axis within one window declare it spiking (bit 8; not "
+                "excluded)")
+        .range(1, 1000000);
+    t.parameter("detect_bias_window", &D::detect_bias_window, "s",
+                "detect_faults: the bias-jump test averages each axis' innovation (measured minus predicted "
+                "field) over this time (exponential window)")
+        .range(1.0, 86400.0);
+    t.parameter("detect_bias_threshold", &D::detect_bias_threshold, "T",
+                "detect_faults: an axis whose mean innovation exceeds this fails the bias-jump test; confirmed, "
+                "the calibration's offset takes the jump and re-learns it (bit 16; not excluded)")
+        .range(1e-9, 1e-3);
+    t.parameter("detect_bias_noise_factor", &D::detect_bias_noise_factor, "1",
+                "detect_faults: after a bias jump the filter's field noise is raised by this factor until the "
+                "calibration has re-learnt its offset")
+        .range(1.0, 1000.0);
+    t.output("fault_mag_bias", &D::fault_mag_bias, "T",
+             "detect_faults: the bias-jump test's mean innovation per magnetometer axis (measured minus "
+             "predicted field, sensor axes)")
+        .discrete()
+        .depends_on({});
+    t.output("fault_mag_strap_cleared_time", &D::fault_mag_strap_cleared_time, "s",
+             "detect_faults: when a failed set/reset strap (bit 4) was last seen working again, its readings "
+             "flipping with the commanded polarity for detect_confirm_time: set/reset resumes (-1: never)")
+        .discrete()
+        .depends_on({});
+    t.output("fault_mag_spikes", &D::fault_mag_spikes, "",
+             "detect_faults: one-sample outliers (spikes) skipped so far per magnetometer axis")
+        .discrete()
+        .depends_on({});
+}
+
+}  // namespace
+
 void declare_fault_variables(fmu::Table<EstimatorData>& t) {
     using D = EstimatorData;
     t.parameter("detect_faults", &D::detect_faults, "",
@@ -84,7 +142,8 @@ void declare_fault_variables(fmu::Table<EstimatorData>& t) {
         .depends_on({});
     t.output("fault_mag_axis", &D::fault_mag_axis, "",
              "detect_faults: fault word per magnetometer axis, 0 healthy; bits 1 at a rail, 2 does not flip with "
-             "the set/reset polarity; a declared axis is excluded")
+             "the set/reset polarity (both exclude the axis), 4 the set/reset strap failed (read in its stuck "
+             "polarity), 8 spiking (outliers skipped), 16 a bias jump (the calibration re-learns its offset)")
         .discrete()
         .depends_on({});
     t.output("fault_mag_axis_time", &D::fault_mag_axis_time, "s",
@@ -100,6 +159,7 @@ void declare_fault_variables(fmu::Table<EstimatorData>& t) {
              "detect_faults: when fault_mag_norm was declared (-1: never)")
         .discrete()
         .depends_on({});
+    declare_mag_fault_variables(t);
 }
 
 }  // namespace attitude_estimator

@@ -436,9 +436,10 @@ TEST(EstimatorFmuTable, OutputsAreDiscreteWithNoDirectDependencies) {
     // set/reset command and offset (1 + 3); filter (q 4, omega 3, offset 3, scale, bound, valid, resets);
     // the filter's attitude covariance factor (6); the in-flight magnetometer calibration applies (1); the
     // references used (sun 3, field 3); the declared faults (face words and times 6 + 6, axis words and times
-    // 3 + 3, norm word and time 2); the face scales of the panel faults (6). 96 in all: a hardware-bridge
+    // 3 + 3, norm word and time 2); the face scales of the panel faults (6); the magnetometer's spikes and
+    // mean innovation per axis (3 + 3), when a failed strap cleared (1). 103 in all: a hardware-bridge
     // frame carries up to 128 (bridge::max_values).
-    EXPECT_EQ(outputs, 4 + 9 + 3 + 3 + 3 + 1 + 1 + 4 + 3 + 5 + 3 + 4 + 14 + 6 + 1 + 6 + 20 + 6);
+    EXPECT_EQ(outputs, 4 + 9 + 3 + 3 + 3 + 1 + 1 + 4 + 3 + 5 + 3 + 4 + 14 + 6 + 1 + 6 + 20 + 6 + 3 + 3 + 1);
     const auto& solver = table.by_name("solver");
     EXPECT_EQ(solver.type, fmu::ValueType::Enumeration);
     EXPECT_EQ(solver.item_names(), "qmethod, fast");

@@ -124,6 +124,50 @@ bool mag_calibration_solve(MagCalibrationState<T>& s, const MagCalibrationConfig
 }
 
 template <class T>
+void mag_calibration_reopen_offset(MagCalibrationState<T>& s, const Vec3<T>& shift) noexcept {
+    for (std::size_t i = 0; i < 3; ++i) s.offset[i] += shift[i];
+    // The old equations' information on c and μ (which hold the old offset) is marginalized out: the Schur
+    // complement keeps what they say about E alone; c and μ start again with no information.
+    MatN<T> a;
+    VecN<T> y;
+    for (int i = 0; i < kMagCalUnknowns; ++i) {
+        y(i) = s.rhs[static_cast<std::size_t>(i)];
+        for (int j = i; j < kMagCalUnknowns; ++j)
+            a(i, j) = a(j, i) = s.info[static_cast<std::size_t>(packed_index(i, j))];
+    }
+    constexpr int kOut[4] = {0, 1, 2, 9};         // c, μ
+    constexpr int kKeep[6] = {3, 4, 5, 6, 7, 8};  // E
+    Eigen::Matrix<T, 4, 4> amm;
+    Eigen::Matrix<T, 6, 4> akm;
+    Eigen::Matrix<T, 4, 1> ym;
+    for (int i = 0; i < 4; ++i) {
+        ym(i) = y(kOut[i]);
+        for (int j = 0; j < 4; ++j) amm(i, j) = a(kOut[i], kOut[j]);
+        for (int k = 0; k < 6; ++k) akm(k, i) = a(kKeep[k], kOut[i]);
+    }
+    const bool invertible = Eigen::LLT<Eigen::Matrix<T, 4, 4>>(amm).info() == Eigen::Success;
+    const Eigen::Matrix<T, 4, 4> amm_inv =
+        invertible ? Eigen::Matrix<T, 4, 4>(amm.inverse()) : Eigen::Matrix<T, 4, 4>::Zero();
+    const Eigen::Matrix<T, 6, 4> gain = akm * amm_inv;
+    for (int i = 0; i < kMagCalUnknowns; ++i) {
+        for (int j = i; j < kMagCalUnknowns; ++j) {
+            int ki = -1, kj = -1;
+            for (int k = 0; k < 6; ++k) {
+                if (kKeep[k] == i) ki = k;
+                if (kKeep[k] == j) kj = k;
+            }
+            T v = T(0);
+            if (ki >= 0 && kj >= 0) v = a(i, j) - gain.row(ki).dot(akm.row(kj));
+            s.info[static_cast<std::size_t>(packed_index(i, j))] = v;
+        }
+        int ki = -1;
+        for (int k = 0; k < 6; ++k)
+            if (kKeep[k] == i) ki = k;
+        s.rhs[static_cast<std::size_t>(i)] = ki >= 0 ? y(i) - gain.row(ki).dot(ym) : T(0);
+    }
+}
+
+template <class T>
 Vec3<T> mag_calibration_apply(const MagCalibrationState<T>& s, const Vec3<T>& field) noexcept {
     if (!s.valid) return field;
     Vec3<T> out{};
@@ -136,7 +180,8 @@ Vec3<T> mag_calibration_apply(const MagCalibrationState<T>& s, const Vec3<T>& fi
     template void mag_calibration_offer(MagCalibrationState<T>&, const Vec3<T>&, T,                        \
                                         const MagCalibrationConfig<T>&) noexcept;                          \
     template bool mag_calibration_solve(MagCalibrationState<T>&, const MagCalibrationConfig<T>&) noexcept; \
-    template Vec3<T> mag_calibration_apply(const MagCalibrationState<T>&, const Vec3<T>&) noexcept;
+    template Vec3<T> mag_calibration_apply(const MagCalibrationState<T>&, const Vec3<T>&) noexcept;        \
+    template void mag_calibration_reopen_offset(MagCalibrationState<T>&, const Vec3<T>&) noexcept;
 ATTITUDE_ESTIMATOR_MAG_CAL_INSTANTIATE(float)
 ATTITUDE_ESTIMATOR_MAG_CAL_INSTANTIATE(double)
 #undef ATTITUDE_ESTIMATOR_MAG_CAL_INSTANTIATE

@@ -49,6 +49,18 @@ Matrix3RowMajor<T> attitude_covariance_sqrt(const MekfState<T>& m) {
     return l;
 }
 
+// While the calibration re-learns its offset after a bias jump, the field's noise in the filter is raised
+// by settings.faults.bias_noise_factor (what is left of the jump is a bias the white noise does not cover).
+template <class T>
+MekfConfig<T> field_recovery_config(const OnboardState<T>& s, const OnboardSettings<T>& settings) {
+    MekfConfig<T> c = settings.mekf;
+    if (settings.faults.enabled && s.faults.bias_recovering) {
+        c.mag_sigma *= settings.faults.bias_noise_factor;
+        c.mag_sigma_calibrated *= settings.faults.bias_noise_factor;
+    }
+    return c;
+}
+
 template <class T>
 void update_filter(OnboardState<T>& s, const OnboardInputs<T>& in, const OnboardSettings<T>& settings, T t,
                    const SampleResult<T>& r, const EstimatorConfig<T>& nominal, T polarity, bool mag_valid,
@@ -81,7 +93,7 @@ void update_filter(OnboardState<T>& s, const OnboardInputs<T>& in, const Onboard
         }
         f.response = &nominal.sun.response;
     }
-    const MekfSampleResult<T> result = mekf_sample(s.filter, f, settings.mekf);
+    const MekfSampleResult<T> result = mekf_sample(s.filter, f, field_recovery_config(s, settings));
     const MekfState<T>& m = s.filter;
     const bool running = m.stage == 2;
     out.q_filt = running ? m.q : Quaternion<T>{};
@@ -154,7 +166,34 @@ void predict(const MekfState<T>& m, const OnboardInputs<T>& in, T t, FaultObserv
     const T sun_norm = std::sqrt(squared_norm(sun));
     o.sun_body = sun_norm > T(0) ? scaled(sun, T(1) / sun_norm) : Vec3<T>{};
     o.field_body = field;
+    // The field's uncertainty from the attitude's: δB = B × δθ, var_k = m_k P_θθ m_kᵀ with m_k the k-th row of
+    // [B×] (the propagation since the last sample adds a negligible amount at 20 Hz).
+    const Matrix3RowMajor<T> bx{T(0), -field[2], field[1], field[2], T(0), -field[0], -field[1], field[0], T(0)};
+    for (std::size_t k = 0; k < 3; ++k) {
+        T var = T(0);
+        for (std::size_t i = 0; i < 3; ++i)
+            for (std::size_t j = 0; j < 3; ++j)
+                var += bx[3 * k + i] * bx[3 * k + j] * m.p[kMekfStates * (kMekfAttitude + i) + kMekfAttitude + j];
+        o.field_sigma[k] = std::sqrt(var > T(0) ? var : T(0));
+    }
     o.predicted = sun_norm > T(0);
+}
+
+// The filter's prediction of the field the sensor reads (before the calibration's correction) and of the
+// sun, in o.field_body / o.sun_body (o.predicted false when the filter is not running).
+template <class T>
+void predict_at_sensor(const OnboardState<T>& s, const OnboardInputs<T>& in, const OnboardSettings<T>& settings, T t,
+                       FaultObservation<T>& o) {
+    if (settings.filter == FilterKind::mekf && s.filter.stage == 2) predict(s.filter, in, t, o);
+    if (o.predicted && settings.mag_calibration && s.mag_cal.valid) {
+        // What the sensor sees is the calibration's model inverted: H = (I + D)⁻¹ (B + b), to first order in
+        // the small D: (B + b) − D (B + b) (D is a few per cent at most: an error of its square).
+        Vec3<T> v{};
+        for (std::size_t k = 0; k < 3; ++k) v[k] = o.field_body[k] + s.mag_cal.offset[k];
+        const Vec3<T> gv = multiply(s.mag_cal.gain, v);
+        for (std::size_t k = 0; k < 3; ++k) o.field_body[k] = T(2) * v[k] - gv[k];
+        o.field_calibrated = true;
+    }
 }
 
 // The tests' view of this sample: the raw readings (before any exclusion), the filter's prediction.
@@ -180,20 +219,14 @@ FaultObservation<T> observe(const OnboardState<T>& s, const OnboardInputs<T>& in
         o.at_rail[k] = !(v > adc.min + nominal.mag_rail_margin && v < adc.max - nominal.mag_rail_margin);
     }
     o.polarity = polarity;
+    o.commanded_polarity = s.set_reset.polarity;
     o.sensitivity = nominal.mag_sensitivity;
     o.field_usable = axes_out == 0 && r.mag_valid;
     o.field = r.mag_field;
+    o.field_measured = r.mag_reading_usable;
+    o.field_uncalibrated = r.mag_field_uncalibrated;
     o.field_ref_norm = std::sqrt(squared_norm(in.mag_ref));
-    if (settings.filter == FilterKind::mekf && s.filter.stage == 2) predict(s.filter, in, t, o);
-    if (o.predicted && settings.mag_calibration && s.mag_cal.valid) {
-        // What the sensor sees is the calibration's model inverted: H = (I + D)⁻¹ (B + b), to first order in
-        // the small D: (B + b) − D (B + b) (D is a few per cent at most: an error of its square).
-        Vec3<T> v{};
-        for (std::size_t k = 0; k < 3; ++k) v[k] = o.field_body[k] + s.mag_cal.offset[k];
-        const Vec3<T> gv = multiply(s.mag_cal.gain, v);
-        for (std::size_t k = 0; k < 3; ++k) o.field_body[k] = T(2) * v[k] - gv[k];
-        o.field_calibrated = true;
-    }
+    predict_at_sensor(s, in, settings, t, o);
     return o;
 }
 
@@ -219,6 +252,26 @@ OnboardInputs<T> with_face_scales(const OnboardInputs<T>& in, const FaultDetecti
 template <class T>
 constexpr T kShadowMarginKm = T(100);
 
+// An excluded axis is read at the filter's prediction of it when there is one, else at its null (so that its
+// rail does not take the other two with it; its component is not used by the filter). The prediction, not
+// the null, because the calibration's correction (I + D) H mixes the axes: with the null, the cross terms
+// D_jk H_k (a few tenths of a per cent of tens of µT) would reach the other axes as an error as large as
+// their noise, following the tumble; the prediction's error there is D_jk times |B| times the attitude error.
+template <class T>
+void stand_in_for_excluded_axes(const OnboardState<T>& s, const OnboardInputs<T>& in,
+                                const OnboardSettings<T>& settings, T t, std::uint8_t axes_out, SampleInputs<T>& used) {
+    FaultObservation<T> o;
+    predict_at_sensor(s, in, settings, t, o);
+    const T sensitivity = settings.estimator.mag_sensitivity;
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (!(axes_out >> k & 1u)) continue;
+        // The reading model: v − v_ref = p S H + v_os (field_vector.hpp), with the offset the sample applies.
+        used.v_mag[k] = o.predicted
+                            ? in.v_mag_ref + used.mag_polarity * sensitivity * o.field_body[k] + used.mag_offset[k]
+                            : in.v_mag_ref;
+    }
+}
+
 // No attitude from this sample's single frame (a vector it needs is excluded).
 template <class T>
 void drop_single_frame(SampleResult<T>& r) {
@@ -226,6 +279,16 @@ void drop_single_frame(SampleResult<T>& r) {
     r.q = Quaternion<T>{};
     r.a = Matrix3RowMajor<T>{1, 0, 0, 0, 1, 0, 0, 0, 1};
     r.loss = T(0);
+}
+
+// A spike on an axis (fault_detection.hpp): this sample's field is used nowhere, neither by the single frame
+// nor the filter (nor, in onboard_sample, by the calibration and the set/reset offset mean).
+template <class T>
+void skip_spiking_field(SampleResult<T>& r, bool& filter_mag_valid) {
+    r.mag_valid = false;
+    r.mag_meas = Vec3<T>{};
+    if (r.valid) drop_single_frame(r);
+    filter_mag_valid = false;
 }
 
 // The sample's inputs with the reference vectors the settings choose: the inputs' own, or the on-board
@@ -295,8 +358,7 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
     SampleInputs<T> used_in = sample_in;
     for (std::size_t k = 0; k < 6; ++k)
         if (faces_out >> k & 1u) used_in.i_face[k] = T(0);
-    for (std::size_t k = 0; k < 3; ++k)
-        if (axes_out >> k & 1u) used_in.v_mag[k] = in.v_mag_ref;
+    if (axes_out != 0) stand_in_for_excluded_axes(s, in, settings, t, axes_out, used_in);
     out.sample = estimate_sample(used_in, config, s.sun);
     bool filter_mag_valid = out.sample.mag_valid;
     if (detecting) {
@@ -326,6 +388,7 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
             drop_single_frame(out.sample);
         }
         if (axes_out == 7) filter_mag_valid = false;
+        if (s.faults.spike_now != 0) skip_spiking_field(out.sample, filter_mag_valid);
     }
     const FaultDetectionState<T>& fd = s.faults;
     out.fault_face = fd.face_word;
@@ -335,12 +398,25 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
     out.fault_mag_norm = fd.norm_word;
     out.fault_mag_norm_time = fd.norm_time;
     out.fault_face_scale = fd.face_scale;
-    if (settings.mag_calibration && out.sample.mag_reading_usable && axes_out == 0) {
+    out.fault_mag_spikes = fd.spikes;
+    out.fault_mag_bias = fd.bias_mean;
+    out.fault_mag_strap_cleared_time = fd.strap_cleared_time;
+    const bool spike = detecting && fd.spike_now != 0;
+    if (detecting && fd.bias_jump_now && settings.mag_calibration && s.mag_cal.valid) {
+        // A bias jump (fault_detection.hpp): the calibration's offset takes it at once, by (I + D) times the
+        // jump seen before the correction, and re-learns it from the equations to come.
+        mag_calibration_reopen_offset(s.mag_cal, multiply(s.mag_cal.gain, fd.bias_jump));
+    }
+    const Vec3<T> cal_offset_before = s.mag_cal.offset;
+    if (settings.mag_calibration && out.sample.mag_reading_usable && axes_out == 0 && !spike) {
         // Against the reference field's magnitude only: no attitude needed (the next sample applies it).
         const T ref =
             std::sqrt(in.mag_ref[0] * in.mag_ref[0] + in.mag_ref[1] * in.mag_ref[1] + in.mag_ref[2] * in.mag_ref[2]);
         mag_calibration_offer(s.mag_cal, out.sample.mag_field_uncalibrated, ref, settings.mag_cal);
     }
+    // The re-learnt offset is applied (a solve changed it): the recovery from a bias jump is over.
+    if (detecting && s.faults.bias_recovering && !fd.bias_jump_now && s.mag_cal.offset != cal_offset_before)
+        s.faults.bias_recovering = false;
     out.mag_cal_valid = s.mag_cal.valid;
     out.mag_cal_gain = s.mag_cal.gain;
     out.mag_cal_offset = s.mag_cal.offset;
@@ -349,8 +425,8 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
     // The next reading is taken in the polarity commanded here.
     // (A failed strap's readings would pull the offset mean to S p B + v_os: they are not paired.)
     const bool strap_failed_now = detecting && s.faults.strap_failed;
-    set_reset_after_sample(s.set_reset, out.sample.mag_reading, out.sample.mag_reading_usable && !strap_failed_now,
-                           settings.set_reset);
+    set_reset_after_sample(s.set_reset, out.sample.mag_reading,
+                           out.sample.mag_reading_usable && !strap_failed_now && !spike, settings.set_reset);
     out.mag_set_reset = s.set_reset.polarity > T(0);
     out.mag_offset = strap_failed_now ? s.faults.strap_offset : applied_offset(s.set_reset, settings.set_reset);
     update_rates(s, settings, t, out.sample, out);

@@ -204,6 +204,19 @@ struct EstimatorData {
     Vec3d fault_mag_axis_time{-1.0, -1.0, -1.0};
     std::int32_t fault_mag_norm = 0;  // 1: the field-norm test confirmed a fault (names no axis)
     double fault_mag_norm_time = -1.0;
+    // The magnetometer's further tests and recovery (fault_detection.hpp, docs/faults.md "Magnetometer").
+    double detect_frozen_min_field = 1e-6;     // T: frozen test where the predicted field along the axis is this
+    double detect_frozen_tolerance = 0.02e-6;  // T: an axis flipping by less than this fails it
+    double detect_spike_sigma = 0.5e-6;        // T: a healthy axis' spread about the prediction (besides attitude)
+    double detect_spike_gate = 6.0;            // 1: an outlier is this many of its σ from the prediction
+    double detect_spike_window = 60.0;         // s: spikes are counted over windows this long
+    std::int32_t detect_spike_count = 5;       // spikes in one window that declare the axis spiking
+    double detect_bias_window = 60.0;          // s: the bias-jump test's averaging time
+    double detect_bias_threshold = 1e-6;       // T: an axis' mean innovation beyond this fails it
+    double detect_bias_noise_factor = 1.0;     // 1: the filter's field noise factor while the offset re-learns
+    std::array<std::int32_t, 3> fault_mag_spikes{};  // spikes skipped so far per axis
+    Vec3d fault_mag_bias{};                          // T: the mean innovation per axis
+    double fault_mag_strap_cleared_time = -1.0;      // s: a failed strap seen working again (−1: never)
 
     // discrete state
     double t_start = 0.0;  // s, the start time: sample k is due at t_start + k·sample_period

@@ -52,6 +52,13 @@ inline constexpr std::uint32_t kFaultAxisNoFlip = 2u;  // does not flip with the
 // The set/reset strap failed (set on the three axes at once). Not an exclusion: the axes are read in the
 // polarity the film stayed in (FaultDetectionState::strap_polarity, strap_offset).
 inline constexpr std::uint32_t kFaultAxisStrap = 4u;
+// Spikes: one-sample outliers against the prediction come faster than spike_count per spike_window. Not an
+// exclusion: each outlier's sample is skipped (FaultDetectionState::spike_now), the axis stays in use.
+inline constexpr std::uint32_t kFaultAxisSpiking = 8u;
+// A bias jump: a new field at the sensor (it flips with the set/reset polarity as the earth's does, so the
+// set/reset difference keeps it) seen as the axis' mean innovation. Not an exclusion: the calibration's
+// offset takes the jump and re-learns it (FaultDetectionState::bias_jump_now, bias_jump).
+inline constexpr std::uint32_t kFaultAxisBias = 16u;
 
 template <class T>
 struct FaultDetectionConfig {
@@ -95,6 +102,31 @@ struct FaultDetectionConfig {
     T flip_min_field_calibrated = T(3e-6);  // T
     T flip_fraction = T(0.25);
     T norm_tolerance = T(12e-6);  // T: | |B| − |B_ref| |
+    // Magnetometer (fault_detection_mag.cpp). Frozen test: an axis stuck at its last value reads exactly the
+    // same across a set/reset flip, a healthy one flips by 2 S B_k. Where the flip test's bar is not reached
+    // (a weak field along the axis) but the calibrated prediction is at least frozen_min_field and 4 σ of
+    // its own uncertainty (FaultObservation::field_sigma), the axis fails when its half difference is below
+    // frozen_tolerance (the sensor's noise is a few 10 nT: a healthy axis crosses that band in a fraction
+    // of a second).
+    T frozen_min_field = T(1e-6);     // T
+    T frozen_tolerance = T(0.02e-6);  // T
+    // Spike test: an axis' measured field (before the calibration) further from the prediction than
+    // spike_gate × √(field_sigma_k² + spike_sigma²) is an outlier; spike_sigma is what a healthy axis
+    // strays besides the attitude's uncertainty (noise, the on-board field model's truncation, the
+    // calibration's residual). At most two outliers in a row are spikes (skipped; ten once the axis is
+    // declared spiking); a longer run is a change of the field or of the filter, not a spike, and is let
+    // through.
+    T spike_sigma = T(0.5e-6);     // T
+    T spike_gate = T(6);           // 1
+    T spike_window = T(60);        // s
+    std::int32_t spike_count = 5;  // spikes in one window that declare the axis spiking
+    // Bias-jump test: the innovation (measured minus predicted field, before the calibration, spikes left
+    // out) averaged per axis with an exponential window of bias_window; an axis fails while |mean| >
+    // bias_threshold (the attitude error's share turns with the tumble and averages out; a field fixed in
+    // the sensor does not).
+    T bias_window = T(60);       // s
+    T bias_threshold = T(1e-6);  // T
+    T bias_noise_factor = T(1);  // the filter's field noise is raised this much until the offset is re-learnt
 };
 
 // What one sample offers the tests. Predictions are those of the filter (zero / false when it is not
@@ -109,14 +141,20 @@ struct FaultObservation {
     bool predicted = false;         // the filter runs: the two predictions below hold
     Vec3<T> sun_body{};             // unit sun direction predicted in body axes
     Vec3<T> field_body{};           // T: field predicted at the sensor, in body axes
+    Vec3<T> field_sigma{};          // T: 1σ of field_body per axis from the filter's attitude covariance
     bool field_calibrated = false;  // field_body includes the calibration's hard-iron estimate (and scale)
     Vec3<T> mag_reading{};          // V: digitized v_mag − v_mag_ref (offset and polarity still in)
     T polarity = T(1);              // the set/reset polarity the reading was taken in
+    // The polarity the computer commanded for it (differs from `polarity` once a failed strap is declared:
+    // the recovery test pairs readings by the command).
+    T commanded_polarity = T(1);
     Vec3<T> mag_offset{};           // V: the sensor offset the computer takes out of this reading
     T sensitivity = T(1e4);         // V/T
     std::array<bool, 3> at_rail{};  // each channel within the rail margin of its converter's ends
     bool field_usable = false;      // the measured field below is complete (no axis excluded or at a rail)
     Vec3<T> field{};                // T: measured field (offset removed, calibrated when the calibration applies)
+    bool field_measured = false;    // field_uncalibrated holds this sample's reading (each axis: !at_rail)
+    Vec3<T> field_uncalibrated{};   // T: measured field at the sensor, set/reset offset removed, no calibration
     T field_ref_norm = T(0);        // T: |B_ref| (0: no reference)
     T sample_period = T(0.05);      // s
     const panel_response::Response<T>* response = nullptr;  // the panels' angular law
@@ -163,6 +201,27 @@ struct FaultDetectionState {
     std::array<bool, 6> stuck_started{};
     std::array<T, 6> stuck_failing{};  // seconds failing: stuck and dark tests
     std::array<T, 6> dark_failing{};
+    // Recovery: once failed, the strap test goes on pairing readings by the commanded polarity; passing
+    // for the confirmation time clears strap_failed (the kFaultAxisStrap bits stay as the record).
+    T strap_passing = T(0);
+    T last_commanded_polarity = T(0);
+    T strap_cleared_time = T(-1);  // s, when the strap was last seen working again (−1: never)
+    // Spike test: this sample's spikes (bit k = axis k: its field is to be skipped), outliers in a row,
+    // spikes so far, and the current window's start and count.
+    std::uint8_t spike_now = 0;
+    std::array<std::int32_t, 3> outlier_run{};
+    std::array<std::int32_t, 3> spikes{};
+    std::array<T, 3> spike_window_start{T(-1), T(-1), T(-1)};
+    std::array<std::int32_t, 3> spike_window_count{};
+    // Bias-jump test: the innovation's mean per axis, its evidence; a jump declared at this sample (the
+    // computer moves the calibration's offset by bias_jump, the means at the declaration) and, until the
+    // calibration has re-learnt its offset, bias_recovering.
+    Vec3<T> bias_mean{};
+    Vec3<T> bias_recent{};  // the same over a twentieth of the window: the jump's size at the declaration
+    std::array<T, 3> bias_failing{};
+    bool bias_jump_now = false;
+    Vec3<T> bias_jump{};
+    bool bias_recovering = false;
 };
 
 // One sample of every test that the observation allows; declares faults whose test has failed for

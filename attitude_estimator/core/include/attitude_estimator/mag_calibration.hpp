@@ -71,11 +71,19 @@ bool mag_calibration_solve(MagCalibrationState<T>& s, const MagCalibrationConfig
 template <class T>
 Vec3<T> mag_calibration_apply(const MagCalibrationState<T>& s, const Vec3<T>& field) noexcept;
 
+// A new field at the sensor (a bias jump, fault_detection.hpp): the applied offset b moves by `shift` (T,
+// the jump as the filter saw it, corrected by I + D) and the equations' information on the offset (c and μ)
+// is dropped, that on the scale and non-orthogonality E kept: the next solution the new equations pin
+// down replaces b.
+template <class T>
+void mag_calibration_reopen_offset(MagCalibrationState<T>& s, const Vec3<T>& shift) noexcept;
+
 #define ATTITUDE_ESTIMATOR_MAG_CAL_EXTERN(T)                                                                      \
     extern template void mag_calibration_offer(MagCalibrationState<T>&, const Vec3<T>&, T,                        \
                                                const MagCalibrationConfig<T>&) noexcept;                          \
     extern template bool mag_calibration_solve(MagCalibrationState<T>&, const MagCalibrationConfig<T>&) noexcept; \
-    extern template Vec3<T> mag_calibration_apply(const MagCalibrationState<T>&, const Vec3<T>&) noexcept;
+    extern template Vec3<T> mag_calibration_apply(const MagCalibrationState<T>&, const Vec3<T>&) noexcept;        \
+    extern template void mag_calibration_reopen_offset(MagCalibrationState<T>&, const Vec3<T>&) noexcept;
 ATTITUDE_ESTIMATOR_MAG_CAL_EXTERN(float)
 ATTITUDE_ESTIMATOR_MAG_CAL_EXTERN(double)
 #undef ATTITUDE_ESTIMATOR_MAG_CAL_EXTERN

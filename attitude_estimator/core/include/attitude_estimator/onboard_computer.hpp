@@ -109,6 +109,10 @@ struct OnboardOutputs {
     std::uint32_t fault_mag_norm = 0;
     T fault_mag_norm_time = T(-1);
     std::array<T, 6> fault_face_scale{T(1), T(1), T(1), T(1), T(1), T(1)};  // panel faults: kFaultFaceScale's scale
+    // The magnetometer's spikes so far per axis (one-sample outliers skipped; fault_detection.hpp).
+    std::array<std::int32_t, 3> fault_mag_spikes{};
+    Vec3<T> fault_mag_bias{};                // T: the bias-jump test's mean innovation per axis (sensor axes)
+    T fault_mag_strap_cleared_time = T(-1);  // s: when a failed strap was last seen working again (−1: never)
 };
 
 // Power-up: nothing remembered, the sensor set, and no pulse at the first sample (a host re-reads the
