@@ -75,7 +75,7 @@ void declare_fault_variables(fmu::Table<EstimatorData>& t) {
     t.parameter("detect_face_deficit", &D::detect_face_deficit, "1",
                 "detect_faults: a face reading this far below its predicted relative response fails")
         .range(0.01, 1.0);
-    // Panel faults (helper panelfd).
+    // Panel faults (issue 28): the ratio, scale, dark and stuck tests.
     t.parameter("detect_face_ratio_min_response", &D::detect_face_ratio_min_response, "1",
                 "detect_faults: once the in-flight calibration applies, a face is also tested where the irradiance "
                 "times its predicted relative response is at least this")

@@ -190,7 +190,7 @@ struct EstimatorData {
     double detect_flip_min_field = 15e-6;            // T: flip test where the predicted field along the axis is this
     double detect_flip_fraction = 0.25;              // 1: an axis flipping by less than this fraction of it fails
     double detect_norm_tolerance = 12e-6;            // T: | |B| − |B_ref| |
-    // Panel faults (helper panelfd): the ratio test for faces low in the sun (once the calibration applies).
+    // Panel faults: the ratio test for faces low in the sun (once the calibration applies).
     double detect_face_ratio_min_response = 0.1;  // 1: tested where irradiance × predicted response is this
     double detect_face_ratio = 0.3;               // 1: a face reading below this fraction of it fails
     double detect_face_scale_min = 0.2;           // 1: a deficit reading at least this fraction is a lower scale

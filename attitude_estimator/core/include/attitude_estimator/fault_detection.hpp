@@ -40,7 +40,7 @@ namespace attitude_estimator {
 inline constexpr std::uint32_t kFaultFaceDeficit = 1u;  // reads well below the predicted response
 inline constexpr std::uint32_t kFaultFaceExcess = 2u;   // reads well above it (more than albedo can add)
 inline constexpr std::uint32_t kFaultFaceBus = 4u;      // its axis' Hall current disagrees with the face pair
-// Panel faults (helper panelfd): a face reading a steady fraction of its light (shadow, degradation) is
+// Panel faults: a face reading a steady fraction of its light (shadow, degradation) is
 // compensated, not excluded (FaultDetectionState::face_scale); a Hall channel reading current in the Earth's
 // umbra (offset, stuck) or not moving while the light on it does (stuck) is excluded.
 inline constexpr std::uint32_t kFaultFaceScale = 8u;   // reads face_scale of the prediction: divided by it
@@ -70,7 +70,7 @@ struct FaultDetectionConfig {
     // eclipse, not deep in penumbra). The deficit test compares with the prediction times that irradiance.
     T face_min_response = T(0.4);
     T face_deficit = T(0.3);  // fail below (irradiance × predicted − this), relative to full sun
-    // Panel faults (issue 28, helper panelfd): the ratio test, a second deficit test for faces low in the sun.
+    // Panel faults (issue 28): the ratio test, a second deficit test for faces low in the sun.
     // Once the in-flight magnetometer calibration applies (the filter's attitude then within about a degree), a
     // face is also tested where irradiance × predicted is only face_ratio_min_response, and fails when it reads
     // below face_ratio of that: an open string (0) is seen as soon as the face turns a little toward the sun.
@@ -189,7 +189,7 @@ struct FaultDetectionState {
     Vec3<T> strap_offset{};
     bool strap_failed = false;
     T strap_polarity = T(1);
-    // Panel faults (helper panelfd). The deficit test's mean measured-to-expected ratio (sum and count over
+    // Panel faults. The deficit test's mean measured-to-expected ratio (sum and count over
     // its failing samples); the scale a kFaultFaceScale face is read divided by (1: none); the stuck test's
     // window: the reading it started at and the range of the predicted response since.
     std::array<T, 6> deficit_ratio_sum{};
