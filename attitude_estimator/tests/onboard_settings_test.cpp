@@ -108,6 +108,11 @@ std::vector<double> numbers(const OnboardSettings<double>& s) {
     put({static_cast<double>(d.enabled), d.confirm_time, d.face_min_response, d.face_deficit, d.face_excess,
          d.others_min_irradiance, d.others_min_predicted, d.bus_tolerance, d.flip_min_field, d.flip_fraction,
          d.norm_tolerance, d.flip_min_field_calibrated});
+    // The panel tests (ratio, scale, dark, stuck) and the magnetometer's frozen, spike and bias tests.
+    put({d.face_ratio_min_response, d.face_ratio, d.face_scale_min, d.face_dark_max, d.face_stuck_change,
+         d.face_stuck_tolerance});
+    put({d.frozen_min_field, d.frozen_tolerance, d.spike_sigma, d.spike_gate, d.spike_window,
+         static_cast<double>(d.spike_count), d.bias_window, d.bias_threshold, d.bias_noise_factor});
     return out;
 }
 
