@@ -11,8 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/system_description.hpp"
-#include "recorder.hpp"
+#include "fault_runs.hpp"
 
 namespace {
 
@@ -32,38 +31,15 @@ std::vector<std::string> fault_columns() {
 }
 
 e2e::Recorder run(const std::vector<std::string>& settings, double stop_time) {
-    cosim::SystemOptions options;
-    options.fmu_dirs = {PVATT_FMU_DIR};
-    options.settings = settings;
-    options.settings.push_back("est.detect_faults=true");
-    cosim::System system(cosim::read_system_description(PVATT_SYSTEMS_DIR "/leo_orbit.ssd"), options);
-    cosim::ExecutionOptions ex;
-    ex.stop_time = stop_time;
-    ex.output_interval = 1.0;
-    e2e::Recorder recorder(system, fault_columns());
-    cosim::Execution(system, ex).run({&recorder});
-    return recorder;
+    return e2e::run_leo_detecting(settings, stop_time, fault_columns());
 }
 
 // The filter's attitude error (deg) at each recorded point from `from` on, sunlit only.
 std::vector<double> sunlit_errors(const e2e::Recorder& r, double from) {
-    std::vector<double> e;
-    for (std::size_t i = 0; i < r.time.size(); ++i) {
-        if (r.time[i] < from || r["env.irradiance"][i] <= 0.0) continue;
-        double dot = 0.0;
-        for (int k = 1; k <= 4; ++k) {
-            const std::string s = "[" + std::to_string(k) + "]";
-            dot += r["env.q_true" + s][i] * r["est.q_filt" + s][i];
-        }
-        e.push_back(2.0 * std::acos(std::min(1.0, std::abs(dot))) * 180.0 / M_PI);
-    }
-    return e;
+    return e2e::filter_errors(r, [&](std::size_t i) { return r.time[i] >= from && r["env.irradiance"][i] > 0.0; });
 }
 
-double p95(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? NAN : v[static_cast<std::size_t>(0.95 * static_cast<double>(v.size() - 1))];
-}
+using e2e::p95;
 
 // Every fault word of the run at its last point (words are latched: the last point holds them all).
 struct Declared {

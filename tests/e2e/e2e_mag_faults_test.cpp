@@ -9,8 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/system_description.hpp"
-#include "recorder.hpp"
+#include "fault_runs.hpp"
 
 namespace {
 
@@ -27,42 +26,18 @@ std::vector<std::string> columns() {
 }
 
 e2e::Recorder run(const std::vector<std::string>& settings, double stop_time) {
-    cosim::SystemOptions options;
-    options.fmu_dirs = {PVATT_FMU_DIR};
-    options.settings = settings;
-    options.settings.push_back("est.detect_faults=true");
-    cosim::System system(cosim::read_system_description(PVATT_SYSTEMS_DIR "/leo_orbit.ssd"), options);
-    cosim::ExecutionOptions ex;
-    ex.stop_time = stop_time;
-    ex.output_interval = 1.0;
-    e2e::Recorder recorder(system, columns());
-    cosim::Execution(system, ex).run({&recorder});
-    return recorder;
+    return e2e::run_leo_detecting(settings, stop_time, columns());
 }
 
 // The filter's attitude error (deg) at each recorded point in [from, to), sunlit or in eclipse.
 std::vector<double> errors(const e2e::Recorder& r, double from, double to, bool sunlit) {
-    std::vector<double> e;
-    for (std::size_t i = 0; i < r.time.size(); ++i) {
-        if (r.time[i] < from || r.time[i] >= to || (r["env.irradiance"][i] > 0.0) != sunlit) continue;
-        double dot = 0.0;
-        for (int k = 1; k <= 4; ++k) {
-            const std::string s = "[" + std::to_string(k) + "]";
-            dot += r["env.q_true" + s][i] * r["est.q_filt" + s][i];
-        }
-        e.push_back(2.0 * std::acos(std::min(1.0, std::abs(dot))) * 180.0 / M_PI);
-    }
-    return e;
+    return e2e::filter_errors(r, [&](std::size_t i) {
+        return r.time[i] >= from && r.time[i] < to && (r["env.irradiance"][i] > 0.0) == sunlit;
+    });
 }
 
-double p95(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? NAN : v[static_cast<std::size_t>(0.95 * static_cast<double>(v.size() - 1))];
-}
-
-double last(const e2e::Recorder& r, const std::string& name, int k) {
-    return r[name + "[" + std::to_string(k) + "]"].back();
-}
+using e2e::last;
+using e2e::p95;
 
 // Noise seed 5, y stuck at its last value at 4335 s: the field along y is then −3 … −0 µT for 70 s, below
 // the flip test's 3 µT bar (the flip test declared it at 4407 s); the frozen test sees it within 10 s. The

@@ -10,8 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/system_description.hpp"
-#include "recorder.hpp"
+#include "fault_runs.hpp"
 
 namespace {
 
@@ -29,38 +28,16 @@ std::vector<std::string> columns() {
 }
 
 e2e::Recorder run(const std::vector<std::string>& settings, double stop_time) {
-    cosim::SystemOptions options;
-    options.fmu_dirs = {PVATT_FMU_DIR};
-    options.settings = settings;
-    options.settings.push_back("est.detect_faults=true");
-    cosim::System system(cosim::read_system_description(PVATT_SYSTEMS_DIR "/leo_orbit.ssd"), options);
-    cosim::ExecutionOptions ex;
-    ex.stop_time = stop_time;
-    ex.output_interval = 1.0;
-    e2e::Recorder recorder(system, columns());
-    cosim::Execution(system, ex).run({&recorder});
-    return recorder;
+    return e2e::run_leo_detecting(settings, stop_time, columns());
 }
 
 // p95 of the filter's attitude error (deg) over the sunlit points in [from, to].
 double sunlit_p95(const e2e::Recorder& r, double from, double to) {
-    std::vector<double> e;
-    for (std::size_t i = 0; i < r.time.size(); ++i) {
-        if (r.time[i] < from || r.time[i] > to || r["env.irradiance"][i] <= 0.0) continue;
-        double dot = 0.0;
-        for (int k = 1; k <= 4; ++k) {
-            const std::string s = "[" + std::to_string(k) + "]";
-            dot += r["env.q_true" + s][i] * r["est.q_filt" + s][i];
-        }
-        e.push_back(2.0 * std::acos(std::min(1.0, std::abs(dot))) * 180.0 / M_PI);
-    }
-    std::sort(e.begin(), e.end());
-    return e.empty() ? NAN : e[static_cast<std::size_t>(0.95 * static_cast<double>(e.size() - 1))];
+    return e2e::p95(e2e::filter_errors(
+        r, [&](std::size_t i) { return r.time[i] >= from && r.time[i] <= to && r["env.irradiance"][i] > 0.0; }));
 }
 
-double last(const e2e::Recorder& r, const std::string& name, int k) {
-    return r[name + "[" + std::to_string(k) + "]"].back();
-}
+using e2e::last;
 
 TEST(E2eLeoPanelFaults, AShadowIsCompensatedAndAHallOffsetIsDeclaredInTheUmbra) {
     // Half of +x shadowed and +y's Hall channel 50 mA off (0.06 of full sun), both from 1400 s.
