@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "fault_test_support.hpp"
 #include "test_support.hpp"
 
 namespace attitude_estimator::test {
@@ -14,8 +15,6 @@ namespace {
 template <class T>
 class EstimatorCoreFaceFaults : public ::testing::Test {};
 TYPED_TEST_SUITE(EstimatorCoreFaceFaults, Scalars, ScalarName);
-
-constexpr double kPeriod = 0.05;  // s: 20 Hz, the bundled sample rate
 
 // The sun low on +y: body direction (x, y, 0.2) with y = 0.12 (or as given) and x = sqrt(1 − y² − 0.04)
 // (0.9724 for 0.12), cosine panels. Faces +x, +y, +z read their cosines; the others nothing.
@@ -35,27 +34,11 @@ struct LowScene {
     }
 
     FaultObservation<T> observation(T t) const {
-        FaultObservation<T> o;
-        o.t = t;
-        o.sample_period = T(kPeriod);
-        o.response = &cosine;
-        o.predicted = true;
+        FaultObservation<T> o = face_observation(cosine, sun, r, i_norm, t);
         o.field_calibrated = calibrated;
-        o.sun_body = sun;
-        o.face_r = r;
-        for (std::size_t k = 0; k < 6; ++k) o.i_face[k] = r[k] * i_norm;
-        for (std::size_t k = 0; k < 3; ++k) o.i_sh[k] = o.i_face[2 * k] - o.i_face[2 * k + 1];
-        o.bus_available = true;
         return o;
     }
 };
-
-template <class T>
-FaultDetectionConfig<T> enabled() {
-    FaultDetectionConfig<T> c;
-    c.enabled = true;
-    return c;
-}
 
 // Face +y (index 2) reads `reading` (its Hall pair consistent) for n samples from t0.
 template <class T>

@@ -9,6 +9,7 @@
 
 #include "attitude_estimator/mag_calibration.hpp"
 
+#include "fault_test_support.hpp"
 #include "test_support.hpp"
 
 namespace attitude_estimator::test {
@@ -17,8 +18,6 @@ namespace {
 template <class T>
 class EstimatorCoreMagFaults : public ::testing::Test {};
 TYPED_TEST_SUITE(EstimatorCoreMagFaults, Scalars, ScalarName);
-
-constexpr double kPeriod = 0.05;  // s: 20 Hz, the bundled sample rate
 
 // Field B in body axes (calibrated prediction), S = 1 V/gauss = 1e4 V/T, offset 20 mV; readings alternate
 // set (p = +1) and reset (p = −1).
@@ -45,13 +44,6 @@ struct Field {
         return o;
     }
 };
-
-template <class T>
-FaultDetectionConfig<T> enabled() {
-    FaultDetectionConfig<T> c;
-    c.enabled = true;
-    return c;
-}
 
 // y stuck at its sample-100 reading in a field of −2 µT along y: below the flip test's 3 µT bar, so only
 // the frozen test (bar max(1 µT, 4 × 0.1 µT) = 1 µT) can see it.

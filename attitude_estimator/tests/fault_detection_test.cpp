@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "attitude_estimator/mekf.hpp"
+#include "fault_test_support.hpp"
 #include "test_support.hpp"
 
 namespace attitude_estimator::test {
@@ -14,8 +15,6 @@ namespace {
 template <class T>
 class EstimatorCoreFaults : public ::testing::Test {};
 TYPED_TEST_SUITE(EstimatorCoreFaults, Scalars, ScalarName);
-
-constexpr double kPeriod = 0.05;  // s: 20 Hz, the bundled sample rate
 
 // A lit scene: the sun in body axes at (0.8, 0.48, 0.36) (unit: 0.64 + 0.2304 + 0.1296 = 1), cosine panels,
 // so faces +x, +y, +z read 0.8, 0.48, 0.36 of full sun and the others nothing.
@@ -26,28 +25,8 @@ struct Scene {
     std::array<T, 6> r{T(0.8), T(0), T(0.48), T(0), T(0.36), T(0)};
     T i_norm = T(0.84754);  // A at full sun
 
-    FaultObservation<T> observation(T t) const {
-        FaultObservation<T> o;
-        o.t = t;
-        o.sample_period = T(kPeriod);
-        o.response = &cosine;
-        o.predicted = true;
-        o.sun_body = sun;
-        o.face_r = r;
-        for (std::size_t k = 0; k < 6; ++k) o.i_face[k] = r[k] * i_norm;
-        // The plant's Hall differential currents: i_sh[k] = i_face[2k] − i_face[2k+1].
-        for (std::size_t k = 0; k < 3; ++k) o.i_sh[k] = o.i_face[2 * k] - o.i_face[2 * k + 1];
-        o.bus_available = true;
-        return o;
-    }
+    FaultObservation<T> observation(T t) const { return face_observation(cosine, sun, r, i_norm, t); }
 };
-
-template <class T>
-FaultDetectionConfig<T> enabled() {
-    FaultDetectionConfig<T> c;
-    c.enabled = true;
-    return c;
-}
 
 // Runs n samples from t0; returns the time of the first declaration on face k (−1 if none).
 template <class T, class Make>
