@@ -245,6 +245,90 @@ TYPED_TEST(EstimatorCoreFaceFaults, AnotherFacesShadowComingAndGoingDoesNotMakeA
     EXPECT_EQ(s.face_word[0], 0u);
 }
 
+// Run 14 of harness/campaigns/faults_healthy.toml (fault-free, random start attitude): in its first 6 s the
+// filter converged from an unknown attitude, its prediction of −y's cos β swinging from +0.22 to −0.21 with a
+// 1σ of 0.5–0.8 from its covariance, while −y, truly turned from the sun (cos β −0.24), read a steady 0.07 of
+// albedo. The stuck test saw the prediction move by 0.2 and the reading not: −y was declared stuck at 5.65 s.
+// Here the prediction is (x, y(t), 0.36) with y(t) = −0.2 + 0.08 t for 5 s, then +0.2 (x = √(1 − y² − 0.36²)
+// ≥ 0.91: +x's prediction stays well lit), and −y reads 0.07 throughout. Converging, the sun is truly at
+// (0.8, 0.48, 0.36) and +x, +y, +z read its cosines; converged, the prediction is the truth and they read its
+// cosines. +z's ratio gives the irradiance, 1. Before the calibration applies: the ratio test does not run,
+// and −y's prediction (at most 0.2) is below the deficit test's 0.4.
+template <class T>
+FaultObservation<T> swinging(const panel_response::Response<T>& law, T t, T sigma, bool converged) {
+    auto o = lit(law, t);
+    o.field_calibrated = false;
+    const double y = std::min(-0.2 + 0.08 * static_cast<double>(t), 0.2);
+    const double x = std::sqrt(1.0 - y * y - 0.36 * 0.36);
+    o.sun_body = {T(x), T(y), T(0.36)};
+    o.sun_sigma = {sigma, sigma, sigma};
+    if (converged) {
+        set_face(o, 0, T(x));
+        set_face(o, 2, T(std::max(y, 0.0)));
+    }
+    set_face(o, 3, T(0.07));
+    return o;
+}
+
+TYPED_TEST(EstimatorCoreFaceFaults, APredictionSwingingWithinItsOwnUncertaintyIsNoMotion) {
+    using T = TypeParam;
+    const auto law = panel_response::cosine<T>();
+    const auto c = enabled<T>();
+    // σ = 0.5 (run 14's at 6 s): 4σ = 2 covers every cos β, −y's band is [0, 1] on every sample and the
+    // response has certainly moved by nothing. Nothing declared in 20 s (the old test declared −y stuck once
+    // the prediction had fallen from 0.2 to 0.05, at 1.9 s, 5 s later: 6.85 s).
+    FaultDetectionState<T> s;
+    for (int i = 0; i < 400; ++i) fault_detect(s, swinging(law, T(i * kPeriod), T(0.5), false), c);
+    for (std::size_t k = 0; k < 6; ++k) EXPECT_EQ(s.face_word[k], 0u) << "face " << k;
+    // The same swing seen by a converged filter (σ = 0.0035, 0.2°) is −y turning away while its channel stays
+    // at 0.07: stuck. The band's bounds are cos β ∓ 0.014; the least upper bound falls to 0.036 below
+    // the first lower bound (0.2 − 0.014 = 0.186) by 0.15 where cos β = 0.022, y = −0.022, t = 2.225 s: failing
+    // from the 2.25 s sample, declared at the 100th, 2.25 + 99 × 0.05 = 7.2 s.
+    FaultDetectionState<T> stuck;
+    for (int i = 0; i < 400; ++i) fault_detect(stuck, swinging(law, T(i * kPeriod), T(0.0035), true), c);
+    EXPECT_EQ(stuck.face_word[3], kFaultFaceStuck);
+    EXPECT_NEAR(stuck.face_time[3], 7.2, 0.051);
+    for (std::size_t k = 0; k < 6; ++k) {
+        if (k != 3) {
+            EXPECT_EQ(stuck.face_word[k], 0u) << "face " << k;
+        }
+    }
+}
+
+TYPED_TEST(EstimatorCoreFaceFaults, AFaceIsFoundDarkOrBrightOnlyBeyondThePredictionsUncertainty) {
+    using T = TypeParam;
+    const auto law = panel_response::cosine<T>();
+    const auto c = enabled<T>();
+    // The prediction puts the sun at (0.8, 0.48, 0.36); +x reads 0.2 (0.25 of its 0.8) and −x 0.7 (where 0 is
+    // predicted), +y and +z as predicted (the irradiance, 1). Against the prediction itself +x fails the
+    // deficit test (0.2 < 0.8 − 0.3; scale 0.25 ≥ 0.2) and −x the excess test (0.7 > 0 + 0.6): both declared
+    // after 5 s, at 4.95 s.
+    const auto scene = [&](T t, T sigma) {
+        auto o = lit(law, t);
+        o.sun_sigma = {sigma, sigma, sigma};
+        set_face(o, 0, T(0.2));
+        set_face(o, 1, T(0.7));
+        return o;
+    };
+    FaultDetectionState<T> exact;
+    for (int i = 0; i < 400; ++i) fault_detect(exact, scene(T(i * kPeriod), T(0)), c);
+    EXPECT_EQ(exact.face_word[0], kFaultFaceScale);
+    EXPECT_NEAR(exact.face_time[0], 4.95, 0.051);
+    EXPECT_EQ(exact.face_word[1], kFaultFaceExcess);
+    // A filter still converging, σ = 0.15 per component (4σ: cos β ± 0.6): +x may be lit as little as 0.2, below
+    // the deficit test's 0.4, and 0.2 is not below 0.3 of it (the ratio test): +x passes. −x (cos β −0.8) is
+    // still dark at −0.8 + 0.6, so 0.7 > 0 + 0.6 fails. With σ = 0.3 (cos β ± 1.2) −x may be lit 0.4, and
+    // 0.7 < 0.4 + 0.6 passes: nothing declared.
+    FaultDetectionState<T> loose, looser;
+    for (int i = 0; i < 400; ++i) {
+        fault_detect(loose, scene(T(i * kPeriod), T(0.15)), c);
+        fault_detect(looser, scene(T(i * kPeriod), T(0.3)), c);
+    }
+    EXPECT_EQ(loose.face_word[0], 0u);
+    EXPECT_EQ(loose.face_word[1], kFaultFaceExcess);
+    for (std::size_t k = 0; k < 6; ++k) EXPECT_EQ(looser.face_word[k], 0u) << "face " << k;
+}
+
 TYPED_TEST(EstimatorCoreFaceFaults, TheShadowDepthIsTheEarthsRadiusLessTheDistanceFromTheSunLine) {
     using T = TypeParam;
     const Vec3<T> sun{T(1), T(0), T(0)};

@@ -9,6 +9,16 @@ namespace attitude_estimator::fault_detail {
 
 namespace {
 
+// The face tests compare a reading with the response the filter's prediction gives, and the prediction is
+// uncertain: the sun's direction in body axes has the attitude's error in it, σ per component
+// (FaultObservation::sun_sigma, from the filter's covariance; 0 when exact). A test counts only what stands
+// this many σ clear of it: the deficit test compares with the response at cos β − nσ (the least the face can
+// be lit), the excess test with that at cos β + nσ, the stuck test with the change of the band's bounds.
+// While the filter converges from an unknown attitude (σ of cos β ~0.5 in the first seconds) no face is
+// tested; converged (~0.2°, σ ≈ 0.004) the band is ±0.015 wide. As many σ as the frozen test's.
+template <class T>
+constexpr T kFacePredictionSigmas = T(4);
+
 // The irradiance the sun gives this sample, as a fraction of full sun, from the faces other than k (and
 // not excluded) that the prediction puts well in the sun: the largest of their measured-to-predicted
 // ratios, at most 1, or −1 when no such face can say. The largest, so that a second faulty (dark) face
@@ -44,30 +54,37 @@ void declare_deficit(FaultDetectionState<T>& s, std::size_t k, const FaultDetect
     s.deficit_ratio_count[k] = T(0);
 }
 
-// The stuck test's outcome for face k reading r (compensated) where the response `expected` is predicted
-// (sunlit).
+// The stuck test's outcome for face k reading r (compensated) where the predicted response lies within
+// [lower, upper] (sunlit). What the light on the face has certainly done since the window opened: risen from
+// below the least upper bound to above the greatest lower bound, or fallen the other way. A filter that
+// corrects its attitude moves the prediction by about its σ, which the band takes out.
 template <class T>
-Outcome stuck_outcome(FaultDetectionState<T>& s, std::size_t k, T r, T expected, const FaultDetectionConfig<T>& c) {
+Outcome stuck_outcome(FaultDetectionState<T>& s, std::size_t k, T r, T lower, T upper,
+                      const FaultDetectionConfig<T>& c) {
     if (!s.stuck_started[k] || std::abs(r - s.stuck_anchor[k]) > c.face_stuck_tolerance) {
         s.stuck_started[k] = true;
         s.stuck_anchor[k] = r;
-        s.stuck_low[k] = expected;
-        s.stuck_high[k] = expected;
+        s.stuck_low[k] = upper;
+        s.stuck_high[k] = lower;
         return Outcome::pass;
     }
-    s.stuck_low[k] = std::min(s.stuck_low[k], expected);
-    s.stuck_high[k] = std::max(s.stuck_high[k], expected);
+    s.stuck_low[k] = std::min(s.stuck_low[k], upper);
+    s.stuck_high[k] = std::max(s.stuck_high[k], lower);
     if (s.stuck_anchor[k] < c.face_dark_max) return Outcome::not_applicable;  // dark: the deficit test's
     return s.stuck_high[k] - s.stuck_low[k] >= c.face_stuck_change ? Outcome::fail : Outcome::not_applicable;
 }
 
 template <class T>
 void face_tests(FaultDetectionState<T>& s, const FaultObservation<T>& o, const FaultDetectionConfig<T>& c, T dt) {
-    std::array<T, 6> predicted{};
+    // Each face's predicted response and its band (kFacePredictionSigmas): the response is monotone in cos β.
+    std::array<T, 6> predicted{}, lower{}, upper{};
     if (o.predicted && o.response != nullptr) {
         for (std::size_t k = 0; k < 6; ++k) {
             const T cos_beta = (k % 2 == 0 ? T(1) : T(-1)) * o.sun_body[k / 2];
+            const T margin = kFacePredictionSigmas<T> * o.sun_sigma[k / 2];
             predicted[k] = panel_response::response_from_cos(*o.response, cos_beta);
+            lower[k] = panel_response::response_from_cos(*o.response, cos_beta - margin);
+            upper[k] = panel_response::response_from_cos(*o.response, cos_beta + margin);
         }
     }
     // Each face's reading with its declared scale taken out (kFaultFaceScale).
@@ -82,17 +99,19 @@ void face_tests(FaultDetectionState<T>& s, const FaultObservation<T>& o, const F
             if (f >= c.others_min_irradiance && !o.near_shadow) {
                 // Two bars, either failing fails: far below a well-lit prediction (absolute margin), or a small
                 // fraction of a prediction low in the sun once the calibrated attitude makes that trustworthy.
+                // Both on the least the face can be lit (the band's lower bound); the scale's ratio below on the
+                // prediction itself.
                 const T expected = f * predicted[k];
-                const bool high = predicted[k] >= c.face_min_response;
-                const bool low = o.field_calibrated && expected >= c.face_ratio_min_response;
+                const T least = f * lower[k];
+                const bool high = lower[k] >= c.face_min_response;
+                const bool low = o.field_calibrated && least >= c.face_ratio_min_response;
                 if (high || low) {
-                    const bool fail =
-                        (high && r[k] < expected - c.face_deficit) || (low && r[k] < c.face_ratio * expected);
+                    const bool fail = (high && r[k] < least - c.face_deficit) || (low && r[k] < c.face_ratio * least);
                     deficit = fail ? Outcome::fail : Outcome::pass;
                 }
                 // On the prediction alone: the irradiance (the other faces' best ratio) jumps when one of
                 // them is faulty; in penumbra the reading moves and so passes.
-                stuck = stuck_outcome(s, k, r[k], predicted[k], c);
+                stuck = stuck_outcome(s, k, r[k], lower[k], upper[k], c);
                 if (deficit == Outcome::pass) {
                     s.deficit_ratio_sum[k] = T(0);
                     s.deficit_ratio_count[k] = T(0);
@@ -104,7 +123,7 @@ void face_tests(FaultDetectionState<T>& s, const FaultObservation<T>& o, const F
             // More than the full sun and albedo can give (at full irradiance: another face's fault must not
             // lower the bar). On the reading as it is: a lower scale (a shadow) takes none of the albedo, so the
             // compensated reading carries albedo / scale.
-            excess = o.face_r[k] > predicted[k] + c.face_excess ? Outcome::fail : Outcome::pass;
+            excess = o.face_r[k] > upper[k] + c.face_excess ? Outcome::fail : Outcome::pass;
         }
         if (confirmed(s.face_failing[k][0], deficit, dt, c.confirm_time)) declare_deficit(s, k, c, o.t);
         if (confirmed(s.face_failing[k][1], excess, dt, c.confirm_time))

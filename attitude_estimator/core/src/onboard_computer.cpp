@@ -141,6 +141,22 @@ void update_rates(OnboardState<T>& s, const OnboardSettings<T>& settings, T t, c
     out.rate_valid = mean.valid && !step_aliases && !filter_aliases;
 }
 
+// A body vector's uncertainty from the attitude's: δv = v × δθ, var_k = m_k P_θθ m_kᵀ with m_k the k-th row of
+// [v×] (the propagation since the filter's last sample adds a negligible amount at 20 Hz); 1σ per component.
+template <class T>
+Vec3<T> attitude_sigma(const MekfState<T>& m, const Vec3<T>& v) {
+    const Matrix3RowMajor<T> vx{T(0), -v[2], v[1], v[2], T(0), -v[0], -v[1], v[0], T(0)};
+    Vec3<T> sigma{};
+    for (std::size_t k = 0; k < 3; ++k) {
+        T var = T(0);
+        for (std::size_t i = 0; i < 3; ++i)
+            for (std::size_t j = 0; j < 3; ++j)
+                var += vx[3 * k + i] * vx[3 * k + j] * m.p[kMekfStates * (kMekfAttitude + i) + kMekfAttitude + j];
+        sigma[k] = std::sqrt(var > T(0) ? var : T(0));
+    }
+    return sigma;
+}
+
 // The filter's prediction for time t: its attitude propagated by its rate since its last sample
 // (v_body(t) = exp(−[ω h×]) v_body(t_last)), applied to the sun and field references.
 template <class T>
@@ -166,16 +182,8 @@ void predict(const MekfState<T>& m, const OnboardInputs<T>& in, T t, FaultObserv
     const T sun_norm = std::sqrt(squared_norm(sun));
     o.sun_body = sun_norm > T(0) ? scaled(sun, T(1) / sun_norm) : Vec3<T>{};
     o.field_body = field;
-    // The field's uncertainty from the attitude's: δB = B × δθ, var_k = m_k P_θθ m_kᵀ with m_k the k-th row of
-    // [B×] (the propagation since the last sample adds a negligible amount at 20 Hz).
-    const Matrix3RowMajor<T> bx{T(0), -field[2], field[1], field[2], T(0), -field[0], -field[1], field[0], T(0)};
-    for (std::size_t k = 0; k < 3; ++k) {
-        T var = T(0);
-        for (std::size_t i = 0; i < 3; ++i)
-            for (std::size_t j = 0; j < 3; ++j)
-                var += bx[3 * k + i] * bx[3 * k + j] * m.p[kMekfStates * (kMekfAttitude + i) + kMekfAttitude + j];
-        o.field_sigma[k] = std::sqrt(var > T(0) ? var : T(0));
-    }
+    o.field_sigma = attitude_sigma(m, field);
+    o.sun_sigma = attitude_sigma(m, o.sun_body);
     o.predicted = sun_norm > T(0);
 }
 

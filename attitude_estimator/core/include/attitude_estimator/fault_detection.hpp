@@ -84,7 +84,8 @@ struct FaultDetectionConfig {
     // (relative to full sun) fails the dark test.
     T face_dark_max = T(0.03);
     // Stuck test, in the sun: a reading that stays within face_stuck_tolerance (relative) of where it started
-    // while the predicted response spans face_stuck_change fails. A reading stuck below
+    // while the predicted response certainly spans face_stuck_change (the band the filter's covariance allows
+    // the prediction, kFacePredictionSigmas wide, taken out) fails. A reading stuck below
     // face_dark_max is left to the deficit test (an open string's).
     T face_stuck_change = T(0.15);
     T face_stuck_tolerance = T(0.003);
@@ -134,12 +135,15 @@ struct FaultDetectionConfig {
 template <class T>
 struct FaultObservation {
     T t = T(0);
-    std::array<T, 6> face_r{};      // 1: digitized face currents over their normalization (at the sun distance)
-    std::array<T, 6> i_face{};      // A: digitized face currents
-    Vec3<T> i_sh{};                 // A: digitized per-axis differential currents
-    bool bus_available = false;     // both i_sh and i_face are read (the bus test needs both)
-    bool predicted = false;         // the filter runs: the two predictions below hold
-    Vec3<T> sun_body{};             // unit sun direction predicted in body axes
+    std::array<T, 6> face_r{};   // 1: digitized face currents over their normalization (at the sun distance)
+    std::array<T, 6> i_face{};   // A: digitized face currents
+    Vec3<T> i_sh{};              // A: digitized per-axis differential currents
+    bool bus_available = false;  // both i_sh and i_face are read (the bus test needs both)
+    bool predicted = false;      // the filter runs: the two predictions below hold
+    Vec3<T> sun_body{};          // unit sun direction predicted in body axes
+    // 1σ of each component of sun_body from the filter's attitude covariance (0: exact). The face tests compare
+    // with the response the prediction gives within kFacePredictionSigmas of it (fault_detection_faces.cpp).
+    Vec3<T> sun_sigma{};
     Vec3<T> field_body{};           // T: field predicted at the sensor, in body axes
     Vec3<T> field_sigma{};          // T: 1σ of field_body per axis from the filter's attitude covariance
     bool field_calibrated = false;  // field_body includes the calibration's hard-iron estimate (and scale)
@@ -191,7 +195,8 @@ struct FaultDetectionState {
     T strap_polarity = T(1);
     // Panel faults. The deficit test's mean measured-to-expected ratio (sum and count over
     // its failing samples); the scale a kFaultFaceScale face is read divided by (1: none); the stuck test's
-    // window: the reading it started at and the range of the predicted response since.
+    // window: the reading it started at and, since, the least of the response's upper bounds (stuck_low) and the
+    // greatest of its lower bounds (stuck_high): the prediction's band, fault_detection_faces.cpp.
     std::array<T, 6> deficit_ratio_sum{};
     std::array<T, 6> deficit_ratio_count{};
     std::array<T, 6> face_scale{T(1), T(1), T(1), T(1), T(1), T(1)};
