@@ -209,6 +209,10 @@ void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
         .depends_on({});
     t.output("albedo_face", &D::albedo_face, "W/m2", "Earth-albedo irradiance on the faces +x, -x, +y, -y, +z, -z")
         .depends_on({"q"});
+    t.output("sun_face", &D::sun_face, "W/m2",
+             "Direct solar irradiance on the faces +x, -x, +y, -y, +z, -z: irradiance times max(0, cos) of the sun's "
+             "angle to the face normal (no angular law, no albedo)")
+        .depends_on({"q"});
     t.output("mag_body", &D::mag_body, "T", "Geomagnetic flux density at the satellite, body axes").depends_on({"q"});
     t.output("mag_eci", &D::mag_eci, "T", "Geomagnetic flux density at the satellite, ECI (J2000)").depends_on({});
     t.output("q_true", &D::q_true, "1", "True attitude quaternion [x, y, z, w] (scalar last), ECI to body, unit")
@@ -272,7 +276,8 @@ fmu::ModelInfo EnvironmentBlock::describe() {
         "view factor integrated over the sunlit visible cap, per face; <code>albedo_enabled = false</code> gives "
         "zeros.</li>"
         "</ul>"
-        "<p>Outputs: sun_body, sun_eci (unit), sun_distance (m), irradiance, albedo_face, mag_body, mag_eci (T), "
+        "<p>Outputs: sun_body, sun_eci (unit), sun_distance (m), irradiance, albedo_face, sun_face, mag_body, mag_eci "
+        "(T), "
         "q_true, omega_body, "
         "r_eci (m), v_eci (m/s). In spin mode sun_body = A(q_true) sun_eci is the seed formula up to the sun's orbital "
         "parallax "
@@ -350,6 +355,7 @@ void EnvironmentBlock::evaluate(double t) {
     d.sun_eci = o.sun_eci;
     d.irradiance = o.irradiance;
     d.albedo_face = o.albedo_face;
+    d.sun_face = o.sun_face;
     d.mag_body = o.mag_body;
     d.mag_eci = o.mag_eci;
     d.q_true = o.q_true;

@@ -467,8 +467,8 @@ TEST(EnvironmentFmu, TableDeclaresEveryVariableWithUnitsAndDescriptions) {
             EXPECT_FALSE(v.unit.empty()) << v.name;
         }
     }
-    for (const char* name : {"sun_body[3]", "sun_eci[1]", "irradiance", "albedo_face[6]", "mag_body[2]", "mag_eci[3]",
-                             "q_true[4]", "omega_body[1]", "r_eci[2]"}) {
+    for (const char* name : {"sun_body[3]", "sun_eci[1]", "irradiance", "albedo_face[6]", "sun_face[6]", "mag_body[2]",
+                             "mag_eci[3]", "q_true[4]", "omega_body[1]", "r_eci[2]"}) {
         EXPECT_EQ(table.by_name(name).causality, fmu::Causality::output) << name;
     }
     EXPECT_EQ(table.by_name("attitude_mode").item_names(), "spin, rigid_body");

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -95,6 +96,31 @@ TEST(EnvironmentCoreEnvironment, EclipseZeroesIrradianceButNotAlbedoSwitch) {
     }
     EXPECT_GT(dark, 0);
     EXPECT_GT(lit, dark);
+}
+
+TEST(EnvironmentCoreEnvironment, TheDirectSunOnTheFacesIsTheIrradianceOnTheLitHalfOfTheCube) {
+    // A unit cube's faces see the sun along ±x, ±y, ±z: of each opposite pair one is lit by |s_i| of the
+    // irradiance and the other not, so the six add up to (|s_x| + |s_y| + |s_z|) E, between E and √3 E; in the
+    // umbra all are 0.
+    const env::Environment e(env::EnvironmentParams{});
+    int dark = 0;
+    for (double t = 0.0; t < 5766.0; t += 30.0) {
+        const env::EnvironmentOutputs o = e.evaluate(t);
+        double sum = 0.0;
+        for (std::size_t i = 0; i < 3; ++i) {
+            EXPECT_EQ(std::min(o.sun_face[2 * i], o.sun_face[2 * i + 1]), 0.0) << t;
+            EXPECT_NEAR(std::max(o.sun_face[2 * i], o.sun_face[2 * i + 1]), std::abs(o.sun_body[i]) * o.irradiance,
+                        1e-9);
+            sum += o.sun_face[2 * i] + o.sun_face[2 * i + 1];
+        }
+        EXPECT_GE(sum, o.irradiance * (1.0 - 1e-12));
+        EXPECT_LE(sum, o.irradiance * std::sqrt(3.0) * (1.0 + 1e-12));
+        if (o.sunlight_fraction == 0.0) {
+            ++dark;
+            for (double g : o.sun_face) EXPECT_EQ(g, 0.0);
+        }
+    }
+    EXPECT_GT(dark, 0);
 }
 
 TEST(EnvironmentCoreEnvironment, DipoleAndIgrfAgreeRoughly) {

@@ -111,6 +111,10 @@ EnvironmentOutputs Environment::evaluate(double t, const RigidBodyState* state) 
         A = attitude_matrix(out.q_true);
     }
     out.sun_body = to_array(A * s);
+    for (std::size_t k = 0; k < 6; ++k) {
+        const double cos_beta = (k % 2 == 0 ? 1.0 : -1.0) * out.sun_body[k / 2];
+        out.sun_face[k] = out.irradiance * std::max(0.0, cos_beta);
+    }
 
     // Geomagnetic field: evaluated Earth-fixed, rotated back to ECI (precession + GMST, earth_rotation.hpp).
     const Eigen::Matrix3d to_ecef = ecef_from_eci(out.julian_date);

@@ -87,6 +87,7 @@ struct EnvironmentData {
     std::array<double, 3> sun_eci{};
     double irradiance = 0.0;
     std::array<double, 6> albedo_face{};
+    std::array<double, 6> sun_face{};
     std::array<double, 3> mag_body{};
     std::array<double, 3> mag_eci{};
     std::array<double, 4> q_true = {0.0, 0.0, 0.0, 1.0};

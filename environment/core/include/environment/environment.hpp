@@ -63,6 +63,9 @@ struct EnvironmentOutputs {
     std::array<double, 3> mag_eci{};      // T
     std::array<double, 3> mag_body{};     // T
     std::array<double, 6> albedo_face{};  // W/m^2 on +x, -x, +y, -y, +z, -z
+    // The direct sun on each face, irradiance × max(0, cos β) (W/m^2, +x … −z, no panel's angular law): the
+    // truth a fault campaign judges a face's visibility by (harness/campaigns/faults.toml).
+    std::array<double, 6> sun_face{};
     // What a panel's heat balance needs of the Earth (panel_thermal): where it is and how bright.
     std::array<double, 3> nadir_body{};  // unit, satellite -> Earth's centre, body axes
     double orbit_radius_ratio = 1.0;     // r / R_E
