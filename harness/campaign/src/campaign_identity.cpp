@@ -61,6 +61,9 @@ std::string campaign_identity(const CampaignSetup& s) {
             id << "case " << c.name << " expect " << e.words << " " << e.variable << " [" << join(elements) << "]\n";
         }
         for (const auto& d : c.draws) id << "case " << c.name << " " << draw_line(d) << "\n";
+        if (!c.observable.column.empty())
+            id << "case " << c.name << " observable " << c.observable.column
+               << (c.observable.above ? " above " : " below ") << format_real(c.observable.threshold) << "\n";
     }
     return id.str();
 }

@@ -347,6 +347,38 @@ std::vector<std::string> read_settings(const Context& cx, const toml::node& n, c
     return out;
 }
 
+// A case's observable = { column = "...", above = x } (or below): the column's braces each hold a variable.
+Observable read_observable(const Context& cx, const toml::node& n, const std::string& where) {
+    const auto* t = n.as_table();
+    if (!t) cx.fail(n, where + " must be a table { column = \"component.variable\", above = number } (or below)");
+    only_keys(cx, *t, where, {"column", "above", "below"});
+    Observable o;
+    o.column = string(cx, required(cx, *t, "column", where), where + ": 'column'");
+    // Each {component.variable} checked, and the column with each replaced by an element number (1).
+    std::string trial;
+    for (std::size_t i = 0; i < o.column.size();) {
+        const std::size_t open = o.column.find_first_of("{}", i);
+        if (open == std::string::npos) {
+            trial += o.column.substr(i);
+            break;
+        }
+        const std::size_t close = o.column.find('}', open + 1);
+        if (o.column[open] == '}' || close == std::string::npos || o.column.find('{', open + 1) < close)
+            cx.fail(n, where + ": 'column' '" + o.column + "' has unbalanced braces");
+        o.variables.push_back(o.column.substr(open + 1, close - open - 1));
+        check_target(cx, n, o.variables.back(), where + ": 'column' {" + o.variables.back() + "}");
+        trial += o.column.substr(i, open - i) + "1";
+        i = close + 1;
+    }
+    check_target(cx, n, trial, where + ": 'column'");
+    const auto* above = t->get("above");
+    const auto* below = t->get("below");
+    if ((above == nullptr) == (below == nullptr)) cx.fail(n, where + " takes one of 'above' and 'below'");
+    o.above = above != nullptr;
+    o.threshold = number(cx, above ? *above : *below, where + (above ? ": 'above'" : ": 'below'"));
+    return o;
+}
+
 Case read_case(const Context& cx, const toml::table& t, std::size_t index) {
     const std::string numbered = "case " + std::to_string(index + 1);
     Case c;
@@ -354,7 +386,7 @@ Case read_case(const Context& cx, const toml::table& t, std::size_t index) {
     if (c.name.empty() || c.name.find_first_of(",\"\n ") != std::string::npos)
         cx.fail(t, numbered + ": 'name' must be non-empty without commas, quotes or spaces");
     const std::string where = "case '" + c.name + "'";
-    only_keys(cx, t, where, {"name", "control", "set", "draw", "onset", "expect"});
+    only_keys(cx, t, where, {"name", "control", "set", "draw", "onset", "expect", "observable"});
     if (const auto* n = t.get("control")) {
         if (!n->is_boolean()) cx.fail(*n, where + ": 'control' must be true or false");
         c.control = *n->value<bool>();
@@ -401,8 +433,11 @@ Case read_case(const Context& cx, const toml::table& t, std::size_t index) {
             c.expect.push_back(std::move(e));
         }
     }
-    if (c.control && (!c.onset.empty() || !c.expect.empty()))
-        cx.fail(t, where + ": the control expects no fault: it takes no 'onset' or 'expect'");
+    if (const auto* n = t.get("observable")) c.observable = read_observable(cx, *n, where + ": 'observable'");
+    if (c.control && (!c.onset.empty() || !c.expect.empty() || !c.observable.column.empty()))
+        cx.fail(t, where + ": the control expects no fault: it takes no 'onset', 'expect' or 'observable'");
+    if (!c.observable.column.empty() && c.onset.empty())
+        cx.fail(t, where + ": 'observable' needs 'onset' (it is looked for from the fault's onset on)");
     if (!c.expect.empty() && c.onset.empty())
         cx.fail(t, where + ": 'expect' needs 'onset' (declarations count from the fault's onset)");
     return c;
@@ -510,6 +545,12 @@ CampaignSpec parse_spec(const std::string& text, const std::filesystem::path& fi
         if (!arr || !arr->is_array_of_tables()) cx.fail(*n, "cases are written [[case]]");
         for (std::size_t i = 0; i < arr->size(); ++i) spec.cases.push_back(read_case(cx, *arr->get(i)->as_table(), i));
         check_cases(cx, spec);
+        // A case with an observable: every detection metric also reports the time from it.
+        if (std::any_of(spec.cases.begin(), spec.cases.end(),
+                        [](const Case& c) { return !c.observable.column.empty(); }))
+            for (auto& m : spec.metrics)
+                if (m.kind == MetricKind::detection)
+                    m.stats.insert(m.stats.end(), observable_cells.begin(), observable_cells.end());
     }
     std::set<std::string> targets, names;
     for (const auto& d : spec.draws)

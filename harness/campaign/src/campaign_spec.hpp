@@ -41,6 +41,9 @@ enum class MetricKind { quaternion_angle, vector_angle, column, detection };
 // The cells of a detection metric, in table order (README.md of this folder says what each holds).
 inline const std::vector<std::string> detection_cells = {"detected", "time",   "isolated", "declared",
                                                          "before",   "orbits", "which"};
+// ... and after them in a spec where a case has an `observable`: when it first held after the onset (s after
+// the onset) and the time to detect from then.
+inline const std::vector<std::string> observable_cells = {"observable", "time_observable"};
 
 struct Metric {
     std::string name;
@@ -70,6 +73,17 @@ struct Expectation {
     std::vector<long> elements;  // listed, 1-based
 };
 
+// When a case's fault can first be seen (the judge's truth, not the detector's): the first output point from
+// the onset on where `column` is above (or below) `threshold`. The column may name variables in braces,
+// "env.sun_face[{plant.fault_string_open_face}]": each is replaced by its value in the run (an integer), read
+// at the first output point.
+struct Observable {
+    std::string column;                  // "" = none
+    std::vector<std::string> variables;  // the names in braces, in order
+    bool above = true;
+    double threshold = 0.0;
+};
+
 // One of the named alternatives a campaign cycles through (a fault type, or the no-fault control): its
 // own fixed settings and draws, and what its detection metrics are to find.
 struct Case {
@@ -79,6 +93,7 @@ struct Case {
     std::vector<Draw> draws;
     std::string onset;  // the variable holding the fault's onset (s), "" = none
     std::vector<Expectation> expect;
+    Observable observable;  // detection metrics also count from it (README.md of this folder)
 };
 
 struct CampaignSpec {

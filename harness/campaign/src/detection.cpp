@@ -36,10 +36,10 @@ void DetectionTracker::sample(double t, const std::vector<double>& words, const 
 }
 
 DetectionOutcome DetectionTracker::outcome(std::optional<double> onset, const std::vector<std::size_t>& expected,
-                                           double after, double period) const {
+                                           double after, double period, std::optional<double> observable) const {
     DetectionOutcome o;
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    o.time = nan;
+    o.time = o.observable = o.time_observable = nan;
     if (!first_t_) {
         o.detected = o.isolated = o.declared = o.before = o.orbits = nan;
         return o;
@@ -58,6 +58,10 @@ DetectionOutcome DetectionTracker::outcome(std::optional<double> onset, const st
     o.declared = static_cast<double>(counted.size());
     o.detected = counted.empty() ? 0.0 : 1.0;
     if (onset && !counted.empty()) o.time = counted.front().time - *onset;
+    if (onset && observable) {
+        o.observable = *observable - *onset;
+        if (!counted.empty()) o.time_observable = counted.front().time - *observable;
+    }
     std::set<std::size_t> got, want(expected.begin(), expected.end());
     for (const auto& d : counted) {
         got.insert(d.element);

@@ -19,6 +19,11 @@ struct DetectionOutcome {
     double before = 0.0;    // declarations before the onset (false alarms of a faulty run)
     double orbits = 0.0;    // the span the declarations were counted over, in periods
     std::string which;      // "element=word" of each declaration counted in `declared`, by time, space-separated
+    // With an observable time (the first output point from the onset on where the case's fault could be seen):
+    // that time minus the onset, and the first declaration from the onset on minus it (negative: declared
+    // before the condition held). NaN without one.
+    double observable = 0.0;
+    double time_observable = 0.0;
 };
 
 class DetectionTracker {
@@ -30,7 +35,7 @@ public:
     // `expected`: indices into `elements`; `after`: declarations before it are ignored (a transient);
     // `period`: the rate's unit (s).
     DetectionOutcome outcome(std::optional<double> onset, const std::vector<std::size_t>& expected, double after,
-                             double period) const;
+                             double period, std::optional<double> observable = std::nullopt) const;
 
 private:
     struct Declaration {

@@ -93,9 +93,36 @@ std::vector<std::string> word_group(const cosim::System& system, const std::stri
 
 }  // namespace
 
-MetricObserver::MetricObserver(const std::vector<Metric>& metrics, const cosim::System& system, const Case* run_case) {
+namespace {
+
+// A case's observable column with its {variables} replaced by `values`, as integers.
+std::string observable_column(const Observable& o, const std::vector<std::string>& values) {
+    std::string out;
+    std::size_t from = 0;
+    for (const auto& v : values) {
+        const std::size_t open = o.column.find('{', from);
+        const std::size_t close = o.column.find('}', open);
+        out += o.column.substr(from, open - from) + v;
+        from = close + 1;
+    }
+    return out + o.column.substr(from);
+}
+
+}  // namespace
+
+MetricObserver::MetricObserver(const std::vector<Metric>& metrics, const cosim::System& system, const Case* run_case)
+    : case_(run_case) {
     if (run_case && !run_case->onset.empty())
         onset_ = resolve(system, run_case->onset, "onset of case " + run_case->name);
+    if (run_case && !run_case->observable.column.empty()) {
+        const std::string what = "observable of case " + run_case->name;
+        for (const auto& v : run_case->observable.variables) observable_variables_.push_back(resolve(system, v, what));
+        // Before any run: the column exists with each variable at 1 (the first element of a group).
+        resolve(system,
+                observable_column(run_case->observable,
+                                  std::vector<std::string>(run_case->observable.variables.size(), "1")),
+                what);
+    }
     for (const auto& m : metrics) {
         Tracked t{&m, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
         const int n = m.kind == MetricKind::quaternion_angle ? 4 : 3;
@@ -163,6 +190,24 @@ void MetricObserver::sample(double t, cosim::System& system) {
                                         k.metric->words[g] + "'");
                 k.expected.push_back(k.group_start[g] + static_cast<std::size_t>(v) - 1);
             }
+        if (case_ && !case_->observable.column.empty()) {
+            std::vector<std::string> values;
+            for (std::size_t i = 0; i < observable_variables_.size(); ++i) {
+                const double v = read(system, observable_variables_[i]);
+                if (!std::isfinite(v) || v != std::floor(v))
+                    throw CampaignError("observable of case " + case_->name + ": '" + case_->observable.variables[i] +
+                                        "' is " + cosim::format_real(v) + ", not an integer");
+                values.push_back(cosim::format_real(v));
+            }
+            observable_ =
+                resolve(system, observable_column(case_->observable, values), "observable of case " + case_->name);
+        }
+    }
+    // The first output point from the onset on where the case's fault can be seen.
+    if (observable_ && onset_value_ && !observable_at_ && t >= *onset_value_) {
+        const double x = read(system, *observable_);
+        if (case_->observable.above ? x > case_->observable.threshold : x < case_->observable.threshold)
+            observable_at_ = t;
     }
     for (auto& k : tracked_) {
         const Metric& m = *k.metric;
@@ -209,10 +254,13 @@ std::vector<std::string> MetricObserver::cells() const {
     for (const auto& k : tracked_) {
         if (k.detection) {
             const Metric& m = *k.metric;
-            const DetectionOutcome o = k.detection->outcome(onset_value_, k.expected, m.after, m.period);
+            const DetectionOutcome o =
+                k.detection->outcome(onset_value_, k.expected, m.after, m.period, observable_at_);
             for (double x : {o.detected, o.time, o.isolated, o.declared, o.before, o.orbits})
                 out.push_back(cosim::format_real(x));
             out.push_back(o.which);
+            if (m.stats.size() > detection_cells.size())  // the spec has an observable (observable_cells)
+                for (double x : {o.observable, o.time_observable}) out.push_back(cosim::format_real(x));
             continue;
         }
         for (const auto& s : k.metric->stats) out.push_back(cosim::format_real(statistic(s, k.values)));

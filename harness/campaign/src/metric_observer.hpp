@@ -55,6 +55,11 @@ private:
     std::vector<Tracked> tracked_;
     std::optional<Column> onset_;
     std::optional<double> onset_value_;
+    // The case's observable (Observable): its variables, its column once they are read, when it first held.
+    const Case* case_ = nullptr;
+    std::vector<Column> observable_variables_;
+    std::optional<Column> observable_;
+    std::optional<double> observable_at_;
     bool first_ = true;
 };
 

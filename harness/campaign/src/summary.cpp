@@ -128,24 +128,36 @@ void write_detection(std::ostream& md, const CampaignSpec& spec, const ResultRow
         const std::size_t detected = col("detected"), time = col("time"), isolated = col("isolated"),
                           declared = col("declared"), before = col("before"), orbits = col("orbits"),
                           which = col("which");
+        // A spec whose cases say when their fault can first be seen: the time to detect from then too.
+        const bool from_observable = m.stats.size() > detection_cells.size();
+        const std::size_t observable = from_observable ? col("observable") : 0,
+                          time_observable = from_observable ? col("time_observable") : 0;
         md << "\n## Detection: " << m.name << "\n\n"
            << "Per case over its finished runs: detected (a declaration at or after the onset), the time from the "
               "onset to the first declaration, isolated right (exactly the expected elements declared after the "
               "onset), the words declared (word: runs), the declarations per period of "
            << figure(m.period) << " s over the whole run (from " << figure(m.after)
            << " s) in a case without an onset (the control's false alarms: declarations in periods), and the "
-              "declarations before the onset in a case with one.\n\n"
-           << "| case | runs | detected | time to detect median / p95 / max (s) | within " << figure(m.within)
-           << " s | isolated right | words declared | declarations per period | before the onset |\n"
-           << "|---|---|---|---|---|---|---|---|---|\n";
+              "declarations before the onset in a case with one.";
+        if (from_observable)
+            md << " A case with an `observable` also has the runs where its fault became observable after the onset "
+                  "(its condition held at an output point), and over those detected, the time from that moment to "
+                  "the first declaration (negative: declared before) and the runs within "
+               << figure(m.within) << " s of it.";
+        md << "\n\n| case | runs | detected | time to detect median / p95 / max (s) | within " << figure(m.within)
+           << " s | isolated right | words declared | declarations per period | before the onset |"
+           << (from_observable
+                   ? " observable | from observable median / p95 / max (s) | within " + figure(m.within) + " s of it |"
+                   : std::string())
+           << "\n|---|---|---|---|---|---|---|---|---|" << (from_observable ? "---|---|---|" : "") << "\n";
         for (const auto& [name, rows] : rows_by_case(spec, table)) {
             const Case* c = nullptr;
             for (const auto& x : spec.cases)
                 if (x.name == name) c = &x;
             const bool has_onset = c && !c->onset.empty();
-            long n = 0, hits = 0, right = 0, within = 0;
+            long n = 0, hits = 0, right = 0, within = 0, seen = 0, within_seen = 0;
             double count = 0.0, span = 0.0, early = 0.0;
-            std::vector<double> times;
+            std::vector<double> times, seen_times;
             std::map<std::string, long> words;
             for (const auto* row : rows) {
                 ++n;
@@ -154,6 +166,13 @@ void write_detection(std::ostream& md, const CampaignSpec& spec, const ResultRow
                 if (const auto t = number_in((*row)[time])) {
                     times.push_back(*t);
                     within += *t <= m.within;
+                }
+                if (from_observable) {
+                    seen += number_in((*row)[observable]).has_value();
+                    if (const auto t = number_in((*row)[time_observable])) {
+                        seen_times.push_back(*t);
+                        within_seen += *t <= m.within;
+                    }
                 }
                 count += number_in((*row)[declared]).value_or(0.0);
                 span += number_in((*row)[orbits]).value_or(0.0);
@@ -164,18 +183,28 @@ void write_detection(std::ostream& md, const CampaignSpec& spec, const ResultRow
                 for (const auto& w : seen) ++words[w];
             }
             std::sort(times.begin(), times.end());
+            std::sort(seen_times.begin(), seen_times.end());
+            const auto spread = [](const std::vector<double>& x) {
+                return x.empty()
+                           ? std::string("–")
+                           : figure(percentile(x, 50)) + " / " + figure(percentile(x, 95)) + " / " + figure(x.back());
+            };
             std::string declared_words;
             for (const auto& [w, runs] : words)
                 declared_words += (declared_words.empty() ? "" : ", ") + w + ": " + std::to_string(runs);
-            md << "| " << name << " | " << n << " | " << hits << " | "
-               << (times.empty() ? std::string("–")
-                                 : figure(percentile(times, 50)) + " / " + figure(percentile(times, 95)) + " / " +
-                                       figure(times.back()))
-               << " | " << (has_onset ? std::to_string(within) : "–") << " | " << right << " | "
+            md << "| " << name << " | " << n << " | " << hits << " | " << spread(times) << " | "
+               << (has_onset ? std::to_string(within) : "–") << " | " << right << " | "
                << (declared_words.empty() ? "–" : declared_words) << " | "
                << (!has_onset && span > 0 ? figure(count / span) + " (" + figure(count) + " in " + figure(span) + ")"
                                           : std::string("–"))
-               << " | " << (has_onset ? figure(early) : "–") << " |\n";
+               << " | " << (has_onset ? figure(early) : "–") << " |";
+            if (from_observable) {
+                if (c && !c->observable.column.empty())
+                    md << " " << seen << " | " << spread(seen_times) << " | " << within_seen << " |";
+                else
+                    md << " – | – | – |";
+            }
+            md << "\n";
         }
     }
 }

@@ -353,6 +353,7 @@ TEST(Campaign, CasesWithADetectionMetric) {
     }
     for (std::size_t r : {0u, 2u}) {
         EXPECT_EQ(cell(r, "detect.declared"), "0");
+        EXPECT_EQ(cell(r, "detect.observable"), "nan");  // the control has none
         EXPECT_EQ(cell(r, "detect.isolated"), "1");
         EXPECT_EQ(cell(r, "mag.fault_stuck_axis"), "");
         EXPECT_EQ(std::stod(cell(r, "detect.orbits")), 40.0 / 5764.0);
@@ -364,6 +365,10 @@ TEST(Campaign, CasesWithADetectionMetric) {
         const double time = std::stod(cell(r, "detect.time"));
         EXPECT_GT(time, 4.0);
         EXPECT_LE(time, 6.0);
+        // Observable at the first output point (whole seconds) from the onset on; the time counted from it.
+        const double onset = std::stod(cell(r, "mag.fault_stuck_onset"));
+        EXPECT_NEAR(std::stod(cell(r, "detect.observable")), std::ceil(onset) - onset, 1e-9);
+        EXPECT_NEAR(std::stod(cell(r, "detect.time_observable")), time - (std::ceil(onset) - onset), 1e-9);
     }
     std::ifstream summary(dir / "summary.md");
     std::stringstream s;

@@ -214,3 +214,59 @@ TEST(Cases, DetectionMetricMistakesAreRefusedByName) {
         EXPECT_NE(error_of(head + text).find(message), std::string::npos)
             << text << "\n gave: " << error_of(head + text);
 }
+
+// A case's observable: the column (braces holding variables of the run), above or below a threshold; every
+// detection metric of the spec then has the two cells from it.
+TEST(Cases, AnObservableIsReadAndAddsItsCellsToTheDetectionMetrics) {
+    const std::string text = head + cases + detection;
+    const auto plain = parse_spec(text, "/specs/test.toml");
+    EXPECT_EQ(plain.metrics.at(0).stats, campaign::detection_cells);
+    EXPECT_TRUE(plain.cases.at(1).observable.column.empty());
+    const std::string line = "expect = { \"est.fault_face\" = \"plant.fault_string_open_face\" }\n";
+    std::string with = text;
+    with.replace(with.find(line), line.size(),
+                 line + "observable = { column = \"env.sun_face[{plant.fault_string_open_face}]\", above = 136.1 }\n");
+    const std::string strap = "onset = \"mag.fault_strap_onset\"\n";
+    with.replace(with.find(strap), strap.size(),
+                 strap + "observable = { column = \"env.f{a.i}_{b.j}\", below = -2 }\n");
+    const auto spec = parse_spec(with, "/specs/test.toml");
+    const auto& o = spec.cases.at(1).observable;
+    EXPECT_EQ(o.column, "env.sun_face[{plant.fault_string_open_face}]");
+    EXPECT_EQ(o.variables, (std::vector<std::string>{"plant.fault_string_open_face"}));
+    EXPECT_TRUE(o.above);
+    EXPECT_EQ(o.threshold, 136.1);
+    const auto& two = spec.cases.at(2).observable;
+    EXPECT_EQ(two.variables, (std::vector<std::string>{"a.i", "b.j"}));
+    EXPECT_FALSE(two.above);
+    EXPECT_EQ(two.threshold, -2.0);
+    auto cells = campaign::detection_cells;
+    cells.insert(cells.end(), {"observable", "time_observable"});
+    EXPECT_EQ(spec.metrics.at(0).stats, cells);
+}
+
+TEST(Cases, ObservableMistakesAreRefusedByName) {
+    const std::string a = "[[case]]\nname = \"a\"\nonset = \"a.t\"\n";
+    const std::string obs = "observable = { column = \"env.g[{a.k}]\", ";
+    const std::pair<std::string, std::string> bad[] = {
+        {a + "observable = 3\n", "case 'a': 'observable' must be a table"},
+        {a + obs + "above = 1, colour = 2 }\n", "case 'a': 'observable': unknown key 'colour'"},
+        {a + "observable = { above = 1 }\n", "case 'a': 'observable': 'column' is missing"},
+        {a + "observable = { column = 3, above = 1 }\n", "case 'a': 'observable': 'column' must be a string"},
+        {a + "observable = { column = \"env.g[{a.k]\", above = 1 }\n", "'column' 'env.g[{a.k]' has unbalanced braces"},
+        {a + "observable = { column = \"env.g[a.k}]\", above = 1 }\n", "'column' 'env.g[a.k}]' has unbalanced braces"},
+        {a + "observable = { column = \"env.g[{{a.k}}]\", above = 1 }\n", "has unbalanced braces"},
+        {a + "observable = { column = \"env.g[{k}]\", above = 1 }\n", "'column' {k}: 'k' is not component.variable"},
+        {a + "observable = { column = \"{a.k}\", above = 1 }\n",
+         "'observable': 'column': '1' is not component.variable"},
+        {a + obs + "above = 1, below = 2 }\n", "case 'a': 'observable' takes one of 'above' and 'below'"},
+        {a + "observable = { column = \"env.g[{a.k}]\" }\n", "case 'a': 'observable' takes one of 'above' and 'below'"},
+        {a + obs + "above = \"high\" }\n", "case 'a': 'observable': 'above' must be a number"},
+        {a + obs + "below = nan }\n", "case 'a': 'observable': 'below' must be finite"},
+        {"[[case]]\nname = \"a\"\ncontrol = true\n" + obs + "above = 1 }\n",
+         "case 'a': the control expects no fault: it takes no 'onset', 'expect' or 'observable'"},
+        {"[[case]]\nname = \"a\"\n" + obs + "above = 1 }\n", "case 'a': 'observable' needs 'onset'"},
+    };
+    for (const auto& [text, message] : bad)
+        EXPECT_NE(error_of(head + text + detection).find(message), std::string::npos)
+            << text << "\n gave: " << error_of(head + text + detection);
+}

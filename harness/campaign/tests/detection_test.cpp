@@ -63,6 +63,30 @@ TEST(Detection, CountsFromTheOnsetAndComparesTheElements) {
     EXPECT_EQ(o.orbits, 0.2);
 }
 
+// From the moment the fault became observable (the case's condition first held after the onset): the time
+// to the first declaration from then, negative when declared before it; NaN without that moment or an onset.
+TEST(Detection, CountsAlsoFromWhenTheFaultBecameObservable) {
+    const auto d = table();
+    // Onset 20 s, observable from 25 s: 5 s after the onset; the first declaration (27.25 s) 2.25 s after it.
+    auto o = d.outcome(20.0, {2}, 0.0, 25.0, 25.0);
+    EXPECT_EQ(o.time, 7.25);
+    EXPECT_EQ(o.observable, 5.0);
+    EXPECT_EQ(o.time_observable, 2.25);
+    // Observable from 30 s: declared 2.75 s before it.
+    EXPECT_EQ(d.outcome(20.0, {2}, 0.0, 25.0, 30.0).time_observable, -2.75);
+    // Never observable, or no onset: nothing to count from.
+    o = d.outcome(20.0, {2}, 0.0, 25.0);
+    EXPECT_TRUE(std::isnan(o.observable));
+    EXPECT_TRUE(std::isnan(o.time_observable));
+    EXPECT_TRUE(std::isnan(d.outcome(std::nullopt, {}, 0.0, 25.0, 30.0).time_observable));
+    // Observable but never declared: the moment, no time.
+    DetectionTracker quiet({"f"});
+    for (double t : {0.0, 5.0, 10.0}) quiet.sample(t, {0.0}, {});
+    o = quiet.outcome(2.0, {0}, 0.0, 5.0, 5.0);
+    EXPECT_EQ(o.observable, 3.0);
+    EXPECT_TRUE(std::isnan(o.time_observable));
+}
+
 // No onset (a control): every declaration from `after` on counts (the false alarms), none is a detection
 // time; declarations before `after` (a transient) are ignored altogether.
 TEST(Detection, AControlCountsEveryDeclarationAfterItsTransient) {
@@ -150,4 +174,61 @@ within = 60
     // Pairs (1, 0) and (3, 2): p95 1 / 0.5 = 2 and 1 / 0.25 = 4: median 3, p95 2 + 0.95 * 2 = 3.9, max 4; the
     // controls' median (0.5 + 0.25) / 2 = 0.375.
     EXPECT_NE(s.str().find("| fault | 2 | 1 | 0.375 | 3 / 3.9 / 4 |"), std::string::npos) << s.str();
+}
+
+// The summary's detection table with a case that has an observable: its runs that became observable, the
+// time from then (median / p95 / max) and the runs within `within` of it; "–" for the others.
+TEST(Detection, SummaryFromWhenTheFaultBecameObservable) {
+    campaign::CampaignSetup setup;
+    setup.spec = campaign::parse_spec(R"(
+system = "s.ssd"
+runs = 6
+seed = 1
+paired = true
+[[case]]
+name = "control"
+control = true
+[[case]]
+name = "fault"
+onset = "a.onset"
+expect = { "a.w" = 2 }
+observable = { column = "a.lit[{a.face}]", above = 0.1 }
+[[case.draw]]
+kind = "uniform"
+target = "a.onset"
+min = 100
+max = 101
+[[metric]]
+name = "det"
+kind = "detection"
+words = "a.w"
+period = 5764
+within = 60
+)",
+                                      "/t/spec.toml");
+    // run, case, a.onset, det.{detected,time,isolated,declared,before,orbits,which,observable,time_observable},
+    // wall_time, status, message. Fault runs: detected 70 s after the onset, observable 65 s after it (5 s);
+    // detected 100 s after, observable 20 s after (80 s); never observable (detected 200 s after).
+    const std::map<long, std::string> rows = {
+        {0, "0,control,,0,nan,1,0,0,1.5,,nan,nan,1,ok,"}, {1, "1,fault,100,1,70,1,1,0,1,a.w[2]=1,65,5,1,ok,"},
+        {2, "2,control,,0,nan,1,0,0,1.5,,nan,nan,1,ok,"}, {3, "3,fault,100,1,100,1,1,0,1,a.w[2]=1,20,80,1,ok,"},
+        {4, "4,control,,0,nan,1,0,0,1.5,,nan,nan,1,ok,"}, {5, "5,fault,100,1,200,1,1,0,1,a.w[2]=1,nan,nan,1,ok,"},
+    };
+    const auto table = campaign::split_rows(campaign::table_header(setup.spec), rows);
+    const auto file = std::filesystem::temp_directory_path() / ("observable_summary_" + std::to_string(::getpid()));
+    campaign::write_summary(file, setup, table, {}, {}, "");
+    std::ifstream in(file);
+    std::stringstream s;
+    s << in.rdbuf();
+    std::filesystem::remove(file);
+    EXPECT_NE(s.str().find("| observable | from observable median / p95 / max (s) | within 60 s of it |"),
+              std::string::npos)
+        << s.str();
+    // Observable in 2 of 3 runs; from then 5 and 80 s: median 42.5, p95 5 + 0.95 × 75 = 76.25, max 80; one
+    // within 60 s. From the onset 70, 100, 200: median 100, p95 100 + 0.9 × 100 = 190, none within 60 s.
+    EXPECT_NE(s.str().find("| fault | 3 | 3 | 100 / 190 / 200 | 0 | 3 | 1: 3 | – | 0 | 2 | 42.5 / 76.25 / 80 | 1 |"),
+              std::string::npos)
+        << s.str();
+    EXPECT_NE(s.str().find("| control | 3 | 0 | – | – | 3 | – | 0 (0 in 4.5) | – | – | – | – |"), std::string::npos)
+        << s.str();
 }
