@@ -329,6 +329,32 @@ TYPED_TEST(EstimatorCoreFaceFaults, AFaceIsFoundDarkOrBrightOnlyBeyondThePredict
     for (std::size_t k = 0; k < 6; ++k) EXPECT_EQ(looser.face_word[k], 0u) << "face " << k;
 }
 
+TYPED_TEST(EstimatorCoreFaceFaults, AFaceAloneInTheSunIsTestedWhereTheOrbitSaysTheSunIsFull) {
+    using T = TypeParam;
+    const auto law = panel_response::cosine<T>();
+    const auto c = enabled<T>();
+    // The sun straight on +x (run 52 of faults.toml: −x at cos β 0.99–1.00 for 40 s, the other faces at most
+    // 0.3): +x's string is open, it reads 0; the others read their cosines, none ≥ 0.3, so none can tell the
+    // irradiance. Where the on-board orbit puts the spacecraft clear of the shadow the sun is full: 0 <
+    // 0.99 − 0.3 fails, declared at the 100th sample, 4.95 s. Without the orbit (references given as inputs)
+    // nothing can say the sun is there: not tested.
+    const auto alone = [&](T t, bool clear) {
+        auto o = lit(law, t, 0.99);
+        o.clear_of_shadow = clear;
+        set_face(o, 0, T(0));
+        return o;
+    };
+    FaultDetectionState<T> s, without;
+    for (int i = 0; i < 400; ++i) {
+        fault_detect(s, alone(T(i * kPeriod), true), c);
+        fault_detect(without, alone(T(i * kPeriod), false), c);
+    }
+    EXPECT_EQ(s.face_word[0], kFaultFaceDeficit);
+    EXPECT_NEAR(s.face_time[0], 4.95, 0.051);
+    EXPECT_EQ(excluded_faces(s), 1);
+    for (std::size_t k = 0; k < 6; ++k) EXPECT_EQ(without.face_word[k], 0u) << "face " << k;
+}
+
 TYPED_TEST(EstimatorCoreFaceFaults, TheShadowDepthIsTheEarthsRadiusLessTheDistanceFromTheSunLine) {
     using T = TypeParam;
     const Vec3<T> sun{T(1), T(0), T(0)};

@@ -95,7 +95,10 @@ void face_tests(FaultDetectionState<T>& s, const FaultObservation<T>& o, const F
         if (excluded >> k & 1u) continue;
         Outcome deficit = Outcome::not_applicable, excess = Outcome::not_applicable, stuck = Outcome::not_applicable;
         if (o.predicted && o.response != nullptr) {
-            const T f = irradiance_without(r, predicted, excluded, k, c.others_min_predicted);
+            // No other face well lit to tell the irradiance (one face toward the sun): full sun where the
+            // on-board orbit says so (clear of the shadow by the penumbra's width and more).
+            const T others = irradiance_without(r, predicted, excluded, k, c.others_min_predicted);
+            const T f = others < T(0) && o.clear_of_shadow ? T(1) : others;
             if (f >= c.others_min_irradiance && !o.near_shadow) {
                 // Two bars, either failing fails: far below a well-lit prediction (absolute margin), or a small
                 // fraction of a prediction low in the sun once the calibrated attitude makes that trustworthy.

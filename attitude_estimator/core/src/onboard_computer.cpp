@@ -375,6 +375,8 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
         const T depth = shadow_depth_km(out.references.position, in.sun_ref);
         o.umbra = depth > kShadowMarginKm<T>;
         o.near_shadow = depth > -kShadowMarginKm<T>;
+        // A position only from the computer's own orbit (zero when the references are inputs).
+        o.clear_of_shadow = out.references.valid && squared_norm(out.references.position) > T(0) && !o.near_shadow;
         fault_detect(s.faults, o, settings.faults);
         // An excluded face that may be lit (predicted within 3° of its horizon or facing the sun, or no
         // prediction) leaves the sun vector without its light: no sun this sample. Dark, it changes nothing.

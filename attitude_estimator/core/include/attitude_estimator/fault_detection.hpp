@@ -6,7 +6,8 @@
 // The tests (docs/faults.md, "Detection"):
 //  - face deficit / excess: a face's relative current r_k = i_k / i_face_norm_k against the response the
 //    filter predicts from its attitude and the sun reference, R(n_k · Â ŝ_ref), scaled by the irradiance the
-//    other faces show (eclipse and penumbra: the largest of their measured-to-predicted ratios); albedo only
+//    other faces show (eclipse and penumbra: the largest of their measured-to-predicted ratios; full sun when
+//    none is well lit and the on-board orbit puts the spacecraft clear of the shadow); albedo only
 //    adds current, so the deficit test ignores it and the excess test allows for it;
 //  - bus: the per-axis Hall sample/hold i_sh[k] against the difference of its two faces' channels
 //    (ssr_plant: i_sh[k] = i_face_sh[2k] − i_face_sh[2k+1] exactly when healthy);
@@ -166,6 +167,10 @@ struct FaultObservation {
     // shadow (penumbra: the irradiance changes faster than the other faces can tell, no deficit or stuck test).
     bool umbra = false;
     bool near_shadow = false;
+    // The on-board orbit (a position from the computer's own element set) puts the spacecraft clear of the
+    // shadow (not near_shadow): the sun is full. Where no other face can tell the irradiance (only one face
+    // well lit), the face tests take it as full sun.
+    bool clear_of_shadow = false;
 };
 
 // Trivially copyable (part of the FMU state and of the firmware's memory).
