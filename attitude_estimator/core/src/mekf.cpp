@@ -291,8 +291,10 @@ namespace {
 template <class T>
 void keep_direction_only(const MekfState<T>& s, V3<T>& y, Eigen::Matrix<T, 3, kMekfStates>& h, Mat3<T>& r,
                          const V3<T>& field, int i, int j) {
-    const MatN<T> p = map_p(s);
-    const Mat3<T> p_att = p.template block<3, 3>(kMekfAttitude, kMekfAttitude);
+    Mat3<T> p_att;  // P_θθ read in place (no copy of P on the firmware's stack)
+    for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+            p_att(a, b) = s.p[static_cast<std::size_t>(kMekfStates * (kMekfAttitude + a) + kMekfAttitude + b)];
     const auto m_i = h.row(i).template segment<3>(kMekfAttitude);
     const auto m_j = h.row(j).template segment<3>(kMekfAttitude);
     const T uncertainty = m_i.dot(p_att * m_i.transpose()) + m_j.dot(p_att * m_j.transpose());
