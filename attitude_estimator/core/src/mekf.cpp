@@ -275,6 +275,42 @@ MekfUpdate<T> mekf_update_sun(MekfState<T>& s, const Vec3<T>& sun_ref, const Vec
     return linear_update<T, 3>(s, y, h, r, c.gate);
 }
 
+namespace {
+
+// Two axes left (one excluded): their rows i, j become one, the component of the kept pair perpendicular to
+// the predicted field's projection (B_i, B_j). Three axes tell a rotation (it turns the field) from a change
+// of the field's length (the on-board model's magnitude error, the calibration's scale, the currents' field
+// along B: errors correlated over minutes to the orbit), since the length's innovation is outside the range
+// of [B×] and moves only the offset state. On two axes the two look alike: a length error ε|B| shows as
+// ε (B_i, B_j) and the full rows would read it as a turn. The perpendicular component
+// (−B_j y_i + B_i y_j)/|(B_i, B_j)| is unchanged by any length change, and is what a rotation still shows
+// there; the sun and the dynamics carry the rest. R is σ² I on these rows, so the one row keeps σ².
+// The direction (B_i, B_j) must be known for this: a field near the excluded axis has a projection as small
+// as the prediction's own error in it (its variance from P_θθ, the rows' m_k P_θθ m_kᵀ), and then it leaks
+// little length error and both rows stay (3σ: the projection at least three times its uncertainty).
+template <class T>
+void keep_direction_only(const MekfState<T>& s, V3<T>& y, Eigen::Matrix<T, 3, kMekfStates>& h, Mat3<T>& r,
+                         const V3<T>& field, int i, int j) {
+    Mat3<T> p_att;  // P_θθ read in place (no copy of P on the firmware's stack)
+    for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+            p_att(a, b) = s.p[static_cast<std::size_t>(kMekfStates * (kMekfAttitude + a) + kMekfAttitude + b)];
+    const auto m_i = h.row(i).template segment<3>(kMekfAttitude);
+    const auto m_j = h.row(j).template segment<3>(kMekfAttitude);
+    const T uncertainty = m_i.dot(p_att * m_i.transpose()) + m_j.dot(p_att * m_j.transpose());
+    const T norm2 = field(i) * field(i) + field(j) * field(j);
+    if (!(norm2 > T(9) * uncertainty)) return;
+    const T norm = std::sqrt(norm2);
+    const T wi = -field(j) / norm, wj = field(i) / norm;
+    y(i) = wi * y(i) + wj * y(j);
+    h.row(i) = wi * h.row(i) + wj * h.row(j);
+    y(j) = T(0);
+    h.row(j).setZero();
+    r(j, j) = T(1);
+}
+
+}  // namespace
+
 template <class T>
 MekfUpdate<T> mekf_update_field(MekfState<T>& s, const Vec3<T>& field_ref, const Vec3<T>& field_body, T polarity,
                                 const MekfConfig<T>& c, std::uint8_t axes) noexcept {
@@ -288,13 +324,18 @@ MekfUpdate<T> mekf_update_field(MekfState<T>& s, const Vec3<T>& field_ref, const
     h.template block<3, 3>(0, kMekfOffset) = micro * polarity * Mat3<T>::Identity();
     const T sigma = micro * c.mag_sigma, ref_sigma = micro * c.mag_ref_sigma;
     Mat3<T> r = (sigma * sigma + ref_sigma * ref_sigma) * Mat3<T>::Identity();
+    int kept[3] = {0, 0, 0}, n_kept = 0;
     for (int i = 0; i < 3; ++i) {
-        if (axes >> i & 1u) continue;
+        if (axes >> i & 1u) {
+            kept[n_kept++] = i;
+            continue;
+        }
         // An excluded axis: a zero row with unit variance gives it zero gain and zero NIS.
         y(i) = T(0);
         h.row(i).setZero();
         r(i, i) = T(1);
     }
+    if (n_kept == 2) keep_direction_only(s, y, h, r, V3<T>(micro * predicted_field), kept[0], kept[1]);
     return linear_update<T, 3>(s, y, h, r, c.gate);
 }
 
