@@ -11,8 +11,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <cstdio>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -29,8 +29,7 @@ TEST(E2eLeoFilterRandomStart, ConsistentWhileConvergingFromFaultsHealthyRunSix) 
     options.fmu_dirs = {PVATT_FMU_DIR};
     // faults_healthy.toml, run 6 (its results table, run_6.row.csv)
     options.settings = {"env.q0[1]=0.7131194155182998", "env.q0[2]=-0.10266026077850852",
-                        "env.q0[3]=-0.3316014351356746", "env.q0[4]=0.6090665466791687",
-                        "mag.noise_seed=1881336628"};
+                        "env.q0[3]=-0.3316014351356746", "env.q0[4]=0.6090665466791687", "mag.noise_seed=1881336628"};
     cosim::System system(cosim::read_system_description(PVATT_SYSTEMS_DIR "/leo_orbit.ssd"), options);
     cosim::ExecutionOptions ex;
     ex.stop_time = kStop;
@@ -57,8 +56,9 @@ TEST(E2eLeoFilterRandomStart, ConsistentWhileConvergingFromFaultsHealthyRunSix) 
         ++rows;
     }
     const double nees = rows ? nees_sum / rows : NAN;
-    std::printf("leo_orbit from faults_healthy run 6: NEES/dof %.3f over the first %.0f s (%d rows), largest error %.2f deg\n",
-                nees, kStop, rows, worst);
+    std::printf(
+        "leo_orbit from faults_healthy run 6: NEES/dof %.3f over the first %.0f s (%d rows), largest error %.2f deg\n",
+        nees, kStop, rows, worst);
     RecordProperty("nees_first_10_min", std::to_string(nees));
     EXPECT_GT(rows, 590);  // the filter starts within the first seconds
     EXPECT_LE(nees, 1.5);

@@ -10,8 +10,7 @@ namespace e2e {
 // lower Cholesky factor l by rows (L11, L21, L22, L31, L32, L33: the estimator's attitude_cov_sqrt). δθ from
 // δq = q_true ⊗ q_filt⁻¹ in Shuster's order (A(δq) = A_true Âᵀ = I − [δθ×]), δθ = 2 vec(δq) with the sign of
 // δq₄. The error's size |δθ| (rad) goes to *angle when given.
-inline double nees_per_dof(const double q_true[4], const double q_filt[4], const double l[6],
-                           double* angle = nullptr) {
+inline double nees_per_dof(const double q_true[4], const double q_filt[4], const double l[6], double* angle = nullptr) {
     const double x1 = q_true[0], y1 = q_true[1], z1 = q_true[2], w1 = q_true[3];
     const double x2 = -q_filt[0], y2 = -q_filt[1], z2 = -q_filt[2], w2 = q_filt[3];
     double d[3] = {w1 * x2 + w2 * x1 - (y1 * z2 - z1 * y2), w1 * y2 + w2 * y1 - (z1 * x2 - x1 * z2),
