@@ -24,6 +24,7 @@
 #include "engine/execution.hpp"
 #include "engine/system.hpp"
 #include "engine/system_description.hpp"
+#include "filter_nees.hpp"
 #include "recorder.hpp"
 
 namespace {
@@ -103,19 +104,9 @@ struct Consistency : cosim::Observer {
             return;
         }
         ++rows[k];
-        // δq = q_true ⊗ q̂⁻¹ in Shuster's order (A(δq) = A_true Âᵀ = I − [δθ×]); δθ = 2 vec(δq), sign of δq₄.
-        const double x1 = qt[0], y1 = qt[1], z1 = qt[2], w1 = qt[3];
-        const double x2 = -qf[0], y2 = -qf[1], z2 = -qf[2], w2 = qf[3];
-        double d[3] = {w1 * x2 + w2 * x1 - (y1 * z2 - z1 * y2), w1 * y2 + w2 * y1 - (z1 * x2 - x1 * z2),
-                       w1 * z2 + w2 * z1 - (x1 * y2 - y1 * x2)};
-        const double s = (w1 * w2 - (x1 * x2 + y1 * y2 + z1 * z2)) < 0 ? -2.0 : 2.0;
-        for (double& v : d) v *= s;
-        // |L⁻¹ δθ|² by forward substitution.
-        const double z0 = d[0] / l[0];
-        const double zz1 = (d[1] - l[1] * z0) / l[2];
-        const double zz2 = (d[2] - l[3] * z0 - l[4] * zz1) / l[5];
-        nees_sum[k] += (z0 * z0 + zz1 * zz1 + zz2 * zz2) / 3.0;
-        covered[k] += std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) <= x[15];
+        double angle = 0.0;
+        nees_sum[k] += e2e::nees_per_dof(qt, qf, l, &angle);
+        covered[k] += angle <= x[15];
     }
     double nees(int k) const { return rows[k] ? nees_sum[k] / rows[k] : NAN; }
     double coverage(int k) const { return rows[k] ? 100.0 * covered[k] / rows[k] : NAN; }

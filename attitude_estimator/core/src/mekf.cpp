@@ -188,6 +188,38 @@ void restart_offset(MekfState<T>& s, const MekfConfig<T>& c) noexcept {
     store_p<T>(s, p);
 }
 
+// The single-frame attitude the filter starts from was solved (Wahba, weights w_s and w_f) from this sample's
+// sun and field, and the field carries the offset the offset state stands for: before the calibration applies,
+// the spacecraft's own field, several µT in a 20–50 µT field (up to 17° of its direction). To first order the
+// start attitude errs by δθ = G δb with G = w_f p W⁻¹ [u×] / |B| and W = w_s (I − s sᵀ) + w_f (I − u uᵀ)
+// (s, u the measured unit vectors, |B| the field's size, p the sign of the offset in this reading): the
+// Wahba solution turns the attitude to meet the offset-shifted field halfway. The start covariance adds
+// G P_bb Gᵀ to P_θθ and G P_bb to P_θb: the attitude is as uncertain as the offset makes it, and the two
+// errors are one (docs/filter.md, "The start"). Without it a start 21° off was held with a 2.9° σ.
+template <class T>
+void add_offset_to_start(MekfState<T>& s, const MekfSampleInputs<T>& in, const MekfConfig<T>& c) noexcept {
+    // A single-frame attitude not made from the field (weight 0) carries none of its offset.
+    if (!c.estimate_offset || !in.sun_valid || !in.mag_valid || !(in.mag_weight > T(0))) return;
+    const V3<T> sun = v3(in.sun_body).normalized();
+    const V3<T> field = v3(in.mag_body);
+    const T size = field.norm();
+    if (!(size > T(0)) || !sun.allFinite()) return;
+    const V3<T> u = field / size;
+    const Mat3<T> w = in.sun_weight * (Mat3<T>::Identity() - sun * sun.transpose()) +
+                      in.mag_weight * (Mat3<T>::Identity() - u * u.transpose());
+    // Parallel vectors leave W singular (the single-frame solution refuses them: no start then).
+    if (!(std::abs(w.determinant()) > T(1e-6))) return;
+    const T polarity = holds_hard_iron(s, c) ? T(1) : in.polarity;
+    const Mat3<T> g = (in.mag_weight * polarity / size) * w.inverse() * skew(u);
+    MatN<T> p = map_p(s);
+    const Mat3<T> p_bb = p.template block<3, 3>(kMekfOffset, kMekfOffset);
+    const Mat3<T> g_pbb = g * p_bb;
+    p.template block<3, 3>(kMekfAttitude, kMekfAttitude) += g_pbb * g.transpose();
+    p.template block<3, 3>(kMekfAttitude, kMekfOffset) += g_pbb;
+    p.template block<3, 3>(kMekfOffset, kMekfAttitude) += g_pbb.transpose();
+    store_p<T>(s, p);
+}
+
 }  // namespace
 
 template <class T>
@@ -403,6 +435,7 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
                     p(kMekfRate + i, kMekfRate + i) +=
                         T(2) * c.init_attitude_sigma * c.init_attitude_sigma / (gap * gap);
                 store_p<T>(s, p);
+                add_offset_to_start(s, in, c);
             } else {
                 s.stage = 1;
                 s.q_first = in.q_single;

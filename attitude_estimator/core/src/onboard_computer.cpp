@@ -69,6 +69,8 @@ void update_filter(OnboardState<T>& s, const OnboardInputs<T>& in, const Onboard
     f.t = t;
     f.attitude_valid = r.valid;
     f.q_single = r.q;
+    f.sun_weight = nominal.sun_weight;
+    f.mag_weight = nominal.mag_weight;
     f.sun_valid = r.sun_valid;
     f.sun_ref = in.sun_ref;
     f.sun_body = r.sun_meas;

@@ -146,6 +146,10 @@ struct MekfSampleInputs {
     T t = T(0);                   // s, sample time
     bool attitude_valid = false;  // the single-frame (Q-method) attitude of this sample
     Quaternion<T> q_single{};
+    // The weights q_single was solved with (Wahba's a_1, a_2 for the sun and the field; any common scale): the
+    // start covariance maps the field's offset through them into the start attitude (mekf.cpp).
+    T sun_weight = T(0.5);
+    T mag_weight = T(0.5);
     bool sun_valid = false;
     Vec3<T> sun_ref{};   // any length
     Vec3<T> sun_body{};  // unit

@@ -1,0 +1,28 @@
+// The filter's normalized estimation error squared per degree of freedom, as the consistency tests compute it
+// (e2e_filter_consistency_test.cpp, e2e_filter_random_start_test.cpp; docs/filter.md, "Consistency").
+#pragma once
+
+#include <cmath>
+
+namespace e2e {
+
+// δθᵀ P_θθ⁻¹ δθ / 3 for the true attitude q_true and the filter's q_filt (scalar-last), with P_θθ given by its
+// lower Cholesky factor l by rows (L11, L21, L22, L31, L32, L33: the estimator's attitude_cov_sqrt). δθ from
+// δq = q_true ⊗ q_filt⁻¹ in Shuster's order (A(δq) = A_true Âᵀ = I − [δθ×]), δθ = 2 vec(δq) with the sign of
+// δq₄. The error's size |δθ| (rad) goes to *angle when given.
+inline double nees_per_dof(const double q_true[4], const double q_filt[4], const double l[6], double* angle = nullptr) {
+    const double x1 = q_true[0], y1 = q_true[1], z1 = q_true[2], w1 = q_true[3];
+    const double x2 = -q_filt[0], y2 = -q_filt[1], z2 = -q_filt[2], w2 = q_filt[3];
+    double d[3] = {w1 * x2 + w2 * x1 - (y1 * z2 - z1 * y2), w1 * y2 + w2 * y1 - (z1 * x2 - x1 * z2),
+                   w1 * z2 + w2 * z1 - (x1 * y2 - y1 * x2)};
+    const double s = (w1 * w2 - (x1 * x2 + y1 * y2 + z1 * z2)) < 0 ? -2.0 : 2.0;
+    for (double& v : d) v *= s;
+    if (angle) *angle = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    // |L⁻¹ δθ|² by forward substitution.
+    const double z0 = d[0] / l[0];
+    const double zz1 = (d[1] - l[1] * z0) / l[2];
+    const double zz2 = (d[2] - l[3] * z0 - l[4] * zz1) / l[5];
+    return (z0 * z0 + zz1 * zz1 + zz2 * zz2) / 3.0;
+}
+
+}  // namespace e2e
