@@ -75,6 +75,10 @@ MekfConfig<T> field_recovery_config(const OnboardState<T>& s, const OnboardSetti
         c.mag_sigma_calibrated *= settings.faults.bias_noise_factor;
         const T jump = std::sqrt(squared_norm(s.faults.bias_jump));
         if (jump > T(0)) c.mag_hard_iron_sigma = jump;
+        // The field still comes through the calibration's scale and non-orthogonality (kept by the reopening):
+        // its noise is the calibrated one, the offset's residual being the state's (leo_orbit: 9.5 µT, not the
+        // uncalibrated 100 µT that would leave the attitude to the sun alone).
+        if (c.mag_sigma_calibrated > T(0)) c.mag_sigma = c.mag_sigma_calibrated;
     }
     return c;
 }
