@@ -4,10 +4,14 @@
 #include "attitude_estimator/fault_detection.hpp"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "attitude_estimator/mag_calibration.hpp"
+#include "attitude_estimator/mekf.hpp"
+#include "attitude_estimator/onboard_computer.hpp"
 
 #include "fault_test_support.hpp"
 #include "test_support.hpp"
@@ -226,6 +230,57 @@ TYPED_TEST(EstimatorCoreMagFaults, ABiasJumpIsDeclaredWithItsSize) {
     EXPECT_EQ(small.axis_word[0], 0u);
 }
 
+// A bias jump against the field: 35 µT on z from sample 100 on, where the prediction is −40 µT. The jump is
+// a field at the sensor, so it flips with the set/reset pulses: the readings are p S (B + b) + v_os, the
+// half difference along the predicted sign −(−40 + 35) = 5 µT, below the flip test's 0.25 × 40 = 10 µT on
+// every pair, but 5 µT clear of zero: the film flips, so the axis is not blamed for not flipping (the old
+// test declared z "no flip" at its 100th failing sample, 199, and excluded it). The innovation is 35 µT
+// on z at both polarities: samples 100 and 101 are spikes (left out), then the slow mean (α = 0.05/60)
+// passes 1 µT after n = ln(1 − 1/35) / ln(1 − α) = 34.8 samples (n = 1 at sample 102), from sample 136 on;
+// the 100th failing sample, 235 (t = 11.75 s), declares the bias. Nothing is excluded.
+TYPED_TEST(EstimatorCoreMagFaults, ABiasJumpAgainstTheFieldIsNotTakenForANoFlip) {
+    using T = TypeParam;
+    const Field<T> f;
+    const auto c = enabled<T>();
+    FaultDetectionState<T> s;
+    for (int i = 0; i < 400; ++i) {
+        auto o = f.observation(i);
+        Vec3<T> at_sensor = f.b;
+        if (i >= 100) at_sensor[2] += T(35e-6);
+        for (std::size_t k = 0; k < 3; ++k) o.mag_reading[k] = o.polarity * f.s * at_sensor[k] + f.v_os;
+        o.field_measured = true;
+        o.field_uncalibrated = at_sensor;
+        o.field = at_sensor;
+        fault_detect(s, o, c);
+        if (i == 234) {
+            EXPECT_EQ(s.axis_word[2], 0u);
+        }
+    }
+    EXPECT_EQ(s.axis_word[2], kFaultAxisBias);
+    EXPECT_NEAR(s.axis_time[2], 11.75, 1e-3);
+    EXPECT_EQ(s.axis_word[0] | s.axis_word[1], 0u);
+    EXPECT_EQ(excluded_axes(s), 0);
+    EXPECT_TRUE(s.bias_recovering);
+}
+
+// A stuck axis in the same field: z latched at its sample-100 reading (a set: −40 µT × S
+// + v_os) reads the same at both polarities, its half difference is 0 < 0.02 µT: still declared "no flip"
+// at its 100th failing sample, 200 (t = 10 s), and excluded.
+TYPED_TEST(EstimatorCoreMagFaults, AStuckAxisInAStrongFieldIsStillDeclaredNoFlip) {
+    using T = TypeParam;
+    const Field<T> f;
+    FaultDetectionState<T> s;
+    const T latched = f.observation(100).mag_reading[2];
+    for (int i = 0; i < 400; ++i) {
+        auto o = f.observation(i);
+        if (i >= 100) o.mag_reading[2] = latched;
+        fault_detect(s, o, enabled<T>());
+    }
+    EXPECT_EQ(s.axis_word[2] & kFaultAxisNoFlip, kFaultAxisNoFlip);
+    EXPECT_NEAR(s.axis_time[2], 10.0, 0.051);
+    EXPECT_EQ(excluded_axes(s), 0b100);
+}
+
 TYPED_TEST(EstimatorCoreMagFaults, AStrapThatWorksAgainIsNoticedAndSetResetResumes) {
     using T = TypeParam;
     const Field<T> f;
@@ -258,6 +313,109 @@ TYPED_TEST(EstimatorCoreMagFaults, AStrapThatWorksAgainIsNoticedAndSetResetResum
         EXPECT_NEAR(s.axis_time[k], 9.95, 1e-3);
     }
     EXPECT_EQ(excluded_axes(s), 0);
+}
+
+// While the calibration re-learns its offset after a bias jump (onboard_computer.cpp), the filter's offset
+// state must take what is left of the jump: a field at the sensor, fixed in body axes, read at both set/reset
+// polarities (a pulse every sample). Here the spacecraft holds still at the identity attitude in a field B =
+// (20, −10, 30) µT, the calibration applies (gain I, offset 0) and misses r = 0.2 B (7.5 µT), the jump seen
+// is r. r along B is no attitude error (B × δθ ⊥ B): only an offset explains it. Read as the sensor's
+// polarity-following offset (the state before the fix), a constant r is ±r at alternate samples, which no
+// p·δb fits, and 25 σ of the calibrated field's noise: refused by the innovation test. Held body-fixed from
+// the jump's size, the state reaches r within 0.3 µT in 10 s (200 readings, quantized, without noise)
+// and the attitude stays put.
+TYPED_TEST(EstimatorCoreMagFaults, DuringTheRecoveryTheFilterTakesTheResidualFixedInBodyAxes) {
+    using T = TypeParam;
+    OnboardSettings<T> settings;
+    settings.faults.enabled = true;
+    settings.faults.bias_threshold = T(1);  // T: no further declaration here (the test is the recovery)
+    settings.faults.spike_gate = T(1e6);
+    settings.filter = FilterKind::mekf;
+    settings.mag_calibration = true;
+    settings.mekf.mag_sigma_calibrated = T(0.3e-6);
+    settings.set_reset.period_samples = 1;
+    const Vec3<T> b{T(20e-6), T(-10e-6), T(30e-6)};
+    Vec3<T> r{};
+    for (std::size_t k = 0; k < 3; ++k) r[k] = T(0.2) * b[k];
+    OnboardState<T> s;
+    onboard_start(s, settings);
+    mekf_start(s.filter, Quaternion<T>{T(0), T(0), T(0), T(1)}, Vec3<T>{}, T(0), settings.mekf);
+    s.filter.mag_calibrated = 1;
+    // Converged before the jump: the offset state's 1σ 10 nT per axis (offset_noise 1e-11 T/√s over hours).
+    for (int i = 0; i < 3; ++i) {
+        const auto d = static_cast<std::size_t>(kMekfStates * (kMekfOffset + i) + kMekfOffset + i);
+        s.filter.p[d] = T(1e-16);
+    }
+    s.mag_cal.valid = true;
+    s.faults.bias_recovering = true;
+    s.faults.bias_jump = r;
+    const T sensitivity = settings.estimator.mag_sensitivity;
+    for (int i = 1; i <= 200; ++i) {
+        OnboardInputs<T> in;
+        in.sun_ref = {T(1), T(0), T(0)};
+        in.mag_ref = b;
+        in.v_mag_ref = T(2.5);
+        for (std::size_t k = 0; k < 3; ++k)
+            in.v_mag[k] = in.v_mag_ref + s.set_reset.polarity * sensitivity * (b[k] + r[k]);
+        onboard_sample(s, in, settings, T(i * kPeriod));
+    }
+    EXPECT_EQ(s.filter.mag_calibrated, 0);
+    EXPECT_EQ(s.filter.resets, 0);
+    for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(s.filter.mag_offset[k], r[k], 0.3e-6) << k;
+    const T w = std::abs(s.filter.q.w);
+    EXPECT_GT(w, std::cos(T(0.5 * 0.0174533) / T(2)));  // within 0.5 deg of the identity
+}
+
+// A bias jump pulls the filter's attitude until it is declared; at the declaration the computer takes the
+// filter back to its copy from 30 to 60 s before (onboard_computer.cpp, rewind_filter), propagated to now.
+// The spacecraft holds still at the identity attitude in B = (20, −10, 30) µT, calibrated (gain I, offset
+// 0), the filter started at the truth; r = (8, −1, −1) µT appears at 70 s: 0.1 B along the field (3.7 µT,
+// which no attitude explains: the bias test's mean innovation) and (6, 0, −4) µT across it, which a
+// still spacecraft cannot tell from an attitude error of up to 7.2 / 37.4 rad = 11 deg. With the field's
+// σ 3 µT (so that the 8.1 µT step passes the innovation test) the filter follows that pull until the declaration
+// (the mean innovation past 1 µT within ln(1 − 1/3.74) / ln(1 − 1/1200) = 373 samples, then 5 s: before
+// 94 s). One second after the declaration the attitude is within 0.2 deg of the truth (the copy, from 30 s,
+// converged on the field for 30 s, propagated at zero rate); without the rewind the pull stays (degrees).
+TYPED_TEST(EstimatorCoreMagFaults, AtTheDeclarationTheFilterIsTakenBackToBeforeTheJump) {
+    using T = TypeParam;
+    OnboardSettings<T> settings;
+    settings.faults.enabled = true;
+    settings.faults.spike_gate = T(1e6);
+    settings.filter = FilterKind::mekf;
+    settings.mag_calibration = true;
+    settings.mekf.mag_sigma_calibrated = T(3e-6);
+    settings.set_reset.period_samples = 1;
+    const Vec3<T> b{T(20e-6), T(-10e-6), T(30e-6)};
+    const Vec3<T> r{T(8e-6), T(-1e-6), T(-1e-6)};
+    OnboardState<T> s;
+    onboard_start(s, settings);
+    mekf_start(s.filter, Quaternion<T>{T(0), T(0), T(0), T(1)}, Vec3<T>{}, T(0), settings.mekf);
+    s.filter.mag_calibrated = 1;
+    s.mag_cal.valid = true;
+    const T sensitivity = settings.estimator.mag_sensitivity;
+    T declared = T(-1), error_after = T(-1);
+    std::int32_t resets_after = -1;
+    for (int i = 1; i <= 2000; ++i) {
+        const T t = T(i * kPeriod);
+        OnboardInputs<T> in;
+        in.sun_ref = {T(1), T(0), T(0)};
+        in.mag_ref = b;
+        in.v_mag_ref = T(2.5);
+        for (std::size_t k = 0; k < 3; ++k)
+            in.v_mag[k] = in.v_mag_ref + s.set_reset.polarity * sensitivity * (b[k] + (t >= T(70) ? r[k] : T(0)));
+        onboard_sample(s, in, settings, t);
+        if (declared < T(0) && s.faults.bias_recovering) declared = t;
+        if (declared > T(0) && error_after < T(0) && t >= declared + T(1)) {
+            error_after = T(2) * std::acos(std::min(T(1), std::abs(s.filter.q.w))) * T(57.29578);
+            resets_after = s.filter.resets;
+        }
+    }
+    ASSERT_GT(declared, T(70));
+    EXPECT_LT(declared, T(100));
+    EXPECT_EQ(resets_after, 0);
+    std::printf("bias jump at 70 s declared at %.2f s; attitude error 1 s later %.3f deg\n",
+                static_cast<double>(declared), static_cast<double>(error_after));
+    EXPECT_LT(error_after, T(0.2));
 }
 
 // The calibration re-learns a new offset (mag_calibration_reopen_offset): a sensor reading M B + b_own

@@ -175,7 +175,18 @@ void axis_tests(FaultDetectionState<T>& s, const FaultObservation<T>& o, const F
         if (flip && !strap_suspect && o.predicted && !o.at_rail[k] && std::abs(expected) >= min_field) {
             const T half = o.polarity * (o.mag_reading[k] - s.last_reading[k]) / (T(2) * o.sensitivity);
             const T along = expected > T(0) ? half : -half;
-            flips = along >= c.flip_fraction * std::abs(expected) ? Outcome::pass : Outcome::fail;
+            // Below the fraction is a no-flip only if the difference did not move at all. What each fault
+            // shows in the pair (set/reset half difference p (r_k − r_{k−1})/2S against the mean innovation):
+            // - a stuck axis (latched output, rail): the same reading twice, half difference 0 whatever the
+            //   field; its innovation alternates in sign with the polarity, so its mean is the prediction's.
+            // - a bias jump (a field b at the sensor, magnetometer/README.md): it flips with the earth's
+            //   field, so the half difference is B_k + b_k, the whole field at the sensor, and the innovation
+            //   is b_k at both polarities: a steady mean, the bias test's. Where b_k opposes B_k the
+            //   difference falls below the fraction for as long as the tumble keeps |b_k| > (1 − f) |B_k|
+            //   (seconds to minutes), but it stays clear of zero (within frozen_tolerance only while B_k + b_k
+            //   crosses zero, a sample or two). Such a sample is a flip: it passes, and the bias test judges.
+            const bool moved = std::abs(half) >= c.frozen_tolerance;
+            flips = along >= c.flip_fraction * std::abs(expected) || moved ? Outcome::pass : Outcome::fail;
         }
         if (flips == Outcome::not_applicable && flip && !strap_suspect && o.predicted && o.field_calibrated &&
             !o.at_rail[k]) {

@@ -51,12 +51,34 @@ Matrix3RowMajor<T> attitude_covariance_sqrt(const MekfState<T>& m) {
 
 // While the calibration re-learns its offset after a bias jump, the field's noise in the filter is raised
 // by settings.faults.bias_noise_factor (what is left of the jump is a bias the white noise does not cover).
+//
+// The filter's offset state cannot take what is left of the jump as it stands once the calibration applies:
+// it is then the sensor's offset left by the set/reset estimate, whose sign follows the polarity (flipped
+// every sample in leo_orbit), while the jump is a field at the sensor, fixed in body axes (it flips with the
+// earth's field, magnetometer/README.md). Re-opening its covariance would let it chase a constant with an
+// alternating sign. So while the calibration re-learns, the filter takes the field as not calibrated
+// (bias_recovering_uncalibrated) and its offset state holds a body-fixed field (MekfConfig::
+// mag_hard_iron_sigma: the mode it has before the calibration first applies), restarted from zero with the
+// size of the jump seen as its 1σ per axis: the residual of the calibration's offset is estimated with the
+// attitude, the sun keeps the attitude, and the covariance carries what is not known of it. When the
+// re-learnt offset applies the filter takes the calibrated field again (its offset state restarts then).
+template <class T>
+bool bias_recovering_uncalibrated(const OnboardState<T>& s, const OnboardSettings<T>& settings) {
+    return settings.faults.enabled && s.faults.bias_recovering;
+}
+
 template <class T>
 MekfConfig<T> field_recovery_config(const OnboardState<T>& s, const OnboardSettings<T>& settings) {
     MekfConfig<T> c = settings.mekf;
     if (settings.faults.enabled && s.faults.bias_recovering) {
         c.mag_sigma *= settings.faults.bias_noise_factor;
         c.mag_sigma_calibrated *= settings.faults.bias_noise_factor;
+        const T jump = std::sqrt(squared_norm(s.faults.bias_jump));
+        if (jump > T(0)) c.mag_hard_iron_sigma = jump;
+        // The field still comes through the calibration's scale and non-orthogonality (kept by the reopening):
+        // its noise is the calibrated one, the offset's residual being the state's (leo_orbit: 9.5 µT, not the
+        // uncalibrated 100 µT that would leave the attitude to the sun alone).
+        if (c.mag_sigma_calibrated > T(0)) c.mag_sigma = c.mag_sigma_calibrated;
     }
     return c;
 }
@@ -81,7 +103,7 @@ void update_filter(OnboardState<T>& s, const OnboardInputs<T>& in, const Onboard
     // offset state is what is left of the offset, with the sign of this reading's polarity.
     f.mag_body = r.mag_field;
     f.polarity = polarity;
-    f.mag_calibrated = settings.mag_calibration && s.mag_cal.valid;
+    f.mag_calibrated = settings.mag_calibration && s.mag_cal.valid && !bias_recovering_uncalibrated(s, settings);
     if (settings.filter_scale && nominal.sun.method != SunMethod::difference) {
         // Relative responses against the nominal normalization: the filter's model is (1 + ε) R(cos β).
         for (std::size_t k = 0; k < 6; ++k) {
@@ -106,6 +128,40 @@ void update_filter(OnboardState<T>& s, const OnboardInputs<T>& in, const Onboard
     if (running) out.attitude_cov_sqrt = attitude_covariance_sqrt(m);
     out.filter_valid = running && result.valid;
     out.filter_resets = m.resets;
+}
+
+// A bias jump pulls the filter's attitude from its onset until the bias test declares it (the innovation is
+// read as an attitude error: 1.3 deg in leo_orbit for 11 µT), and the filter, converged, believes the pulled
+// attitude (its covariance a few hundredths of a degree): the sun brings it back only over many minutes. The
+// bias test declares at most bias_window/2 after the onset in leo_orbit's campaign (5–22 s, 20 runs), so
+// a copy of the filter kept 30 to 60 s old is from before the jump. At the first declaration of a jump it
+// replaces the filter, propagated to now by the filter's own model (at most 1 s a step), its covariance
+// grown by the process noise over that time: no measurement since the copy, none of the jump's.
+template <class T>
+constexpr T kFilterHoldInterval = T(30);  // s: the held copy is 30 to 60 s old
+
+template <class T>
+void hold_filter(OnboardState<T>& s, T t) {
+    if (s.filter.stage != 2 || (s.filter_pending.stage == 2 && t - s.filter_checkpoint_t < kFilterHoldInterval<T>))
+        return;
+    s.filter_held = s.filter_pending;
+    s.filter_pending = s.filter;
+    s.filter_checkpoint_t = t;
+}
+
+template <class T>
+bool rewind_filter(OnboardState<T>& s, const OnboardSettings<T>& settings, T t) {
+    const MekfState<T>& held = s.filter_held;
+    if (held.stage != 2 || !(held.t_last < t) || t - held.t_last > T(3) * kFilterHoldInterval<T>) return false;
+    const std::int32_t resets = s.filter.resets;
+    s.filter = held;
+    s.filter.resets = resets;
+    s.filter.refused_in_row = 0;
+    while (s.filter.t_last < t) mekf_propagate(s.filter, std::min(T(1), t - s.filter.t_last), settings.mekf);
+    // Both copies are from before the jump or are now outdated by the rewind: they start over.
+    s.filter_pending.stage = 0;
+    s.filter_held.stage = 0;
+    return true;
 }
 
 template <class T>
@@ -379,7 +435,17 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
         o.near_shadow = depth > -kShadowMarginKm<T>;
         // A position only from the computer's own orbit (zero when the references are inputs).
         o.clear_of_shadow = out.references.valid && squared_norm(out.references.position) > T(0) && !o.near_shadow;
+        const bool was_recovering = s.faults.bias_recovering;
         fault_detect(s.faults, o, settings.faults);
+        if (s.faults.bias_jump_now && !was_recovering && settings.filter == FilterKind::mekf &&
+            rewind_filter(s, settings, t)) {
+            // The jump was seen against the pulled attitude's prediction, which had taken up part of it (the
+            // part across the field): against the rewound one, the jump is what was seen plus that part.
+            FaultObservation<T> rewound;
+            predict_at_sensor(s, in, settings, t, rewound);
+            if (o.predicted && rewound.predicted)
+                for (std::size_t k = 0; k < 3; ++k) s.faults.bias_jump[k] += o.field_body[k] - rewound.field_body[k];
+        }
         // An excluded face that may be lit (predicted within 3° of its horizon or facing the sun, or no
         // prediction) leaves the sun vector without its light: no sun this sample. Dark, it changes nothing.
         bool face_may_be_lit = false;
@@ -445,6 +511,7 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
     if (settings.filter == FilterKind::mekf)
         update_filter(s, scaled_in, settings, t, out.sample, nominal, reading_polarity, filter_mag_valid,
                       static_cast<std::uint8_t>(~axes_out & 7u), out);
+    if (settings.filter == FilterKind::mekf && detecting) hold_filter(s, t);
     return out;
 }
 

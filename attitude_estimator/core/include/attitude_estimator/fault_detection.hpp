@@ -95,7 +95,9 @@ struct FaultDetectionConfig {
     T others_min_predicted = T(0.3);
     T bus_tolerance = T(0.02);  // A: |i_sh[k] − (i_face[2k] − i_face[2k+1])|
     // Flip test: applied where the predicted field along the axis is at least flip_min_field; fails when
-    // the measured half difference along the predicted sign is below flip_fraction of it. The strap test
+    // the measured half difference along the predicted sign is below flip_fraction of it and the difference
+    // did not move (within frozen_tolerance of zero: a stuck axis; one that moved holds a field at the sensor,
+    // the bias test's, fault_detection_mag.cpp). The strap test
     // uses the same two numbers on the field left without its largest component (the least any two axes
     // show): applied where that is at least flip_min_field, failing below flip_fraction of it.
     T flip_min_field = T(15e-6);  // T

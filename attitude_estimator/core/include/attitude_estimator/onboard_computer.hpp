@@ -75,6 +75,12 @@ struct OnboardState {
     std::int32_t samples = 0;
     ReferenceState<T> references{};   // the on-board models' last two evaluations
     FaultDetectionState<T> faults{};  // the tests' evidence and the faults declared (latched)
+    // The filter as it was at least kFilterHoldInterval ago (onboard_computer.cpp, rewind_filter): a bias
+    // jump pulls the filter's attitude until it is declared; the held state, from before the jump, is taken
+    // back at the declaration. pending is the copy taken at the last checkpoint (filter_checkpoint_t).
+    MekfState<T> filter_held{};
+    MekfState<T> filter_pending{};
+    T filter_checkpoint_t = T(0);
 };
 
 template <class T>
