@@ -144,8 +144,11 @@ TEST_P(BoardVsEmulator, RepliesAreByteIdentical) {
         }
     // The scene is lit and well conditioned: the estimates are valid, and the filter runs where chosen.
     EXPECT_GT(valid_replies, 100) << GetParam().name;  // of 240 (three_faces needs three lit faces)
+    // The filter's start covariance carries the field offset's error in the single-frame attitude (docs/filter.md,
+    // "The start"): with the on-board references' hard-iron prior its 3σ bound falls below 10° about 3 s into
+    // each 6 s run, so about half the replies are filter-valid.
     if (d.filter == FilterKind::mekf) {
-        EXPECT_GT(filter_valid_replies, 150) << GetParam().name;
+        EXPECT_GT(filter_valid_replies, 100) << GetParam().name;
     }
     EXPECT_EQ(board.refused(), 0);
     EXPECT_EQ(board.samples(), 120);
