@@ -100,9 +100,15 @@ struct Euler {
     Mat3<T> jacobian(const V3<T>& w) const { return j_inv * (skew<T>(j * w) - skew(w) * j); }
 };
 
+// P in place (no copy: a 10 × 10 on the firmware's stack is 400 B), and a copy of it to work on.
+template <class T>
+Eigen::Map<const MatN<T>> view_p(const MekfState<T>& s) {
+    return Eigen::Map<const MatN<T>>(s.p.data());
+}
+
 template <class T>
 MatN<T> map_p(const MekfState<T>& s) {
-    return Eigen::Map<const MatN<T>>(s.p.data());
+    return view_p(s);
 }
 
 template <class T>
@@ -323,10 +329,7 @@ namespace {
 template <class T>
 void keep_direction_only(const MekfState<T>& s, V3<T>& y, Eigen::Matrix<T, 3, kMekfStates>& h, Mat3<T>& r,
                          const V3<T>& field, int i, int j) {
-    Mat3<T> p_att;  // P_θθ read in place (no copy of P on the firmware's stack)
-    for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b)
-            p_att(a, b) = s.p[static_cast<std::size_t>(kMekfStates * (kMekfAttitude + a) + kMekfAttitude + b)];
+    const Mat3<T> p_att = view_p(s).template block<3, 3>(kMekfAttitude, kMekfAttitude);
     const auto m_i = h.row(i).template segment<3>(kMekfAttitude);
     const auto m_j = h.row(j).template segment<3>(kMekfAttitude);
     const T uncertainty = m_i.dot(p_att * m_i.transpose()) + m_j.dot(p_att * m_j.transpose());

@@ -28,20 +28,23 @@ EstimatorConfig<T> at_sun_distance(EstimatorConfig<T> c, T sun_distance) {
     return c;
 }
 
+// Element (i, j) of the filter's attitude covariance P_θθ, read in place.
+template <class T>
+T attitude_p(const MekfState<T>& m, std::size_t i, std::size_t j) {
+    return m.p[kMekfStates * (kMekfAttitude + i) + kMekfAttitude + j];
+}
+
 // The lower Cholesky factor of P_θθ (zeros where a pivot is not positive).
 template <class T>
 Matrix3RowMajor<T> attitude_covariance_sqrt(const MekfState<T>& m) {
-    const auto p = [&](std::size_t i, std::size_t j) {
-        return m.p[kMekfStates * (kMekfAttitude + i) + kMekfAttitude + j];
-    };
     Matrix3RowMajor<T> l{};
     for (std::size_t j = 0; j < 3; ++j) {
-        T d = p(j, j);
+        T d = attitude_p(m, j, j);
         for (std::size_t k = 0; k < j; ++k) d -= l[3 * j + k] * l[3 * j + k];
         if (!(d > T(0))) return Matrix3RowMajor<T>{};
         l[3 * j + j] = std::sqrt(d);
         for (std::size_t i = j + 1; i < 3; ++i) {
-            T s = p(i, j);
+            T s = attitude_p(m, i, j);
             for (std::size_t k = 0; k < j; ++k) s -= l[3 * i + k] * l[3 * j + k];
             l[3 * i + j] = s / l[3 * j + j];
         }
@@ -70,7 +73,7 @@ bool bias_recovering_uncalibrated(const OnboardState<T>& s, const OnboardSetting
 template <class T>
 MekfConfig<T> field_recovery_config(const OnboardState<T>& s, const OnboardSettings<T>& settings) {
     MekfConfig<T> c = settings.mekf;
-    if (settings.faults.enabled && s.faults.bias_recovering) {
+    if (bias_recovering_uncalibrated(s, settings)) {
         c.mag_sigma *= settings.faults.bias_noise_factor;
         c.mag_sigma_calibrated *= settings.faults.bias_noise_factor;
         const T jump = std::sqrt(squared_norm(s.faults.bias_jump));
@@ -208,8 +211,7 @@ Vec3<T> attitude_sigma(const MekfState<T>& m, const Vec3<T>& v) {
     for (std::size_t k = 0; k < 3; ++k) {
         T var = T(0);
         for (std::size_t i = 0; i < 3; ++i)
-            for (std::size_t j = 0; j < 3; ++j)
-                var += vx[3 * k + i] * vx[3 * k + j] * m.p[kMekfStates * (kMekfAttitude + i) + kMekfAttitude + j];
+            for (std::size_t j = 0; j < 3; ++j) var += vx[3 * k + i] * vx[3 * k + j] * attitude_p(m, i, j);
         sigma[k] = std::sqrt(var > T(0) ? var : T(0));
     }
     return sigma;
