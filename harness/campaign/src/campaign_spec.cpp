@@ -355,22 +355,17 @@ Observable read_observable(const Context& cx, const toml::node& n, const std::st
     Observable o;
     o.column = string(cx, required(cx, *t, "column", where), where + ": 'column'");
     // Each {component.variable} checked, and the column with each replaced by an element number (1).
-    std::string trial;
     for (std::size_t i = 0; i < o.column.size();) {
         const std::size_t open = o.column.find_first_of("{}", i);
-        if (open == std::string::npos) {
-            trial += o.column.substr(i);
-            break;
-        }
+        if (open == std::string::npos) break;
         const std::size_t close = o.column.find('}', open + 1);
         if (o.column[open] == '}' || close == std::string::npos || o.column.find('{', open + 1) < close)
             cx.fail(n, where + ": 'column' '" + o.column + "' has unbalanced braces");
         o.variables.push_back(o.column.substr(open + 1, close - open - 1));
         check_target(cx, n, o.variables.back(), where + ": 'column' {" + o.variables.back() + "}");
-        trial += o.column.substr(i, open - i) + "1";
         i = close + 1;
     }
-    check_target(cx, n, trial, where + ": 'column'");
+    check_target(cx, n, observable_column(o, std::vector<std::string>(o.variables.size(), "1")), where + ": 'column'");
     const auto* above = t->get("above");
     const auto* below = t->get("below");
     if ((above == nullptr) == (below == nullptr)) cx.fail(n, where + " takes one of 'above' and 'below'");
@@ -481,6 +476,18 @@ std::filesystem::path relative_to(const std::filesystem::path& base, const std::
 }
 
 }  // namespace
+
+std::string observable_column(const Observable& o, const std::vector<std::string>& values) {
+    std::string out;
+    std::size_t from = 0;
+    for (const auto& v : values) {
+        const std::size_t open = o.column.find('{', from);
+        const std::size_t close = o.column.find('}', open);
+        out += o.column.substr(from, open - from) + v;
+        from = close + 1;
+    }
+    return out + o.column.substr(from);
+}
 
 CampaignSpec parse_spec(const std::string& text, const std::filesystem::path& file) {
     const Context cx{file.string()};

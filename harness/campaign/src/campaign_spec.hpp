@@ -65,6 +65,11 @@ struct Metric {
     double period = 0.0, within = 0.0;
 };
 
+// A detection metric of a spec where a case has an `observable` carries observable_cells after its own.
+inline bool reports_observable(const Metric& m) {
+    return m.kind == MetricKind::detection && m.stats.size() > detection_cells.size();
+}
+
 // What a case expects a detection metric to declare: the elements of the word group `words`, given by
 // a variable of the run (its value is the element; 0: none) or listed.
 struct Expectation {
@@ -83,6 +88,9 @@ struct Observable {
     bool above = true;
     double threshold = 0.0;
 };
+
+// The observable's column with its {variables} replaced by `values`, in order (one per variable).
+std::string observable_column(const Observable& o, const std::vector<std::string>& values);
 
 // One of the named alternatives a campaign cycles through (a fault type, or the no-fault control): its
 // own fixed settings and draws, and what its detection metrics are to find.

@@ -93,23 +93,6 @@ std::vector<std::string> word_group(const cosim::System& system, const std::stri
 
 }  // namespace
 
-namespace {
-
-// A case's observable column with its {variables} replaced by `values`, as integers.
-std::string observable_column(const Observable& o, const std::vector<std::string>& values) {
-    std::string out;
-    std::size_t from = 0;
-    for (const auto& v : values) {
-        const std::size_t open = o.column.find('{', from);
-        const std::size_t close = o.column.find('}', open);
-        out += o.column.substr(from, open - from) + v;
-        from = close + 1;
-    }
-    return out + o.column.substr(from);
-}
-
-}  // namespace
-
 MetricObserver::MetricObserver(const std::vector<Metric>& metrics, const cosim::System& system, const Case* run_case)
     : case_(run_case) {
     if (run_case && !run_case->onset.empty())
@@ -259,7 +242,7 @@ std::vector<std::string> MetricObserver::cells() const {
             for (double x : {o.detected, o.time, o.isolated, o.declared, o.before, o.orbits})
                 out.push_back(cosim::format_real(x));
             out.push_back(o.which);
-            if (m.stats.size() > detection_cells.size())  // the spec has an observable (observable_cells)
+            if (reports_observable(m))
                 for (double x : {o.observable, o.time_observable}) out.push_back(cosim::format_real(x));
             continue;
         }

@@ -129,7 +129,7 @@ void write_detection(std::ostream& md, const CampaignSpec& spec, const ResultRow
                           declared = col("declared"), before = col("before"), orbits = col("orbits"),
                           which = col("which");
         // A spec whose cases say when their fault can first be seen: the time to detect from then too.
-        const bool from_observable = m.stats.size() > detection_cells.size();
+        const bool from_observable = reports_observable(m);
         const std::size_t observable = from_observable ? col("observable") : 0,
                           time_observable = from_observable ? col("time_observable") : 0;
         md << "\n## Detection: " << m.name << "\n\n"
