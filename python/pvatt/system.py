@@ -121,6 +121,7 @@ class System:
 
     def expand(self, name):
         """'est.q_est' -> ['est.q_est[1]', ..., 'est.q_est[4]'] for a vector; a scalar as it is."""
+        encode(name, "the name")  # a NUL is refused as such, not reported as an unknown name
         component, _, variable = name.partition(".")
         variables = self.components.get(component)
         if variables is None:

@@ -102,7 +102,7 @@ def test_an_embedded_nul_is_refused_not_cut(chain):
 def test_a_refused_set_leaves_a_paused_run_able_to_advance(chain):
     with chain.start(output_interval=0.25, outputs=["integ.y"]) as sim:
         sim.advance_to(0.5)
-        for name, value in (("integ.y", 5.0), ("integ.tau", 2.0), ("integ.u", float("nan"))):
+        for name, value in (("integ.y", 5.0), ("integ.tau", 2.0), ("gain.k", 3.0), ("integ.u", float("nan"))):
             with pytest.raises(pvatt.PvattError):
                 sim[name] = value
         sim.advance_to(1.0)

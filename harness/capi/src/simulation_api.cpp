@@ -12,6 +12,8 @@
 #include "capi_error.hpp"
 #include "capi_handles.hpp"
 #include "engine/cosim_error.hpp"
+#include "engine/fmi2_instance.hpp"
+#include "engine/fmi3_instance.hpp"
 #include "engine/interrupt.hpp"
 #include "engine/setting.hpp"
 #include "engine/value_text.hpp"
@@ -137,6 +139,17 @@ void check_settable_while_paused(const cosim::Component& c, const fmi_loader::Sc
         throw InvalidArgument(name + " is a " + std::string(fmi_loader::to_string(v.variability)) + " " +
                               std::string(fmi_loader::to_string(v.causality)) +
                               ": while a run is paused only inputs and tunable parameters can be set");
+    // A Model Exchange FMU is paused in Continuous-Time Mode, where FMI (2.0 and 3.0) lets a host set only
+    // continuous inputs: a discrete input or a tunable parameter needs Event Mode, which a paused run is
+    // not in.
+    const bool fmu = dynamic_cast<const cosim::Fmi2Instance*>(c.instance.get()) ||
+                     dynamic_cast<const cosim::Fmi3Instance*>(c.instance.get());
+    if (fmu && c.interface == cosim::Interface::model_exchange &&
+        !(input && v.variability == fmi_loader::Variability::continuous))
+        throw InvalidArgument(name + " is a " + std::string(fmi_loader::to_string(v.variability)) + " " +
+                              std::string(fmi_loader::to_string(v.causality)) + " of " + c.name +
+                              ", which runs as Model Exchange: paused, it is in Continuous-Time Mode, where only "
+                              "continuous inputs can be set (set it before the run, with pvatt_system_set)");
     try {
         const auto x = cosim::typed_value(c.description(), v, {c.name, v.name, text, ""}, name);
         if (const auto* r = std::get_if<double>(&x)) cosim::check_value(c.description(), v, *r, name);

@@ -462,6 +462,8 @@ TEST_F(Chain, ARefusedSetLeavesAPausedRunAbleToAdvance) {
     } refused[] = {
         {"integ.y", "5", "integ.y is a continuous output: while a run is paused only inputs and tunable parameters"},
         {"integ.tau", "2", "integ.tau is a fixed parameter"},
+        // Tunable, but gain runs as Model Exchange: Continuous-Time Mode takes only continuous inputs.
+        {"gain.k", "3", "gain.k is a tunable parameter of gain, which runs as Model Exchange"},
         {"gain.u", "nan", "gain.u: nan is not a finite number"},
         {"gain.u", "inf", "gain.u: inf is not a finite number"},
         {"gain.u", "abc", "is not a number"},

@@ -174,7 +174,8 @@ PVATT_API pvatt_status pvatt_advance_to(pvatt_simulation* simulation, double t);
 PVATT_API double pvatt_simulation_time(const pvatt_simulation* simulation);
 PVATT_API int pvatt_simulation_finished(const pvatt_simulation* simulation);
 /* Values at the paused instant (as text: an Enumeration by its item name). Setting takes effect from there on: an input not fed by a connection,
- * or a tunable parameter; a connected input is overwritten by its source at the next step. A set of
+ * or a tunable parameter (of a Model Exchange FMU only a continuous input: it is paused in Continuous-Time
+ * Mode); a connected input is overwritten by its source at the next step. A set of
  * anything else (an output, a fixed parameter), or of a value outside the variable's type and range (NaN,
  * an Integer that is not whole, a number outside min/max), is refused with PVATT_INVALID_ARGUMENT before
  * the FMU sees it: the simulation can still advance. */
