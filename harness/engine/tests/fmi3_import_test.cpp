@@ -18,6 +18,7 @@
 #include "engine/ssp_archive.hpp"
 #include "engine/system.hpp"
 #include "engine/system_description.hpp"
+#include "fmi_loader/loader_error.hpp"
 
 namespace cosim {
 namespace {
