@@ -7,7 +7,9 @@
 // Not offered, each refused with a message naming it: Scheduled Execution, clocks, Configuration and
 // Reconfiguration Mode (no structural parameters), directional and adjoint derivatives, output
 // derivatives, fmi3EvaluateDiscreteStates, variables accessed in Intermediate Update Mode (the
-// intermediate-update callback is called at events only, to let the host request an early return).
+// intermediate-update callback is called at events only, to let the host request an early return; the
+// instance is in Intermediate Update Mode while it runs, and the call-rule table refuses every call
+// from there).
 #include <mutex>
 #include <new>
 #include <type_traits>
@@ -171,7 +173,16 @@ void fmi3FreeInstance(fmi3Instance c) {
     {
         auto& r = registry();
         std::lock_guard lock(r.mutex);
-        if (r.live.erase(c) == 0) return;
+        if (!r.live.contains(c)) return;
+        // From inside the intermediate-update callback the step that called it is still on the stack:
+        // freeing the instance under it is refused (the host frees it after fmi3DoStep returns).
+        if (static_cast<Instance3*>(c)->in_intermediate_update()) {
+            static_cast<Instance3*>(c)->log(fmi3Error, "logStatusError",
+                                            "fmi3FreeInstance is not allowed in Intermediate Update Mode (from inside "
+                                            "the intermediate-update callback): call it after fmi3DoStep returns");
+            return;
+        }
+        r.live.erase(c);
     }
     delete static_cast<Instance3*>(c);
 }

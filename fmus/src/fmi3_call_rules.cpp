@@ -38,6 +38,8 @@ std::string_view to_string(Mode m) {
             return "Error";
         case Mode::fatal:
             return "Fatal";
+        case Mode::intermediate_update:
+            return "Intermediate Update Mode (inside the intermediate-update callback)";
     }
     return "?";
 }

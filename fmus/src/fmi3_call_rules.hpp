@@ -19,6 +19,11 @@ enum class Mode : std::uint32_t {
     terminated = 1u << 7,
     error = 1u << 8,
     fatal = 1u << 9,
+    // Co-Simulation, inside fmi3DoStep while the intermediate-update callback runs (standard section
+    // 4.2.4): only the get/set of variables with intermediateUpdate="true" the callback's flags allow,
+    // which none of these FMUs has, so every call is refused there (fmi3DoStep and fmi3EnterEventMode
+    // above all: a step inside a step).
+    intermediate_update = 1u << 10,
 };
 
 std::string_view to_string(Mode m);

@@ -1,10 +1,12 @@
 #include "fmi3_instance.hpp"
 
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <limits>
 
 #include "fmi/vocabulary.hpp"
+#include "fmu/description.hpp"
 #include "fmu/errors.hpp"
 
 namespace fmu::fmi3 {
@@ -287,6 +289,12 @@ Instance3::StepResult Instance3::do_step(double current_time, double step_size) 
     // stops there when the host requests an early return, else the event is handled inside. The
     // step stops at the event's time whatever earlyReturnTime the host names: the event needs the
     // host's Event Mode there.
+    // Named here with FMI 3.0's arguments (the 2.0 instance below words its refusals for fmi2DoStep).
+    if (!std::isfinite(current_time))
+        throw Error("fmi3DoStep: currentCommunicationPoint must be finite (got " + format_real(current_time) + ")");
+    if (!std::isfinite(step_size) || step_size < 0.0)
+        throw Error("fmi3DoStep: communicationStepSize must be finite and non-negative (got " + format_real(step_size) +
+                    ")");
     using H = CsSolver::HostEvents;
     const bool ask = options_.event_mode_used && options_.early_return_allowed && options_.intermediate_update;
     H host_events = H::none;
@@ -299,7 +307,16 @@ Instance3::StepResult Instance3::do_step(double current_time, double step_size) 
         host_wants = [this](double t) {
             fmi3Boolean requested = false;
             fmi3Float64 early_return_time = t;
+            // The callback runs in Intermediate Update Mode: what the host calls from inside it is checked
+            // against that mode's row of the call-rule table (fmi3DoStep there would be a step inside this one).
+            mode_ = Mode::intermediate_update;
+            in_callback_ = true;
             options_.intermediate_update(environment_, t, false, false, false, true, &requested, &early_return_time);
+            in_callback_ = false;
+            if (mode_ == Mode::error)
+                throw Error("fmi3DoStep: a call from inside the intermediate-update callback at t = " + format_real(t) +
+                            " was refused (its message came before): the step is abandoned");
+            mode_ = Mode::step;
             return static_cast<bool>(requested);
         };
     StepResult r;

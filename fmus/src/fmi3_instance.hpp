@@ -42,6 +42,8 @@ public:
     void require(Call call) const;
     void require_kind(Kind kind, Call call) const;
     void enter_error_mode();
+    // Inside the intermediate-update callback of a step in progress (fmi3FreeInstance is refused there).
+    bool in_intermediate_update() const { return in_callback_; }
 
     void enter_initialization_mode(bool tolerance_defined, double tolerance, double start_time, bool stop_defined,
                                    double stop_time);
@@ -107,6 +109,7 @@ private:
     Fmi3View view_;
     Instance inner_;
     Mode mode_ = Mode::instantiated;
+    bool in_callback_ = false;  // the intermediate-update callback is running (whatever mode a refusal left)
     std::map<const Snapshot*, Mode> snapshot_modes_;  // the FMI 3.0 mode each state was taken in
     std::vector<fmi3ValueReference> scratch_;         // expand()'s result, reused across calls
 };

@@ -510,7 +510,9 @@ CsSolver& Instance::cs_solver() {
 
 fmi2Status Instance::do_step(double current_time, double step_size, CsSolver::HostEvents host_events,
                              bool* event_pending, const std::function<bool(double)>& host_wants) {
-    if (!std::isfinite(current_time) || !std::isfinite(step_size) || step_size < 0.0)
+    if (!std::isfinite(current_time))
+        throw Error("fmi2DoStep: communication point must be finite (got " + format_real(current_time) + ")");
+    if (!std::isfinite(step_size) || step_size < 0.0)
         throw Error("fmi2DoStep: step size must be finite and non-negative (got " + format_real(step_size) + ")");
     if (terminate_requested_) throw Error("fmi2DoStep: the block has asked to terminate the simulation");
     const double now = runner_.time();

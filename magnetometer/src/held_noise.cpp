@@ -5,6 +5,7 @@
 #include <numbers>
 #include <string>
 
+#include "fmu/description.hpp"
 #include "fmu/errors.hpp"
 #include "fmu/model.hpp"
 
@@ -27,10 +28,12 @@ double unit_open(std::uint64_t bits) {
 
 }  // namespace
 
-std::int64_t noise_index(double t, double t0, double period) {
+std::int64_t noise_index(double t, double t0, double period, const char* t0_name, const char* period_name) {
     const double x = (t - t0) / period;
     if (!std::isfinite(x) || std::fabs(x) > max_noise_index)
-        throw fmu::Error("magnetometer noise: (t - t0)/noise_sample_period = " + std::to_string(x) +
+        throw fmu::Error(std::string("magnetometer: (t - ") + t0_name + ")/" + period_name + " = (" +
+                         fmu::format_real(t) + " - " + fmu::format_real(t0) + ")/" + fmu::format_real(period) + " = " +
+                         fmu::format_real(x) +
                          " is not finite or exceeds the hold-interval limit max_noise_index = 2^53");
     auto k = static_cast<std::int64_t>(std::floor(x));
     if (fmu::reached(t, t0 + static_cast<double>(k + 1) * period)) ++k;  // t is k+1's start, rounded below it

@@ -266,7 +266,8 @@ FaultParameters MagnetometerBlock::faults() const {
 double MagnetometerBlock::spike_voltage(double t) const {
     const auto& d = data();
     if (d.fault_phase[fault_spikes] != fault_active) return 0.0;
-    return spike_in_slot(faults(), noise_index(t, d.fault_spike_onset, d.fault_spike_duration));
+    return spike_in_slot(faults(), noise_index(t, d.fault_spike_onset, d.fault_spike_duration, "fault_spike_onset",
+                                               "fault_spike_duration"));
 }
 
 void MagnetometerBlock::apply_stuck_axis() {
@@ -305,7 +306,7 @@ void MagnetometerBlock::update_noise(double t) {
         d.noise = {};
         return;
     }
-    const std::int64_t k = noise_index(t, d.noise_start, d.noise_sample_period);
+    const std::int64_t k = noise_index(t, d.noise_start, d.noise_sample_period, "the noise's start time");
     if (k == d.noise_index) return;
     const auto seed = static_cast<std::uint64_t>(static_cast<std::uint32_t>(d.noise_seed));
     for (int axis = 0; axis < 3; ++axis) d.noise[axis] = d.noise_rms * held_normal(seed, k, axis);

@@ -192,5 +192,26 @@ TEST(MagnetometerFaults, RefusesAnEndBeforeTheOnset) {
     }
 }
 
+// Issue 38: an onset so early that the spikes' slot count leaves the generator's range is refused naming
+// the spikes' own parameters, with the numbers in short form (it was blamed on noise_sample_period, with
+// a 300-digit number).
+TEST(MagnetometerFaults, AFarOnsetIsRefusedNamingTheSpikeParameters) {
+    Simulation sim;
+    sim.data().fault_spike_axis = 1;
+    sim.data().fault_spike_rate = 1.0;
+    sim.data().fault_spike_onset = -1e300;
+    try {
+        sim.start();
+        sim.advance_to(0.01);
+        FAIL() << "accepted an onset 1e300 s before the start";
+    } catch (const fmu::Error& e) {
+        const std::string_view what = e.what();
+        EXPECT_NE(what.find("fault_spike_onset"), std::string_view::npos) << what;
+        EXPECT_NE(what.find("fault_spike_duration"), std::string_view::npos) << what;
+        EXPECT_EQ(what.find("noise_sample_period"), std::string_view::npos) << what;
+        EXPECT_LT(what.size(), 250u) << what;
+    }
+}
+
 }  // namespace
 }  // namespace magnetometer

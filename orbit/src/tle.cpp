@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "orbit/calendar.hpp"
@@ -22,6 +23,17 @@ std::string located(int line, int column, const std::string& reason) {
 class Line {
 public:
     Line(std::string_view text, int number) : text_(text), number_(number) {
+        // A TLE is ASCII. A character beyond it (a pasted minus sign, a UTF-8 letter) is refused first, at
+        // its own column: counted in bytes, a two-byte character makes a 69-column line 70 long.
+        for (std::size_t i = 0; i < text_.size(); ++i) {
+            const auto byte = static_cast<unsigned char>(text_[i]);
+            if (byte < 0x80) continue;
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "0x%02X", byte);
+            // Every byte before this one is ASCII: one byte, one character, so its column is i + 1.
+            fail(static_cast<int>(i) + 1, std::string("a non-ASCII character (first byte ") + hex +
+                                              "); a TLE line holds ASCII only (a pasted dash or quote?)");
+        }
         // Trailing blanks and a carriage return (a file from another system) are allowed past column 69.
         std::size_t end = text_.size();
         while (end > 0 && (text_[end - 1] == ' ' || text_[end - 1] == '\r' || text_[end - 1] == '\n')) --end;

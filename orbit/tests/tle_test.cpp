@@ -109,6 +109,22 @@ TEST(Tle, RefusesEachMalformedField) {
     EXPECT_EQ(error_at(with(with(kLine1, 21, '3'), 22, '9'), kLine2), std::make_pair(1, 21));  // ...day 399 not
 }
 
+// Issue 38: a character beyond ASCII is reported at its own column, not at a byte count (a UTF-8 minus
+// sign, three bytes, in column 54 made a 69-character line 71 bytes long, refused as "text after column 69").
+TEST(Tle, NonAsciiCharacterIsReportedAtItsColumn) {
+    std::string line = kLine1;
+    line.replace(53, 1, "\xE2\x88\x92");  // U+2212 MINUS SIGN in place of the blank at column 54
+    EXPECT_EQ(error_at(line, kLine2), std::make_pair(1, 54));
+    std::string last = kLine2;
+    last.replace(68, 1, "\xC3\xA9");  // a two-byte letter as the checksum, column 69
+    EXPECT_EQ(error_at(kLine1, last), std::make_pair(2, 69));
+    try {
+        orbit::parse_tle(line, kLine2);
+    } catch (const orbit::TleError& e) {
+        EXPECT_NE(std::string(e.what()).find("non-ASCII"), std::string::npos) << e.what();
+    }
+}
+
 TEST(Tle, DeepSpaceSetIsRefusedNamingSdp4) {
     try {
         orbit::parse_tle(kDeep1, kDeep2);

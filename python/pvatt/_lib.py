@@ -180,8 +180,16 @@ def check(status, callback_errors=None):
     raise PvattError(message, status)
 
 
-def names_array(names):
+def encode(text, what="a name or value"):
+    """UTF-8 bytes for a C string; a NUL inside would end the string there, so it is refused."""
+    text = str(text)
+    if "\0" in text:
+        raise ValueError(f"{what} contains a NUL character, which a C string cannot carry: {text!r}")
+    return text.encode()
+
+
+def names_array(names, what="a name"):
     """A C array of UTF-8 strings (kept alive by the returned tuple's second element)."""
-    encoded = [n.encode() for n in names]
+    encoded = [encode(n, what) for n in names]
     array = (ctypes.c_char_p * len(encoded))(*encoded)
     return array, encoded

@@ -4,11 +4,12 @@ results table (one row per run: its draws, status and metrics) read back as nump
 import csv
 import ctypes
 import math
+import operator
 import pathlib
 
 import numpy as np
 
-from ._lib import CampaignOptions, check, lib, names_array
+from ._lib import CampaignOptions, check, encode, lib, names_array
 from .system import default_fmu_dirs
 
 
@@ -51,18 +52,22 @@ def run_campaign(spec, runs=None, stop_time=None, output=None, settings=None, fm
     o = CampaignOptions()
     lib.pvatt_campaign_options_init(ctypes.byref(o))
     if runs is not None:
-        o.runs = int(runs)
+        # A C long: a larger number would wrap (2**64 + 1 -> 1), 0 or less would mean "the spec's".
+        n = operator.index(runs)
+        if not 1 <= n <= 2**63 - 1:
+            raise ValueError(f"runs must be a positive integer that fits a C long (at most 2**63 - 1), got {runs}")
+        o.runs = n
     if stop_time is not None:
         o.stop_time = float(stop_time)
     if output is not None:
-        o.output_dir = str(output).encode()
+        o.output_dir = encode(output, "the output folder")
     o.resume = int(bool(resume))
     texts = [f"{k}={v}" for k, v in (settings or {}).items()]
     dirs = [str(d) for d in (default_fmu_dirs() if fmu_dirs is None else fmu_dirs)]
-    settings_array, keep1 = names_array(texts)
-    dirs_array, keep2 = names_array(dirs)
+    settings_array, keep1 = names_array(texts, "a setting")
+    dirs_array, keep2 = names_array(dirs, "an FMU folder")
     buffer = ctypes.create_string_buffer(4096)
     needed = ctypes.c_size_t()
-    check(lib.pvatt_campaign_run(str(spec).encode(), ctypes.byref(o), settings_array, len(texts), dirs_array,
+    check(lib.pvatt_campaign_run(encode(spec, "the spec path"), ctypes.byref(o), settings_array, len(texts), dirs_array,
                                  len(dirs), buffer, len(buffer), ctypes.byref(needed)))
     return CampaignResult(buffer.value.decode())

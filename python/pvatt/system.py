@@ -9,7 +9,7 @@ import re
 import numpy as np
 
 from . import _lib
-from ._lib import RunOptions, VariableInfo, check, lib, names_array
+from ._lib import RunOptions, VariableInfo, check, encode, lib, names_array
 from .result import Result
 
 _ELEMENT = re.compile(r"^(.*)\[(\d+)\]$")
@@ -79,11 +79,13 @@ class System:
     def __init__(self, path, fmu_dirs=None):
         self.path = pathlib.Path(path)
         dirs = [str(d) for d in (default_fmu_dirs() if fmu_dirs is None else fmu_dirs)]
-        array, keep = names_array(dirs)
+        array, keep = names_array(dirs, "an FMU folder")
         handle = ctypes.c_void_p()
-        check(lib.pvatt_system_open(str(self.path).encode(), array, len(dirs), ctypes.byref(handle)))
+        check(lib.pvatt_system_open(encode(self.path, "the path"), array, len(dirs), ctypes.byref(handle)))
         self._handle = handle
-        self._callbacks = {}  # component -> (ctypes callback, PythonComponent): kept alive while in use
+        # component -> (ctypes callback, PythonComponent). A run or a Simulation keeps its own copy of this
+        # table: a replace() while a Simulation of the old callbacks is paused must not free the one it calls.
+        self._callbacks = {}
         self._callback_errors = []
         self.components = {}
         for c in range(lib.pvatt_system_component_count(handle)):
@@ -119,6 +121,7 @@ class System:
 
     def expand(self, name):
         """'est.q_est' -> ['est.q_est[1]', ..., 'est.q_est[4]'] for a vector; a scalar as it is."""
+        encode(name, "the name")  # a NUL is refused as such, not reported as an unknown name
         component, _, variable = name.partition(".")
         variables = self.components.get(component)
         if variables is None:
@@ -140,16 +143,17 @@ class System:
         if len(values) != len(names):
             raise ValueError(f"{name} has {len(names)} elements, got {len(values)} values")
         for n, v in zip(names, values):
-            check(lib.pvatt_system_set(self._handle, n.encode(), _text(v).encode()))
+            check(lib.pvatt_system_set(self._handle, encode(n, "the name"), encode(_text(v), "the value")))
 
     def get(self, name):
         """The value set, else the description's or the FMU's start value, as text."""
         size = ctypes.c_size_t()
         buffer = ctypes.create_string_buffer(256)
-        status = lib.pvatt_system_get(self._handle, name.encode(), buffer, len(buffer), ctypes.byref(size))
+        encoded = encode(name, "the name")
+        status = lib.pvatt_system_get(self._handle, encoded, buffer, len(buffer), ctypes.byref(size))
         if status == _lib.PVATT_BUFFER_TOO_SMALL:
             buffer = ctypes.create_string_buffer(size.value)
-            status = lib.pvatt_system_get(self._handle, name.encode(), buffer, len(buffer), None)
+            status = lib.pvatt_system_get(self._handle, encoded, buffer, len(buffer), None)
         check(status)
         return buffer.value.decode()
 
@@ -160,19 +164,21 @@ class System:
         """Runs `step` in place of the component's FMU, sampled every `sample_period` seconds (see
         PythonComponent). `step=None` puts the FMU back."""
         if step is None:
-            check(lib.pvatt_system_replace(self._handle, component.encode(), 0.0, _lib.STEP_CALLBACK(), None))
+            check(lib.pvatt_system_replace(self._handle, encode(component, "the component"), 0.0, _lib.STEP_CALLBACK(),
+                                           None))
             self._callbacks.pop(component, None)
             return
         python_component = PythonComponent(self.components[component], step, self._callback_errors)
         callback = _lib.STEP_CALLBACK(python_component)
-        check(lib.pvatt_system_replace(self._handle, component.encode(), float(sample_period), callback, None))
+        check(lib.pvatt_system_replace(self._handle, encode(component, "the component"), float(sample_period), callback,
+                                       None))
         self._callbacks[component] = (callback, python_component)
 
     def _columns(self, outputs):
         if outputs is None:
             return None, [], 0
         names = [n for o in outputs for n in self.expand(o)]
-        array, keep = names_array(names)
+        array, keep = names_array(names, "an output name")
         return array, keep, len(names)
 
     def run(self, stop_time=None, output_interval=None, outputs=None, reference=False):
@@ -182,7 +188,9 @@ class System:
         options = _options(stop_time, output_interval, reference)
         array, keep, n = self._columns(outputs)
         handle = ctypes.c_void_p()
+        in_use = dict(self._callbacks)  # alive for the whole run, whatever a callback replaces meanwhile
         status = lib.pvatt_run(self._handle, ctypes.byref(options), array, n, ctypes.byref(handle))
+        del in_use
         result = Result(handle) if handle else None
         try:
             check(status, self._callback_errors)
@@ -201,6 +209,8 @@ class Simulation:
 
     def __init__(self, system, stop_time, output_interval, outputs):
         self.system = system
+        self._callbacks = dict(system._callbacks)  # the callbacks this run calls, alive as long as it is
+        self._advancing = False
         options = _options(stop_time, output_interval, False)
         array, keep, n = system._columns(outputs)
         handle = ctypes.c_void_p()
@@ -209,11 +219,15 @@ class Simulation:
 
     def close(self):
         if getattr(self, "_handle", None):
+            if self._advancing:
+                raise _lib.PvattError("Simulation.close() from inside its own advance_to (a callback of this run): "
+                                      "close it after advance_to has returned", _lib.PVATT_WRONG_STATE)
             lib.pvatt_simulation_free(self._handle)
             self._handle = None
 
     def __del__(self):
-        self.close()
+        if not getattr(self, "_advancing", False):
+            self.close()
 
     def __enter__(self):
         return self
@@ -230,7 +244,24 @@ class Simulation:
         return bool(lib.pvatt_simulation_finished(self._handle))
 
     def advance_to(self, t):
-        check(lib.pvatt_advance_to(self._handle, float(t)), self.system._callback_errors)
+        """Runs on to the output point nearest t and pauses there. Ctrl-C or an error stops it: the
+        exception's `partial_result` holds the rows up to where it stopped."""
+        if self._advancing:
+            raise _lib.PvattError("advance_to() from inside its own advance_to (a callback of this run)",
+                                  _lib.PVATT_WRONG_STATE)
+        self._advancing = True
+        try:
+            status = lib.pvatt_advance_to(self._handle, float(t))
+            self._advancing = False
+            check(status, self.system._callback_errors)
+        except BaseException as e:  # also a Ctrl-C that Python's handler raises as the call returns
+            self._advancing = False
+            if getattr(e, "partial_result", None) is None:
+                try:
+                    e.partial_result = self.result()
+                except _lib.PvattError:
+                    e.partial_result = None
+            raise
         return self.time
 
     def _get(self, name):
@@ -238,14 +269,15 @@ class Simulation:
         if self.system.components[component][variable].type in ("String", "Enumeration"):
             size = ctypes.c_size_t()
             buffer = ctypes.create_string_buffer(256)
-            status = lib.pvatt_simulation_get_text(self._handle, name.encode(), buffer, len(buffer), ctypes.byref(size))
+            encoded = encode(name, "the name")
+            status = lib.pvatt_simulation_get_text(self._handle, encoded, buffer, len(buffer), ctypes.byref(size))
             if status == _lib.PVATT_BUFFER_TOO_SMALL:
                 buffer = ctypes.create_string_buffer(size.value)
-                status = lib.pvatt_simulation_get_text(self._handle, name.encode(), buffer, len(buffer), None)
+                status = lib.pvatt_simulation_get_text(self._handle, encoded, buffer, len(buffer), None)
             check(status)
             return buffer.value.decode()
         x = ctypes.c_double()
-        check(lib.pvatt_simulation_get_real(self._handle, name.encode(), ctypes.byref(x)))
+        check(lib.pvatt_simulation_get_real(self._handle, encode(name, "the name"), ctypes.byref(x)))
         return x.value
 
     def __getitem__(self, name):
@@ -262,7 +294,7 @@ class Simulation:
         if len(values) != len(names):
             raise ValueError(f"{name} has {len(names)} elements, got {len(values)} values")
         for n, v in zip(names, values):
-            check(lib.pvatt_simulation_set_text(self._handle, n.encode(), _text(v).encode()))
+            check(lib.pvatt_simulation_set_text(self._handle, encode(n, "the name"), encode(_text(v), "the value")))
 
     def result(self):
         """The rows sampled so far (a copy of them: the run goes on)."""

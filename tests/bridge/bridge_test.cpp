@@ -227,6 +227,26 @@ TEST(Udp, SamplePeriodSettingDrivesTheExchanges) {
     EXPECT_EQ(hw.recorder.rows[10][3], 3.0);
 }
 
+// Issue 38: a value the board cannot receive is refused by name before the run, not stored and never
+// sent (the run went on with the board's own value, or failed later for another reason): a String
+// parameter (frames carry numbers) and an output (the board's to give). Nobody serves the port, so a
+// set that got through would end in the unacknowledged configuration instead.
+TEST(Udp, ValuesTheBoardCannotReceiveAreRefusedByName) {
+    auto silent = free_udp();
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"s.label=abc", "s.label: a String parameter cannot cross the hardware link"},
+        {"s.samples=3", "s.samples is output: only a hardware-bridged block's inputs and parameters are sent"},
+    };
+    for (const auto& [setting, expected] : cases) {
+        try {
+            run(annotation(R"(port="1" timeout_ms="20")"), silent->port(), false, {setting});
+            ADD_FAILURE() << setting << " should have been refused";
+        } catch (const CosimError& e) {
+            EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << setting << ": " << e.what();
+        }
+    }
+}
+
 // A silent board (a bound socket nobody answers on): policy stop gives up after max_misses.
 TEST(Udp, StopPolicyErrorsAfterConsecutiveMisses) {
     // A board that takes its configuration but answers no request.

@@ -173,4 +173,73 @@ TEST_P(Conformance3CoSimulation, IntermediateUpdateDecidesTheEarlyReturn) {
     EXPECT_EQ(last, asked.times.back());
 }
 
+// Issue 38: the callback runs in Intermediate Update Mode, where the standard allows only the get/set of
+// intermediate-update variables (none here). fmi3DoStep (a step inside the step) and fmi3EnterEventMode
+// from inside it are refused with fmi3Error and a message, and the outer step is abandoned; fmi3FreeInstance
+// from inside is refused (the step is on the stack).
+struct Inside {
+    const Instance3* instance = nullptr;
+    int call = 0;  // 0: fmi3DoStep, 1: fmi3EnterEventMode
+    std::vector<fmi3Status> statuses;
+};
+Inside inside;
+
+void call_from_inside(fmi3InstanceEnvironment, fmi3Float64 time, fmi3Boolean, fmi3Boolean, fmi3Boolean, fmi3Boolean,
+                      fmi3Boolean* requested, fmi3Float64*) {
+    *requested = false;
+    if (!inside.instance || !inside.statuses.empty()) return;
+    const auto& f = inside.instance->f();
+    fmi3Boolean event = false, terminate = false, early = false;
+    double last = 0.0;
+    inside.statuses.push_back(inside.call == 0
+                                  ? f.do_step(inside.instance->c(), time, 1e-3, true, &event, &terminate, &early, &last)
+                                  : f.enter_event_mode(inside.instance->c()));
+    f.free_instance(inside.instance->c());  // refused: the instance is freed by its owner after the step
+}
+
+TEST_P(Conformance3CoSimulation, CallsFromInsideTheIntermediateUpdateCallbackAreRefused) {
+    const auto period = std::find_if(md().variables.begin(), md().variables.end(),
+                                     [](const auto& v) { return v.name == "sample_period"; });
+    if (period == md().variables.end()) GTEST_SKIP() << "no sample_period: no events inside a step";
+    const double dt = std::stod(period->start.at(0));
+    for (int call : {0, 1}) {
+        Instance3 inst(fmu3(), Instance3::Kind::co_simulation, true, true, "", call_from_inside);
+        ASSERT_EQ(inst.initialize(), fmi3OK);
+        fmi3Boolean again = true, terminate = false, nominals = false, values = false, defined = false;
+        double next = 0.0;
+        while (again)
+            ASSERT_EQ(
+                inst.f().update_discrete_states(inst.c(), &again, &terminate, &nominals, &values, &defined, &next),
+                fmi3OK);
+        ASSERT_EQ(inst.f().enter_step_mode(inst.c()), fmi3OK);
+        inside = {&inst, call, {}};
+        fmi3Boolean event = false, early = false;
+        double last = 0.0;
+        EXPECT_EQ(inst.f().do_step(inst.c(), md().start_time, 10 * dt, true, &event, &terminate, &early, &last),
+                  fmi3Error);
+        inside.instance = nullptr;
+        ASSERT_EQ(inside.statuses.size(), 1u);
+        EXPECT_EQ(inside.statuses[0], fmi3Error);
+        const std::string log = inst.log().dump();
+        EXPECT_NE(log.find(call == 0 ? "fmi3DoStep is not allowed in Intermediate Update Mode"
+                                     : "fmi3EnterEventMode is not allowed in Intermediate Update Mode"),
+                  std::string::npos)
+            << log;
+        EXPECT_NE(log.find("fmi3FreeInstance is not allowed in Intermediate Update Mode"), std::string::npos) << log;
+        EXPECT_NE(log.find("the step is abandoned"), std::string::npos) << log;
+    }
+}
+
+// Issue 38: a non-finite communication point is refused naming it, in FMI 3.0's words.
+TEST_P(Conformance3CoSimulation, NonFiniteStepArgumentsAreRefusedByName) {
+    Instance3 inst(fmu3(), Instance3::Kind::co_simulation);
+    ASSERT_EQ(inst.initialize(), fmi3OK);
+    fmi3Boolean event = false, terminate = false, early = false;
+    double last = 0.0;
+    EXPECT_EQ(inst.f().do_step(inst.c(), std::nan(""), 0.1, true, &event, &terminate, &early, &last), fmi3Error);
+    const std::string log = inst.log().dump();
+    EXPECT_NE(log.find("fmi3DoStep: currentCommunicationPoint must be finite (got nan)"), std::string::npos) << log;
+    EXPECT_EQ(log.find("fmi2DoStep"), std::string::npos) << log;
+}
+
 }  // namespace

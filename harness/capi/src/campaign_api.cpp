@@ -70,6 +70,7 @@ pvatt_status pvatt_campaign_run(const char* spec, const pvatt_campaign_options* 
                                 size_t setting_count, const char* const* fmu_dirs, size_t fmu_dir_count,
                                 char* table_path, size_t size, size_t* needed) {
     return guarded([&] {
+        refuse_in_callback("pvatt_campaign_run");
         const std::filesystem::path spec_file(required(spec, "spec"));
         std::vector<std::string> extra;
         if (setting_count) required(settings, "settings");

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "capi_registry.hpp"
 #include "engine/execution.hpp"
 #include "engine/observer.hpp"
 #include "engine/system.hpp"
@@ -31,6 +32,10 @@ struct pvatt_system {
         std::vector<int> item_values;
     };
     std::vector<std::vector<std::unique_ptr<VariableStrings>>> variable_strings;
+    // Runs and simulations using it, and whether pvatt_system_close came (capi_registry.hpp): guarded by
+    // the registry's lock.
+    std::size_t users = 0;
+    bool closed = false;
 };
 
 struct pvatt_result {
@@ -69,6 +74,18 @@ std::unique_ptr<cosim::System> build_system(const pvatt_system& handle, bool ref
 // The execution options of a run as `cosim run` chooses them (start, stop, output interval, tolerance).
 cosim::ExecutionOptions execution_options(const pvatt_system& handle, const cosim::System& system,
                                           const pvatt_run_options* options);
+
+// A run or a simulation using a system while alive (acquire / release in capi_registry.hpp).
+class SystemUse {
+public:
+    explicit SystemUse(pvatt_system* s) : system_(s) { acquire(s); }
+    ~SystemUse() { release(system_); }
+    SystemUse(const SystemUse&) = delete;
+    SystemUse& operator=(const SystemUse&) = delete;
+
+private:
+    pvatt_system* system_;
+};
 
 // While alive (and pvatt_catch_sigint is on), SIGINT sets the interrupt flag; the previous action is
 // restored after. The interrupt flag is cleared when it starts and when it ends. A SIGINT that came too late to stop the

@@ -23,6 +23,12 @@ extern "C" void on_sigint(int) {
     cosim::record_interrupt(SIGINT);  // an atomic store: safe in a handler
 }
 
+// For the functions that return a value, not a status: whether the handle is open, with the message of
+// a refusal as the last error when it is not.
+bool usable(const pvatt_result* r) {
+    return guarded([&] { open_result(r); }) == PVATT_OK;
+}
+
 }  // namespace
 
 namespace pvatt_capi {
@@ -144,7 +150,9 @@ pvatt_status pvatt_run(pvatt_system* system, const pvatt_run_options* options, c
     const pvatt_status status = guarded([&] {
         required(out, "out");
         *out = nullptr;
-        required(system, "system");
+        open_system(system);
+        refuse_in_callback("pvatt_run");
+        const SystemUse use(system);  // a pvatt_system_close from a callback frees it after the run
         BlockingCall blocking;
         auto sys = build_system(*system, options && options->reference);
         const auto ex = execution_options(*system, *sys, options);
@@ -161,29 +169,32 @@ pvatt_status pvatt_run(pvatt_system* system, const pvatt_run_options* options, c
             throw;
         }
     });
-    if (out && result && recording) *out = result.release();  // the rows so far, also after an interrupt or a failure
+    if (out && result && recording) {  // the rows so far, also after an interrupt or a failure
+        register_handle(result.get());
+        *out = result.release();
+    }
     return status;
 }
 
 size_t pvatt_result_rows(const pvatt_result* result) {
-    return result ? result->rows() : 0;
+    return usable(result) ? result->rows() : 0;
 }
 
 size_t pvatt_result_columns(const pvatt_result* result) {
-    return result ? result->names.size() : 0;
+    return usable(result) ? result->names.size() : 0;
 }
 
 const char* pvatt_result_column_name(const pvatt_result* result, size_t column) {
-    return result && column < result->names.size() ? result->names[column].c_str() : nullptr;
+    return usable(result) && column < result->names.size() ? result->names[column].c_str() : nullptr;
 }
 
 const double* pvatt_result_data(const pvatt_result* result) {
-    return result ? result->data.data() : nullptr;
+    return usable(result) ? result->data.data() : nullptr;
 }
 
 pvatt_status pvatt_result_read_column(const pvatt_result* result, size_t column, double* buffer, size_t size) {
     return guarded([&] {
-        required(result, "result");
+        open_result(result);
         required(buffer, "buffer");
         const std::size_t n = result->rows(), columns = result->names.size();
         if (column >= columns)
@@ -197,6 +208,11 @@ pvatt_status pvatt_result_read_column(const pvatt_result* result, size_t column,
 }
 
 void pvatt_result_free(pvatt_result* result) {
+    if (!result) return;
+    if (!unregister_handle(result)) {
+        set_last_error("pvatt_result_free: the result is not open (freed already, or never returned by the library)");
+        return;
+    }
     delete result;
 }
 

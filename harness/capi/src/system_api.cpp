@@ -56,9 +56,14 @@ std::string_view type_name(fmi_loader::VariableType t) {
     return "";
 }
 
+// For the functions that return a value, not a status: whether the handle is open, with the message of
+// a refusal as the last error when it is not.
+bool usable(const pvatt_system* s) {
+    return guarded([&] { open_system(s); }) == PVATT_OK;
+}
+
 const cosim::Component& component_at(const pvatt_system* s, std::size_t i) {
-    required(s, "system");
-    const auto& comps = s->loaded->components();
+    const auto& comps = open_system(s).loaded->components();
     if (i >= comps.size())
         throw InvalidArgument("component index " + std::to_string(i) + " out of range (" +
                               std::to_string(comps.size()) + " components)");
@@ -103,6 +108,7 @@ std::unique_ptr<cosim::System> build_system(const pvatt_system& handle, bool ref
             c.instance = std::make_unique<cosim::CallbackInstance>(
                 c.description(), c.name, r->second.period,
                 [callback, user, name](double t, std::span<const double> in, std::span<double> out) {
+                    const CallbackScope inside;  // what the callback may call back (capi_registry.hpp)
                     if (callback(user, t, in.data(), in.size(), out.data(), out.size()) != 0)
                         throw CallbackFailed(name + ": the callback component failed at t = " + std::to_string(t));
                 });
@@ -132,6 +138,7 @@ pvatt_status pvatt_system_open(const char* path, const char* const* fmu_dirs, si
     return guarded([&] {
         required(out, "out");
         *out = nullptr;
+        refuse_in_callback("pvatt_system_open");
         const std::filesystem::path file(required(path, "path"));
         if (fmu_dir_count) required(fmu_dirs, "fmu_dirs");
         BlockingCall blocking;  // unpacking the FMUs takes a while: Ctrl-C stops it
@@ -152,36 +159,38 @@ pvatt_status pvatt_system_open(const char* path, const char* const* fmu_dirs, si
         handle->variable_strings.resize(handle->loaded->components().size());
         for (std::size_t i = 0; i < handle->variable_strings.size(); ++i)
             handle->variable_strings[i].resize(handle->loaded->components()[i].description().model_variables.size());
+        register_handle(handle.get());
         *out = handle.release();
     });
 }
 
 void pvatt_system_close(pvatt_system* system) {
-    delete system;
+    if (system && !close_system(system))
+        set_last_error("pvatt_system_close: the system is not open (closed already, or never returned by the library)");
 }
 
 double pvatt_system_default_stop_time(const pvatt_system* system) {
-    return system && system->description.stop_time ? *system->description.stop_time : no_value;
+    return usable(system) && system->description.stop_time ? *system->description.stop_time : no_value;
 }
 
 double pvatt_system_default_output_interval(const pvatt_system* system, double stop_time) {
-    if (!system) return no_value;
+    if (!usable(system)) return no_value;
     const double start = system->description.start_time.value_or(0.0);
     if (!(stop_time > start) || !std::isfinite(stop_time)) return no_value;
     return cosim::run_defaults(*system->loaded, start, stop_time).output_interval;
 }
 
 size_t pvatt_system_component_count(const pvatt_system* system) {
-    return system ? system->loaded->components().size() : 0;
+    return usable(system) ? system->loaded->components().size() : 0;
 }
 
 const char* pvatt_system_component_name(const pvatt_system* system, size_t component) {
-    if (!system || component >= system->loaded->components().size()) return nullptr;
+    if (!usable(system) || component >= system->loaded->components().size()) return nullptr;
     return system->loaded->components()[component].name.c_str();
 }
 
 size_t pvatt_system_variable_count(const pvatt_system* system, size_t component) {
-    if (!system || component >= system->loaded->components().size()) return 0;
+    if (!usable(system) || component >= system->loaded->components().size()) return 0;
     return system->loaded->components()[component].description().model_variables.size();
 }
 
@@ -221,7 +230,7 @@ pvatt_status pvatt_system_variable(const pvatt_system* system, size_t component,
 
 pvatt_status pvatt_system_set(pvatt_system* system, const char* name, const char* value) {
     return guarded([&] {
-        required(system, "system");
+        open_system(system);
         const std::string n(required(name, "name")), text(required(value, "value"));
         const auto ref = find_variable(*system->loaded, n);
         const auto& md = system->loaded->components()[ref.component].description();
@@ -243,7 +252,7 @@ pvatt_status pvatt_system_set(pvatt_system* system, const char* name, const char
 pvatt_status pvatt_system_get(const pvatt_system* system, const char* name, char* buffer, size_t size, size_t* needed) {
     std::string text;
     const pvatt_status found = guarded([&] {
-        required(system, "system");
+        open_system(system);
         const std::string n(required(name, "name"));
         const auto ref = find_variable(*system->loaded, n);
         const auto it =
@@ -262,13 +271,13 @@ pvatt_status pvatt_system_get(const pvatt_system* system, const char* name, char
 }
 
 void pvatt_system_clear_settings(pvatt_system* system) {
-    if (system) system->settings.clear();
+    if (usable(system)) system->settings.clear();
 }
 
 pvatt_status pvatt_system_replace(pvatt_system* system, const char* component, double sample_period,
                                   pvatt_step_callback callback, void* user_data) {
     return guarded([&] {
-        required(system, "system");
+        open_system(system);
         const std::string name(required(component, "component"));
         const auto& comps = system->loaded->components();
         if (std::none_of(comps.begin(), comps.end(), [&](const auto& c) { return c.name == name; }))

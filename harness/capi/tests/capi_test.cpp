@@ -324,4 +324,160 @@ TEST(CapiFmu, ALoneFmuIsASystemOfOneComponent) {
     pvatt_system_close(s);
 }
 
+// ---- Issue 38: handles, re-entrancy, a paused run's sets ----
+
+// A closed system, a freed result or simulation is refused with a status and a message (the library
+// keeps a registry of open handles, as the FMI layer does): no use after free, no double free.
+TEST_F(Chain, ClosedAndFreedHandlesAreRefusedNotUsed) {
+    pvatt_result* r = nullptr;
+    ASSERT_EQ(pvatt_run(system, nullptr, nullptr, 0, &r), PVATT_OK);
+    pvatt_result_free(r);
+    pvatt_result_free(r);  // the second is refused
+    EXPECT_NE(std::string(pvatt_last_error()).find("pvatt_result_free: the result is not open"), std::string::npos)
+        << pvatt_last_error();
+    EXPECT_EQ(pvatt_result_rows(r), 0u);
+    double column[4];
+    EXPECT_EQ(pvatt_result_read_column(r, 0, column, 4), PVATT_INVALID_ARGUMENT);
+
+    pvatt_simulation* sim = nullptr;
+    ASSERT_EQ(pvatt_start(system, nullptr, nullptr, 0, &sim), PVATT_OK);
+    pvatt_simulation_free(sim);
+    EXPECT_EQ(pvatt_advance_to(sim, 0.5), PVATT_INVALID_ARGUMENT);
+    EXPECT_NE(std::string(pvatt_last_error()).find("simulation is not open"), std::string::npos) << pvatt_last_error();
+    pvatt_simulation_free(sim);  // refused, no double free
+
+    pvatt_system_close(system);
+    EXPECT_EQ(pvatt_system_set(system, "gain.k", "3"), PVATT_INVALID_ARGUMENT);
+    EXPECT_NE(std::string(pvatt_last_error()).find("system is not open"), std::string::npos) << pvatt_last_error();
+    EXPECT_EQ(pvatt_system_component_count(system), 0u);
+    EXPECT_EQ(pvatt_run(system, nullptr, nullptr, 0, &r), PVATT_INVALID_ARGUMENT);
+    pvatt_system_close(system);  // refused, no double free
+    system = nullptr;
+}
+
+// A simulation outlives a pvatt_system_close of its system: the system is freed when the simulation is.
+TEST_F(Chain, ASystemClosedUnderAPausedSimulationStaysUntilItIsFreed) {
+    pvatt_simulation* sim = nullptr;
+    ASSERT_EQ(pvatt_start(system, nullptr, nullptr, 0, &sim), PVATT_OK);
+    ASSERT_EQ(pvatt_advance_to(sim, 0.5), PVATT_OK);
+    pvatt_system_close(system);
+    system = nullptr;
+    ASSERT_EQ(pvatt_advance_to(sim, 1.0), PVATT_OK) << pvatt_last_error();
+    double x = 0;
+    ASSERT_EQ(pvatt_simulation_get_real(sim, "integ.y", &x), PVATT_OK);
+    EXPECT_NEAR(x, 1.0 + 2.0 * 1.0, 1e-6);
+    pvatt_simulation_free(sim);
+}
+
+// What a callback running inside a simulation's advance_to tried, and the statuses it got.
+struct Reentry {
+    pvatt_simulation* sim = nullptr;
+    pvatt_system* system = nullptr;
+    std::vector<pvatt_status> statuses;
+    std::vector<std::string> messages;
+    bool tried = false;
+};
+
+int reentering(void* user, double t, const double* in, std::size_t, double* out, std::size_t) {
+    auto* r = static_cast<Reentry*>(user);
+    out[0] = 2.0 * in[0];
+    if (t < 0.5 || r->tried || !r->sim) return 0;
+    r->tried = true;
+    const auto note = [&](pvatt_status s) {
+        r->statuses.push_back(s);
+        r->messages.emplace_back(pvatt_last_error());
+    };
+    note(pvatt_advance_to(r->sim, 1.0));  // would wait for itself
+    pvatt_simulation_free(r->sim);        // would join its own thread
+    note(pvatt_simulation_time(r->sim) == pvatt_simulation_time(r->sim) ? PVATT_OK : PVATT_ERROR);  // still open
+    double x = 0;
+    note(pvatt_simulation_get_real(r->sim, "integ.y", &x));  // the run is mid-step
+    note(pvatt_simulation_set_real(r->sim, "integ.u", 1.0));
+    pvatt_simulation* nested = nullptr;
+    note(pvatt_start(r->system, nullptr, nullptr, 0, &nested));
+    return 0;
+}
+
+TEST_F(Chain, ReentrantCallsFromACallbackAreRefusedWithAStatus) {
+    Reentry reentry;
+    reentry.system = system;
+    ASSERT_EQ(pvatt_system_replace(system, "gain", 0.25, reentering, &reentry), PVATT_OK);
+    pvatt_run_options options;
+    pvatt_run_options_init(&options);
+    options.output_interval = 0.25;
+    ASSERT_EQ(pvatt_start(system, &options, nullptr, 0, &reentry.sim), PVATT_OK);
+    ASSERT_EQ(pvatt_advance_to(reentry.sim, 1.0), PVATT_OK) << pvatt_last_error();
+    ASSERT_TRUE(reentry.tried);
+    ASSERT_EQ(reentry.statuses.size(), 5u);
+    EXPECT_EQ(reentry.statuses[0], PVATT_WRONG_STATE);
+    EXPECT_NE(reentry.messages[0].find("pvatt_advance_to was called from inside a callback"), std::string::npos)
+        << reentry.messages[0];
+    EXPECT_EQ(reentry.statuses[1], PVATT_OK);  // not freed: its time still reads
+    EXPECT_EQ(reentry.statuses[2], PVATT_WRONG_STATE);
+    EXPECT_NE(reentry.messages[2].find("the simulation is running"), std::string::npos) << reentry.messages[2];
+    EXPECT_EQ(reentry.statuses[3], PVATT_WRONG_STATE);
+    EXPECT_EQ(reentry.statuses[4], PVATT_WRONG_STATE);
+    // The run went on to its end, computing what it would have.
+    double x = 0;
+    ASSERT_EQ(pvatt_simulation_get_real(reentry.sim, "integ.y", &x), PVATT_OK);
+    EXPECT_NEAR(x, 1.0 + 2.0 * 1.0, 1e-6);
+    pvatt_simulation_free(reentry.sim);
+}
+
+// pvatt_system_close from a callback during pvatt_run: the run ends normally, the system is freed after.
+int closing(void* user, double t, const double* in, std::size_t, double* out, std::size_t) {
+    auto** system = static_cast<pvatt_system**>(user);
+    out[0] = 2.0 * in[0];
+    if (t >= 0.5 && *system) {
+        pvatt_system_close(*system);
+        *system = nullptr;
+    }
+    return 0;
+}
+
+TEST_F(Chain, AClosingCallbackLetsTheRunFinish) {
+    pvatt_system* handle = system;
+    ASSERT_EQ(pvatt_system_replace(system, "gain", 0.25, closing, &handle), PVATT_OK);
+    system = nullptr;  // the callback closes it
+    pvatt_result* r = nullptr;
+    ASSERT_EQ(pvatt_run(handle, nullptr, nullptr, 0, &r), PVATT_OK) << pvatt_last_error();
+    EXPECT_EQ(handle, nullptr);
+    EXPECT_GT(pvatt_result_rows(r), 2u);
+    pvatt_result_free(r);
+}
+
+// A set a paused run cannot take is refused before the FMU sees it: the run can still advance (before,
+// the FMU went to its error state and every later advance failed).
+TEST_F(Chain, ARefusedSetLeavesAPausedRunAbleToAdvance) {
+    pvatt_run_options options;
+    pvatt_run_options_init(&options);
+    options.output_interval = 0.25;
+    pvatt_simulation* sim = nullptr;
+    ASSERT_EQ(pvatt_start(system, &options, nullptr, 0, &sim), PVATT_OK);
+    ASSERT_EQ(pvatt_advance_to(sim, 0.5), PVATT_OK);
+    const struct {
+        const char* name;
+        const char* value;
+        const char* expected;
+    } refused[] = {
+        {"integ.y", "5", "integ.y is a continuous output: while a run is paused only inputs and tunable parameters"},
+        {"integ.tau", "2", "integ.tau is a fixed parameter"},
+        // Tunable, but gain runs as Model Exchange: Continuous-Time Mode takes only continuous inputs.
+        {"gain.k", "3", "gain.k is a tunable parameter of gain, which runs as Model Exchange"},
+        {"gain.u", "nan", "gain.u: nan is not a finite number"},
+        {"gain.u", "inf", "gain.u: inf is not a finite number"},
+        {"gain.u", "abc", "is not a number"},
+    };
+    for (const auto& c : refused) {
+        EXPECT_EQ(pvatt_simulation_set_text(sim, c.name, c.value), PVATT_INVALID_ARGUMENT) << c.name;
+        EXPECT_NE(std::string(pvatt_last_error()).find(c.expected), std::string::npos) << pvatt_last_error();
+    }
+    EXPECT_EQ(pvatt_simulation_set_real(sim, "gain.u", NAN), PVATT_INVALID_ARGUMENT);
+    ASSERT_EQ(pvatt_advance_to(sim, 1.0), PVATT_OK) << pvatt_last_error();
+    double x = 0;
+    ASSERT_EQ(pvatt_simulation_get_real(sim, "integ.y", &x), PVATT_OK);
+    EXPECT_NEAR(x, 1.0 + 2.0 * 1.0, 1e-6);  // nothing of the refused sets took effect
+    pvatt_simulation_free(sim);
+}
+
 }  // namespace

@@ -79,6 +79,11 @@ void CallbackInstance::sample() {
     for (std::size_t i = 0; i < input_slots_.size(); ++i) in_[i] = values_[input_slots_[i]];
     for (std::size_t i = 0; i < output_slots_.size(); ++i) out_[i] = values_[output_slots_[i]];
     step_(time_, in_, out_);
+    // All checked before any is kept: a Boolean of 0.5 or an Integer of 1e30 is refused, never rounded.
+    for (std::size_t i = 0; i < output_slots_.size(); ++i)
+        check_value(
+            description_, *output_variables_[i], out_[i],
+            name_ + "." + output_variables_[i]->name + " from the callback at t = " + format_real(time_) + " s");
     for (std::size_t i = 0; i < output_slots_.size(); ++i) values_[output_slots_[i]] = out_[i];
 }
 

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "engine/cosim_error.hpp"
+#include "fmi_loader/loader_error.hpp"
 
 namespace cosim {
 
@@ -43,17 +44,20 @@ bool is_float(Fmi3Type t) {
 
 void refuse_unsupported_fmi3(const fmi_loader::ModelDescription& md, const std::string& name) {
     if (!md.model_exchange && !md.co_simulation && md.scheduled_execution)
-        throw CosimError(name +
-                         ": the FMU offers only Scheduled Execution, which cosim does not support "
-                         "(FMI 3.0 Model Exchange and Co-Simulation are)");
+        throw fmi_loader::LoaderError(fmi_loader::LoaderErrc::unsupported,
+                                      name +
+                                          ": the FMU offers only Scheduled Execution, which cosim does not support "
+                                          "(FMI 3.0 Model Exchange and Co-Simulation are)");
     for (const auto& v : md.model_variables) {
         if (v.fmi3_type == Fmi3Type::clock || !v.clocks.empty())
-            throw CosimError(name + ": variable '" + v.name +
-                             "' is a clock or clocked; FMI 3.0 clocks are not supported by cosim");
+            throw fmi_loader::LoaderError(
+                fmi_loader::LoaderErrc::unsupported,
+                name + ": variable '" + v.name + "' is a clock or clocked; FMI 3.0 clocks are not supported by cosim");
         if ((v.fmi3_type == Fmi3Type::string || v.fmi3_type == Fmi3Type::binary) && !v.dimensions.empty())
-            throw CosimError(name + ": variable '" + v.name + "' is an array of " +
-                             std::string(fmi_loader::to_string(*v.fmi3_type)) +
-                             "; arrays of String and Binary are not supported by cosim");
+            throw fmi_loader::LoaderError(fmi_loader::LoaderErrc::unsupported,
+                                          name + ": variable '" + v.name + "' is an array of " +
+                                              std::string(fmi_loader::to_string(*v.fmi3_type)) +
+                                              "; arrays of String and Binary are not supported by cosim");
     }
 }
 

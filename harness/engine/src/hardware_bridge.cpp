@@ -49,6 +49,7 @@ HardwareBridge::HardwareBridge(const fmi_loader::ModelDescription& description, 
                 kind = Kind::string;
                 break;
         }
+        variables_[{kind, v.value_reference}] = &v;
         if (kind == Kind::string) {
             if (v.causality == Causality::input || v.causality == Causality::output)
                 throw CosimError(name_ + "." + v.name + ": String inputs and outputs cannot cross the hardware link");
@@ -91,6 +92,19 @@ std::size_t HardwareBridge::slot(Kind kind, fmi2ValueReference vr) const {
     if (it == slots_.end())
         throw CosimError(name_ + ": no variable of that type with value reference " + std::to_string(vr));
     return it->second;
+}
+
+std::size_t HardwareBridge::settable(Kind kind, fmi2ValueReference vr) const {
+    const std::size_t i = slot(kind, vr);
+    const auto* v = variables_.at({kind, vr});
+    if (kind == Kind::string)
+        throw CosimError(name_ + "." + v->name +
+                         ": a String parameter cannot cross the hardware link (its frames carry numbers), so the "
+                         "board would keep its own value; set it in the board's firmware, or run the block as an FMU");
+    if (v->causality != Causality::input && v->causality != Causality::parameter)
+        throw CosimError(name_ + "." + v->name + " is " + std::string(fmi_loader::to_string(v->causality)) +
+                         ": only a hardware-bridged block's inputs and parameters are sent to the board");
+    return i;
 }
 
 void HardwareBridge::setup_experiment(double start_time, std::optional<double> stop_time, std::optional<double>) {
@@ -136,25 +150,26 @@ double HardwareBridge::get_real(fmi2ValueReference vr) {
     return values_[slot(Kind::real, vr)];
 }
 void HardwareBridge::set_real(fmi2ValueReference vr, double x) {
-    values_[slot(Kind::real, vr)] = x;
+    values_[settable(Kind::real, vr)] = x;
 }
 fmi2Integer HardwareBridge::get_integer(fmi2ValueReference vr) {
     return static_cast<fmi2Integer>(std::lround(values_[slot(Kind::integer, vr)]));
 }
 void HardwareBridge::set_integer(fmi2ValueReference vr, fmi2Integer x) {
-    values_[slot(Kind::integer, vr)] = x;
+    values_[settable(Kind::integer, vr)] = x;
 }
 bool HardwareBridge::get_boolean(fmi2ValueReference vr) {
     return values_[slot(Kind::boolean, vr)] != 0.0;
 }
 void HardwareBridge::set_boolean(fmi2ValueReference vr, bool x) {
-    values_[slot(Kind::boolean, vr)] = x ? 1.0 : 0.0;
+    values_[settable(Kind::boolean, vr)] = x ? 1.0 : 0.0;
 }
 std::string HardwareBridge::get_string(fmi2ValueReference vr) {
     return strings_[slot(Kind::string, vr)];
 }
 void HardwareBridge::set_string(fmi2ValueReference vr, const std::string& x) {
-    strings_[slot(Kind::string, vr)] = x;
+    // The value it has (its start, the board's own) is no change: only another is refused.
+    if (strings_[slot(Kind::string, vr)] != x) settable(Kind::string, vr);
 }
 
 void HardwareBridge::do_step(double, double) {

@@ -58,4 +58,37 @@ std::string format_real(double x) {
     return std::string(buf, result.ptr);
 }
 
+void check_value(const fmi_loader::ModelDescription& md, const fmi_loader::ScalarVariable& v, double x,
+                 const std::string& what) {
+    using T = fmi_loader::VariableType;
+    const std::string given = what + ": " + format_real(x);
+    switch (v.type) {
+        case T::real:
+            if (!std::isfinite(x)) throw CosimError(given + " is not a finite number");
+            break;
+        case T::integer:
+        case T::enumeration:
+            if (!std::isfinite(x) || x != std::trunc(x) || x < -2147483648.0 || x > 2147483647.0)
+                throw CosimError(given + " is not a whole 32-bit number, as an " +
+                                 std::string(fmi_loader::to_string(v.type)) + " must be");
+            if (v.type == T::enumeration)
+                if (const auto* type = md.find_type(v.declared_type); type && !type->items.empty()) {
+                    std::string names;
+                    for (const auto& item : type->items) {
+                        if (static_cast<double>(item.value) == x) return;
+                        names += (names.empty() ? "" : ", ") + item.name + " = " + std::to_string(item.value);
+                    }
+                    throw CosimError(given + " is not an item of " + v.declared_type + " (" + names + ")");
+                }
+            break;
+        case T::boolean:
+            if (x != 0.0 && x != 1.0) throw CosimError(given + " is not a Boolean (0 or 1)");
+            return;
+        case T::string:
+            throw CosimError(what + ": a String has no number");
+    }
+    if (v.min && x < *v.min) throw CosimError(given + " is below its minimum " + format_real(*v.min));
+    if (v.max && x > *v.max) throw CosimError(given + " is above its maximum " + format_real(*v.max));
+}
+
 }  // namespace cosim

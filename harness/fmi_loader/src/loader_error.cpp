@@ -26,6 +26,8 @@ std::string_view to_string(LoaderErrc code) noexcept {
             return "limit";
         case LoaderErrc::cancelled:
             return "cancelled";
+        case LoaderErrc::unsupported:
+            return "unsupported";
     }
     return "unknown";
 }

@@ -6,6 +6,7 @@
 #include <libxml/tree.h>
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -198,15 +199,26 @@ const ScalarVariable* ModelDescription::find_by_reference(std::uint32_t value_re
 namespace {
 
 // A dimension's size: its own start, or the start value of the structural parameter it names (0 when
-// that is missing or not a positive number: an array with no elements).
+// that is missing or not a whole UInt64: the reader refuses such a description, see check3).
 std::size_t dimension_size(const ModelDescription& md, const Dimension& d) noexcept {
     if (d.start) return static_cast<std::size_t>(*d.start);
     const ScalarVariable* p = d.value_reference ? md.find_by_reference(*d.value_reference) : nullptr;
-    const auto start = p ? p->start_as_real() : std::nullopt;
-    return start && *start > 0 ? static_cast<std::size_t>(*start) : 0;
+    return static_cast<std::size_t>(p ? dimension_start(*p).value_or(0) : 0);
 }
 
 }  // namespace
+
+std::optional<std::uint64_t> dimension_start(const ScalarVariable& p) noexcept {
+    if (!p.start) return std::nullopt;
+    std::string_view text = *p.start;
+    while (!text.empty() && (text.front() == ' ' || text.front() == '\t' || text.front() == '\n'))
+        text.remove_prefix(1);
+    while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\n')) text.remove_suffix(1);
+    std::uint64_t x = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), x);
+    if (text.empty() || ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+    return x;
+}
 
 std::vector<std::size_t> ModelDescription::extents(const ScalarVariable& v) const {
     std::vector<std::size_t> out;

@@ -234,7 +234,10 @@ ScalarVariable Reader::variable3(const xmlNode* n, Fmi3Type type, const ModelDes
     v.relative_quantity = boolean(n, "relativeQuantity", false);
     v.reinit = boolean(n, "reinit", false);
     v.mime_type = attr(n, "mimeType").value_or(type == Fmi3Type::binary ? "application/octet-stream" : "");
-    if (const auto size = integer(n, "maxSize")) v.max_size = static_cast<std::uint64_t>(*size);
+    if (const auto size = integer(n, "maxSize")) {
+        if (*size < 0) invalid(n, "maxSize of '" + shorten(v.name) + "' is negative");
+        v.max_size = static_cast<std::uint64_t>(*size);
+    }
     if (const auto d = integer(n, "derivative")) {
         if (*d < 0 || *d > 0xFFFFFFFFLL) invalid(n, "derivative of '" + shorten(v.name) + "' out of range");
         // Resolved to an index by check3 once every variable is known; the reference is kept meanwhile.
@@ -327,15 +330,32 @@ void Reader::check3(const xmlNode* root, ModelDescription& md) const {
                               " (FMI 3.0 gives every variable its own)");
     }
     for (auto& v : md.model_variables) {
+        // The array's size: every factor a whole UInt64, the product checked before it is taken, and no more
+        // elements than a description may have variables (two sizes whose product wraps 64 bits, or a
+        // start of "1e30", "abc" or "-5", would otherwise give an array of the wrong size).
+        std::uint64_t elements = 1;
         for (const auto& d : v.dimensions) {
-            if (!d.value_reference) continue;
-            const auto it = references.find(*d.value_reference);
-            const ScalarVariable* p = it == references.end() ? nullptr : &md.model_variables[it->second];
-            if (!p || p->fmi3_type != Fmi3Type::uint64 ||
-                (p->causality != Causality::structural_parameter && p->variability != Variability::constant))
-                invalid(root, "a Dimension of '" + shorten(v.name) + "' refers to valueReference " +
-                                  std::to_string(*d.value_reference) +
-                                  ", which is not a UInt64 structural parameter or constant");
+            std::uint64_t size = d.start.value_or(0);
+            if (d.value_reference) {
+                const auto it = references.find(*d.value_reference);
+                const ScalarVariable* p = it == references.end() ? nullptr : &md.model_variables[it->second];
+                if (!p || p->fmi3_type != Fmi3Type::uint64 ||
+                    (p->causality != Causality::structural_parameter && p->variability != Variability::constant))
+                    invalid(root, "a Dimension of '" + shorten(v.name) + "' refers to valueReference " +
+                                      std::to_string(*d.value_reference) +
+                                      ", which is not a UInt64 structural parameter or constant");
+                const auto start = dimension_start(*p);
+                if (!start)
+                    invalid(root, "a Dimension of '" + shorten(v.name) + "' refers to '" + shorten(p->name) +
+                                      "', whose start '" + shorten(p->start.value_or("")) +
+                                      "' is not a whole number from 0 to 2^64 - 1 (a UInt64 array size)");
+                size = *start;
+            }
+            if (size != 0 && elements > limits_.max_variables / size)
+                throw LoaderError(LoaderErrc::limit,
+                                  "'" + source_ + "': the array '" + shorten(v.name) + "' has more than the limit of " +
+                                      std::to_string(limits_.max_variables) + " elements (max_variables)");
+            elements *= size;
         }
         if (!v.derivative) continue;
         const auto it = references.find(static_cast<std::uint32_t>(*v.derivative));

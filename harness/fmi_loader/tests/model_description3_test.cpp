@@ -229,3 +229,38 @@ TEST(LoaderModelDescription3, StructuralParameterIsNoFmi2Causality) {
 </fmiModelDescription>)xml";
     EXPECT_NE(error_of(fmi2).find("unknown causality 'structuralParameter'"), std::string::npos);
 }
+
+// Issue 38: an array's size from a file is checked, never cast or multiplied unchecked. Two dimensions
+// whose product wraps 64 bits (2^32 x 2^32 + 2 elements would be 2 after the wrap) and a structural
+// parameter whose start is not a whole UInt64 are refused, naming the variable.
+TEST(LoaderModelDescription3, ArraySizesAreCheckedNotWrappedNorCast) {
+    const auto bad_start = [](const std::string& start) {
+        return error_of(with(fmi3_xml, "causality=\"structuralParameter\" variability=\"tunable\" start=\"3\"",
+                             "causality=\"structuralParameter\" variability=\"tunable\" start=\"" + start + "\""));
+    };
+    for (const char* start : {"1e30", "abc", "-5"}) {
+        const auto message = bad_start(start);
+        EXPECT_NE(message.find("refers to 'n', whose start"), std::string::npos) << start << ": " << message;
+        EXPECT_NE(message.find("UInt64 array size"), std::string::npos) << start << ": " << message;
+    }
+    // 2^32 * (2^32 + 1) wraps to 2^32; 2^33 * 2^31 wraps to 0: each refused by the element limit.
+    for (const auto& [a, b] : {std::pair{"4294967296", "4294967297"}, std::pair{"8589934592", "2147483648"}}) {
+        std::string message;
+        try {
+            parse_model_description(
+                with(fmi3_xml, "<Dimension start=\"2\"/><Dimension start=\"3\"/>",
+                     std::string("<Dimension start=\"") + a + "\"/><Dimension start=\"" + b + "\"/>"),
+                "probe3.xml");
+        } catch (const LoaderError& e) {
+            EXPECT_EQ(e.code(), LoaderErrc::limit);
+            message = e.what();
+        }
+        EXPECT_NE(message.find("the array 'm' has more than the limit of"), std::string::npos) << message;
+        EXPECT_NE(message.find("(max_variables)"), std::string::npos) << message;
+    }
+    // Within the limit, the sizes are as written (2 x 3 = 6; n = 3 with blanks around it).
+    const auto md = parse_model_description(
+        with(fmi3_xml, "variability=\"tunable\" start=\"3\"", "variability=\"tunable\" start=\" 3 \""));
+    EXPECT_EQ(md.element_count(*md.find_variable("m")), 6u);
+    EXPECT_EQ(md.element_count(*md.find_variable("x")), 3u);
+}

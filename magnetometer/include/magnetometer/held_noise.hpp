@@ -20,8 +20,10 @@ inline constexpr double max_noise_index = 9007199254740992.0;  // 2^53
 
 // Index of the hold interval that contains time t: the largest k with t ≥ t0 + k·period, allowing for
 // the rounding of a host that reaches t0 + k·period as a sum of steps (the tolerance of fmu::reached).
-// Throws fmu::Error when (t − t0)/period is not finite or exceeds max_noise_index in magnitude.
-std::int64_t noise_index(double t, double t0, double period);
+// Throws fmu::Error when (t − t0)/period is not finite or exceeds max_noise_index in magnitude; the
+// message names the parameters as `t0_name` and `period_name` (the noise's, or a fault's onset and slot).
+std::int64_t noise_index(double t, double t0, double period, const char* t0_name = "t0",
+                         const char* period_name = "noise_sample_period");
 
 // Standard normal deviate for (seed, index, axis); axis is 0, 1 or 2.
 double held_normal(std::uint64_t seed, std::int64_t index, int axis);

@@ -15,7 +15,8 @@ struct SamplerData {
     std::array<double, 2> y{};
     std::int32_t samples = 0;
     bool valid = false;
-    double start_time = 0.0;  // not a variable: the whole state stays one plain struct
+    fmu::FixedString<16> label{};  // a String parameter: it cannot cross the link (the bridge refuses a set)
+    double start_time = 0.0;       // not a variable: the whole state stays one plain struct
     double next_sample = 0.0;
 };
 
@@ -24,6 +25,7 @@ public:
     static void declare(fmu::Table<SamplerData>& t) {
         t.parameter("sample_period", &SamplerData::sample_period, "s", "Time between samples").min(1e-6);
         t.parameter("k", &SamplerData::k, "1", "Gain applied at each sample");
+        t.parameter("label", &SamplerData::label, "", "A name for it (a String parameter)");
         t.input("u", &SamplerData::u, "V", "Sampled inputs");
         t.output("y", &SamplerData::y, "V", "k times u at the last sample").depends_on({});
         t.output("samples", &SamplerData::samples, "", "Samples so far").depends_on({});

@@ -4,8 +4,26 @@
  * Stable C ABI: opaque handles, plain C types, no C++ exception ever crosses it. Every function that
  * can fail returns a pvatt_status; on failure the message is pvatt_last_error() (per thread, valid until
  * the next failing call in that thread). Strings returned by the library belong to the handle they
- * came from and stay valid while it is open. Handles are not safe for concurrent use from several
- * threads; distinct handles are (except the process-wide interrupt flag, see pvatt_interrupt).
+ * came from and stay valid while it is open.
+ *
+ * Handles. The library keeps a registry of the handles it handed out: a handle closed or freed already
+ * (or never returned) is refused with PVATT_INVALID_ARGUMENT and a message, never used; the functions
+ * that return no status (pvatt_system_close, pvatt_result_free, pvatt_simulation_free, the counts and
+ * names) then do nothing, return 0 / NULL / NaN and leave the reason in pvatt_last_error(). (An address
+ * the allocator reuses for a new handle is that new handle.)
+ *
+ * Threads. A handle is not safe for concurrent use from several threads; distinct handles are (except
+ * the process-wide interrupt flag, see pvatt_interrupt). A simulation runs on a thread of its own; the
+ * caller's calls on it are refused with PVATT_WRONG_STATE while it is running (another thread during
+ * pvatt_advance_to), so only one of the two threads ever touches the run.
+ *
+ * Re-entrancy. A callback component (pvatt_system_replace) runs inside pvatt_run or pvatt_advance_to.
+ * From inside it, pvatt_system_open, pvatt_run, pvatt_start, pvatt_advance_to and pvatt_campaign_run are
+ * refused with PVATT_WRONG_STATE, as is any call on the simulation the callback is part of (it is
+ * running: pvatt_simulation_free leaves it open and says why in pvatt_last_error). pvatt_interrupt stops
+ * the run; other handles may be used. pvatt_system_close of a system a run or a simulation is using (from
+ * a callback, or before freeing a paused simulation) closes the handle at once and frees the system when
+ * the last of them ends.
  *
  * Variable names are "component.variable" as in a system description ("plant.v_bus", "est.q_est[1]").
  * Values go in and out as doubles (Real, Integer, Boolean as 0/1, Enumeration as its item's number) or
@@ -104,8 +122,13 @@ PVATT_API void pvatt_system_clear_settings(pvatt_system* system);
  * `sample_period` seconds from the start, as the hardware bridge puts a board in place of a block.
  * At each sample instant t it gets the component's inputs (its variables of causality input, in
  * model-description order, as doubles) and writes its outputs (causality output, same order); the
- * outputs hold between samples. A non-zero return stops the run with PVATT_CALLBACK_FAILED.
- * Pass callback NULL to restore the FMU. */
+ * outputs hold between samples. A non-zero return stops the run with PVATT_CALLBACK_FAILED. An output
+ * its variable cannot hold (a Boolean other than 0 or 1, an Integer that is not a whole 32-bit number,
+ * an Enumeration that is no item, a Real that is not finite, anything outside min/max) stops the run
+ * with PVATT_ERROR naming the variable and the time: never rounded. What the callback may call is said
+ * at the top of this header (Re-entrancy). Pass callback NULL to restore the FMU. A run or simulation
+ * started before a replace keeps calling the function it started with: keep it (and user_data) valid
+ * until that run ends. */
 typedef int (*pvatt_step_callback)(void* user_data, double time, const double* inputs, size_t input_count,
                                    double* outputs, size_t output_count);
 PVATT_API pvatt_status pvatt_system_replace(pvatt_system* system, const char* component, double sample_period,
@@ -151,7 +174,11 @@ PVATT_API pvatt_status pvatt_advance_to(pvatt_simulation* simulation, double t);
 PVATT_API double pvatt_simulation_time(const pvatt_simulation* simulation);
 PVATT_API int pvatt_simulation_finished(const pvatt_simulation* simulation);
 /* Values at the paused instant (as text: an Enumeration by its item name). Setting takes effect from there on: an input not fed by a connection,
- * or a tunable parameter; a connected input is overwritten by its source at the next step. */
+ * or a tunable parameter (of a Model Exchange FMU only a continuous input: it is paused in Continuous-Time
+ * Mode); a connected input is overwritten by its source at the next step. A set of
+ * anything else (an output, a fixed parameter), or of a value outside the variable's type and range (NaN,
+ * an Integer that is not whole, a number outside min/max), is refused with PVATT_INVALID_ARGUMENT before
+ * the FMU sees it: the simulation can still advance. */
 PVATT_API pvatt_status pvatt_simulation_get_real(pvatt_simulation* simulation, const char* name, double* value);
 PVATT_API pvatt_status pvatt_simulation_set_real(pvatt_simulation* simulation, const char* name, double value);
 PVATT_API pvatt_status pvatt_simulation_get_text(pvatt_simulation* simulation, const char* name, char* buffer,

@@ -65,6 +65,9 @@ public:
 private:
     enum class Kind { real, integer, boolean, string };
     std::size_t slot(Kind kind, fmi2ValueReference vr) const;
+    // The slot of a value set from this side: refused, naming the variable, unless the board receives it
+    // (an input or a parameter; a String never crosses the link, an output or a local is never sent).
+    std::size_t settable(Kind kind, fmi2ValueReference vr) const;
     double next_sample_time() const { return start_time_ + static_cast<double>(next_sample_) * period_; }
     void exchange();
     // The first sample instant the current time has not reached: bounded steps, never a count of
@@ -81,9 +84,10 @@ private:
     std::string name_;
     BridgeDescription settings_;
     std::map<std::pair<Kind, fmi2ValueReference>, std::size_t> slots_;  // -> index into values_
-    std::vector<double> values_;                 // every non-String variable, as the wire carries it (f64)
-    std::vector<std::size_t> parameters_;        // indices into values_ of the parameters, value-reference order
-    std::vector<std::string> strings_;           // String variables (stay on this side of the link)
+    std::vector<double> values_;           // every non-String variable, as the wire carries it (f64)
+    std::vector<std::size_t> parameters_;  // indices into values_ of the parameters, value-reference order
+    std::vector<std::string> strings_;     // String variables (stay on this side of the link)
+    std::map<std::pair<Kind, fmi2ValueReference>, const fmi_loader::ScalarVariable*> variables_;  // for messages
     std::vector<std::size_t> inputs_, outputs_;  // value-reference order
     std::size_t period_slot_ = 0;
     double start_time_ = 0.0, time_ = 0.0, period_ = 0.0;

@@ -18,6 +18,7 @@ enum class LoaderErrc {
     missing_symbol,  // the binary lacks FMI 2.0 functions it must export
     limit,           // a size or count beyond fmi_loader::Limits (the message names the limit)
     cancelled,       // request_cancel() was called (a signal) while extracting
+    unsupported,     // a valid FMU using a feature the master does not run (FMI 3.0 clocks, Scheduled Execution)
 };
 
 std::string_view to_string(LoaderErrc code) noexcept;

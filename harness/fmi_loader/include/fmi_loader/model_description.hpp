@@ -135,6 +135,10 @@ struct ScalarVariable {
     std::optional<bool> start_as_boolean() const;  // "true"/"false"/"1"/"0"
 };
 
+// The start of a UInt64 structural parameter or constant as an array size: a whole number from 0 to
+// 2^64 - 1 (blanks around it allowed); none for anything else ("1e30", "abc", "-5", no start).
+std::optional<std::uint64_t> dimension_start(const ScalarVariable& p) noexcept;
+
 struct Unknown {
     std::size_t index = 0;                                 // 1-based into model_variables
     std::optional<std::vector<std::size_t>> dependencies;  // absent: depends on all knowns
