@@ -14,7 +14,7 @@
 //   Without that (the field's 7 µT of hard iron weighed as white noise), NEES/dof 2.2 to 3.3.
 // Beside it, the share of rows whose δθᵀ P_θθ⁻¹ δθ lies within χ²(3)'s 99 % point 11.34 (issue 39: 99 % when
 // the covariance is right; the 3√(tr P) bound it replaces covers 99.9994 % of a consistent filter's errors and
-// read 100 % for an overconfident one too), bounded below over the second orbit.
+// read 100 % for an overconfident one too), at least 95 % over the second orbit (issue 39's aim).
 #include <gtest/gtest.h>
 
 #include <array>
@@ -148,6 +148,8 @@ TEST(E2eLeoFilterConsistency, NormalizedErrorNearOneForEverySunMethodAndBoundedW
         for (int k : {0, 1}) {
             EXPECT_GE(c.nees(k), 0.5) << method << (k ? " eclipse" : " sunlit");
             EXPECT_LE(c.nees(k), 1.5) << method << (k ? " eclipse" : " sunlit");
+            // Issue 39's aim: at least 95 % of the second orbit's samples within chi2(3)'s 99 % point.
+            EXPECT_GE(c.coverage(k), 95.0) << method << (k ? " eclipse" : " sunlit");
         }
         EXPECT_LE(c.nees(2), 1.5) << method << " first orbit";
     }

@@ -221,7 +221,10 @@ namespace {
 
 void print_span(const SpanMeasures& s, bool phases, std::ostream& out) {
     const auto one = [&](const char* what, const ErrorStats& e) {
-        out << what << " " << fmt(e.median) << "° / " << fmt(e.p95) << "° (" << e.samples << ")";
+        if (e.samples == 0)
+            out << what << " no samples";
+        else
+            out << what << " " << fmt(e.median) << "° / " << fmt(e.p95) << "° (" << e.samples << ")";
     };
     if (phases) {
         one("sunlit", s.sunlit);
