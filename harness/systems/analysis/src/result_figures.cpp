@@ -101,7 +101,10 @@ std::filesystem::path draw(const std::filesystem::path& out_dir, const Style& st
             for (const auto& s : series) d << ' ' << s.values[r];
             const bool eclipse = style.irradiance && (*style.irradiance)[r] <= 0.0;
             shaded = shaded || eclipse;
-            d << ' ' << (eclipse ? "1" : "nan") << '\n';
+            // Each eclipse row's box spans to the next row: gnuplot's own width (the distance to the next
+            // point drawn) would bridge the sunlit rows between two eclipses, which are not drawn.
+            const double width = r + 1 < time.size() ? time[r + 1] - time[r] : 0.0;
+            d << ' ' << (eclipse ? "1" : "nan") << ' ' << width << '\n';
         }
         d.flush();
         if (!d) throw CosimError("cannot write " + (out_dir / data).string());
@@ -116,7 +119,8 @@ std::filesystem::path draw(const std::filesystem::path& out_dir, const Style& st
     if (shaded) {
         // Eclipse rows as boxes of height 1 on the second y axis (0..1, not shown): grey bands behind.
         script += "set y2range [0:1]\nunset y2tics\nset style fill transparent solid 0.15 noborder\n";
-        plots += gnuplot_string(data) + " using 1:" + std::to_string(series.size() + 2) +
+        plots += gnuplot_string(data) + " using ($1+$" + std::to_string(series.size() + 3) +
+                 "/2):" + std::to_string(series.size() + 2) + ":" + std::to_string(series.size() + 3) +
                  " axes x1y2 with boxes lc rgb 'gray30' title 'eclipse'";
     }
     for (std::size_t i = 0; i < series.size(); ++i)
