@@ -16,6 +16,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libfftw3-dev        # spin-rate estimation from the acquired sun vector
   gnuplot-nox         # cosim plot, cosim campaign figures
+  graphviz            # cosim info SYSTEM --diagram: the components and connections as a picture (dot)
   libtomlplusplus-dev # cosim campaign specs (TOML)
   libopenmpi-dev openmpi-bin  # cosim campaign over MPI ranks (build option PVATT_MPI)
   zip unzip

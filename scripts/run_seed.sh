@@ -23,4 +23,6 @@ mkdir -p results
 ./build/bin/cosim run harness/systems/seed_spin.ssd --reference --stop-time 0.2 --output results/seed_spin_ripple.csv \
   --output-interval 5e-6 --columns plant.v_bus > /dev/null
 ./build/bin/cosim plot results/seed_spin_ripple.csv --out-dir results/ripple
+# The system as a picture (Graphviz): results/system_diagram.svg, shown on the page with the figures.
+./build/bin/cosim info harness/systems/seed_spin.ssd --diagram results/system_diagram > /dev/null
 ./build/bin/cosim plot results/seed_spin.csv --out-dir results   # last: its index.html lists every figure

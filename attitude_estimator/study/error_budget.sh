@@ -2,7 +2,7 @@
 # The attitude error budget of the bundled leo_orbit (README "How well it knows its attitude",
 # attitude_estimator/docs/onboard_references.md): two orbits of the system as bundled and with one error
 # source changed at a time, each summarized over the second orbit by reference_stats.py (the filter's error
-# sunlit and in eclipse, 3-sigma coverage, normalized error). The rows:
+# sunlit and in eclipse, chi2(3) 99 % coverage, normalized error). The rows:
 #   truth-fed            the environment's true sun and field wired into the estimator (reference_source =
 #                        inputs), as leo_orbit did before the on-board references: the optimistic reference
 #   bundled              on-board references from a 24 h-old element set, IGRF-14 to degree 8, a 0.05 A.m2
@@ -44,7 +44,7 @@ cols=(env.q_true[1] env.q_true[2] env.q_true[3] env.q_true[4] env.irradiance env
   est.q_filt[4] est.filter_valid est.attitude_bound est.attitude_cov_sqrt[1] est.attitude_cov_sqrt[2]
   est.attitude_cov_sqrt[3] est.attitude_cov_sqrt[4] est.attitude_cov_sqrt[5] est.attitude_cov_sqrt[6]
   est.ref_sun[1] est.ref_sun[2] est.ref_sun[3] est.ref_mag[1] est.ref_mag[2] est.ref_mag[3])
-echo "| configuration | sunlit median | sunlit p95 | eclipse p95 | 3σ coverage | NEES/dof sunlit | NEES/dof eclipse | field reference p95 | field reference RMS/axis (nT) |"
+echo "| configuration | sunlit median | sunlit p95 | eclipse p95 | χ²(3) 99 % coverage | NEES/dof sunlit | NEES/dof eclipse | field reference p95 | field reference RMS/axis (nT) |"
 echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 run() {  # name, system, settings...
   local name=$1 system=$2

@@ -2,7 +2,9 @@
 """Attitude statistics of a leo_orbit run with the on-board references (docs/onboard_references.md).
 
 Beside filter_stats.py's figures (reused from it: the attitude angle and the percentiles), for rows with
-time >= --from: the filter's error median and p95 sunlit, p95 in eclipse, the 3-sigma coverage, the mean
+time >= --from: the filter's error median and p95 sunlit, p95 in eclipse, the chi2(3) 99 % coverage (the
+share of valid rows with dtheta^T P^-1 dtheta <= 11.34: 99 % for a consistent filter; the 3-sigma coverage
+against 3 sqrt(tr P) is printed beside it, but reads 100 % for an overconfident filter too), the mean
 normalized error per degree of freedom sunlit and in eclipse, dtheta^T P^-1 dtheta / 3 with P from the
 filter's est.attitude_cov_sqrt (1 for a consistent filter, below 1 for a pessimistic one, above for an
 overconfident one; |dtheta|^2 / tr P with tr P = (attitude_bound / 3)^2 where the factor is not in the
@@ -18,6 +20,8 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from filter_stats import angle_deg, pct  # noqa: E402
+
+CHI2_3DOF_99 = 11.344866730144373  # chi2(3) at 99 % (analysis/run_measures.hpp, chi2_3dof_99)
 
 
 def vec(r, name):
@@ -58,6 +62,7 @@ def main():
     lit, dark, nees, sun_err, mag_err, mag_axis = [], [], [], [], [], []
     nees_lit, nees_dark = [], []
     covered = total = 0
+    chi2_in = chi2_n = 0
     for r in csv.DictReader(open(args.csv)):
         if float(r["time"]) < args.t_from:
             continue
@@ -75,18 +80,22 @@ def main():
                 if l[0] > 0 and l[2] > 0 and l[5] > 0:
                     value = nees_per_dof(error_vector(q("env.q_true"), q("est.q_filt")), l)
                     (nees_lit if float(r["env.irradiance"]) > 0.0 else nees_dark).append(value)
+                    chi2_n += 1
+                    chi2_in += 3.0 * value <= CHI2_3DOF_99
         if "est.ref_sun[1]" in r:
             sun_err.append(direction_deg(vec(r, "est.ref_sun"), vec(r, "env.sun_eci")))
             m, t = vec(r, "est.ref_mag"), vec(r, "env.mag_eci")
             mag_err.append(direction_deg(m, t))
             mag_axis.extend((a - b) ** 2 for a, b in zip(m, t))
     coverage = 100.0 * covered / max(total, 1)
+    chi2_coverage = 100.0 * chi2_in / chi2_n if chi2_n else float("nan")
     mean_nees = sum(nees) / max(len(nees), 1)
     rms_axis = math.sqrt(sum(mag_axis) / max(len(mag_axis), 1)) * 1e9
     print(f"rows {total} from t = {args.t_from:g} s")
     print(f"filter sunlit median {pct(lit, 0.5):.3f} p95 {pct(lit, 0.95):.3f} deg (n {len(lit)}); "
           f"eclipse p95 {pct(dark, 0.95):.3f} deg (n {len(dark)})")
-    print(f"3-sigma coverage {coverage:.2f} %; mean |dtheta|^2 / tr P {mean_nees:.3f}")
+    print(f"chi2(3) 99 % coverage {chi2_coverage:.2f} % (n {chi2_n}); 3-sigma coverage {coverage:.2f} %; "
+          f"mean |dtheta|^2 / tr P {mean_nees:.3f}")
     mean = lambda v: sum(v) / len(v) if v else float("nan")
     if nees_lit or nees_dark:
         print(f"NEES per dof (full covariance): sunlit {mean(nees_lit):.3f} (n {len(nees_lit)}), "
@@ -96,7 +105,7 @@ def main():
               f"direction error median {pct(mag_err, 0.5):.3f} p95 {pct(mag_err, 0.95):.3f} deg, "
               f"RMS per axis {rms_axis:.0f} nT")
     if args.row:
-        print(f"| {args.row} | {pct(lit, 0.5):.3f}° | {pct(lit, 0.95):.3f}° | {pct(dark, 0.95):.3f}° | {coverage:.1f} % | "
+        print(f"| {args.row} | {pct(lit, 0.5):.3f}° | {pct(lit, 0.95):.3f}° | {pct(dark, 0.95):.3f}° | {chi2_coverage:.1f} % | "
               f"{mean(nees_lit):.2f} | {mean(nees_dark):.2f} | {pct(mag_err, 0.95) if mag_err else float('nan'):.3f}° | "
               f"{rms_axis:.0f} |")
 

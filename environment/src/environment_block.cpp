@@ -85,18 +85,29 @@ void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
              "Euler equations, states q and omega)");
     t.parameter("spin_phi0", &D::spin_phi0, "rad",
                 "Spin mode: phi at t = 0 in s_body = (sin phi sin theta, cos phi "
-                "sin theta, cos theta)");
-    t.parameter("spin_theta0", &D::spin_theta0, "rad", "Spin mode: theta at t = 0");
-    t.parameter("spin_phi_dot", &D::spin_phi_dot, "rad/s", "Spin mode: rate of phi (seed 000: 1.26 rad/s)");
-    t.parameter("spin_theta_dot", &D::spin_theta_dot, "rad/s", "Spin mode: rate of theta (seed 000: 6.28 rad/s)");
+                "sin theta, cos theta)")
+        .applies_when("attitude_mode", {"spin"});
+    t.parameter("spin_theta0", &D::spin_theta0, "rad", "Spin mode: theta at t = 0")
+        .applies_when("attitude_mode", {"spin"});
+    t.parameter("spin_phi_dot", &D::spin_phi_dot, "rad/s", "Spin mode: rate of phi (seed 000: 1.26 rad/s)")
+        .applies_when("attitude_mode", {"spin"});
+    t.parameter("spin_theta_dot", &D::spin_theta_dot, "rad/s", "Spin mode: rate of theta (seed 000: 6.28 rad/s)")
+        .applies_when("attitude_mode", {"spin"});
     t.parameter("inertia", &D::inertia, "kg.m2",
                 "Rigid-body mode: inertia matrix about the centre of mass in body axes, row-major (symmetric, positive "
-                "definite, principal moments obeying the triangle inequality)");
+                "definite, principal moments obeying the triangle inequality)")
+        .applies_when("attitude_mode", {"rigid_body"});
     t.parameter("q0", &D::q0, "1",
                 "Rigid-body mode: initial attitude quaternion [x, y, z, w], ECI to body (normalised on use)")
-        .range(-1.0, 1.0);
+        .range(-1.0, 1.0)
+        .applies_when("attitude_mode", {"rigid_body"});
     t.parameter("omega0", &D::omega0, "rad/s", "Rigid-body mode: initial angular velocity, body axes")
-        .range(-100.0, 100.0);
+        .range(-100.0, 100.0)
+        .applies_when("attitude_mode", {"rigid_body"})
+        // Small satellites leave their deployer at a few deg/s; 1 rad/s (57 deg/s) is already a violent tumble.
+        .plausible(-1.0, 1.0,
+                   "a small satellite tumbles at a few deg/s after deployment; more than 1 rad/s (57 deg/s) per axis "
+                   "is a violent tumble (deg/s given as rad/s?)");
     t.parameter("quaternion_norm_gain", &D::quaternion_norm_gain, "1/s",
                 "Rigid-body mode: gain k of the term k(1 - |q|^2) q added to dq/dt that pulls |q| back to 1 at the "
                 "rate 2k under any integrator (zero on |q| = 1; 0 disables it). An explicit fixed-step host needs "
@@ -108,19 +119,25 @@ void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
              "orbit_argument_of_latitude0) or tle (SGP4 from the element set tle_line1, tle_line2, TEME rotated to "
              "J2000; its epoch may differ from the epoch_* parameters)");
     t.parameter("tle_line1", &D::tle_line1, "",
-                "orbit_model tle: line 1 of the two-line element set (69 columns, checksum in column 69)");
+                "orbit_model tle: line 1 of the two-line element set (69 columns, checksum in column 69)")
+        .applies_when("orbit_model", {"tle"});
     t.parameter("tle_line2", &D::tle_line2, "",
-                "orbit_model tle: line 2 of the two-line element set (near-Earth: period below 225 min)");
+                "orbit_model tle: line 2 of the two-line element set (near-Earth: period below 225 min)")
+        .applies_when("orbit_model", {"tle"});
     t.parameter("orbit_altitude", &D::orbit_altitude, "m",
                 "Circular orbit: altitude above the equatorial radius 6378.137 km (seed 004: about 570 km)")
-        .range(1.0, 1e9);
+        .range(1.0, 1e9)
+        .applies_when("orbit_model", {"circular"});
     t.parameter("orbit_inclination", &D::orbit_inclination, "rad", "Circular orbit: inclination (seed 004: 64.9 deg)")
-        .range(0.0, kPi);
+        .range(0.0, kPi)
+        .applies_when("orbit_model", {"circular"});
     t.parameter("orbit_raan", &D::orbit_raan, "rad", "Circular orbit: right ascension of the ascending node (J2000)")
-        .range(-kTwoPi, kTwoPi);
+        .range(-kTwoPi, kTwoPi)
+        .applies_when("orbit_model", {"circular"});
     t.parameter("orbit_argument_of_latitude0", &D::orbit_argument_of_latitude0, "rad",
                 "Circular orbit: argument of latitude at t = 0 (angle from the ascending node)")
-        .range(-kTwoPi, kTwoPi);
+        .range(-kTwoPi, kTwoPi)
+        .applies_when("orbit_model", {"circular"});
     // Epoch.
     t.parameter("epoch_year", &D::epoch_year, "", "Epoch (UTC at t = 0): year; IGRF-14 covers 2025.0 to 2030.0")
         .range(2025, 2029);
@@ -157,7 +174,8 @@ void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
              "Geomagnetic field: igrf14 (IGRF-14 spherical harmonics) or dipole (tilted centred dipole from "
              "IGRF-14's degree-1 terms)");
     t.parameter("igrf_max_degree", &D::igrf_max_degree, "", "igrf14 field: highest degree of the synthesis (1..13)")
-        .range(1, 13);
+        .range(1, 13)
+        .applies_when("field_model", {"igrf14"});
     // Albedo.
     t.parameter("albedo_enabled", &D::albedo_enabled, "", "Earth albedo on the six faces (false: albedo_face = 0)")
         .tunable();
@@ -181,11 +199,13 @@ void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
     t.parameter("albedo_reflectivity_equator", &D::albedo_reflectivity_equator, "1",
                 "Zonal model: reflectivity at the equator (assumed 0.2)")
         .range(0.0, 1.0)
-        .tunable();
+        .tunable()
+        .applies_when("albedo_reflectivity_model", {"zonal"});
     t.parameter("albedo_reflectivity_pole", &D::albedo_reflectivity_pole, "1",
                 "Zonal model: reflectivity at the poles (assumed 0.6)")
         .range(0.0, 1.0)
-        .tunable();
+        .tunable()
+        .applies_when("albedo_reflectivity_model", {"zonal"});
     t.calculated_parameter("orbit_period", &D::orbit_period, "s",
                            "Orbital period: the circular orbit's 2 pi sqrt(a^3/mu), or the element set's mean period "
                            "at its epoch");

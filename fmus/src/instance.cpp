@@ -51,6 +51,8 @@ Instance::Instance(std::string name, Kind kind, const fmi2CallbackFunctions& cal
       tolerance_(runner_.model().info().default_experiment.tolerance) {
     runner_.set_time(runner_.model().info().default_experiment.start_time);
     start_time_ = runner_.time();
+    const auto bytes = runner_.model().bytes();
+    defaults_.assign(bytes.begin(), bytes.end());
 }
 
 Instance::~Instance() {
@@ -120,6 +122,9 @@ void Instance::enter_initialization_mode() {
 
 void Instance::exit_initialization_mode() {
     runner_.exit_initialization();
+    // Legal settings a person most likely did not mean: said once, as warnings, when the parameters are final.
+    for (const auto& note : setting_notes(runner_.table().variables(), runner_.model().bytes(), defaults_))
+        log(fmi2Warning, "logStatusWarning", note);
     if (kind_ == Kind::model_exchange) {
         mode_ = Mode::event;
         return;

@@ -120,6 +120,7 @@ private:
 
     std::string name_;
     std::string guid_;
+    std::vector<std::byte> defaults_;  // the block's bytes as constructed: the parameters' defaults
     Kind kind_;
     fmi2CallbackLogger logger_;
     fmi2ComponentEnvironment environment_;

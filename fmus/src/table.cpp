@@ -92,6 +92,37 @@ TableBase::Handle& TableBase::Handle::nominal(double value) {
     return *this;
 }
 
+TableBase::Handle& TableBase::Handle::plausible(double lo, double hi, std::string_view why) {
+    if (!(lo <= hi)) throw Error("plausible: the low end must not exceed the high end");
+    for (auto i = first_; i < last_; ++i) {
+        auto& v = table_.variables_[i];
+        if (v.causality != Causality::parameter) throw Error("plausible applies to parameters: " + v.name);
+        v.plausible_min = lo;
+        v.plausible_max = hi;
+        v.plausible_note = std::string(why);
+    }
+    return *this;
+}
+
+TableBase::Handle& TableBase::Handle::applies_when(std::string_view variable,
+                                                   std::initializer_list<std::string_view> values) {
+    const Variable& selector = table_.by_name(variable);  // declared before: throws for an unknown name
+    if (selector.type != ValueType::Enumeration && selector.type != ValueType::Boolean)
+        throw Error("applies_when: " + selector.name + " is neither a choice nor a Boolean");
+    for (const auto value : values) {
+        const bool known = selector.type == ValueType::Boolean ? (value == "true" || value == "false")
+                                                               : selector.item_named(value) != nullptr;
+        if (!known) throw Error("applies_when: '" + std::string(value) + "' is no value of " + selector.name);
+    }
+    for (auto i = first_; i < last_; ++i) {
+        auto& v = table_.variables_[i];
+        if (v.causality != Causality::parameter) throw Error("applies_when applies to parameters: " + v.name);
+        v.applies_when_variable = selector.name;
+        v.applies_when_values.assign(values.begin(), values.end());
+    }
+    return *this;
+}
+
 TableBase::Handle& TableBase::Handle::tunable() {
     for (auto i = first_; i < last_; ++i) {
         auto& v = table_.variables_[i];

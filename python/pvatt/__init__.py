@@ -5,11 +5,12 @@ no compiled Python extension, so the package needs nothing but Debian's python3-
 matplotlib where a user wants them). See docs/python.md.
 """
 
+from . import analysis
 from ._lib import CallbackError, PvattError
 from .campaign import CampaignResult, run_campaign
 from .fmu import Fmu
 from .result import Result
 from .system import PythonComponent, Simulation, System, Variable
 
-__all__ = ["run_campaign", "CampaignResult", "System", "Simulation", "Result", "Variable", "PythonComponent", "Fmu", "PvattError", "CallbackError"]
+__all__ = ["analysis", "run_campaign", "CampaignResult", "System", "Simulation", "Result", "Variable", "PythonComponent", "Fmu", "PvattError", "CallbackError"]
 __version__ = "0.1.0"

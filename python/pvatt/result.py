@@ -3,6 +3,7 @@
 q_est[1..4] as an (n, 4) array."""
 
 import ctypes
+import difflib
 import re
 
 import numpy as np
@@ -25,6 +26,7 @@ class _Table:
 class Result:
     def __init__(self, handle):
         table = _Table(handle)
+        self._owner = table  # the C table, for pvatt.analysis (which reads it through the C API)
         rows = lib.pvatt_result_rows(handle)
         columns = lib.pvatt_result_columns(handle)
         self.names = [lib.pvatt_result_column_name(handle, i).decode() for i in range(columns)]
@@ -66,7 +68,9 @@ class Result:
         if name in self._vectors:
             first, n = self._vectors[name]
             return self.data[:, first : first + n]
-        raise KeyError(f"no column '{name}' in the result (columns: {', '.join(self.names[:8])}, ...)")
+        close = difflib.get_close_matches(name, list(self._index) + list(self._vectors), n=3, cutoff=0.75)
+        hint = f" (did you mean {' or '.join(repr(c) for c in close)}?)" if close else ""
+        raise KeyError(f"no column '{name}' in the result{hint} (columns: {', '.join(self.names[:8])}, ...)")
 
     def columns(self):
         """The column names, vectors by their base name, time first."""

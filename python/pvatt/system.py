@@ -1,6 +1,7 @@
 """Systems, stepped simulations and Python components over the C API."""
 
 import ctypes
+import difflib
 import math
 import os
 import pathlib
@@ -13,6 +14,8 @@ from ._lib import RunOptions, VariableInfo, check, encode, lib, names_array
 from .result import Result
 
 _ELEMENT = re.compile(r"^(.*)\[(\d+)\]$")
+
+_lib._sig("pvatt_system_replace_current_inputs", _lib._status, _lib._p, ctypes.c_char_p, ctypes.c_int)
 
 
 def default_fmu_dirs():
@@ -44,6 +47,15 @@ class Variable:
     def __repr__(self):
         unit = f" [{self.unit}]" if self.unit else ""
         return f"<{self.causality} {self.type} {self.name}{unit}>"
+
+
+def _did_you_mean(name, known):
+    """" (did you mean 'a' or 'b'?)" for the closest names (a vector's elements offered by its base name), or "".
+    Python's difflib, not the C++ name_hint: only the wording of the hint, not a measure, is at stake."""
+    candidates = set(known)
+    candidates.update(m.group(1) for m in map(_ELEMENT.match, known) if m)
+    close = difflib.get_close_matches(name, sorted(candidates), n=3, cutoff=0.75)
+    return f" (did you mean {' or '.join(repr(c) for c in close)}?)" if close else ""
 
 
 def _text(value):
@@ -125,14 +137,14 @@ class System:
         component, _, variable = name.partition(".")
         variables = self.components.get(component)
         if variables is None:
-            raise KeyError(f"no component named '{component}'")
+            raise KeyError(f"no component named '{component}'{_did_you_mean(component, self.components)}")
         if variable in variables:
             return [name]
         elements = []
         while f"{variable}[{len(elements) + 1}]" in variables:
             elements.append(f"{component}.{variable}[{len(elements) + 1}]")
         if not elements:
-            raise KeyError(f"no variable '{variable}' in component '{component}'")
+            raise KeyError(f"no variable '{variable}' in component '{component}'{_did_you_mean(variable, variables)}")
         return elements
 
     def set(self, name, value):
@@ -160,9 +172,15 @@ class System:
     def clear_settings(self):
         lib.pvatt_system_clear_settings(self._handle)
 
-    def replace(self, component, step, sample_period):
+    def replace(self, component, step, sample_period, current_inputs=False):
         """Runs `step` in place of the component's FMU, sampled every `sample_period` seconds (see
-        PythonComponent). `step=None` puts the FMU back."""
+        PythonComponent). `step=None` puts the FMU back.
+
+        At an instant where other components sample as well, `step` is called once, with its inputs as
+        they were just before the instant (a sampled source's previous output; docs/python.md, "Order at
+        a shared instant"). `current_inputs=True` calls it again at that instant whenever its inputs
+        changed after its call (another component sampled and changed them), so that its last call sees
+        the instant's final inputs: a sensor that must follow a command issued at this very instant."""
         if step is None:
             check(lib.pvatt_system_replace(self._handle, encode(component, "the component"), 0.0, _lib.STEP_CALLBACK(),
                                            None))
@@ -173,6 +191,8 @@ class System:
         check(lib.pvatt_system_replace(self._handle, encode(component, "the component"), float(sample_period), callback,
                                        None))
         self._callbacks[component] = (callback, python_component)
+        if current_inputs:
+            check(lib.pvatt_system_replace_current_inputs(self._handle, component.encode(), 1))
 
     def _columns(self, outputs):
         if outputs is None:

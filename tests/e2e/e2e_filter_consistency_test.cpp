@@ -12,7 +12,9 @@
 // - over the first orbit (the convergence, most of it before the calibration applies), at most 1.5: the
 //   filter estimates the spacecraft's own field with the attitude (mekf.hpp, mag_hard_iron_sigma).
 //   Without that (the field's 7 µT of hard iron weighed as white noise), NEES/dof 2.2 to 3.3.
-// The 3σ coverage is reported beside it.
+// Beside it, the share of rows whose δθᵀ P_θθ⁻¹ δθ lies within χ²(3)'s 99 % point 11.34 (issue 39: 99 % when
+// the covariance is right; the 3√(tr P) bound it replaces covers 99.9994 % of a consistent filter's errors and
+// read 100 % for an overconfident one too), at least 95 % over the second orbit (issue 39's aim).
 #include <gtest/gtest.h>
 
 #include <array>
@@ -21,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/run_measures.hpp"
 #include "engine/execution.hpp"
 #include "engine/system.hpp"
 #include "engine/system_description.hpp"
@@ -79,7 +82,6 @@ struct Consistency : cosim::Observer {
         for (const auto& n : e2e::vec(est + ".q_filt", 4)) names.push_back(n);
         for (const auto& n : e2e::vec(est + ".attitude_cov_sqrt", 6)) names.push_back(n);
         names.push_back("env.irradiance");
-        names.push_back(est + ".attitude_bound");
         for (const auto& n : names) {
             const auto dot = n.find('.');
             const auto c = system.component_index(n.substr(0, dot));
@@ -104,9 +106,9 @@ struct Consistency : cosim::Observer {
             return;
         }
         ++rows[k];
-        double angle = 0.0;
-        nees_sum[k] += e2e::nees_per_dof(qt, qf, l, &angle);
-        covered[k] += angle <= x[15];
+        const double nees = e2e::nees_per_dof(qt, qf, l);
+        nees_sum[k] += nees;
+        covered[k] += 3.0 * nees <= analysis::chi2_3dof_99;
     }
     double nees(int k) const { return rows[k] ? nees_sum[k] / rows[k] : NAN; }
     double coverage(int k) const { return rows[k] ? 100.0 * covered[k] / rows[k] : NAN; }
@@ -129,14 +131,16 @@ TEST(E2eLeoFilterConsistency, NormalizedErrorNearOneForEverySunMethodAndBoundedW
         const Consistency& c = checks[m];
         const std::string method = kMethods[m];
         std::printf(
-            "leo_orbit, sun_method %s: first orbit NEES/dof %.3f (%d rows, 3-sigma coverage %.2f %%); second orbit "
-            "NEES/dof sunlit %.3f (%d rows), eclipse %.3f (%d rows); 3-sigma coverage sunlit %.2f %%, eclipse "
-            "%.2f %%\n",
+            "leo_orbit, sun_method %s: first orbit NEES/dof %.3f (%d rows, chi2(3) 99 %% coverage %.2f %%); second "
+            "orbit NEES/dof sunlit %.3f (%d rows), eclipse %.3f (%d rows); chi2(3) 99 %% coverage sunlit %.2f %%, "
+            "eclipse %.2f %%\n",
             method.c_str(), c.nees(2), c.rows[2], c.coverage(2), c.nees(0), c.rows[0], c.nees(1), c.rows[1],
             c.coverage(0), c.coverage(1));
         RecordProperty("nees_first_orbit_" + method, std::to_string(c.nees(2)));
         RecordProperty("nees_sunlit_" + method, std::to_string(c.nees(0)));
         RecordProperty("nees_eclipse_" + method, std::to_string(c.nees(1)));
+        RecordProperty("chi2_coverage_sunlit_" + method, std::to_string(c.coverage(0)));
+        RecordProperty("chi2_coverage_eclipse_" + method, std::to_string(c.coverage(1)));
         EXPECT_GT(c.rows[0], 1000) << method;  // both regimes are in the second orbit
         EXPECT_GT(c.rows[1], 1000) << method;
         EXPECT_GT(c.rows[2], 5000) << method;  // the filter runs within minutes of the start
@@ -144,6 +148,8 @@ TEST(E2eLeoFilterConsistency, NormalizedErrorNearOneForEverySunMethodAndBoundedW
         for (int k : {0, 1}) {
             EXPECT_GE(c.nees(k), 0.5) << method << (k ? " eclipse" : " sunlit");
             EXPECT_LE(c.nees(k), 1.5) << method << (k ? " eclipse" : " sunlit");
+            // Issue 39's aim: at least 95 % of the second orbit's samples within chi2(3)'s 99 % point.
+            EXPECT_GE(c.coverage(k), 95.0) << method << (k ? " eclipse" : " sunlit");
         }
         EXPECT_LE(c.nees(2), 1.5) << method << " first orbit";
     }

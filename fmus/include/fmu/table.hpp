@@ -88,6 +88,11 @@ public:
         Handle& max(double value);
         Handle& range(double lo, double hi) { return min(lo).max(hi); }
         Handle& nominal(double value);
+        // Legal but unlikely outside [lo, hi]: taken with a warning giving `why` (a tumble of 5 rad/s).
+        Handle& plausible(double lo, double hi, std::string_view why);
+        // Only has an effect while the choice or Boolean `variable` is one of `values` (item names, "true",
+        // "false"): a setting away from the default otherwise is taken with a warning that it is ignored.
+        Handle& applies_when(std::string_view variable, std::initializer_list<std::string_view> values);
         Handle& tunable();   // parameter that may change during the simulation
         Handle& discrete();  // output or local that changes only at events
         // A state whose start the block computes in initialize() (e.g. a filter starting in steady

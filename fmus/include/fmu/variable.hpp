@@ -54,6 +54,15 @@ struct Variable {
     // initialization depends on (empty optional: not declared, "may depend on every known"). FMI 2.0
     // §2.2.8 InitialUnknowns; a host that breaks algebraic loops in initialization reads it.
     std::optional<std::vector<std::size_t>> initial_dependencies;
+    // Parameters: a legal value outside [plausible_min, plausible_max] is taken, with a warning that says why
+    // it is unlikely (plausible_note); the hard limits are min and max.
+    std::optional<double> plausible_min, plausible_max;
+    std::string plausible_note;
+    // Parameters: the variable has an effect only while the choice or Boolean `applies_when_variable` holds
+    // one of applies_when_values (item names, "true" or "false"); set away from its default otherwise, a
+    // warning says it is ignored. Empty: it always applies.
+    std::string applies_when_variable;
+    std::vector<std::string> applies_when_values;
 
     bool has_start() const {
         return causality == Causality::input || initial == Initial::exact || initial == Initial::approx ||

@@ -50,7 +50,7 @@ std::string campaign_identity(const CampaignSetup& s) {
                    ? " words [" + join(m.words) + "] times [" + join(m.times) + "] period " + format_real(m.period) +
                          " within " + format_real(m.within)
                    : std::string())
-           << "\n";
+           << (m.kind == MetricKind::normalized_error ? " covariance " + m.covariance : std::string()) << "\n";
     // The cases (only in a spec that has them: the identity of a spec without is as before).
     for (const auto& c : s.spec.cases) {
         id << "case " << c.name << (c.control ? " control" : "") << " onset " << c.onset << "\n";

@@ -207,7 +207,7 @@ Draw read_draw(const Context& cx, const toml::table& t, std::size_t index, const
 }
 
 bool valid_stat(const std::string& s) {
-    static const std::set<std::string> plain = {"mean", "rms", "min", "max", "final", "count"};
+    static const std::set<std::string> plain = {"mean", "rms", "min", "max", "final", "count", "per_dof", "chi2_99"};
     if (plain.contains(s)) return true;
     return percentile_of(s).has_value();
 }
@@ -261,7 +261,8 @@ Metric read_metric(const Context& cx, const toml::table& t, std::size_t index) {
     const std::string kind = string(cx, required(cx, t, "kind", where), where + ": 'kind'");
     if (kind == "detection") return read_detection(cx, t, where, std::move(m));
     only_keys(cx, t, where,
-              {"name", "kind", "a", "b", "column", "valid", "when", "after", "condition", "stats", "figure_stat"});
+              {"name", "kind", "a", "b", "column", "covariance", "valid", "when", "after", "condition", "stats",
+               "figure_stat"});
     if (kind == "quaternion_angle" || kind == "vector_angle") {
         m.kind = kind == "quaternion_angle" ? MetricKind::quaternion_angle : MetricKind::vector_angle;
         m.a = string(cx, required(cx, t, "a", where), where + ": 'a'");
@@ -269,15 +270,30 @@ Metric read_metric(const Context& cx, const toml::table& t, std::size_t index) {
         check_target(cx, t, m.a, where);
         check_target(cx, t, m.b, where);
         if (t.contains("column")) cx.fail(t, where + ": 'column' belongs to kind column");
+        if (t.contains("covariance")) cx.fail(t, where + ": 'covariance' belongs to kind normalized_error");
         m.stats = {"mean", "p50", "p95", "max", "count"};
+    } else if (kind == "normalized_error") {
+        // The filter's consistency (issue 39): per sample dtheta' inv(P) dtheta, summarized as NEES per degree
+        // of freedom and the share within chi2(3)'s 99 % point.
+        m.kind = MetricKind::normalized_error;
+        m.a = string(cx, required(cx, t, "a", where), where + ": 'a'");
+        m.b = string(cx, required(cx, t, "b", where), where + ": 'b'");
+        m.covariance = string(cx, required(cx, t, "covariance", where), where + ": 'covariance'");
+        check_target(cx, t, m.a, where);
+        check_target(cx, t, m.b, where);
+        check_target(cx, t, m.covariance, where);
+        if (t.contains("column")) cx.fail(t, where + ": 'column' belongs to kind column");
+        m.stats = {"per_dof", "chi2_99", "count"};
     } else if (kind == "column") {
         m.kind = MetricKind::column;
         m.a = string(cx, required(cx, t, "column", where), where + ": 'column'");
         check_target(cx, t, m.a, where);
         if (t.contains("a") || t.contains("b")) cx.fail(t, where + ": 'a' and 'b' belong to the angle kinds");
+        if (t.contains("covariance")) cx.fail(t, where + ": 'covariance' belongs to kind normalized_error");
         m.stats = {"mean", "min", "max", "final"};
     } else {
-        cx.fail(t, where + ": unknown kind '" + kind + "' (quaternion_angle, vector_angle, column, detection)");
+        cx.fail(t, where + ": unknown kind '" + kind +
+                       "' (quaternion_angle, vector_angle, normalized_error, column, detection)");
     }
     if (const auto* v = t.get("valid")) {
         m.valid = string(cx, *v, where + ": 'valid'");
@@ -315,9 +331,10 @@ Metric read_metric(const Context& cx, const toml::table& t, std::size_t index) {
         for (const auto& x : *arr) {
             m.stats.push_back(string(cx, x, where + ": each of 'stats'"));
             if (!valid_stat(m.stats.back()))
-                cx.fail(x,
-                        where + ": unknown statistic '" + m.stats.back() +
-                            "' (mean, rms, min, max, final, count, or a percentile p0 to p100 such as p95 or p99.9)");
+                cx.fail(
+                    x, where + ": unknown statistic '" + m.stats.back() +
+                           "' (mean, rms, min, max, final, count, per_dof, chi2_99, or a percentile p0 to p100 such as "
+                           "p95 or p99.9)");
         }
     }
     for (std::size_t i = 0; i < m.stats.size(); ++i)

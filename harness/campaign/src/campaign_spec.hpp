@@ -36,7 +36,7 @@ struct Draw {
     std::string stream;
 };
 
-enum class MetricKind { quaternion_angle, vector_angle, column, detection };
+enum class MetricKind { quaternion_angle, vector_angle, column, detection, normalized_error };
 
 // The cells of a detection metric, in table order (README.md of this folder says what each holds).
 inline const std::vector<std::string> detection_cells = {"detected", "time",   "isolated", "declared",
@@ -48,7 +48,11 @@ inline const std::vector<std::string> observable_cells = {"observable", "time_ob
 struct Metric {
     std::string name;
     MetricKind kind = MetricKind::column;
-    std::string a, b;    // angle metrics: the two column groups' prefixes; column: a is the column
+    std::string a, b;  // angle metrics: the two column groups' prefixes; column: a is the column
+    // normalized_error: a the true attitude's [1..4] prefix, b the estimate's, covariance the prefix of the
+    // [1..6] lower Cholesky factor of its attitude covariance (L11, L21, L22, L31, L32, L33); each sample is
+    // the 3-dof normalized error dtheta' inv(P) dtheta (analysis/derived_signals.hpp).
+    std::string covariance;
     std::string valid;   // sample only while this column is true / nonzero ("" = always)
     std::string when;    // sample only where this column changed since the last output point
     double after = 0.0;  // ignore output points before this time (s)
@@ -56,7 +60,7 @@ struct Metric {
     // "env.irradiance == 0": eclipse); empty column = always. Ops: <, <=, >, >=, ==, !=.
     std::string condition_column, condition_op;
     double condition_value = 0.0;
-    std::vector<std::string> stats;  // mean, rms, min, max, final, count, pNN
+    std::vector<std::string> stats;  // mean, rms, min, max, final, count, pNN, per_dof, chi2_99
     std::string figure_stat;         // the per-run value plotted against the drawn quantities
     // detection: the fault words (each a column, or the prefix of a [1..n] group), the declaration times
     // beside them (same shapes; empty = the output point where the word became nonzero), the period a

@@ -1,9 +1,11 @@
 #include "metric_observer.hpp"
 
+#include <array>
 #include <cmath>
 #include <utility>
 
 #include "analysis/angle_error.hpp"
+#include "analysis/derived_signals.hpp"
 #include "campaign_error.hpp"
 #include "engine/name_hint.hpp"
 #include "engine/setting.hpp"
@@ -107,7 +109,7 @@ MetricObserver::MetricObserver(const std::vector<Metric>& metrics, const cosim::
                 what);
     }
     for (const auto& m : metrics) {
-        Tracked t{&m, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+        Tracked t{&m, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
         const int n = m.kind == MetricKind::quaternion_angle ? 4 : 3;
         if (m.kind == MetricKind::detection) {
             std::vector<std::string> names;
@@ -146,6 +148,10 @@ MetricObserver::MetricObserver(const std::vector<Metric>& metrics, const cosim::
             t.detection.emplace(names);
         } else if (m.kind == MetricKind::column) {
             t.a.push_back(resolve(system, m.a, m.name));
+        } else if (m.kind == MetricKind::normalized_error) {
+            for (const auto& c : group(m.a, 4)) t.a.push_back(resolve(system, c, m.name));
+            for (const auto& c : group(m.b, 4)) t.b.push_back(resolve(system, c, m.name));
+            for (const auto& c : group(m.covariance, 6)) t.covariance.push_back(resolve(system, c, m.name));
         } else {
             for (const auto& c : group(m.a, n)) t.a.push_back(resolve(system, c, m.name));
             for (const auto& c : group(m.b, n)) t.b.push_back(resolve(system, c, m.name));
@@ -215,6 +221,16 @@ void MetricObserver::sample(double t, cosim::System& system) {
         double value = 0.0;
         if (m.kind == MetricKind::column) {
             value = read(system, k.a[0]);
+        } else if (m.kind == MetricKind::normalized_error) {
+            std::array<double, 4> q_true{}, q_est{};
+            std::array<double, 6> l{};
+            for (std::size_t i = 0; i < 4; ++i) {
+                q_true[i] = read(system, k.a[i]);
+                q_est[i] = read(system, k.b[i]);
+            }
+            for (std::size_t i = 0; i < 6; ++i) l[i] = read(system, k.covariance[i]);
+            // NaN for a zero factor (the filter not running): no sample.
+            value = 3.0 * analysis::normalized_error_per_dof(analysis::attitude_error_vector(q_true, q_est), l);
         } else {
             double a[4], b[4];
             for (std::size_t i = 0; i < k.a.size(); ++i) {

@@ -48,6 +48,7 @@ private:
         std::vector<std::pair<std::size_t, Column>> expect_variables;  // group, column
         std::vector<std::size_t> expected;
         std::optional<DetectionTracker> detection;
+        std::vector<Column> covariance;  // normalized_error: the Cholesky factor's six columns
     };
     static Column resolve(const cosim::System& system, const std::string& name, const std::string& metric);
     static double read(cosim::System& system, const Column& c);

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "analysis/run_measures.hpp"
+
 namespace campaign {
 
 std::optional<double> percentile_of(const std::string& stat) {
@@ -27,6 +29,14 @@ double statistic(const std::string& stat, const std::vector<double>& values) {
     if (stat == "count") return static_cast<double>(values.size());
     if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
     if (stat == "final") return values.back();
+    // A normalized error's: NEES per degree of freedom (3-dof samples) and the share (%) of samples within
+    // chi2(3)'s 99 % point, 99 % for a consistent filter (analysis/run_measures.hpp).
+    if (stat == "per_dof") return statistic("mean", values) / 3.0;
+    if (stat == "chi2_99")
+        return 100.0 *
+               static_cast<double>(
+                   std::count_if(values.begin(), values.end(), [](double x) { return x <= analysis::chi2_3dof_99; })) /
+               static_cast<double>(values.size());
     if (stat == "min") return *std::min_element(values.begin(), values.end());
     if (stat == "max") return *std::max_element(values.begin(), values.end());
     if (stat == "mean" || stat == "rms") {

@@ -267,7 +267,9 @@ std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir
     TemporaryFiles temporary;
     const auto columns = draw_columns(spec);
     for (const auto& m : spec.metrics) {
-        if (m.kind == MetricKind::column || m.kind == MetricKind::detection) continue;
+        // A normalized error's per-run NEES/dof and coverage (%) share no axis: in the table only.
+        if (m.kind == MetricKind::column || m.kind == MetricKind::detection || m.kind == MetricKind::normalized_error)
+            continue;
         // CDF over runs of each of the metric's per-run statistics.
         const auto png = dir / ("cdf_" + file_name(m.name) + ".png");
         std::string plots;

@@ -167,3 +167,29 @@ b = "est.q_filt"
         EXPECT_NE(error_of(head + metric + "condition = \"" + bad + "\"\n").find("'condition'"), std::string::npos)
             << bad;
 }
+
+// Issue 39: the filter's consistency as a metric, by its covariance factor; its keys checked like the others'.
+TEST(Spec, ANormalizedErrorMetricNamesTheTruthTheEstimateAndTheCovarianceFactor) {
+    const std::string metric = R"(
+[[metric]]
+name = "consistency"
+kind = "normalized_error"
+a = "env.q_true"
+b = "est.q_filt"
+)";
+    const auto spec = parse_spec(head + metric + "covariance = \"est.attitude_cov_sqrt\"\n", "/specs/test.toml");
+    ASSERT_EQ(spec.metrics.size(), 1u);
+    EXPECT_EQ(spec.metrics[0].kind, campaign::MetricKind::normalized_error);
+    EXPECT_EQ(spec.metrics[0].covariance, "est.attitude_cov_sqrt");
+    EXPECT_EQ(spec.metrics[0].stats, (std::vector<std::string>{"per_dof", "chi2_99", "count"}));
+    EXPECT_NE(error_of(head + metric).find("'covariance'"), std::string::npos) << error_of(head + metric);
+    const std::string angle = R"(
+[[metric]]
+name = "e"
+kind = "quaternion_angle"
+a = "env.q_true"
+b = "est.q_filt"
+covariance = "est.attitude_cov_sqrt"
+)";
+    EXPECT_NE(error_of(head + angle).find("'covariance' belongs to kind normalized_error"), std::string::npos);
+}

@@ -52,3 +52,14 @@ TEST(Statistics, NormalMass) {
     EXPECT_NEAR(campaign::normal_mass(0.0, 1.0, -INFINITY, 0.0), 0.5, 1e-15);
     EXPECT_EQ(campaign::normal_mass(0.0, 1.0, -INFINITY, INFINITY), 1.0);
 }
+
+// Normalized errors (3 dof) {1, 4, 9, 16}: NEES/dof = 30 / 4 / 3 = 2.5; three of four at or below chi2(3)'s
+// 99 % point 11.3449 (16 is above it): 75 %.
+TEST(Statistics, NormalizedErrorPerDofAndChiSquareCoverage) {
+    const std::vector<double> v = {1.0, 4.0, 9.0, 16.0};
+    EXPECT_DOUBLE_EQ(statistic("per_dof", v), 2.5);
+    EXPECT_DOUBLE_EQ(statistic("chi2_99", v), 75.0);
+    EXPECT_DOUBLE_EQ(statistic("chi2_99", {11.34}), 100.0);
+    EXPECT_DOUBLE_EQ(statistic("chi2_99", {11.35}), 0.0);
+    EXPECT_TRUE(std::isnan(statistic("chi2_99", {})));
+}

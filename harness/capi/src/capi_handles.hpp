@@ -23,6 +23,7 @@ struct pvatt_system {
         double period;
         pvatt_step_callback callback;
         void* user_data;
+        bool current_inputs = false;  // pvatt_system_replace_current_inputs
     };
     std::map<std::string, Replacement> replacements;  // by component name
     // The strings pvatt_system_variable hands out, built on first ask: [component][variable].

@@ -111,7 +111,8 @@ std::unique_ptr<cosim::System> build_system(const pvatt_system& handle, bool ref
                     const CallbackScope inside;  // what the callback may call back (capi_registry.hpp)
                     if (callback(user, t, in.data(), in.size(), out.data(), out.size()) != 0)
                         throw CallbackFailed(name + ": the callback component failed at t = " + std::to_string(t));
-                });
+                },
+                r->second.current_inputs);
             c.interface = cosim::Interface::model_exchange;
             c.state_count = c.indicator_count = 0;
             c.completed_step_needed = false;
@@ -290,6 +291,17 @@ pvatt_status pvatt_system_replace(pvatt_system* system, const char* component, d
             throw InvalidArgument(name + ": the sample period must be positive and finite, got " +
                                   std::to_string(sample_period));
         system->replacements[name] = {sample_period, callback, user_data};
+    });
+}
+
+pvatt_status pvatt_system_replace_current_inputs(pvatt_system* system, const char* component, int current_inputs) {
+    return guarded([&] {
+        required(system, "system");
+        const std::string name(required(component, "component"));
+        const auto r = system->replacements.find(name);
+        if (r == system->replacements.end())
+            throw InvalidArgument("'" + name + "' is not replaced by a callback (pvatt_system_replace first)");
+        r->second.current_inputs = current_inputs != 0;
     });
 }
 

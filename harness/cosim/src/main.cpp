@@ -14,6 +14,7 @@
 #include "info_command.hpp"
 #include "run_command.hpp"
 #include "simulate_command.hpp"
+#include "system_diagram.hpp"
 
 int main(int argc, char** argv) {
     CLI::App app{"cosim: FMI 2.0 co-simulation master"};
@@ -24,6 +25,9 @@ int main(int argc, char** argv) {
     auto* info = app.add_subcommand(
         "info", "Print an FMU's interface (kinds, variables, causality, unit, start) or a system's components");
     info->add_option("fmu", info_path, "The .fmu file, or a system (.ssd, .ssp)")->required();
+    std::string diagram_out;
+    info->add_option("--diagram", diagram_out,
+                     "A system's components and connections as a picture: writes OUT.dot and OUT.svg (Graphviz)");
 
     std::string pack_ssd, pack_out;
     std::vector<std::string> pack_fmu_dirs;
@@ -134,7 +138,11 @@ int main(int argc, char** argv) {
     cosim::install_interrupt_handlers();
     cosim::use_private_temp_directory();
     try {
-        if (*info) cosim::print_info(info_path, std::cout);
+        if (*info && !diagram_out.empty()) {
+            for (const auto& f : cosim::write_system_diagram(info_path, diagram_out)) std::cout << f.string() << "\n";
+        } else if (*info) {
+            cosim::print_info(info_path, std::cout);
+        }
         if (*pack) {
             pack_options.fmu_dirs.assign(pack_fmu_dirs.begin(), pack_fmu_dirs.end());
             cosim::pack_system(pack_ssd, pack_out, pack_options, std::cout);

@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "analysis/couplings.hpp"
+#include "analysis/run_measures.hpp"
 #include "engine/cosim_error.hpp"
 #include "engine/interrupt.hpp"
 #include "engine/output_file.hpp"
@@ -86,22 +87,20 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
     const auto stop = options.stop_time ? options.stop_time : analysis::default_stop_time(system);
     if (!stop) throw CosimError(options.ssd.string() + " has no DefaultExperiment stopTime: give --stop-time");
     analysis::check_couplings(system, options.allow_mismatch, std::cerr);
+    // --columns names variables whether or not a CSV is written: a typo is refused, not ignored.
+    if (!options.columns.empty() && !options.csv) (void)output_columns(system, options.columns);
 
     ExecutionOptions ex;
     ex.start_time = description.start_time.value_or(0.0);
     ex.stop_time = *stop;
     const RunDefaults defaults = run_defaults(system, ex.start_time, ex.stop_time);
     ex.output_interval = options.output_interval.value_or(defaults.output_interval);
-    const double span = ex.stop_time - ex.start_time;
-    if (!options.output_interval && span > 0.0 && std::isfinite(span) && ex.output_interval > span) {
+    if (!options.output_interval && defaults.shortened_from && options.csv)
         // The system's interval is for its usual run: a shorter one still gets rows (a hundred), said once.
-        const double shortened = span / 100.0;
-        if (options.csv)
-            std::cerr << "cosim: the output interval " << format_real(ex.output_interval) << " s of "
-                      << options.ssd.filename().string() << " is longer than the run (" << format_real(span)
-                      << " s): a row every " << format_real(shortened) << " s instead (--output-interval to choose)\n";
-        ex.output_interval = shortened;
-    }
+        std::cerr << "cosim: the output interval " << format_real(*defaults.shortened_from) << " s of "
+                  << options.ssd.filename().string() << " is longer than the run ("
+                  << format_real(ex.stop_time - ex.start_time) << " s): a row every " << format_real(ex.output_interval)
+                  << " s instead (--output-interval to choose)\n";
     ex.relative_tolerance = options.tolerance.value_or(defaults.tolerance);
     ex.realtime = options.realtime;
     ex.realtime_tolerance = options.realtime_tolerance;
@@ -127,6 +126,13 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
 
     InterruptCheck interrupt;
     std::vector<Observer*> observers{&interrupt};
+    // A system that declares its measures (<ex:Measures>) says at the end what the run reached.
+    std::unique_ptr<analysis::MeasureRecorder> measures;
+    if (description.measures) {
+        analysis::check_measure_names(description.measures->report, options.ssd.string());
+        measures = std::make_unique<analysis::MeasureRecorder>(system);
+        observers.push_back(measures.get());
+    }
     std::unique_ptr<CsvWriter> csv;
     if (options.csv) {
         csv = std::make_unique<CsvWriter>(*options.csv, system, options.columns);
@@ -148,6 +154,12 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
     if (csv) csv->close();
     if (tty && last_percent >= 0) std::fprintf(stderr, "\r%60s\r", "");
     print_statistics(stats, report);
+    if (measures) {
+        analysis::MeasureOptions mo;
+        mo.converged_after = description.measures->converged_after;
+        analysis::print_measures(analysis::measure_run(measures->table(), mo), analysis::fault_onsets(system),
+                                 description.measures->report, report);
+    }
     // What this run changed from the .ssd, for a results page that shows what was run.
     for (const auto& s : options.system.settings) report << "--set " << s << "\n";
     return stats;

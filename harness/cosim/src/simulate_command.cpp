@@ -1,6 +1,7 @@
 #include "simulate_command.hpp"
 
 #include <iomanip>
+#include <iostream>
 #include <memory>
 #include <sstream>
 
@@ -59,7 +60,14 @@ void simulate(const SimulateOptions& options, std::ostream& out) {
     const auto ex = md.default_experiment.value_or(fmi_loader::DefaultExperiment{});
     const double start = ex.start_time.value_or(0.0);
     const double stop = options.stop_time.value_or(ex.stop_time.value_or(start + 1.0));
-    const double h = options.output_interval.value_or(ex.step_size.value_or((stop - start) / 500.0));
+    // The FMU's step when it fits the run, else a row every hundredth of it (the rule of cosim run).
+    std::optional<double> shortened_from;
+    const double h = options.output_interval.value_or(
+        interval_within_span(ex.step_size.value_or((stop - start) / 500.0), stop - start, shortened_from));
+    if (shortened_from)
+        std::cerr << "cosim: the output interval " << format_real(*shortened_from) << " s of "
+                  << options.fmu.filename().string() << " is longer than the run (" << format_real(stop - start)
+                  << " s): a row every " << format_real(h) << " s instead (--output-interval to choose)\n";
     ExecutionOptions run;
     run.start_time = start;
     run.stop_time = stop;

@@ -15,6 +15,7 @@
 #include "engine/name_hint.hpp"
 #include "info_command.hpp"
 #include "run_command.hpp"
+#include "system_diagram.hpp"
 
 namespace cosim {
 namespace {
@@ -200,6 +201,74 @@ TEST(Messages, InfoShowsTheExperimentTheConnectionsAndEnumerationItems) {
     print_info(fmu_dir / "test_gain.fmu", fmu);
     EXPECT_NE(fmu.str().find("plus (1)"), std::string::npos) << fmu.str();
     EXPECT_NE(fmu.str().find("[plus = 1, minus = 2]"), std::string::npos) << fmu.str();
+}
+
+}  // namespace
+}  // namespace cosim
+
+namespace cosim {
+namespace {
+
+// Issue 40: --columns names variables whether a CSV is written or not; a typo was ignored without --output.
+TEST(Messages, AColumnsTypoIsRefusedAlsoWithoutOutput) {
+    Scratch s;
+    auto o = options_for(s.ssd(gain));
+    o.columns = {"gain.yy"};
+    EXPECT_EQ(refusal(o), "--columns: gain: no variable named 'yy' (did you mean 'y'?)");
+}
+
+// Issue 40: a system's <ex:Measures report=".."/> names what its runs say at the end; a name that is no
+// measure is refused before the run with the closest one.
+TEST(Messages, AMeasureTheSystemDeclaresMustExist) {
+    Scratch s;
+    const fs::path ssd = s.ssd(gain);
+    std::string text;
+    {
+        std::ifstream in(ssd);
+        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    const std::string stop = "</ssc:Annotation>";
+    text.insert(text.find(stop) + stop.size(),
+                R"(<ssc:Annotation type="org.pvatt.execution"><ex:Measures xmlns:ex="urn:pvatt:execution" )"
+                R"(report="attitude faults constistency"/></ssc:Annotation>)");
+    std::ofstream(ssd) << text;
+    const std::string says = refusal(options_for(ssd));
+    EXPECT_NE(says.find("<ex:Measures report> names 'constistency', not a measure (did you mean 'consistency'?)"),
+              std::string::npos)
+        << says;
+}
+
+}  // namespace
+}  // namespace cosim
+
+namespace cosim {
+namespace {
+
+// Issue 40: the system as a picture. One arrow per connected pair, labelled with what it carries (an
+// array's elements once), names quoted (a quote in a name cannot end the string); dot draws it.
+TEST(Diagram, OneArrowPerPairOfComponentsLabelledWithWhatItCarries) {
+    SystemDescription d;
+    d.name = "sys";
+    for (const char* n : {"env", "est \"1\""}) {
+        ComponentDescription c;
+        c.name = n;
+        c.source = "x.fmu";
+        d.components.push_back(c);
+    }
+    for (const char* k : {"sun_body[1]", "sun_body[2]", "sun_body[3]", "irradiance"})
+        d.connections.push_back({"env", k, "est \"1\"", k, ""});
+    const std::string dot = system_dot(d);
+    EXPECT_NE(dot.find("\"env\" -> \"est \\\"1\\\"\" [label=\"sun_body [..]\\nirradiance\"]"), std::string::npos)
+        << dot;
+    EXPECT_EQ(dot.find("sun_body[2]"), std::string::npos) << dot;
+
+    Scratch s;
+    const auto files = write_system_diagram(s.ssd(gain), s.root / "diagram");
+    ASSERT_EQ(files.size(), 2u);
+    std::ifstream svg(s.root / "diagram.svg");
+    const std::string text((std::istreambuf_iterator<char>(svg)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("<svg"), std::string::npos);
+    EXPECT_NE(text.find("gain"), std::string::npos);
 }
 
 }  // namespace

@@ -42,5 +42,24 @@ TEST(CosimSimulate, OneFmuRunsThroughTheExecutionWithItsOwnColumnNames) {
     }
 }
 
+// Issue 40: one rule with `cosim run`: a stop time shorter than the FMU's default step (test_integrator's
+// 1 ms) runs with a row every hundredth of the run, said on stderr (it was refused).
+TEST(CosimSimulate, AStopTimeShorterThanTheDefaultStepRunsWithItShortened) {
+    const auto csv =
+        std::filesystem::temp_directory_path() / ("cosim_simulate_short_" + std::to_string(::getpid()) + ".csv");
+    SimulateOptions o;
+    o.fmu = std::string(COSIM_TEST_FMU_DIR) + "/test_integrator.fmu";
+    o.stop_time = 5e-4;
+    o.columns = {"y"};
+    o.csv = csv;
+    std::ostringstream out;
+    ::testing::internal::CaptureStderr();
+    simulate(o, out);
+    const std::string said = ::testing::internal::GetCapturedStderr();
+    EXPECT_NE(said.find("is longer than the run (5e-04 s): a row every 5e-06 s instead"), std::string::npos) << said;
+    EXPECT_EQ(read_csv(csv).rows(), 101u);
+    std::filesystem::remove(csv);
+}
+
 }  // namespace
 }  // namespace cosim

@@ -16,8 +16,12 @@ using time_rule::reached;
 }  // namespace
 
 CallbackInstance::CallbackInstance(const fmi_loader::ModelDescription& description, std::string name, double period,
-                                   StepFunction step)
-    : description_(description), name_(std::move(name)), period_(period), step_(std::move(step)) {
+                                   StepFunction step, bool current_inputs)
+    : description_(description),
+      name_(std::move(name)),
+      period_(period),
+      step_(std::move(step)),
+      current_inputs_(current_inputs) {
     if (!(period_ > 0.0) || !std::isfinite(period_))
         throw CosimError(name_ + ": the sample period must be positive and finite, got " + format_real(period_));
     for (const auto& v : description_.model_variables) {
@@ -68,6 +72,7 @@ void CallbackInstance::set_string(fmi2ValueReference vr, const std::string& x) {
 void CallbackInstance::setup_experiment(double start_time, std::optional<double> stop_time, std::optional<double>) {
     start_time_ = time_ = start_time;
     next_sample_ = 0;
+    last_sample_time_.reset();
     const double span = stop_time ? *stop_time - start_time : 0.0;
     if (std::isfinite(span) && span / period_ > max_sample_index)
         throw CosimError(name_ + ": sample period " + format_real(period_) + " s makes more than " +
@@ -88,9 +93,16 @@ void CallbackInstance::sample() {
 }
 
 fmi2EventInfo CallbackInstance::new_discrete_states() {
-    // One call per sample instant, however many rounds the master's event iteration takes.
+    // One call per sample instant, however many rounds the master's event iteration takes; with
+    // current_inputs another whenever the inputs changed since the last call at this instant.
+    if (!reached(time_, next_sample_time()) && current_inputs_ && last_sample_time_ && *last_sample_time_ == time_) {
+        bool changed = false;
+        for (std::size_t i = 0; i < input_slots_.size() && !changed; ++i) changed = in_[i] != values_[input_slots_[i]];
+        if (changed) sample();
+    }
     if (reached(time_, next_sample_time())) {
         sample();
+        last_sample_time_ = time_;
         // The next instant the current time has not reached (a run that skipped instants skips them).
         long k = std::max(next_sample_ + 1, static_cast<long>(std::floor((time_ - start_time_) / period_)));
         while (reached(time_, start_time_ + static_cast<double>(k) * period_)) ++k;

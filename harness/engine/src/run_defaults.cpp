@@ -11,7 +11,7 @@
 namespace cosim {
 
 RunDefaults run_defaults(const System& system, double start, double stop) {
-    RunDefaults d{std::numeric_limits<double>::infinity(), 1e-6};
+    RunDefaults d{std::numeric_limits<double>::infinity(), 1e-6, std::nullopt};
     for (const auto& c : system.components()) {
         const auto& ex = c.description().default_experiment;
         if (!ex) continue;
@@ -25,7 +25,15 @@ RunDefaults run_defaults(const System& system, double start, double stop) {
         d.output_interval = *system.description().output_interval;
     else if (!std::isfinite(d.output_interval) || d.output_interval < span / 1000.0)
         d.output_interval = span / 1000.0;
+    d.output_interval = interval_within_span(d.output_interval, span, d.shortened_from);
     return d;
+}
+
+double interval_within_span(double interval, double span, std::optional<double>& shortened_from) {
+    shortened_from.reset();
+    if (!(span > 0.0) || !std::isfinite(span) || !(interval > span)) return interval;
+    shortened_from = interval;
+    return span / 100.0;
 }
 
 namespace {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <memory>
+#include <sstream>
 
 #include "engine/cosim_error.hpp"
 #include "engine/value_text.hpp"
@@ -322,6 +323,13 @@ SystemDescription read_system_description(const std::filesystem::path& path) {
             out.max_step = positive_attribute(i, "maxStep", ssd);
         if (const xmlNode* st = annotation(ex, execution_annotation, "Stop"))
             out.stop_orbits = positive_attribute(st, "orbits", ssd);
+        if (const xmlNode* me = annotation(ex, execution_annotation, "Measures")) {
+            SystemDescription::Measures m;
+            std::istringstream words(required(me, "report", ssd));
+            for (std::string w; words >> w;) m.report.push_back(w);
+            if (attribute(me, "convergedAfter")) m.converged_after = positive_attribute(me, "convergedAfter", ssd);
+            out.measures = std::move(m);
+        }
     }
     return out;
 }

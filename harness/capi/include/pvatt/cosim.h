@@ -133,6 +133,14 @@ typedef int (*pvatt_step_callback)(void* user_data, double time, const double* i
                                    double* outputs, size_t output_count);
 PVATT_API pvatt_status pvatt_system_replace(pvatt_system* system, const char* component, double sample_period,
                                             pvatt_step_callback callback, void* user_data);
+/* Order at an instant where several components sample: each is called once per round of the master's event
+ * iteration, in the system's order, with values passed on between rounds; a callback's one call sees its
+ * inputs as they were just before the instant (a sampled source's previous output). With current_inputs
+ * non-zero the replaced component's callback is called again at the same instant whenever its inputs
+ * changed after its last call there, so that its last call sees the instant's final inputs (a sensor that
+ * must follow a command issued at this instant). Call after pvatt_system_replace; 0 restores one call. */
+PVATT_API pvatt_status pvatt_system_replace_current_inputs(pvatt_system* system, const char* component,
+                                                           int current_inputs);
 
 /* ---- Runs ---- */
 
@@ -161,6 +169,13 @@ PVATT_API const double* pvatt_result_data(const pvatt_result* result);
 /* One column copied into a caller's buffer of `size` doubles (at least the row count). */
 PVATT_API pvatt_status pvatt_result_read_column(const pvatt_result* result, size_t column, double* buffer, size_t size);
 PVATT_API void pvatt_result_free(pvatt_result* result); /* NULL is fine */
+/* What the run reached, computed from the result's columns as `cosim run` and `cosim plot` compute it (the
+ * attitude error of each estimate sunlit / in eclipse, after convergence, the filter's NEES/dof and chi2(3)
+ * 99 % coverage, when it was first valid, the faults declared): as JSON (as_text 0) or as the lines `cosim
+ * run` prints (as_text 1), copied into buffer as pvatt_system_get does. converged_after: where "after
+ * convergence" starts (s), NaN for the default (the filter valid with the calibration applied). */
+PVATT_API pvatt_status pvatt_result_measures(const pvatt_result* result, double converged_after, int as_text,
+                                             char* buffer, size_t size, size_t* needed);
 
 /* ---- Stepping ---- */
 

@@ -3,10 +3,18 @@
 // modelDescription (ports, units and wiring as with the FMU) and acts as a Model Exchange component
 // without states: at each sample instant t0 + k * period it calls the function with its current
 // inputs and applies the outputs at that same instant. Between samples its outputs hold.
+//
+// At an instant where other components sample too, the master calls every component in event mode once
+// per round, in the system's order, and propagates values between rounds (execution.cpp, event_iteration):
+// the function's first call sees its inputs as they were just before the instant (a sampled source's
+// previous output). With `current_inputs` it is called again at the same instant whenever its inputs
+// changed after its last call there, until they settle, so that its last call sees the instant's final
+// inputs (a sensor model whose output must follow a command issued at this very instant).
 #pragma once
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -22,7 +30,7 @@ using StepFunction = std::function<void(double t, std::span<const double> inputs
 class CallbackInstance final : public ComponentInstance {
 public:
     CallbackInstance(const fmi_loader::ModelDescription& description, std::string name, double period,
-                     StepFunction step);
+                     StepFunction step, bool current_inputs = false);
 
     const std::string& name() const override { return name_; }
     const fmi_loader::ModelDescription& description() const override { return description_; }
@@ -76,6 +84,8 @@ private:
     std::vector<double> in_, out_;  // the spans handed to the function (no allocation per sample)
     double start_time_ = 0.0, time_ = 0.0;
     long next_sample_ = 0;
+    bool current_inputs_ = false;
+    std::optional<double> last_sample_time_;  // the instant of the last call
 };
 
 }  // namespace cosim

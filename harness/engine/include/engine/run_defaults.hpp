@@ -15,11 +15,17 @@ inline constexpr double max_run_points = 1e8;
 
 // The defaults for a system run from start to stop: the .ssd's output interval, else the FMUs'
 // smallest DefaultExperiment step but no finer than a thousandth of the run; the FMUs' smallest
-// tolerance (1e-6 when none is smaller).
+// tolerance (1e-6 when none is smaller). A default interval longer than the run (the system's 10 s for a
+// run of 1 s) gives a row every hundredth of the run instead, and says so in shortened_from: one rule for
+// cosim run, cosim simulate, campaigns, the C API and pvatt (issue 40).
 struct RunDefaults {
     double output_interval, tolerance;
+    std::optional<double> shortened_from;  // the interval the system gave, when it was longer than the run
 };
 RunDefaults run_defaults(const System& system, double start, double stop);
+
+// `interval`, or span / 100 when it is longer than a positive, finite `span` (then shortened_from is it).
+double interval_within_span(double interval, double span, std::optional<double>& shortened_from);
 
 // A run must have something to do and an end: finite times, a stop after the start, an output interval
 // (and a communication step) positive, finite, not longer than the run and giving at most

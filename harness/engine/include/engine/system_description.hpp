@@ -82,6 +82,13 @@ struct SystemDescription {
     // and <Stop orbits=".."/>: the run lasts this many orbits of the system's truth, derived by the front
     // end that knows the system (harness/systems/analysis) instead of written; stopTime stays for other tools.
     std::optional<double> stop_orbits;
+    // and <Measures report="attitude consistency first_valid faults" convergedAfter=".."/>: what a run of
+    // this system says it reached at its end (the names are the analysis front end's, checked there).
+    struct Measures {
+        std::vector<std::string> report;
+        std::optional<double> converged_after;  // s: "after convergence" starts here
+    };
+    std::optional<Measures> measures;
 };
 
 // An .ssd, or an .ssp archive (by its extension) unpacked first within the loader's archive limits

@@ -14,6 +14,7 @@
 
 #include "analysis/angle_error.hpp"
 #include "analysis/derived_signals.hpp"
+#include "analysis/run_measures.hpp"
 #include "engine/cosim_error.hpp"
 #include "engine/csv_table.hpp"
 #include "engine/gnuplot.hpp"
@@ -33,12 +34,6 @@ struct Series {
     std::vector<double> values;  // NaN: no point at this row
     bool points = false;         // markers (samples) rather than a line
 };
-
-double percentile(std::vector<double> v, double p) {
-    if (v.empty()) return std::nan("");
-    std::sort(v.begin(), v.end());
-    return v[static_cast<std::size_t>(p * static_cast<double>(v.size() - 1) + 0.5)];
-}
 
 std::string degrees(double x) {
     char buf[32];
@@ -67,7 +62,23 @@ std::string flat_range(const std::vector<Series>& series, std::size_t first_row)
 struct Style {
     std::string format = "png";
     const std::vector<double>* irradiance = nullptr;  // 0 in the Earth's shadow; null: no shading
+    std::vector<FaultDeclaration> marks;              // a vertical line at each fault's declaration
 };
+
+// gnuplot commands for the fault declarations: a dashed red line from the bottom to the top of the plot at
+// each, labelled at its top (the label through gnuplot_string: quotes doubled, control characters gone).
+std::string fault_marks(const std::vector<FaultDeclaration>& marks) {
+    std::string out;
+    for (const auto& m : marks) {
+        char t[40];
+        std::snprintf(t, sizeof t, "%.17g", m.time);
+        out += std::string("set arrow from ") + t + ", graph 0 to " + t +
+               ", graph 1 nohead dashtype 2 lw 1.5 lc rgb 'red' front\n" + "set label " +
+               gnuplot_string("declared: " + m.what) + " at " + t +
+               ", graph 0.98 rotate by 90 right offset -0.6,0 font ',8' tc rgb 'red' front\n";
+    }
+    return out;
+}
 
 // One figure: writes the data and a gnuplot script, runs gnuplot in out_dir (no path in the script),
 // returns the image. The eclipse (irradiance 0) is shaded grey behind the series.
@@ -90,7 +101,10 @@ std::filesystem::path draw(const std::filesystem::path& out_dir, const Style& st
             for (const auto& s : series) d << ' ' << s.values[r];
             const bool eclipse = style.irradiance && (*style.irradiance)[r] <= 0.0;
             shaded = shaded || eclipse;
-            d << ' ' << (eclipse ? "1" : "nan") << '\n';
+            // Each eclipse row's box spans to the next row: gnuplot's own width (the distance to the next
+            // point drawn) would bridge the sunlit rows between two eclipses, which are not drawn.
+            const double width = r + 1 < time.size() ? time[r + 1] - time[r] : 0.0;
+            d << ' ' << (eclipse ? "1" : "nan") << ' ' << width << '\n';
         }
         d.flush();
         if (!d) throw CosimError("cannot write " + (out_dir / data).string());
@@ -99,12 +113,14 @@ std::filesystem::path draw(const std::filesystem::path& out_dir, const Style& st
                                                        : "pngcairo noenhanced size 1100,600 font 'sans,11'";
     std::string script = "set terminal " + terminal + "\nset output " + gnuplot_string(image) + "\nset title " +
                          gnuplot_string(title) + "\nset xlabel 'time (s)'\nset ylabel " + gnuplot_string(ylabel) +
-                         "\nset grid\nset key below\nset datafile missing 'nan'\n" + flat_range(series, first_row);
+                         "\nset grid\nset key below\nset datafile missing 'nan'\n" + flat_range(series, first_row) +
+                         fault_marks(style.marks);
     std::string plots;
     if (shaded) {
         // Eclipse rows as boxes of height 1 on the second y axis (0..1, not shown): grey bands behind.
         script += "set y2range [0:1]\nunset y2tics\nset style fill transparent solid 0.15 noborder\n";
-        plots += gnuplot_string(data) + " using 1:" + std::to_string(series.size() + 2) +
+        plots += gnuplot_string(data) + " using ($1+$" + std::to_string(series.size() + 3) +
+                 "/2):" + std::to_string(series.size() + 2) + ":" + std::to_string(series.size() + 3) +
                  " axes x1y2 with boxes lc rgb 'gray30' title 'eclipse'";
     }
     for (std::size_t i = 0; i < series.size(); ++i)
@@ -173,12 +189,17 @@ Series error_series(const std::string& what, const std::vector<double>& error, c
             s.values[r] = error[r];
             kept.push_back(error[r]);
         }
-    const double median = percentile(kept, 0.5), p95 = percentile(kept, 0.95);
+    const double median = error_percentile(kept, 0.5), p95 = error_percentile(kept, 0.95);
     s.title +=
         " (median " + degrees(median) + ", p95 " + degrees(p95) + " deg, " + std::to_string(kept.size()) + " samples)";
     summary << "<tr><td>" << what << "</td><td>" << kept.size() << "</td><td>" << degrees(median) << "</td><td>"
             << degrees(p95) << "</td></tr>\n";
     return s;
+}
+
+// A CSV sampled finer than 50 us (a tenth of a 5 kHz PWM period) is a close-up of the bus: its ripple only.
+bool close_up_csv(const std::vector<double>& time) {
+    return time.size() > 2 && time[1] - time[0] <= 50e-6;
 }
 
 std::string html_escape(const std::string& text) {
@@ -193,7 +214,8 @@ std::string html_escape(const std::string& text) {
 
 // results/index.html: every figure of the folder, the error statistics of this CSV, and the run's
 // statistics when a run_statistics.txt lies beside them (scripts/run_seed.sh writes it).
-void write_index(const std::filesystem::path& out_dir, const std::filesystem::path& csv, const std::string& summary) {
+void write_index(const std::filesystem::path& out_dir, const std::filesystem::path& csv, const std::string& summary,
+                 const std::string& measures) {
     std::vector<std::filesystem::path> pngs;
     for (const auto& e : std::filesystem::recursive_directory_iterator(out_dir))
         if (e.path().extension() == ".png" || e.path().extension() == ".svg")
@@ -212,6 +234,7 @@ void write_index(const std::filesystem::path& out_dir, const std::filesystem::pa
         h << "<h2>Errors at the estimator's samples</h2>\n<table><tr><th>error</th><th>samples</th><th>median "
              "(deg)</th><th>95th percentile (deg)</th></tr>\n"
           << summary << "</table>\n";
+    h << measures;
     const auto stats = out_dir / "run_statistics.txt";
     if (std::filesystem::exists(stats)) {
         std::ifstream in(stats);
@@ -256,6 +279,9 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
     Style style;
     style.format = options.format;
     style.irradiance = column("irradiance");
+    // What the run reached (per phase, after convergence, the filter's consistency) and the faults declared.
+    const RunMeasures measures = measure_run(table);
+    if (!close_up_csv(time)) style.marks = measures.declarations;
     // --columns: any variables against time, in one figure.
     if (!options.columns.empty()) {
         std::vector<Series> chosen;
@@ -266,8 +292,7 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
         }
         add([&] { return draw(out_dir, style, "columns", "Chosen columns", "value", time, chosen); });
     }
-    // A CSV sampled finer than 50 us (a tenth of a 5 kHz PWM period) is a close-up of the bus: its ripple only.
-    const bool close_up = time.size() > 2 && time[1] - time[0] <= 50e-6;
+    const bool close_up = close_up_csv(time);
 
     // Seed 000 fig. 8: each component of the acquired sun vector (the estimator's samples) on the real one.
     const char* axis[] = {"x", "y", "z"};
@@ -380,42 +405,33 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
         // normalized error per degree of freedom from the covariance factor (1 when consistent).
         if (std::string(e.column) != "q_filt") continue;
         if (const auto* bound = column("attitude_bound")) {
-            Series b{"filter 3-sigma bound", std::vector<double>(time.size(), std::nan("")), false};
-            std::size_t samples = 0, covered = 0;
-            for (std::size_t r = 0; r < time.size(); ++r) {
-                if (!use[r]) continue;
-                b.values[r] = (*bound)[r] * 180.0 / std::numbers::pi;
-                ++samples;
-                covered += error[r] <= b.values[r];
-            }
+            // The filter's own 3-sigma bound (3 sqrt(tr P)) drawn beside its error; its consistency is judged
+            // by the chi-square measure below, not by this bound (5.2 sigma per axis for an isotropic P).
+            Series b{"filter 3-sigma bound 3 sqrt(tr P)", std::vector<double>(time.size(), std::nan("")), false};
+            for (std::size_t r = 0; r < time.size(); ++r)
+                if (use[r]) b.values[r] = (*bound)[r] * 180.0 / std::numbers::pi;
             attitude.push_back(b);
-            summary << "<tr><td>filter q_filt within its 3-sigma bound</td><td>" << samples << "</td><td colspan=2>"
-                    << degrees(samples ? 100.0 * static_cast<double>(covered) / static_cast<double>(samples) : NAN)
-                    << " %</td></tr>\n";
         }
         std::vector<const std::vector<double>*> l;
         for (int i = 1; i <= 6; ++i)
             if (const auto* c = column("attitude_cov_sqrt[" + std::to_string(i) + "]")) l.push_back(c);
         if (l.size() == 6) {
-            std::vector<double> nees(time.size(), std::nan(""));
-            double sum = 0.0;
-            std::size_t n = 0;
+            // The normalized error epsilon = dtheta' inv(P) dtheta at every sample, against chi2(3)'s 99 % point.
+            std::vector<double> nees(time.size(), std::nan("")), epsilon(time.size(), std::nan(""));
             for (std::size_t r = 0; r < time.size(); ++r) {
                 if (!use[r]) continue;
                 nees[r] = analysis::normalized_error_per_dof(
                     vectors[r], {(*l[0])[r], (*l[1])[r], (*l[2])[r], (*l[3])[r], (*l[4])[r], (*l[5])[r]});
-                if (std::isfinite(nees[r])) {
-                    sum += nees[r];
-                    ++n;
-                }
+                epsilon[r] = 3.0 * nees[r];
             }
             derived.push_back({"q_filt_nees_per_dof", nees});
-            summary << "<tr><td>filter q_filt normalized error per dof (mean; 1 = consistent)</td><td>" << n
-                    << "</td><td colspan=2>" << degrees(n ? sum / static_cast<double>(n) : NAN) << "</td></tr>\n";
+            derived.push_back({"q_filt_nees", epsilon});
+            std::vector<double> limit(time.size(), chi2_3dof_99);
             add([&] {
                 return draw(out_dir, style, "filter_normalized_error",
-                            "Filter normalized error per degree of freedom (1 = consistent)", "NEES / 3", time,
-                            {{"q_filt NEES/dof", nees, true}});
+                            "Filter normalized error dtheta' inv(P) dtheta (3 degrees of freedom; 3 on average when "
+                            "consistent, 99 % of samples below 11.34)",
+                            "NEES", time, {{"q_filt NEES", epsilon, true}, {"chi2(3) 99 % point 11.34", limit}});
             });
         }
     }
@@ -429,14 +445,17 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
     }
 
     if (const auto* soc = column("soc"); soc && !close_up)
-        add([&] { return draw(out_dir, style, "battery_soc", "Battery state of charge", "1", time, {{"soc", *soc}}); });
+        add([&] {
+            return draw(out_dir, style, "battery_soc", "Battery state of charge", "state of charge (0 to 1)", time,
+                        {{"soc", *soc}});
+        });
     else if (!close_up)
         notes << "no soc column: battery figure skipped\n";
     if (options.derived) {
         write_derived(*options.derived, time, derived);
         written.push_back(*options.derived);
     }
-    write_index(out_dir, csv, summary.str());
+    write_index(out_dir, csv, summary.str(), measures_html(measures));
     written.push_back(out_dir / "index.html");
     if (failed)
         throw CosimError(std::to_string(failed) + " figure(s) failed (above); the others are in " + out_dir.string());

@@ -139,5 +139,52 @@ TEST(CosimPlot, AFailingFigureFailsAloneAndLeavesNoPng) {
     std::filesystem::remove_all(dir);
 }
 
+// Issue 40: the page says what the run reached (per phase, the chi-square coverage) and marks each fault
+// the on-board computer declared on the figures; the battery's axis says what it is. The filter is 1 deg
+// off about z with sigma 1 deg per axis (epsilon = 1 at every sample: coverage 100 %, NEES/dof 1/3), sunlit
+// for the first half; face +y is declared at t = 0.5 s.
+TEST(CosimPlot, ThePageSaysWhatTheRunReachedAndMarksTheFaults) {
+    const auto dir = std::filesystem::temp_directory_path() /
+                     ("cosim_plot_measures_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+    std::filesystem::create_directories(dir);
+    const auto csv = dir / "run.csv";
+    {
+        std::ofstream out(csv);
+        out << "time,env.q_true[1],env.q_true[2],env.q_true[3],env.q_true[4],est.q_filt[1],est.q_filt[2],"
+               "est.q_filt[3],est.q_filt[4],est.filter_valid,env.irradiance,plant.soc";
+        for (int i = 1; i <= 6; ++i) out << ",est.attitude_cov_sqrt[" << i << "]";
+        for (int i = 1; i <= 6; ++i) out << ",est.fault_face_time[" << i << "]";
+        out << "\n";
+        const double s = M_PI / 180.0, h = 0.5 * s;
+        for (int k = 0; k <= 10; ++k) {
+            const double t = 0.1 * k, turn = 0.01 * k;  // the truth turns; the filter stays 1 deg behind
+            out << t << ",0,0," << std::sin(turn / 2) << "," << std::cos(turn / 2) << ",0,0," << std::sin(turn / 2 - h)
+                << "," << std::cos(turn / 2 - h) << ",1," << (k < 5 ? 1361 : 0) << "," << 0.9 + 0.001 * k << "," << s
+                << ",0," << s << ",0,0," << s;
+            for (int f = 1; f <= 6; ++f) out << "," << (f == 3 && k >= 5 ? 0.5 : -1.0);
+            out << "\n";
+        }
+    }
+    std::ostringstream notes;
+    PlotOptions options;
+    options.format = "svg";
+    plot_results(csv, dir, notes, options);
+    std::ifstream in(dir / "index.html");
+    const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(html.find("What the run reached"), std::string::npos) << html;
+    EXPECT_NE(html.find("<td>filter q_filt</td><td>whole run</td><td>1 / 1</td><td>1 / 1</td><td>11</td><td>0.333</td>"
+                        "<td>100.0 %</td>"),
+              std::string::npos)
+        << html;
+    EXPECT_NE(html.find("<li>panel face +y at 0.5 s</li>"), std::string::npos) << html;
+    const auto read = [&](const char* name) {
+        std::ifstream f(dir / name);
+        return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    };
+    EXPECT_NE(read("attitude_error.svg").find("declared: panel face +y"), std::string::npos);
+    EXPECT_NE(read("battery_soc.svg").find("state of charge (0 to 1)"), std::string::npos);
+    std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace analysis

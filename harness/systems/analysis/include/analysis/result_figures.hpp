@@ -4,8 +4,9 @@
 // of every estimate the CSV holds (single-frame q_est, filter q_filt) at its samples while valid (median
 // and 95th percentile in the legend), the bus voltage (fig. 9), the battery state of charge; from a CSV sampled finer than 50 us the
 // bus ripple over its last millisecond instead. A figure whose columns the CSV lacks is skipped with a
-// note. Writes index.html in the folder: every figure there, the error statistics, and
-// run_statistics.txt when present.
+// note. Writes index.html in the folder: every figure there, the error statistics, what the run reached
+// (analysis/run_measures.hpp: per phase, after convergence, the filter's chi2(3) coverage, the faults
+// declared, each also a red line on the figures), and run_statistics.txt when present.
 #pragma once
 
 #include <filesystem>
