@@ -69,8 +69,11 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
     throw_if_interrupted();
     const SystemDescription description = read_system_description(options.ssd);
     check_co_simulation_names(description, options.system.co_simulation);
-    if (options.csv)
-        refuse_overwriting_inputs("--output", *options.csv, system_inputs(description, options.system.fmu_dirs));
+    if (options.csv) {
+        auto inputs = system_inputs(description, options.system.fmu_dirs);
+        inputs.insert(inputs.end(), options.system.parameter_files.begin(), options.system.parameter_files.end());
+        refuse_overwriting_inputs("--output", *options.csv, inputs);
+    }
     SystemOptions system_options = options.system;
     if (options.tolerance) system_options.tolerance = options.tolerance;
     if (options.communication_step) system_options.communication_step = options.communication_step;
@@ -86,6 +89,9 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
     const auto stop = options.stop_time ? options.stop_time : analysis::default_stop_time(system);
     if (!stop) throw CosimError(options.ssd.string() + " has no DefaultExperiment stopTime: give --stop-time");
     analysis::check_couplings(system, options.allow_mismatch, std::cerr);
+    // A component parameter set directly wins over the system parameter that feeds it, for that component only.
+    for (const auto& direct : system.fed_parameters_set_directly())
+        std::cerr << "cosim: " << direct << " is set directly: the system parameter no longer feeds it\n";
 
     ExecutionOptions ex;
     ex.start_time = description.start_time.value_or(0.0);
@@ -149,6 +155,7 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
     if (tty && last_percent >= 0) std::fprintf(stderr, "\r%60s\r", "");
     print_statistics(stats, report);
     // What this run changed from the .ssd, for a results page that shows what was run.
+    for (const auto& f : options.system.parameter_files) report << "--parameters " << f.string() << "\n";
     for (const auto& s : options.system.settings) report << "--set " << s << "\n";
     return stats;
 }
