@@ -86,9 +86,12 @@ class System:
     >>> s = System("harness/systems/seed_spin.ssd")
     >>> s.set("est.sun_method", "cones")
     >>> r = s.run(stop_time=2.0, outputs=["plant.v_bus", "est.q_est"])
+
+    A system's own parameters (`parameters`, e.g. "epoch_month", "tle_elements[2]") are set by their
+    names; parameter sets (.ssv) load with load_parameters() or System(path, parameters=[...]).
     """
 
-    def __init__(self, path, fmu_dirs=None):
+    def __init__(self, path, fmu_dirs=None, parameters=None):
         self.path = pathlib.Path(path)
         dirs = [str(d) for d in (default_fmu_dirs() if fmu_dirs is None else fmu_dirs)]
         array, keep = names_array(dirs, "an FMU folder")
@@ -108,6 +111,17 @@ class System:
                 check(lib.pvatt_system_variable(handle, c, v, ctypes.byref(info)))
                 variables[info.name.decode()] = Variable(info)
             self.components[name] = variables
+        # The system's own parameters (system-level parameter connectors), by name.
+        self.parameters = [
+            lib.pvatt_system_parameter_name(handle, i).decode() for i in range(lib.pvatt_system_parameter_count(handle))
+        ]
+        for file in parameters or []:
+            self.load_parameters(file)
+
+    def load_parameters(self, path):
+        """Every value of an SSP parameter set (.ssv: system parameters and comp.var), as set() in the
+        file's order; later sets and files win. A malformed file is refused with its line and name."""
+        check(lib.pvatt_system_load_parameters(self._handle, str(path).encode()))
 
     def close(self):
         if getattr(self, "_handle", None):
@@ -132,8 +146,19 @@ class System:
         return self.components[component]
 
     def expand(self, name):
-        """'est.q_est' -> ['est.q_est[1]', ..., 'est.q_est[4]'] for a vector; a scalar as it is."""
+        """'est.q_est' -> ['est.q_est[1]', ..., 'est.q_est[4]'] for a vector; a scalar as it is. A system
+        parameter by its name ('inertia' -> ['inertia[1]', ..., 'inertia[9]'])."""
         encode(name, "the name")  # a NUL is refused as such, not reported as an unknown name
+        if "." not in name:
+            if name in self.parameters:
+                return [name]
+            elements = []
+            while f"{name}[{len(elements) + 1}]" in self.parameters:
+                elements.append(f"{name}[{len(elements) + 1}]")
+            if not elements:
+                raise KeyError(f"no system parameter named '{name}'{_did_you_mean(name, self.parameters)} "
+                               f"(system parameters: {', '.join(self.parameters)})")
+            return elements
         component, _, variable = name.partition(".")
         variables = self.components.get(component)
         if variables is None:

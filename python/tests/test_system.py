@@ -91,3 +91,60 @@ def test_a_lone_fmu(tmp_path):
     system.set("test_gain.u", 4.0)
     r = system.run(stop_time=1.0, output_interval=0.5, outputs=["test_gain.y"])
     np.testing.assert_array_equal(r["test_gain.y"], [8.0, 8.0, 8.0])
+
+
+def test_system_parameters_by_name_and_from_parameter_files(tmp_path):
+    """A system parameter (gain_k = 2, feeding gain.k) set by its name, from a parameter file given at
+    construction and from load_parameters(); with integ.u = 1, x(1) = 2 and gain.y = k x(1) = 2 k."""
+    ssd = tmp_path / "chain.ssd"
+    ssd.write_text(f"""<?xml version="1.0" encoding="UTF-8"?>
+<ssd:SystemStructureDescription xmlns:ssd="http://ssp-standard.org/SSP1/SystemStructureDescription"
+    xmlns:ssc="http://ssp-standard.org/SSP1/SystemStructureCommon"
+    xmlns:ssv="http://ssp-standard.org/SSP1/SystemStructureParameterValues" version="1.0" name="chain">
+  <ssd:System name="chain">
+    <ssd:Connectors><ssd:Connector name="gain_k" kind="parameter"><ssc:Real unit="1"/></ssd:Connector></ssd:Connectors>
+    <ssd:ParameterBindings><ssd:ParameterBinding><ssd:ParameterValues>
+      <ssv:ParameterSet version="1.0" name="s"><ssv:Parameters>
+        <ssv:Parameter name="gain_k"><ssv:Real value="2"/></ssv:Parameter>
+      </ssv:Parameters></ssv:ParameterSet>
+    </ssd:ParameterValues></ssd:ParameterBinding></ssd:ParameterBindings>
+    <ssd:Elements>
+      <ssd:Component name="integ" source="{TEST_FMU_DIR}/test_integrator.fmu"/>
+      <ssd:Component name="gain" source="{TEST_FMU_DIR}/test_gain.fmu"/>
+    </ssd:Elements>
+    <ssd:Connections>
+      <ssd:Connection startElement="integ" startConnector="y" endElement="gain" endConnector="u"/>
+      <ssd:Connection startConnector="gain_k" endElement="gain" endConnector="k"/>
+    </ssd:Connections>
+  </ssd:System>
+  <ssd:DefaultExperiment startTime="0" stopTime="1"/>
+</ssd:SystemStructureDescription>
+""")
+    ssv = tmp_path / "minus_half.ssv"
+    ssv.write_text("""<?xml version="1.0" encoding="UTF-8"?>
+<ssv:ParameterSet xmlns:ssv="http://ssp-standard.org/SSP1/SystemStructureParameterValues" version="1.0" name="p">
+  <ssv:Parameters>
+    <ssv:Parameter name="gain_k"><ssv:Real value="-0.5"/></ssv:Parameter>
+  </ssv:Parameters>
+</ssv:ParameterSet>
+""")
+
+    def final(system):
+        system.set("integ.u", 1.0)
+        return system.run(output_interval=0.5, outputs=["gain.y"])["gain.y"][-1]
+
+    system = pvatt.System(ssd)
+    assert system.parameters == ["gain_k"]
+    assert system.get("gain_k") == "2"
+    assert system.expand("gain_k") == ["gain_k"]
+    assert final(system) == pytest.approx(4.0, rel=1e-6)
+    system.set("gain_k", 1.0)
+    assert final(system) == pytest.approx(2.0, rel=1e-6)
+    system.load_parameters(ssv)
+    assert system.get("gain_k") == "-0.5"
+    assert final(system) == pytest.approx(-1.0, rel=1e-6)
+    assert final(pvatt.System(ssd, parameters=[ssv])) == pytest.approx(-1.0, rel=1e-6)
+    with pytest.raises(KeyError):
+        system.expand("gain_kk")
+    with pytest.raises(pvatt.PvattError):
+        system.load_parameters(tmp_path / "none.ssv")

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "campaign_error.hpp"
+#include "engine/system_description.hpp"
 #include "engine/value_text.hpp"
 
 namespace campaign {
@@ -38,6 +39,12 @@ std::string campaign_identity(const CampaignSetup& s) {
     id << "start_time " << format_real(s.start_time) << "\nstop_time " << format_real(s.stop_time) << "\n";
     id << "output_interval " << format_real(s.output_interval) << "\ntolerance " << format_real(s.tolerance) << "\n";
     id << "seed " << s.spec.seed << "\npaired " << (s.spec.paired ? "true" : "false") << "\n";
+    // A parameter file by its values (an edited file is another campaign).
+    for (const auto& file : s.options.parameter_files) {
+        id << "parameters " << std::filesystem::absolute(file).lexically_normal().string() << "\n";
+        for (const auto& v : cosim::read_parameter_values(file).values)
+            id << "parameter " << v.variable << "=" << v.value << " " << v.ssv_type << "\n";
+    }
     for (const auto& setting : s.options.settings) id << "set " << setting << "\n";
     for (const auto& d : s.spec.draws) id << draw_line(d) << "\n";
     for (const auto& m : s.spec.metrics)

@@ -22,13 +22,14 @@ namespace campaign {
 
 namespace {
 
-// The variable a "component.variable=value" setting names.
+// The variable a "component.variable=value" setting names (or the system parameter of "name=value").
 std::string setting_variable(const std::string& setting) {
-    const cosim::Setting s = cosim::parse_setting(setting, true);
-    return s.component + "." + s.variable;
+    const cosim::Setting s = cosim::parse_setting(setting, false);
+    return s.variable;
 }
 
 void check_variable(const cosim::System& system, const std::string& name, const std::string& what) {
+    if (system.is_system_parameter(name)) return;  // its name and value checked as the system was built
     const auto split = cosim::split_variable_name(name);
     if (!split) throw CampaignError(what + ": '" + name + "' is not component.variable");
     const std::size_t c = system.component_index(split->component);
@@ -47,6 +48,7 @@ void check_variable(const cosim::System& system, const std::string& name, const 
 // The value a setting gives must fit its variable's type (a Real where an Integer is, a text that is
 // no item of an Enumeration): refused before any run instead of failing every run.
 void check_value(const cosim::System& system, const std::string& setting, const std::string& what) {
+    if (system.is_system_parameter(setting_variable(setting))) return;  // checked as the system was built
     const cosim::Setting s = cosim::parse_setting(setting, true);
     const auto& c = system.components()[system.component_index(s.component)];
     const auto* v = c.description().find_variable(s.variable);
@@ -66,6 +68,7 @@ CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path
     s.description = cosim::read_system_description(spec.system);
     s.options.fmu_dirs = spec.fmu_dirs;
     s.options.fmu_dirs.insert(s.options.fmu_dirs.end(), fmu_dirs.begin(), fmu_dirs.end());
+    s.options.parameter_files = spec.parameter_files;
     s.options.settings = spec.settings;
     for (const auto& setting : extra_settings) {
         for (const auto& d : spec.draws)

@@ -351,14 +351,16 @@ Metric read_metric(const Context& cx, const toml::table& t, std::size_t index) {
     return m;
 }
 
-// "component.variable" = value entries of a [set] table.
+// "component.variable" = value entries of a [set] table, or name = value for a system parameter (a name
+// without a '.', checked against the system when it loads).
 std::vector<std::string> read_settings(const Context& cx, const toml::node& n, const std::string& where) {
     const auto* t = n.as_table();
     if (!t) cx.fail(n, where + " must be a table of \"component.variable\" = value");
     std::vector<std::string> out;
     for (const auto& [key, value] : *t) {
         const std::string name(key.str());
-        check_target(cx, value, name, where);
+        const bool system_parameter = !name.empty() && name.find_first_of(".=,\"\n ") == std::string::npos;
+        if (!system_parameter) check_target(cx, value, name, where);
         out.push_back(name + "=" + scalar(cx, value, where + " " + name).text);
     }
     return out;
@@ -517,7 +519,7 @@ CampaignSpec parse_spec(const std::string& text, const std::filesystem::path& fi
     }
     only_keys(cx, root, "campaign",
               {"system", "stop_time", "output_interval", "tolerance", "runs", "seed", "paired", "fmu_dirs", "output",
-               "set", "draw", "metric", "case"});
+               "parameters", "set", "draw", "metric", "case"});
     CampaignSpec spec;
     spec.file = file;
     const auto base = file.parent_path();
@@ -546,6 +548,12 @@ CampaignSpec parse_spec(const std::string& text, const std::filesystem::path& fi
         const auto* arr = n->as_array();
         if (!arr) cx.fail(*n, "'fmu_dirs' must be an array of strings");
         for (const auto& d : *arr) spec.fmu_dirs.push_back(relative_to(base, string(cx, d, "each of 'fmu_dirs'")));
+    }
+    if (const auto* n = root.get("parameters")) {
+        const auto* arr = n->as_array();
+        if (!arr) cx.fail(*n, "'parameters' must be an array of parameter files (.ssv), relative to the spec");
+        for (const auto& f : *arr)
+            spec.parameter_files.push_back(relative_to(base, string(cx, f, "each of 'parameters'")));
     }
     if (const auto* n = root.get("output"))
         spec.output = string(cx, *n, "'output'");

@@ -117,8 +117,12 @@ struct CampaignSpec {
     std::uint64_t seed = 0;
     bool paired = false;  // random draws per scene: every grid combination sees the same scenes
     std::vector<std::filesystem::path> fmu_dirs;
-    std::filesystem::path output;       // default: "<spec name>_results" in the working directory
-    std::vector<std::string> settings;  // "component.variable=value", before the draws
+    std::filesystem::path output;  // default: "<spec name>_results" in the working directory
+    // Parameter sets (.ssv) of every run, resolved against the spec's folder: after the system's own values,
+    // before [set] (later files win); names are system parameters or component.variable.
+    std::vector<std::filesystem::path> parameter_files;
+    std::vector<std::string>
+        settings;  // "component.variable=value" or "name=value" (a system parameter), before the draws
     std::vector<Draw> draws;
     std::vector<Metric> metrics;
     std::vector<Case> cases;  // empty: every run alike

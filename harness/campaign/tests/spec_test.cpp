@@ -1,6 +1,8 @@
 // The spec reader: what it accepts, and that every mistake is an error naming its place.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "campaign_error.hpp"
 #include "campaign_spec.hpp"
 
@@ -192,4 +194,29 @@ b = "est.q_filt"
 covariance = "est.attitude_cov_sqrt"
 )";
     EXPECT_NE(error_of(head + angle).find("'covariance' belongs to kind normalized_error"), std::string::npos);
+}
+
+// Parameter sets (.ssv) for every run, relative to the spec, and system parameters (no '.') in [set].
+TEST(Spec, ParameterFilesAndSystemParametersInSet) {
+    const auto spec = parse_spec(head + R"(
+parameters = ["orbits/iss_like.ssv", "/abs/date.ssv"]
+[set]
+epoch_month = 9
+"tle_elements[2]" = 15.5
+"est.sample_period" = 1
+)",
+                                 "/specs/test.toml");
+    ASSERT_EQ(spec.parameter_files.size(), 2u);
+    EXPECT_EQ(spec.parameter_files[0], "/specs/orbits/iss_like.ssv");
+    EXPECT_EQ(spec.parameter_files[1], "/abs/date.ssv");
+    ASSERT_EQ(spec.settings.size(), 3u);
+    const auto has = [&](const std::string& s) {
+        return std::find(spec.settings.begin(), spec.settings.end(), s) != spec.settings.end();
+    };
+    EXPECT_TRUE(has("epoch_month=9"));
+    EXPECT_TRUE(has("tle_elements[2]=15.5"));
+    EXPECT_TRUE(has("est.sample_period=1"));
+    EXPECT_NE(error_of(head + "parameters = \"one.ssv\"\n").find("'parameters' must be an array"), std::string::npos);
+    EXPECT_NE(error_of(head + "parameters = [1]\n").find("each of 'parameters'"), std::string::npos);
+    EXPECT_NE(error_of(head + "[set]\n\"a b\" = 1\n").find("is not component.variable"), std::string::npos);
 }

@@ -8,6 +8,7 @@
 #include "capi_error.hpp"
 #include "capi_handles.hpp"
 #include "engine/callback_instance.hpp"
+#include "engine/cosim_error.hpp"
 #include "engine/interrupt.hpp"
 #include "engine/run_defaults.hpp"
 #include "engine/setting.hpp"
@@ -128,6 +129,37 @@ std::unique_ptr<cosim::System> build_system(const pvatt_system& handle, bool ref
 
 }  // namespace pvatt_capi
 
+namespace {
+
+// A value checked against what it names: a system parameter (every component parameter it feeds), else
+// "comp.var"; `ssv_type` as in a parameter file (empty: any). InvalidArgument naming `where` when refused.
+void check_named_value(const pvatt_system& system, const std::string& n, const std::string& text,
+                       const std::string& ssv_type, const std::string& where) {
+    try {
+        if (system.loaded->is_system_parameter(n))
+            return system.loaded->check_parameter_value(n, text, ssv_type, where);
+    } catch (const std::exception& e) {
+        throw InvalidArgument(e.what());
+    }
+    const auto ref = find_variable(*system.loaded, n);
+    const auto& md = system.loaded->components()[ref.component].description();
+    try {
+        cosim::typed_value(md, *ref.variable, {"", ref.variable->name, text, ssv_type}, where);
+    } catch (const std::exception& e) {
+        throw InvalidArgument(e.what());
+    }
+}
+
+void keep_setting(pvatt_system& system, const std::string& n, const std::string& text) {
+    auto it = std::find_if(system.settings.begin(), system.settings.end(), [&](const auto& p) { return p.first == n; });
+    if (it != system.settings.end())
+        it->second = text;
+    else
+        system.settings.emplace_back(n, text);
+}
+
+}  // namespace
+
 extern "C" {
 
 int pvatt_api_version(void) {
@@ -229,10 +261,46 @@ pvatt_status pvatt_system_variable(const pvatt_system* system, size_t component,
     });
 }
 
+size_t pvatt_system_parameter_count(const pvatt_system* system) {
+    return system ? system->description.parameters.size() : 0;
+}
+
+const char* pvatt_system_parameter_name(const pvatt_system* system, size_t parameter) {
+    if (!system || parameter >= system->description.parameters.size()) return nullptr;
+    return system->description.parameters[parameter].name.c_str();
+}
+
+pvatt_status pvatt_system_load_parameters(pvatt_system* system, const char* path) {
+    return guarded([&] {
+        required(system, "system");
+        const std::filesystem::path file(required(path, "path"));
+        cosim::ParameterValues read;
+        try {
+            read = cosim::read_parameter_values(file);
+        } catch (const cosim::CosimError& e) {
+            throw InvalidArgument(e.what());
+        }
+        for (std::size_t k = 0; k < read.values.size(); ++k) {
+            const auto& v = read.values[k];
+            try {
+                check_named_value(*system, v.variable, v.value, v.ssv_type, read.places[k] + ": " + v.variable);
+            } catch (const InvalidArgument& e) {
+                const std::string what = e.what();
+                throw InvalidArgument(what.starts_with(read.places[k]) ? what : read.places[k] + ": " + what);
+            }
+        }
+        for (const auto& v : read.values) keep_setting(*system, v.variable, v.value);
+    });
+}
+
 pvatt_status pvatt_system_set(pvatt_system* system, const char* name, const char* value) {
     return guarded([&] {
         open_system(system);
         const std::string n(required(name, "name")), text(required(value, "value"));
+        if (system->loaded->is_system_parameter(n)) {
+            check_named_value(*system, n, text, "", n);
+            return keep_setting(*system, n, text);
+        }
         const auto ref = find_variable(*system->loaded, n);
         const auto& md = system->loaded->components()[ref.component].description();
         cosim::Setting s{system->loaded->components()[ref.component].name, ref.variable->name, text, ""};
@@ -255,6 +323,19 @@ pvatt_status pvatt_system_get(const pvatt_system* system, const char* name, char
     const pvatt_status found = guarded([&] {
         open_system(system);
         const std::string n(required(name, "name"));
+        if (system->loaded->is_system_parameter(n)) {
+            // The value set, else the one this system's loading took (its bindings).
+            const auto it = std::find_if(system->settings.begin(), system->settings.end(),
+                                         [&](const auto& p) { return p.first == n; });
+            if (it != system->settings.end()) {
+                text = it->second;
+                return;
+            }
+            const auto& params = system->description.parameters;
+            for (std::size_t i = 0; i < params.size(); ++i)
+                if (params[i].name == n) text = system->loaded->system_parameter_values()[i].value;
+            return;
+        }
         const auto ref = find_variable(*system->loaded, n);
         const auto it =
             std::find_if(system->settings.begin(), system->settings.end(), [&](const auto& p) { return p.first == n; });

@@ -481,3 +481,96 @@ TEST_F(Chain, ARefusedSetLeavesAPausedRunAbleToAdvance) {
 }
 
 }  // namespace
+
+namespace {
+
+// The chain with the gain's k a system parameter (gain_k = 2): x = 1 + gain_k t / tau.
+std::filesystem::path write_scenario(const std::string& dir_tag) {
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("pvatt_capi_scenario_" + std::to_string(::getpid()) + dir_tag);
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "chain.ssd") << R"(<?xml version="1.0" encoding="UTF-8"?>
+<ssd:SystemStructureDescription xmlns:ssd="http://ssp-standard.org/SSP1/SystemStructureDescription"
+    xmlns:ssc="http://ssp-standard.org/SSP1/SystemStructureCommon"
+    xmlns:ssv="http://ssp-standard.org/SSP1/SystemStructureParameterValues" version="1.0" name="chain">
+  <ssd:System name="chain">
+    <ssd:Connectors><ssd:Connector name="gain_k" kind="parameter"><ssc:Real unit="1"/></ssd:Connector></ssd:Connectors>
+    <ssd:ParameterBindings><ssd:ParameterBinding><ssd:ParameterValues>
+      <ssv:ParameterSet version="1.0" name="s"><ssv:Parameters>
+        <ssv:Parameter name="gain_k"><ssv:Real value="2"/></ssv:Parameter>
+      </ssv:Parameters></ssv:ParameterSet>
+    </ssd:ParameterValues></ssd:ParameterBinding></ssd:ParameterBindings>
+    <ssd:Elements>
+      <ssd:Component name="gain" source="test_gain.fmu"/>
+      <ssd:Component name="integ" source="test_integrator.fmu"/>
+    </ssd:Elements>
+    <ssd:Connections>
+      <ssd:Connection startElement="gain" startConnector="y" endElement="integ" endConnector="u"/>
+      <ssd:Connection startConnector="gain_k" endElement="gain" endConnector="k"/>
+    </ssd:Connections>
+  </ssd:System>
+  <ssd:DefaultExperiment startTime="0" stopTime="1"/>
+</ssd:SystemStructureDescription>
+)";
+    std::ofstream(dir / "five.ssv") << R"(<?xml version="1.0" encoding="UTF-8"?>
+<ssv:ParameterSet xmlns:ssv="http://ssp-standard.org/SSP1/SystemStructureParameterValues" version="1.0" name="p">
+  <ssv:Parameters>
+    <ssv:Parameter name="gain_k"><ssv:Real value="5"/></ssv:Parameter>
+    <ssv:Parameter name="integ.tau"><ssv:Real value="2"/></ssv:Parameter>
+  </ssv:Parameters>
+</ssv:ParameterSet>
+)";
+    std::ofstream(dir / "bad.ssv") << R"(<?xml version="1.0" encoding="UTF-8"?>
+<ssv:ParameterSet xmlns:ssv="http://ssp-standard.org/SSP1/SystemStructureParameterValues" version="1.0" name="p">
+  <ssv:Parameters>
+    <ssv:Parameter name="integ.tau"><ssv:Real value="3"/></ssv:Parameter>
+    <ssv:Parameter name="gain_kk"><ssv:Real value="5"/></ssv:Parameter>
+  </ssv:Parameters>
+</ssv:ParameterSet>
+)";
+    return dir;
+}
+
+double final_x(pvatt_system* system) {
+    pvatt_run_options options;
+    pvatt_run_options_init(&options);
+    options.output_interval = 0.5;
+    const char* columns[] = {"integ.y"};
+    pvatt_result* r = nullptr;
+    EXPECT_EQ(pvatt_run(system, &options, columns, 1, &r), PVATT_OK) << pvatt_last_error();
+    const double x = pvatt_result_data(r)[(pvatt_result_rows(r) - 1) * 2 + 1];
+    pvatt_result_free(r);
+    return x;
+}
+
+}  // namespace
+
+TEST(CapiSystemParameters, SetByNameLoadedFromAParameterFileAndListed) {
+    const auto dir = write_scenario("a");
+    const char* dirs[] = {fmu_dir};
+    pvatt_system* system = nullptr;
+    ASSERT_EQ(pvatt_system_open((dir / "chain.ssd").c_str(), dirs, 1, &system), PVATT_OK) << pvatt_last_error();
+    ASSERT_EQ(pvatt_system_parameter_count(system), 1u);
+    EXPECT_STREQ(pvatt_system_parameter_name(system, 0), "gain_k");
+    EXPECT_EQ(pvatt_system_parameter_name(system, 1), nullptr);
+    char text[16];
+    ASSERT_EQ(pvatt_system_get(system, "gain_k", text, sizeof text, nullptr), PVATT_OK) << pvatt_last_error();
+    EXPECT_STREQ(text, "2");
+    EXPECT_NEAR(final_x(system), 1.0 + 2.0, 1e-6);  // tau = 1
+    ASSERT_EQ(pvatt_system_set(system, "gain_k", "3"), PVATT_OK) << pvatt_last_error();
+    EXPECT_NEAR(final_x(system), 1.0 + 3.0, 1e-6);
+    EXPECT_EQ(pvatt_system_set(system, "gain_k", "fast"), PVATT_INVALID_ARGUMENT);
+    ASSERT_EQ(pvatt_system_load_parameters(system, (dir / "five.ssv").c_str()), PVATT_OK) << pvatt_last_error();
+    ASSERT_EQ(pvatt_system_get(system, "gain_k", text, sizeof text, nullptr), PVATT_OK);
+    EXPECT_STREQ(text, "5");
+    EXPECT_NEAR(final_x(system), 1.0 + 5.0 / 2.0, 1e-6);
+    // A bad file is refused with its file, line and name, and changes nothing (tau stays 2).
+    EXPECT_EQ(pvatt_system_load_parameters(system, (dir / "bad.ssv").c_str()), PVATT_INVALID_ARGUMENT);
+    const std::string error = pvatt_last_error();
+    EXPECT_NE(error.find((dir / "bad.ssv").string() + ":5: "), std::string::npos) << error;
+    EXPECT_NE(error.find("gain_kk"), std::string::npos) << error;
+    EXPECT_NEAR(final_x(system), 1.0 + 5.0 / 2.0, 1e-6);
+    EXPECT_EQ(pvatt_system_load_parameters(system, (dir / "none.ssv").c_str()), PVATT_INVALID_ARGUMENT);
+    pvatt_system_close(system);
+    std::filesystem::remove_all(dir);
+}

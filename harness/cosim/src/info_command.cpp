@@ -26,6 +26,22 @@ void print_system_info(const std::filesystem::path& path, std::ostream& out) {
         << ", output interval "
         << (d.output_interval ? format_real(*d.output_interval) + " s" : std::string("a thousandth of the run"))
         << (d.max_step ? ", integrator steps of at most " + format_real(*d.max_step) + " s" : std::string()) << "\n";
+    if (!d.parameters.empty()) {
+        // Each system parameter, its value from the system's own bindings (--parameters and --set come later,
+        // in a run) and the component parameters it feeds.
+        out << "system parameters (--set NAME=VALUE, --parameters FILE.ssv):\n";
+        for (const auto& p : d.parameters) {
+            std::string value = "(no value)";
+            const auto& own = d.system_bindings.values;
+            for (const auto& b : own)
+                if (b.variable == p.name) value = b.value;
+            out << "  " << p.name << " = " << value << (p.unit.empty() || p.unit == "1" ? "" : " " + p.unit) << "  ("
+                << p.type << ") ->";
+            for (const auto& f : d.feeds)
+                if (f.parameter == p.name) out << " " << f.component << "." << f.variable;
+            out << "\n";
+        }
+    }
     out << "components:\n";
     for (const auto& c : d.components) {
         std::string how = "Model Exchange (the master's CVODE)";
@@ -39,6 +55,10 @@ void print_system_info(const std::filesystem::path& path, std::ostream& out) {
         for (const auto& p : c.parameters)
             out << "      " << p.variable << " = " << p.value << "  (" << p.ssv_type << ")\n";
     }
+    // The system's own bindings of component variables (SSP's hierarchical names): they win over the above.
+    for (const auto& b : d.system_bindings.values)
+        if (!find_system_parameter(d, b.variable))
+            out << "  (system binding) " << b.variable << " = " << b.value << "  (" << b.ssv_type << ")\n";
     out << "connections:\n";
     for (const auto& c : d.connections)
         out << "  " << c.start_element << "." << c.start_connector << " -> " << c.end_element << "." << c.end_connector

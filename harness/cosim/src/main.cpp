@@ -73,7 +73,13 @@ int main(int argc, char** argv) {
         ->check(CLI::PositiveNumber);
     run->add_option("--tolerance", run_options.tolerance, "Relative tolerance (default: the FMUs' smallest)");
     run->add_option("--set", run_options.system.settings,
-                    "component.variable=value before initialization (repeatable)");
+                    "component.variable=value, or NAME=value for a system parameter (cosim info lists them), before "
+                    "initialization (repeatable; after every --parameters file)");
+    std::vector<std::string> run_parameters;
+    run->add_option("--parameters", run_parameters,
+                    "An SSP parameter set (.ssv): system parameters and component.variable values (repeatable, "
+                    "later files win)")
+        ->check(CLI::ExistingFile);
     run->add_option("--cs", run_options.system.co_simulation, "Run this component through its Co-Simulation interface");
     run->add_option("--fmu-dir", fmu_dirs, "Where to look for FMUs not found beside the .ssd")
         ->default_val(std::vector<std::string>{PVATT_DEFAULT_FMU_DIR});
@@ -126,7 +132,8 @@ int main(int argc, char** argv) {
     campaign->add_option("--output", campaign_output, "Folder of the results table, summary and figures");
     campaign->add_option("--fmu-dir", campaign_fmu_dirs, "Where to look for FMUs not found beside the .ssd")
         ->default_val(std::vector<std::string>{PVATT_DEFAULT_FMU_DIR});
-    campaign->add_option("--set", campaign_options.settings, "component.variable=value for every run (repeatable)");
+    campaign->add_option("--set", campaign_options.settings,
+                         "component.variable=value, or NAME=value for a system parameter, for every run (repeatable)");
     campaign->add_option("--run", campaign_options.replay, "Replay this run alone, writing its full CSV");
     campaign->add_flag("--resume", campaign_options.resume,
                        "Continue the campaign of the results table in the output folder");
@@ -157,6 +164,7 @@ int main(int argc, char** argv) {
             run_options.ssd = ssd_path;
             if (!run_csv.empty()) run_options.csv = run_csv;
             for (const auto& d : fmu_dirs) run_options.system.fmu_dirs.emplace_back(d);
+            for (const auto& f : run_parameters) run_options.system.parameter_files.emplace_back(f);
             cosim::run_system(run_options, std::cout);
         }
         if (*plot) {

@@ -70,8 +70,11 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
     throw_if_interrupted();
     const SystemDescription description = read_system_description(options.ssd);
     check_co_simulation_names(description, options.system.co_simulation);
-    if (options.csv)
-        refuse_overwriting_inputs("--output", *options.csv, system_inputs(description, options.system.fmu_dirs));
+    if (options.csv) {
+        auto inputs = system_inputs(description, options.system.fmu_dirs);
+        inputs.insert(inputs.end(), options.system.parameter_files.begin(), options.system.parameter_files.end());
+        refuse_overwriting_inputs("--output", *options.csv, inputs);
+    }
     SystemOptions system_options = options.system;
     if (options.tolerance) system_options.tolerance = options.tolerance;
     if (options.communication_step) system_options.communication_step = options.communication_step;
@@ -89,6 +92,9 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
     analysis::check_couplings(system, options.allow_mismatch, std::cerr);
     // --columns names variables whether or not a CSV is written: a typo is refused, not ignored.
     if (!options.columns.empty() && !options.csv) (void)output_columns(system, options.columns);
+    // A component parameter set directly wins over the system parameter that feeds it, for that component only.
+    for (const auto& direct : system.fed_parameters_set_directly())
+        std::cerr << "cosim: " << direct << " is set directly: the system parameter no longer feeds it\n";
 
     ExecutionOptions ex;
     ex.start_time = description.start_time.value_or(0.0);
@@ -161,6 +167,7 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
                                  description.measures->report, report);
     }
     // What this run changed from the .ssd, for a results page that shows what was run.
+    for (const auto& f : options.system.parameter_files) report << "--parameters " << f.string() << "\n";
     for (const auto& s : options.system.settings) report << "--set " << s << "\n";
     return stats;
 }

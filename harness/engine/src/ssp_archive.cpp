@@ -12,6 +12,7 @@
 
 #include "engine/cosim_error.hpp"
 #include "engine/output_file.hpp"
+#include "engine/setting.hpp"
 #include "engine/value_text.hpp"
 #include "fmi_loader/fmu_archive.hpp"
 #include "fmi_loader/model_description.hpp"
@@ -124,6 +125,7 @@ xmlNode* element_child(xmlNode* n, const char* local) {
 }
 
 constexpr const char* ssc_namespace = "http://ssp-standard.org/SSP1/SystemStructureCommon";
+constexpr const char* ssv_namespace = "http://ssp-standard.org/SSP1/SystemStructureParameterValues";
 // OMSimulator matches its annotation by these literal names (it reads the XML without namespaces).
 constexpr const char* oms_namespace =
     "https://raw.githubusercontent.com/OpenModelica/OMSimulator/master/schema/oms.xsd";
@@ -147,6 +149,116 @@ void bind_enumerations_by_value(xmlNode* component, const fmi_loader::ModelDescr
                     xmlSetProp(value, x("value"), x(std::to_string(item).c_str()));
                 }
             }
+}
+
+// The system's parameters resolved into the components' bindings, for importers that do not connect a
+// system's parameter connectors (OMSimulator 2.1.3 takes a system connector only under a plain identifier,
+// [a-zA-Z][a-zA-Z0-9_]*: "inertia[1] -> env.inertia[1]" is refused as a causality mismatch). Each component
+// parameter a system parameter feeds gets the system's value as its own binding, and each system binding
+// of a component.variable (SSP's hierarchical name) becomes that component's, after its own (later wins,
+// as cosim applies them); the system's connectors, bindings and feeding connections are removed. Run by
+// cosim, the archive gives the same values to the same variables.
+// The <ssv:Parameters> of the component's inline parameter set, made when it has none. One inline set per
+// component: OMSimulator 2.1.3 keeps only the last of several inline bindings of a component.
+xmlNode* own_parameters(xmlNode* component, xmlNs* ssd, xmlNs* ssv) {
+    xmlNode* bindings = element_child(component, "ParameterBindings");
+    for (xmlNode* binding : element_children(bindings, "ParameterBinding"))
+        if (xmlNode* set = element_child(element_child(binding, "ParameterValues"), "ParameterSet")) {
+            if (xmlNode* parameters = element_child(set, "Parameters")) return parameters;
+            return xmlNewChild(set, ssv, x("Parameters"), nullptr);
+        }
+    if (!bindings) {
+        bindings = xmlNewNode(ssd, x("ParameterBindings"));
+        // After Connectors (and ElementGeometry), before Annotations (TComponent's order).
+        xmlNode* after = element_child(component, "ElementGeometry");
+        if (!after) after = element_child(component, "Connectors");
+        if (after)
+            xmlAddNextSibling(after, bindings);
+        else if (component->children)
+            xmlAddPrevSibling(component->children, bindings);
+        else
+            xmlAddChild(component, bindings);
+    }
+    xmlNode* binding = xmlNewChild(bindings, ssd, x("ParameterBinding"), nullptr);
+    xmlNode* values = xmlNewChild(binding, ssd, x("ParameterValues"), nullptr);
+    xmlNode* set = xmlNewChild(values, ssv, x("ParameterSet"), nullptr);
+    xmlSetProp(set, x("version"), x("1.0"));
+    xmlSetProp(set, x("name"), x("system_parameters"));
+    return xmlNewChild(set, ssv, x("Parameters"), nullptr);
+}
+
+void flatten_system_parameters(xmlDoc* doc, xmlNode* system, const SystemDescription& description) {
+    if (description.parameters.empty() && description.system_bindings.values.empty()) return;
+    xmlNode* root = xmlDocGetRootElement(doc);
+    xmlNs* ssd = system->ns;
+    xmlNs* ssv = xmlSearchNsByHref(doc, root, x(ssv_namespace));
+    if (!ssv) ssv = xmlNewNs(root, x(ssv_namespace), x("ssv"));
+    std::map<std::string, xmlNode*> parameters_of;  // component -> the <ssv:Parameters> added to it
+    auto add = [&](const std::string& component, const std::string& variable, const Setting& value,
+                   const std::string& unit) {
+        xmlNode* target = nullptr;
+        for (xmlNode* c : element_children(element_child(system, "Elements"), "Component"))
+            if (property(c, "name").value_or("") == component) target = c;
+        if (!target) throw CosimError(description.file.string() + ": no component named '" + component + "'");
+        xmlNode*& parameters = parameters_of[component];
+        if (!parameters) parameters = own_parameters(target, ssd, ssv);
+        xmlNode* p = xmlNewChild(parameters, ssv, x("Parameter"), nullptr);
+        xmlSetProp(p, x("name"), x(variable.c_str()));
+        const std::string type = value.ssv_type.empty() ? "String" : value.ssv_type;
+        xmlNode* v = xmlNewChild(p, ssv, x(type.c_str()), nullptr);
+        if (!unit.empty() && type == "Real") xmlSetProp(v, x("unit"), x(unit.c_str()));
+        xmlSetProp(v, x("value"), x(value.value.c_str()));
+    };
+    // Each system parameter's value: its last system binding.
+    const auto& bound = description.system_bindings.values;
+    for (const auto& f : description.feeds) {
+        const Setting* value = nullptr;
+        for (const auto& b : bound)
+            if (b.variable == f.parameter) value = &b;
+        const SystemParameter* p = find_system_parameter(description, f.parameter);
+        if (!value)
+            throw CosimError(p->place + ": system parameter '" + f.parameter +
+                             "' has no value in the system's bindings; an archive carries it as one");
+        add(f.component, f.variable, *value, p->unit);
+    }
+    for (const auto& b : bound) {
+        if (find_system_parameter(description, b.variable)) continue;
+        const auto split = split_variable_name(b.variable);
+        if (!split) throw CosimError(description.file.string() + ": system binding '" + b.variable + "' names nothing");
+        add(split->component, split->variable, b, "");
+    }
+    for (const char* gone : {"Connectors", "ParameterBindings"})
+        if (xmlNode* n = element_child(system, gone)) {
+            xmlUnlinkNode(n);
+            xmlFreeNode(n);
+        }
+    for (xmlNode* c : element_children(element_child(system, "Connections"), "Connection"))
+        if (!property(c, "startElement") || !property(c, "endElement")) {
+            xmlUnlinkNode(c);
+            xmlFreeNode(c);
+        }
+}
+
+// A String binding that repeats its variable's start value changes nothing, for any importer: it is left
+// out, because OMSimulator 2.1.3 reads no ssv:String binding and counts each one as an error. A String
+// binding that changes a value stays (cosim needs it; pack_system names it on its report).
+std::vector<std::string> drop_start_value_strings(xmlNode* component, const fmi_loader::ModelDescription& md) {
+    std::vector<std::string> kept;
+    for (xmlNode* binding : element_children(element_child(component, "ParameterBindings"), "ParameterBinding"))
+        for (xmlNode* set : element_children(element_child(binding, "ParameterValues"), "ParameterSet"))
+            for (xmlNode* p : element_children(element_child(set, "Parameters"), "Parameter")) {
+                const auto name = property(p, "name");
+                const fmi_loader::ScalarVariable* v = name ? md.find_variable(*name) : nullptr;
+                xmlNode* value = element_child(p, "String");
+                if (!v || v->type != fmi_loader::VariableType::string || !value) continue;
+                if (v->start && property(value, "value").value_or("") == *v->start) {
+                    xmlUnlinkNode(p);
+                    xmlFreeNode(p);
+                } else {
+                    kept.push_back(*name);
+                }
+            }
+    return kept;
 }
 
 // The components' annotations moved into the system's <Annotations>, each element tagged with its
@@ -199,16 +311,21 @@ std::string parameter_entry(const SystemDescription& description, const std::str
 // Rewrites the parsed .ssd of `description` for the archive (see pack_system).
 void make_portable(xmlDoc* doc, const SystemDescription& description,
                    const std::map<std::string, std::string>& source_of,
-                   const std::map<std::string, fmi_loader::ModelDescription>& model_of, double oms_step) {
+                   const std::map<std::string, fmi_loader::ModelDescription>& model_of, double oms_step,
+                   std::vector<std::string>& strings_kept) {
     xmlNode* root = xmlDocGetRootElement(doc);
     xmlNode* system = element_child(root, "System");
     if (!system) throw CosimError(description.file.string() + ": no <ssd:System>");
+    flatten_system_parameters(doc, system, description);
     for (xmlNode* component : element_children(element_child(system, "Elements"), "Component")) {
         const std::string name = property(component, "name").value_or("");
         if (const auto it = source_of.find(name); it != source_of.end())
             xmlSetProp(component, x("source"), x(it->second.c_str()));
-        if (const auto it = model_of.find(name); it != model_of.end())
+        if (const auto it = model_of.find(name); it != model_of.end()) {
             bind_enumerations_by_value(component, it->second, description.file.string() + ": component " + name);
+            for (const auto& kept : drop_start_value_strings(component, it->second))
+                strings_kept.push_back(name + "." + kept);
+        }
         for (xmlNode* binding : element_children(element_child(component, "ParameterBindings"), "ParameterBinding"))
             if (const auto source = property(binding, "source"))
                 xmlSetProp(binding, x("source"), x(parameter_entry(description, *source).c_str()));
@@ -280,7 +397,8 @@ void pack_system(const std::filesystem::path& ssd, const std::filesystem::path& 
     std::unique_ptr<xmlDoc, DocDeleter> doc(
         xmlReadFile(ssd.c_str(), nullptr, XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING));
     if (!doc) throw CosimError(ssd.string() + ": cannot be parsed");
-    make_portable(doc.get(), description, source_of, model_of, *step);
+    std::vector<std::string> strings_kept;
+    make_portable(doc.get(), description, source_of, model_of, *step, strings_kept);
     xmlChar* text = nullptr;
     int size = 0;
     xmlDocDumpFormatMemoryEnc(doc.get(), &text, &size, "UTF-8", 0);
@@ -325,6 +443,8 @@ void pack_system(const std::filesystem::path& ssd, const std::filesystem::path& 
     pending.commit();
     out << ssp.string() << ": SystemStructure.ssd and " << file_of_entry.size() << " files (OMSimulator step "
         << format_real(*step) << " s)\n";
+    for (const auto& name : strings_kept)
+        out << "  note: " << name << " is bound as ssv:String, which OMSimulator 2.1.3 does not read\n";
 }
 
 }  // namespace cosim

@@ -86,16 +86,157 @@ System::System(const SystemDescription& description, const SystemOptions& option
     mark_continuous_consumers();
     changed_.assign(components_.size(), 0);
     discrete_changed_.assign(components_.size(), 0);
-    for (const auto& text : options.settings) {
-        Setting setting = parse_setting(text, true);
-        settings_.emplace_back(component_index(setting.component), std::move(setting));
-    }
+    collect_values(options);
+    connect_parameters();
     check_settings();
     check_open_inputs();
 }
 
-// Every --set names a variable of its component and holds a value of its type, checked here, before any
-// run-time check: a misspelt name is the first thing reported, not a consequence of it.
+// One value given by name: a system parameter's, or a component variable's (component.variable). Later
+// values of one name win (they are applied in order).
+void System::take_value(const Setting& named, const std::string& place, bool command_line) {
+    const std::string& name = named.variable;
+    for (std::size_t i = 0; i < description_.parameters.size(); ++i)
+        if (description_.parameters[i].name == name) {
+            parameter_values_[i] = {named.value, named.ssv_type, place};
+            return;
+        }
+    auto split = split_variable_name(name);
+    if (!split) {
+        std::vector<std::string> names;
+        for (const auto& p : description_.parameters) names.push_back(p.name);
+        const std::string text = (command_line ? std::string() : place + ": ") + "'" + name +
+                                 "' is no system parameter of " + description_.file.filename().string() +
+                                 name_hint(name, names) + (names.empty() ? " (it has none)" : "") +
+                                 "; a component's variable is named component.variable";
+        if (command_line) throw SettingError(text);
+        throw CosimError(text);
+    }
+    settings_.emplace_back(component_index(split->component),
+                           Setting{split->component, split->variable, named.value, named.ssv_type});
+    setting_places_.push_back(command_line ? "" : place);
+}
+
+// The values by name, lowest precedence first: the system's own bindings, the parameter files in order, --set.
+void System::collect_values(const SystemOptions& options) {
+    parameter_values_.assign(description_.parameters.size(), {});
+    const auto& own = description_.system_bindings;
+    for (std::size_t k = 0; k < own.values.size(); ++k)
+        take_value(own.values[k], k < own.places.size() ? own.places[k] : description_.file.string(), false);
+    for (const auto& file : options.parameter_files) {
+        const ParameterValues read = read_parameter_values(file);
+        for (std::size_t k = 0; k < read.values.size(); ++k) take_value(read.values[k], read.places[k], false);
+    }
+    for (const auto& text : options.settings) {
+        const auto eq = text.find('=');
+        const std::string name = text.substr(0, eq == std::string::npos ? 0 : eq);
+        if (eq != std::string::npos && eq > 0 && name.find('.') == std::string::npos) {
+            take_value(Setting{"", name, text.substr(eq + 1), ""}, "--set", true);
+            continue;
+        }
+        Setting setting = parse_setting(text, true);
+        settings_.emplace_back(component_index(setting.component), std::move(setting));
+        setting_places_.push_back("");
+    }
+}
+
+namespace {
+
+// An SSP connector type against an FMU variable's type (an Enumeration parameter feeds only Enumerations).
+bool parameter_type_fits(const std::string& type, VariableType t) {
+    if (type == "Real") return t == VariableType::real;
+    // An Integer may carry an Enumeration's item number (cosim pack writes a system Enumeration so).
+    if (type == "Integer") return t == VariableType::integer || t == VariableType::enumeration;
+    if (type == "Boolean") return t == VariableType::boolean;
+    if (type == "String") return t == VariableType::string;
+    if (type == "Enumeration") return t == VariableType::enumeration;
+    return false;
+}
+
+}  // namespace
+
+// Each system parameter's connections (SSP 1.0: system to component connectors of one kind, parameter):
+// the end a parameter of its component, of the parameter's type and unit, bound nowhere else in the .ssd,
+// and the value given fit for it. The value fed is applied after the component's own bindings.
+void System::connect_parameters() {
+    for (const auto& f : description_.feeds) {
+        const std::size_t c = component_index(f.component);
+        const auto& md = components_[c].description();
+        const auto& declared = description_.components[c].connectors;
+        if (!declared.empty() && std::none_of(declared.begin(), declared.end(),
+                                              [&](const ConnectorDescription& d) { return d.name == f.variable; }))
+            throw CosimError(f.place + ": component '" + f.component + "' declares no connector '" + f.variable +
+                             "' (add <ssd:Connector name=\"" + f.variable + "\" kind=\"parameter\">)");
+        const auto elements = connector_elements(md, f.variable);
+        if (elements.empty()) throw CosimError(f.place + ": " + unknown_variable_message(md, f.component, f.variable));
+        const auto index =
+            static_cast<std::size_t>(find_system_parameter(description_, f.parameter) - description_.parameters.data());
+        const SystemParameter& p = description_.parameters[index];
+        const std::string label = f.place + ": system parameter '" + p.name + "' -> " + f.component + "." + f.variable;
+        if (elements.size() != 1)
+            throw CosimError(label + ": an array of " + std::to_string(elements.size()) +
+                             " elements; a system parameter feeds one scalar (connect each element)");
+        const auto* v = elements.front();
+        if (v->causality != Causality::parameter)
+            throw CosimError(label + ": the end must be a parameter, it is " +
+                             std::string(fmi_loader::to_string(v->causality)));
+        if (!parameter_type_fits(p.type, v->type))
+            throw CosimError(label + ": type mismatch (" + p.type + " to " +
+                             std::string(fmi_loader::to_string(v->type)) + ")");
+        if (!p.unit.empty() && !v->unit.empty() && p.unit != v->unit)
+            throw CosimError(label + ": unit mismatch (" + p.unit + " to " + v->unit + ")");
+        const auto& own = description_.components[c];
+        for (std::size_t k = 0; k < own.parameters.size(); ++k)
+            if (own.parameters[k].variable == v->name)
+                throw CosimError(label + ": " + f.component + "." + v->name + " is also bound in its component's " +
+                                 "ParameterBindings" +
+                                 (k < own.parameter_places.size() ? " at " + own.parameter_places[k] : "") +
+                                 ": say it once (remove that binding)");
+        const SystemParameterValue& value = parameter_values_[index];
+        if (value.place.empty())
+            throw CosimError(p.place + ": system parameter '" + p.name +
+                             "' has no value: bind it in the system's <ssd:ParameterBindings>, a parameter file "
+                             "(--parameters) or --set " +
+                             p.name + "=VALUE");
+        Setting fed{f.component, v->name, value.value, value.ssv_type};
+        try {
+            (void)typed_value(md, *v, fed, "system parameter " + p.name + " for " + f.component + "." + v->name);
+        } catch (const CosimError& e) {
+            if (value.place == "--set") throw SettingError(e.what());
+            throw CosimError(value.place + ": " + e.what());
+        }
+        fed_.emplace_back(c, std::move(fed));
+    }
+}
+
+void System::check_parameter_value(const std::string& name, const std::string& value, const std::string& ssv_type,
+                                   const std::string& where) const {
+    for (std::size_t k = 0; k < fed_.size(); ++k) {
+        if (description_.feeds[k].parameter != name) continue;
+        const auto& [c, fed] = fed_[k];
+        const auto& md = components_[c].description();
+        (void)typed_value(md, *md.find_variable(fed.variable), Setting{fed.component, fed.variable, value, ssv_type},
+                          where);
+    }
+}
+
+std::vector<std::string> System::fed_parameters_set_directly() const {
+    std::vector<std::string> out;
+    for (std::size_t k = 0; k < fed_.size(); ++k) {
+        const auto& [c, fed] = fed_[k];
+        const bool direct = std::any_of(settings_.begin(), settings_.end(), [&](const auto& s) {
+            return s.first == c && s.second.variable == fed.variable;
+        });
+        if (direct)
+            out.push_back(components_[c].name + "." + fed.variable + " (system parameter " +
+                          description_.feeds[k].parameter + ")");
+    }
+    return out;
+}
+
+// Every setting names a variable of its component and holds a value of its type, checked here, before any
+// run-time check: a misspelt name is the first thing reported, not a consequence of it. --set is reported as
+// a SettingError, a parameter file's or the system's own binding with its file and line.
 void System::check_settings() const {
     // The .ssd's (and its .ssv files') bindings, named by file and line.
     for (std::size_t i = 0; i < components_.size(); ++i) {
@@ -114,15 +255,21 @@ void System::check_settings() const {
             }
         }
     }
-    for (const auto& [index, setting] : settings_) {
+    for (std::size_t k = 0; k < settings_.size(); ++k) {
+        const auto& [index, setting] = settings_[k];
+        const std::string& place = setting_places_[k];
         const auto& md = components_[index].description();
         const std::string where = components_[index].name + "." + setting.variable;
         const auto* v = md.find_variable(setting.variable);
-        if (!v) throw SettingError(unknown_variable_message(md, components_[index].name, setting.variable));
+        if (!v && place.empty())
+            throw SettingError(unknown_variable_message(md, components_[index].name, setting.variable));
+        if (!v)
+            throw CosimError(place + ": " + unknown_variable_message(md, components_[index].name, setting.variable));
         try {
             (void)typed_value(md, *v, setting, where);
         } catch (const CosimError& e) {
-            throw SettingError(e.what());
+            if (place.empty()) throw SettingError(e.what());
+            throw CosimError(place + ": " + e.what());
         }
     }
 }
@@ -140,6 +287,8 @@ std::optional<std::string> System::initial_value(std::size_t c, const std::strin
     };
     for (auto it = settings_.rbegin(); it != settings_.rend(); ++it)
         if (it->first == c && it->second.variable == variable) return as_text(it->second);
+    for (const auto& [index, fed] : fed_)
+        if (index == c && fed.variable == variable) return as_text(fed);
     const auto& bound = description_.components.at(c).parameters;
     for (auto it = bound.rbegin(); it != bound.rend(); ++it)
         if (it->variable == variable) return as_text(*it);
@@ -523,6 +672,8 @@ void System::initialize(double start_time, std::optional<double> stop_time) {
         auto& c = components_[i];
         c.instance->setup_experiment(start_time, stop_time, tolerance_);
         for (const auto& p : description_.components[i].parameters) c.instance->apply(p);
+        for (const auto& [index, fed] : fed_)
+            if (index == i) c.instance->apply(fed);
         for (const auto& [index, setting] : settings_)
             if (index == i) c.instance->apply(setting);
     }

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "engine/cosim_error.hpp"
+#include "engine/name_hint.hpp"
 #include "engine/value_text.hpp"
 
 namespace cosim {
@@ -120,13 +121,24 @@ const xmlNode* type_child(const xmlNode* n) {
 void read_parameter_set(const xmlNode* set, const std::filesystem::path& file, std::vector<Setting>& out,
                         std::vector<std::string>& places) {
     for_children(first_child(set, "Parameters"), "Parameter", [&](const xmlNode* p) {
+        const std::string where = file.string() + ":" + std::to_string(p->line);
+        const std::string name = required(p, "name", file);
+        if (name.empty()) throw CosimError(where + ": a parameter with an empty name");
         const xmlNode* t = type_child(p);
-        if (!t) throw CosimError(file.string() + ":" + std::to_string(p->line) + ": parameter without a typed value");
-        out.push_back(
-            {"", required(p, "name", file), required(t, "value", file), reinterpret_cast<const char*>(t->name)});
-        places.push_back(file.string() + ":" + std::to_string(p->line));
+        if (!t)
+            throw CosimError(where + ": parameter '" + name +
+                             "' has no typed value (<ssv:Real value=\"..\"/>, Integer, Boolean, String or "
+                             "Enumeration)");
+        const auto value = attribute(t, "value");
+        if (!value)
+            throw CosimError(where + ": parameter '" + name + "': <ssv:" + reinterpret_cast<const char*>(t->name) +
+                             "> lacks the attribute 'value'");
+        out.push_back({"", name, *value, reinterpret_cast<const char*>(t->name)});
+        places.push_back(where);
     });
 }
+
+ParameterValues read_parameter_file(const std::filesystem::path& ssv);
 
 void read_bindings(const xmlNode* component, const std::filesystem::path& file, const fmi_loader::FmuArchive* archive,
                    std::vector<Setting>& out, std::vector<std::string>& places,
@@ -142,13 +154,71 @@ void read_bindings(const xmlNode* component, const std::filesystem::path& file, 
             const auto ssv =
                 archive ? inside_archive(*archive, *source, "parameter file") : file.parent_path() / *source;
             parameter_files.push_back(ssv);
-            const Doc doc = parse_file(ssv);
-            const xmlNode* root = xmlDocGetRootElement(doc.get());
-            if (!is(root, "ParameterSet"))
-                throw CosimError(ssv.string() + ": the root element is not ssv:ParameterSet");
-            read_parameter_set(root, ssv, out, places);
+            auto read = read_parameter_file(ssv);
+            out.insert(out.end(), read.values.begin(), read.values.end());
+            places.insert(places.end(), read.places.begin(), read.places.end());
         }
     });
+}
+
+ParameterValues read_parameter_file(const std::filesystem::path& ssv) {
+    const Doc doc = parse_file(ssv);
+    const xmlNode* root = xmlDocGetRootElement(doc.get());
+    if (!is(root, "ParameterSet"))
+        throw CosimError(ssv.string() + ":" + std::to_string(root ? root->line : 1) +
+                         ": the root element is not ssv:ParameterSet (an SSP parameter set, .ssv)");
+    ParameterValues out;
+    read_parameter_set(root, ssv, out.values, out.places);
+    return out;
+}
+
+// The system's own connectors: parameters only, each typed, each name once and without a '.'.
+void read_system_parameters(const xmlNode* system, SystemDescription& out, const std::filesystem::path& file) {
+    for_children(first_child(system, "Connectors"), "Connector", [&](const xmlNode* k) {
+        const std::string where = file.string() + ":" + std::to_string(k->line);
+        SystemParameter p;
+        p.name = required(k, "name", file);
+        p.place = where;
+        const std::string kind = required(k, "kind", file);
+        if (kind != "parameter")
+            throw CosimError(where + ": system connector '" + p.name + "' is of kind " + kind +
+                             ": a system's own connectors may only be parameters here (kind=\"parameter\")");
+        if (p.name.empty() || p.name.find_first_of(".= ") != std::string::npos)
+            throw CosimError(where + ": system parameter name '" + p.name +
+                             "' must be non-empty without '.', '=' or spaces ('.' separates component and variable)");
+        const xmlNode* t = type_child(k);
+        if (!t || is(t, "Binary"))
+            throw CosimError(where + ": system parameter '" + p.name +
+                             "' needs its type: <ssc:Real unit=\"..\"/>, Integer, Boolean, String or Enumeration");
+        p.type = reinterpret_cast<const char*>(t->name);
+        p.unit = attribute(t, "unit").value_or("");
+        if (find_system_parameter(out, p.name))
+            throw CosimError(where + ": a second system parameter named '" + p.name + "' (first at " +
+                             find_system_parameter(out, p.name)->place + ")");
+        out.parameters.push_back(std::move(p));
+    });
+}
+
+// A connection one of whose ends is the system's own connector (its element left out): a system parameter
+// feeding a component's parameter, in either order of start and end.
+void read_feed(const ConnectionDescription& c, SystemDescription& out) {
+    if (c.start_element.empty() && c.end_element.empty())
+        throw CosimError(c.place + ": a connection between two connectors of the system itself (" + c.start_connector +
+                         ", " + c.end_connector + ") is not supported");
+    const bool from_start = c.start_element.empty();
+    ParameterFeed f{from_start ? c.start_connector : c.end_connector, from_start ? c.end_element : c.start_element,
+                    from_start ? c.end_connector : c.start_connector, c.place};
+    if (!find_system_parameter(out, f.parameter)) {
+        std::vector<std::string> names;
+        for (const auto& p : out.parameters) names.push_back(p.name);
+        throw CosimError(c.place + ": the system has no parameter connector '" + f.parameter + "'" +
+                         name_hint(f.parameter, names) + " (declare it in the system's <ssd:Connectors>)");
+    }
+    for (const auto& other : out.feeds)
+        if (other.component == f.component && other.variable == f.variable)
+            throw CosimError(c.place + ": " + f.component + "." + f.variable + " is fed twice (by '" + other.parameter +
+                             "' at " + other.place + " and by '" + f.parameter + "')");
+    out.feeds.push_back(std::move(f));
 }
 
 int int_attribute(const xmlNode* n, const char* name, int fallback, int lo, int hi, const std::filesystem::path& file) {
@@ -251,6 +321,17 @@ void read_system_level_hints(const xmlNode* system, SystemDescription& out, cons
 
 }  // namespace
 
+ParameterValues read_parameter_values(const std::filesystem::path& ssv) {
+    if (!std::filesystem::exists(ssv)) throw CosimError(ssv.string() + ": no such parameter file");
+    return read_parameter_file(ssv);
+}
+
+const SystemParameter* find_system_parameter(const SystemDescription& d, const std::string& name) {
+    for (const auto& p : d.parameters)
+        if (p.name == name) return &p;
+    return nullptr;
+}
+
 SystemDescription read_system_description(const std::filesystem::path& path) {
     if (!std::filesystem::exists(path)) throw CosimError(path.string() + ": no such file");
     std::shared_ptr<const fmi_loader::FmuArchive> archive;
@@ -276,6 +357,9 @@ SystemDescription read_system_description(const std::filesystem::path& path) {
     out.file = ssd;
     out.archive = std::move(archive);
     out.name = required(system, "name", ssd);
+    read_system_parameters(system, out, ssd);
+    read_bindings(system, ssd, out.archive.get(), out.system_bindings.values, out.system_bindings.places,
+                  out.parameter_files);
     for (const xmlNode* e = first_child(system, "Elements") ? first_child(system, "Elements")->children : nullptr; e;
          e = e->next) {
         if (e->type != XML_ELEMENT_NODE) continue;
@@ -309,10 +393,17 @@ SystemDescription read_system_description(const std::filesystem::path& path) {
         conn.end_connector = required(k, "endConnector", ssd);
         conn.place = ssd.string() + ":" + std::to_string(k->line);
         if (conn.start_element.empty() || conn.end_element.empty())
-            throw CosimError(ssd.string() + ":" + std::to_string(k->line) +
-                             ": connections to the system's own connectors are not supported");
-        out.connections.push_back(std::move(conn));
+            read_feed(conn, out);
+        else
+            out.connections.push_back(std::move(conn));
     });
+    // A system parameter that feeds nothing would take a --set and change nothing.
+    for (const auto& p : out.parameters)
+        if (std::none_of(out.feeds.begin(), out.feeds.end(),
+                         [&](const ParameterFeed& f) { return f.parameter == p.name; }))
+            throw CosimError(p.place + ": system parameter '" + p.name +
+                             "' is connected to no component parameter (add an <ssd:Connection> without startElement "
+                             "from it)");
     read_system_level_hints(system, out, ssd);
     if (const xmlNode* ex = first_child(root, "DefaultExperiment")) {
         if (auto s = attribute(ex, "startTime")) out.start_time = parse_real(*s, ssd.string() + ": startTime");

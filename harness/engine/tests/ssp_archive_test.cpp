@@ -87,6 +87,60 @@ TEST(CosimSsp, PackedArchiveRunsExactlyAsItsSsd) {
     std::filesystem::remove(ssp);
 }
 
+// The loop with k a system parameter (gain_k = -0.5) and the integrator's tau bound at the system level by
+// its hierarchical name (int.tau = 2): x(t) = exp(-0.25 t). Packed, the values are the components' own
+// bindings (OMSimulator 2.1.3 connects no system parameter named like "inertia[1]"), and the archive runs
+// bit for bit as the .ssd.
+TEST(CosimSsp, PackResolvesSystemParametersIntoTheComponentsBindings) {
+    const auto ssd = temp("scenario.ssd"), ssp = temp("scenario.ssp");
+    std::ofstream(ssd) << R"(<?xml version="1.0" encoding="UTF-8"?>
+<ssd:SystemStructureDescription xmlns:ssd="http://ssp-standard.org/SSP1/SystemStructureDescription"
+    xmlns:ssc="http://ssp-standard.org/SSP1/SystemStructureCommon"
+    xmlns:ssv="http://ssp-standard.org/SSP1/SystemStructureParameterValues" version="1.0" name="loop">
+  <ssd:System name="loop">
+    <ssd:Connectors><ssd:Connector name="gain_k" kind="parameter"><ssc:Real unit="1"/></ssd:Connector></ssd:Connectors>
+    <ssd:ParameterBindings><ssd:ParameterBinding><ssd:ParameterValues><ssv:ParameterSet version="1.0" name="s">
+      <ssv:Parameters>
+        <ssv:Parameter name="gain_k"><ssv:Real unit="1" value="-0.5"/></ssv:Parameter>
+        <ssv:Parameter name="int.tau"><ssv:Real unit="s" value="2"/></ssv:Parameter>
+      </ssv:Parameters>
+    </ssv:ParameterSet></ssd:ParameterValues></ssd:ParameterBinding></ssd:ParameterBindings>
+    <ssd:Elements>
+      <ssd:Component name="int" source="test_integrator.fmu"/>
+      <ssd:Component name="gain" source="test_gain.fmu">
+        <ssd:Connectors><ssd:Connector name="k" kind="parameter"><ssc:Real unit="1"/></ssd:Connector>
+          <ssd:Connector name="u" kind="input"><ssc:Real unit="V"/></ssd:Connector>
+          <ssd:Connector name="y" kind="output"><ssc:Real unit="V"/></ssd:Connector></ssd:Connectors>
+      </ssd:Component>
+    </ssd:Elements>
+    <ssd:Connections>
+      <ssd:Connection startElement="int" startConnector="y" endElement="gain" endConnector="u"/>
+      <ssd:Connection startElement="gain" startConnector="y" endElement="int" endConnector="u"/>
+      <ssd:Connection startConnector="gain_k" endElement="gain" endConnector="k"/>
+    </ssd:Connections>
+  </ssd:System>
+  <ssd:DefaultExperiment startTime="0" stopTime="1"/>
+</ssd:SystemStructureDescription>
+)";
+    std::ostringstream log;
+    pack_system(ssd, ssp, {.fmu_dirs = {fmu_dir}, .oms_step = {}}, log);
+    const SystemDescription packed = read_system_description(ssp);
+    EXPECT_TRUE(packed.parameters.empty());
+    EXPECT_TRUE(packed.feeds.empty());
+    EXPECT_TRUE(packed.system_bindings.values.empty());
+    ASSERT_EQ(packed.components.at(1).parameters.size(), 1u);
+    EXPECT_EQ(packed.components[1].parameters[0].variable, "k");
+    EXPECT_EQ(packed.components[1].parameters[0].value, "-0.5");
+    ASSERT_EQ(packed.components.at(0).parameters.size(), 1u);
+    EXPECT_EQ(packed.components[0].parameters[0].variable, "tau");
+    const auto y = run_y(ssp);
+    EXPECT_EQ(y, run_y(ssd, {fmu_dir}));  // bit for bit
+    ASSERT_EQ(y.size(), 5u);
+    for (std::size_t k = 0; k < y.size(); ++k) EXPECT_NEAR(y[k], std::exp(-0.25 * 0.25 * k), 1e-6);
+    std::filesystem::remove(ssd);
+    std::filesystem::remove(ssp);
+}
+
 void write_zip(const std::filesystem::path& path, const std::vector<std::pair<std::string, std::string>>& entries) {
     int error = 0;
     zip_t* z = zip_open(path.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error);

@@ -39,6 +39,19 @@ TEST(CosimSspSchema, BundledSystemsAndTheirArchivesValidate) {
     }
 }
 
+// The bundled parameter sets (harness/systems/parameters) against SystemStructureParameterValues.xsd.
+TEST(CosimSspSchema, BundledParameterSetsValidate) {
+    int files = 0;
+    for (const auto& e : std::filesystem::directory_iterator(systems_dir / "parameters")) {
+        if (e.path().extension() != ".ssv") continue;
+        ++files;
+        EXPECT_EQ(test_support::xml_schema_errors(schema_dir / "SystemStructureParameterValues.xsd", e.path()), "")
+            << e.path();
+        EXPECT_FALSE(read_parameter_values(e.path()).values.empty()) << e.path();
+    }
+    EXPECT_GE(files, 1);
+}
+
 std::string read_text(const std::filesystem::path& p) {
     std::ifstream in(p);
     std::stringstream s;

@@ -232,5 +232,196 @@ TEST(CosimSystem, MalformedFilesAreRefused) {
     EXPECT_THROW(read_system_description("/nonexistent/system.ssd"), CosimError);
 }
 
+// ---- System parameters (SSP 1.0: the system's own parameter connectors, their values in the system's
+// ParameterBindings, connections without startElement to the components' parameters) ----
+
+// A system parameter connector of `type` ("Real unit=\"1\"", "Enumeration name=\"Sign\"").
+std::string system_parameter(const std::string& name, const std::string& type) {
+    return "<ssd:Connector name=\"" + name + "\" kind=\"parameter\"><ssc:" + type + "/></ssd:Connector>";
+}
+std::string system_connectors(const std::string& connectors) {
+    return "<ssd:Connectors>" + connectors + "</ssd:Connectors>";
+}
+std::string system_bindings(const std::string& params) {
+    return "<ssd:ParameterBindings><ssd:ParameterBinding><ssd:ParameterValues><ssv:ParameterSet version=\"1.0\" "
+           "name=\"s\"><ssv:Parameters>" +
+           params +
+           "</ssv:Parameters></ssv:ParameterSet></ssd:ParameterValues></ssd:ParameterBinding></ssd:ParameterBindings>";
+}
+std::string feed(const std::string& parameter, const std::string& component, const std::string& variable) {
+    return "<ssd:Connection startConnector=\"" + parameter + "\" endElement=\"" + component + "\" endConnector=\"" +
+           variable + "\"/>\n";
+}
+
+// Two gains in series (a.u = 1 by its start value): the system parameter gain_k feeds both, y = k^2.
+std::string two_gains(const std::string& bound = "3", const std::string& extra_a = "") {
+    return system_connectors(system_parameter("gain_k", "Real unit=\"1\"")) +
+           (bound.empty() ? "" : system_bindings(real("gain_k", std::stod(bound)))) +
+           system_body(component("a", "test_gain", extra_a) + component("b", "test_gain"),
+                       connect("a", "y", "b", "u") + feed("gain_k", "a", "k") + feed("gain_k", "b", "k"));
+}
+
+double last_y(const std::string& body, SystemOptions o = options()) {
+    SsdFile ssd(body);
+    System system(read_system_description(ssd.path), o);
+    Probe probe(system, "b", "y");
+    run(system, probe, 0.5, 0.5);
+    return probe.samples.back().second;
+}
+
+// A parameter set file (.ssv) beside the test's .ssd.
+struct SsvFile {
+    std::filesystem::path path;
+    SsvFile(const std::string& tag, const std::string& parameters) {
+        path = std::filesystem::temp_directory_path() /
+               ("cosim_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" + tag + ".ssv");
+        std::ofstream(path)
+            << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+               "<ssv:ParameterSet xmlns:ssv=\"http://ssp-standard.org/SSP1/SystemStructureParameterValues\" "
+               "version=\"1.0\" name=\""
+            << tag << "\">\n<ssv:Parameters>\n"
+            << parameters << "\n</ssv:Parameters>\n</ssv:ParameterSet>\n";
+    }
+    ~SsvFile() { std::filesystem::remove(path); }
+};
+
+TEST(CosimSystemParameters, ASystemParameterFeedsEveryComponentParameterItIsConnectedTo) {
+    EXPECT_EQ(last_y(two_gains("3")), 9.0);  // y = k k u with u = 1
+    SystemOptions o = options();
+    o.settings = {"gain_k=2"};  // --set NAME=VALUE without a component: the system parameter
+    EXPECT_EQ(last_y(two_gains("3"), o), 4.0);
+    // A component parameter set directly wins over the system parameter, for that component only.
+    o.settings = {"gain_k=2", "a.k=5"};
+    EXPECT_EQ(last_y(two_gains("3"), o), 10.0);
+    SsdFile ssd(two_gains("3"));
+    const System system(read_system_description(ssd.path), o);
+    ASSERT_EQ(system.fed_parameters_set_directly().size(), 1u);
+    EXPECT_EQ(system.fed_parameters_set_directly()[0], "a.k (system parameter gain_k)");
+    EXPECT_EQ(system.initial_value(system.component_index("b"), "k"), "2");
+    EXPECT_EQ(system.initial_value(system.component_index("a"), "k"), "5");
+    EXPECT_EQ(system.system_parameter_values().at(0).value, "2");
+}
+
+TEST(CosimSystemParameters, AnEnumerationTravelsByItemName) {
+    const std::string body =
+        system_connectors(system_parameter("sign", "Enumeration name=\"Sign\"")) +
+        system_bindings("<ssv:Parameter name=\"sign\"><ssv:Enumeration value=\"minus\"/></ssv:Parameter>") +
+        system_body(component("a", "test_gain") + component("b", "test_gain"),
+                    connect("a", "y", "b", "u") + feed("sign", "a", "sign") + feed("sign", "b", "sign"));
+    EXPECT_EQ(last_y(body), 4.0);  // (-2) (-2) 1
+    SystemOptions o = options();
+    o.settings = {"sign=plus"};
+    EXPECT_EQ(last_y(body, o), 4.0);
+    o.settings = {"b.sign=plus"};
+    EXPECT_EQ(last_y(body, o), -4.0);
+    o.settings = {"sign=zero"};
+    EXPECT_THROW(last_y(body, o), SettingError);
+}
+
+TEST(CosimSystemParameters, ParameterFilesComeAfterTheSystemsValuesLaterFilesWinAndSetComesLast) {
+    const SsvFile two("two", real("gain_k", 2)), four("four", real("gain_k", 4) + real("a.k", 1));
+    SystemOptions o = options();
+    o.parameter_files = {two.path};
+    EXPECT_EQ(last_y(two_gains("3"), o), 4.0);
+    o.parameter_files = {two.path, four.path};
+    EXPECT_EQ(last_y(two_gains("3"), o), 4.0);  // a.k = 1 directly, b.k = 4
+    o.parameter_files = {four.path, two.path};
+    EXPECT_EQ(last_y(two_gains("3"), o), 2.0);  // a.k = 1 still (nothing later names it), b.k = 2
+    o.settings = {"gain_k=10"};
+    EXPECT_EQ(last_y(two_gains("3"), o), 10.0);
+    // A system parameter without a value in the .ssd takes it from a file.
+    o = options();
+    o.parameter_files = {two.path};
+    EXPECT_EQ(last_y(two_gains(""), o), 4.0);
+}
+
+void expect_refused_with(const std::string& body, const std::string& fragment, SystemOptions o = options()) {
+    SsdFile ssd(body);
+    try {
+        System system(read_system_description(ssd.path), o);
+        FAIL() << "accepted a system that should be refused for: " << fragment;
+    } catch (const CosimError& e) {
+        EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+}
+
+TEST(CosimSystemParameters, MalformedSystemParametersAreRefusedByName) {
+    const auto gains = component("a", "test_gain") + component("b", "test_gain");
+    const auto k = system_connectors(system_parameter("gain_k", "Real unit=\"1\""));
+    const auto bound = system_bindings(real("gain_k", 3));
+    expect_refused_with(system_connectors("<ssd:Connector name=\"x\" kind=\"input\"><ssc:Real/></ssd:Connector>") +
+                            system_body(gains, feed("x", "a", "u")),
+                        "system connector 'x' is of kind input");
+    expect_refused_with(
+        system_connectors("<ssd:Connector name=\"x\" kind=\"parameter\"/>") + system_body(gains, feed("x", "a", "k")),
+        "system parameter 'x' needs its type");
+    expect_refused_with(system_connectors(system_parameter("a.k", "Real")) + system_body(gains, feed("a.k", "a", "k")),
+                        "must be non-empty without '.'");
+    expect_refused_with(k + bound + system_body(gains, feed("gain_k", "a", "u")), "the end must be a parameter");
+    expect_refused_with(k + bound + system_body(gains, feed("gain_k", "a", "sign")),
+                        "type mismatch (Real to Enumeration)");
+    expect_refused_with(system_connectors(system_parameter("gain_k", "Real unit=\"V\"")) + bound +
+                            system_body(gains, feed("gain_k", "a", "k")),
+                        "unit mismatch (V to 1)");
+    expect_refused_with(k + bound + system_body(gains, feed("gian_k", "a", "k") + feed("gain_k", "b", "k")),
+                        "no parameter connector 'gian_k' (did you mean 'gain_k'?)");
+    expect_refused_with(k + bound + system_body(gains, feed("gain_k", "a", "kk")), "a: no variable named 'kk'");
+    expect_refused_with(k + bound + system_body(gains, feed("gain_k", "c", "k")), "no component named 'c'");
+    expect_refused_with(k + system_body(gains, feed("gain_k", "a", "k")), "system parameter 'gain_k' has no value");
+    expect_refused_with(k + bound + system_body(component("a", "test_gain", real("k", 2)), feed("gain_k", "a", "k")),
+                        "also bound in its component's ParameterBindings");
+    expect_refused_with(k + bound + system_body(gains, feed("gain_k", "a", "k") + feed("gain_k", "a", "k")),
+                        "a.k is fed twice");
+    expect_refused_with(k + bound + system_body(gains), "system parameter 'gain_k' is connected to no component");
+    expect_refused_with(
+        k + bound + system_body(gains, "<ssd:Connection startConnector=\"gain_k\" endConnector=\"x\"/>"),
+        "a connection between two connectors of the system itself");
+    expect_refused_with(k + system_bindings(real("gain_kk", 3)) + system_body(gains, feed("gain_k", "a", "k")),
+                        "'gain_kk' is no system parameter of");
+    expect_refused_with(
+        k + system_bindings("<ssv:Parameter name=\"gain_k\"><ssv:String value=\"x\"/></ssv:Parameter>") +
+            system_body(gains, feed("gain_k", "a", "k")),
+        "an ssv:String value cannot set a variable of type Real");
+    SystemOptions typo = options();
+    typo.settings = {"gain_kk=1"};
+    try {
+        SsdFile ssd(two_gains());
+        System system(read_system_description(ssd.path), typo);
+        FAIL() << "a misspelt system parameter was taken";
+    } catch (const SettingError& e) {
+        EXPECT_NE(std::string(e.what()).find("'gain_kk' is no system parameter"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("did you mean 'gain_k'?"), std::string::npos) << e.what();
+    }
+}
+
+TEST(CosimSystemParameters, MalformedParameterFilesAreRefusedWithTheFileLineAndName) {
+    auto refused = [](const std::string& parameters, const std::string& fragment) {
+        const SsvFile file("bad", parameters);
+        SystemOptions o = options();
+        o.parameter_files = {file.path};
+        try {
+            SsdFile ssd(two_gains());
+            System system(read_system_description(ssd.path), o);
+            ADD_FAILURE() << "accepted a file that should be refused for: " << fragment;
+        } catch (const CosimError& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find(file.path.string() + ":"), std::string::npos) << what;
+            EXPECT_NE(what.find(fragment), std::string::npos) << what;
+        }
+    };
+    refused("<ssv:Parameter name=\"gain_k\"/>", ":4: parameter 'gain_k' has no typed value");
+    refused("<ssv:Parameter name=\"gain_k\"><ssv:Real/></ssv:Parameter>", ":4: parameter 'gain_k': <ssv:Real> lacks");
+    refused("<ssv:Parameter name=\"gain_k\"><ssv:Real value=\"fast\"/></ssv:Parameter>", ":4: system parameter gain_k");
+    refused("<ssv:Parameter name=\"gian_k\"><ssv:Real value=\"1\"/></ssv:Parameter>",
+            ":4: 'gian_k' is no system parameter of");
+    refused("<ssv:Parameter name=\"a.kk\"><ssv:Real value=\"1\"/></ssv:Parameter>", ":4: a: no variable named 'kk'");
+    refused("<ssv:Parameter><ssv:Real value=\"1\"/></ssv:Parameter>", ":4: <Parameter> lacks the attribute 'name'");
+    const auto wrong_root = std::filesystem::temp_directory_path() / "cosim_test_wrong_root.ssv";
+    std::ofstream(wrong_root) << "<?xml version=\"1.0\"?>\n<Parameters/>\n";
+    EXPECT_THROW(read_parameter_values(wrong_root), CosimError);
+    std::filesystem::remove(wrong_root);
+    EXPECT_THROW(read_parameter_values("/nonexistent/p.ssv"), CosimError);
+}
+
 }  // namespace
 }  // namespace cosim

@@ -117,6 +117,17 @@ PVATT_API pvatt_status pvatt_system_get(const pvatt_system* system, const char* 
                                         size_t* needed);
 PVATT_API void pvatt_system_clear_settings(pvatt_system* system);
 
+/* The system's own parameters (an .ssd's system-level parameter connectors: the date at t = 0, the orbit's
+ * elements, ...), each feeding component parameters. pvatt_system_set and pvatt_system_get take their
+ * names without a component ("epoch_month", "tle_elements[2]"). */
+PVATT_API size_t pvatt_system_parameter_count(const pvatt_system* system);
+PVATT_API const char* pvatt_system_parameter_name(const pvatt_system* system, size_t parameter); /* NULL past the end */
+/* Every value of an SSP parameter set file (.ssv: system parameters and "comp.var"), as pvatt_system_set
+ * would set each in the file's order (so a later pvatt_system_set or file wins). All checked before any is
+ * taken: a malformed file, an unknown name or a value of the wrong type is refused with the file, line and
+ * name, and nothing changes. */
+PVATT_API pvatt_status pvatt_system_load_parameters(pvatt_system* system, const char* path);
+
 /* A callback component: replaces component `component` of the system (its FMU's interface stays: the
  * same variables, connections and units; its binary is not run) by a function sampled every
  * `sample_period` seconds from the start, as the hardware bridge puts a board in place of a block.

@@ -40,9 +40,14 @@ struct PackOptions {
 // Packs `ssd` and every FMU its components name into the SSP archive `ssp`: resources/*.fmu (stored, an
 // FMU being compressed already) and SystemStructure.ssd, the .ssd made to travel (docs in
 // harness/systems/README.md, "SSP archives"):
+//  - the system's own parameters (system_description.hpp) resolved into the bindings of the component
+//    parameters they feed, and the system's connectors, bindings and feeding connections removed
+//    (OMSimulator 2.1.3 connects a system's parameter connector only under a plain identifier name);
 //  - each component's source rewritten to resources/<file name>;
 //  - a binding of an Enumeration parameter by item name (ssv:String or ssv:Enumeration) written as
 //    ssv:Integer with the item's value, which every SSP 1.0 importer reads;
+//  - a String binding that repeats its variable's start value left out (it changes nothing; OMSimulator
+//    2.1.3 counts every ssv:String binding as an error); one that changes a value is kept and named on `out`;
 //  - the components' vendor annotations (execution hints, hardware bridges) moved to the system's
 //    annotations with a component attribute (OMSimulator 2.1.3 refuses any annotation in a component);
 //  - an org.openmodelica annotation first among the system's: OMSimulator reads the kind of system from

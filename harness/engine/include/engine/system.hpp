@@ -51,10 +51,14 @@ struct Connection {
 
 struct SystemOptions {
     std::vector<std::filesystem::path> fmu_dirs;  // searched for a source not found beside the .ssd
-    std::vector<std::string> settings;            // "component.variable=value", after the .ssd's parameters
-    std::vector<std::string> co_simulation;       // components to run through their CS interface
-    std::optional<double> communication_step;     // of every Co-Simulation component (replaces the .ssd's)
-    bool model_exchange_only = false;             // ignore the .ssd's execution annotations (reference runs)
+    // Parameter sets (.ssv) read after the .ssd's own bindings, later files winning; their names are system
+    // parameters or component.variable, as in the system's own <ssd:ParameterBindings> (SSP 1.0).
+    std::vector<std::filesystem::path> parameter_files;
+    // "component.variable=value", or "name=value" for a system parameter; after the parameter files.
+    std::vector<std::string> settings;
+    std::vector<std::string> co_simulation;    // components to run through their CS interface
+    std::optional<double> communication_step;  // of every Co-Simulation component (replaces the .ssd's)
+    bool model_exchange_only = false;          // ignore the .ssd's execution annotations (reference runs)
     std::optional<double> tolerance;
     std::optional<int> bridge_port;            // replaces the port of every UDP hardware bridge
     std::optional<std::string> bridge_device;  // replaces the device of every serial hardware bridge
@@ -83,6 +87,13 @@ enum class Pass {
     integrating,  // between events: continuous Real inputs of continuous consumers, from Model Exchange sources
     continuous,   // at an output point or before an event: every continuous Real input of Model Exchange components
     event,        // in event mode: every input of Model Exchange components
+};
+
+// A system parameter's value as the run takes it, and where it was given.
+struct SystemParameterValue {
+    std::string value;     // as written; empty with no place: none given
+    std::string ssv_type;  // the binding's SSV type, empty from --set
+    std::string place;     // "file:line", or "--set"
 };
 
 class System {
@@ -115,7 +126,20 @@ public:
     // Setup, parameters, initialization mode with values propagated, exit.
     void initialize(double start_time, std::optional<double> stop_time);
 
-    // The value initialize() gives variable `variable` of component c: the last --set naming it, else the
+    // The system's parameters (description().parameters, same order) with the values this run gives them.
+    const std::vector<SystemParameterValue>& system_parameter_values() const { return parameter_values_; }
+    bool is_system_parameter(const std::string& name) const { return find_system_parameter(description_, name); }
+    // Component parameters a system parameter feeds that are also set directly (component.variable in a
+    // parameter file, the system's bindings or --set): the direct value wins for that component only.
+    // "est.inertia[1] (system parameter inertia[1])", one per such parameter.
+    std::vector<std::string> fed_parameters_set_directly() const;
+    // Refuses (CosimError naming `where`) a value that some component parameter the system parameter `name`
+    // feeds cannot take; `ssv_type` as in Setting (empty: any).
+    void check_parameter_value(const std::string& name, const std::string& value, const std::string& ssv_type,
+                               const std::string& where) const;
+
+    // The value initialize() gives variable `variable` of component c: the last direct setting naming it
+    // (--set, a parameter file, the system's bindings), else the system parameter feeding it, else the
     // .ssd's binding, else the FMU's start value (as its text; an Enumeration as its number); nullopt when
     // none (no such variable, or no start). For checks made before a run (front ends).
     std::optional<std::string> initial_value(std::size_t c, const std::string& variable) const;
@@ -128,6 +152,9 @@ private:
     void order_connections();
     void check_open_inputs() const;
     void check_settings() const;
+    void collect_values(const SystemOptions& options);
+    void take_value(const Setting& named, const std::string& place, bool command_line);
+    void connect_parameters();
     void mark_continuous_consumers();
     void group_transfers();
     bool read_sources(TransferGroup& g, std::string& text);
@@ -142,7 +169,10 @@ private:
     std::vector<TransferGroup> groups_;             // connections_ in order, batched by (source, target) component
     std::vector<char> changed_, discrete_changed_;  // per component, since clear_changes()
     std::vector<double> slopes_;                    // step_co_simulation's input derivatives
-    std::vector<std::pair<std::size_t, Setting>> settings_;  // component index, its setting
+    std::vector<std::pair<std::size_t, Setting>> settings_;  // component index, its setting (direct, in order)
+    std::vector<std::string> setting_places_;                // of each: "file:line", or "" for --set
+    std::vector<SystemParameterValue> parameter_values_;     // per description_.parameters
+    std::vector<std::pair<std::size_t, Setting>> fed_;       // component index, the value a system parameter feeds
     std::optional<double> tolerance_;
 };
 

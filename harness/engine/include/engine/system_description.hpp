@@ -67,6 +67,32 @@ struct ConnectionDescription {
     std::string place;  // "file:line" of its <ssd:Connection>, for messages
 };
 
+// A parameter of the system itself, the SSP 1.0 way: an <ssd:Connector kind="parameter"> of the <ssd:System>
+// (typed: <ssc:Real unit=".."/>, Integer, Boolean, String or Enumeration), its value from the system's own
+// <ssd:ParameterBindings>, and <ssd:Connection>s that leave out the system's element (startElement or
+// endElement absent) carrying it to components' parameters. The scenario's facts that several blocks
+// share (the date at t = 0, the orbit, the spacecraft's properties) are said once this way.
+struct SystemParameter {
+    std::string name;  // no '.' (a '.' separates component and variable in every setting)
+    std::string type;  // "Real", "Integer", "Boolean", "String" or "Enumeration"
+    std::string unit;
+    std::string place;  // "file:line" of its connector
+};
+
+// A connection from a system parameter to a component's parameter.
+struct ParameterFeed {
+    std::string parameter;  // the system parameter
+    std::string component, variable;
+    std::string place;  // "file:line" of its <ssd:Connection>
+};
+
+// Values read from a parameter set (.ssv, or a binding's inline <ssv:ParameterSet>): each name as written
+// (a system parameter, or component.variable at the system level), its value and SSV type, and where.
+struct ParameterValues {
+    std::vector<Setting> values;      // component empty; variable holds the name as written
+    std::vector<std::string> places;  // "file:line" of each
+};
+
 struct SystemDescription {
     std::filesystem::path file;  // where it was read from; relative sources resolve against it
     // An SSP archive (.ssp) read from: unpacked in a private directory kept while any copy of this
@@ -75,7 +101,12 @@ struct SystemDescription {
     std::vector<std::filesystem::path> parameter_files;  // the .ssv files its bindings read
     std::string name;
     std::vector<ComponentDescription> components;
-    std::vector<ConnectionDescription> connections;
+    std::vector<ConnectionDescription> connections;  // between components
+    std::vector<SystemParameter> parameters;         // the system's own parameter connectors
+    std::vector<ParameterFeed> feeds;                // system parameter -> component parameter
+    // The system's own <ssd:ParameterBindings>, in order: a system parameter's name, or component.variable
+    // (SSP's hierarchical name; it takes precedence over the component's own binding).
+    ParameterValues system_bindings;
     std::optional<double> start_time, stop_time;
     std::optional<double> output_interval;  // DefaultExperiment's execution annotation <Output interval=".."/>
     std::optional<double> max_step;         // and <Integrator maxStep=".."/>
@@ -95,6 +126,14 @@ struct SystemDescription {
 // (fmi_loader/limits.hpp: entries, sizes, compression ratio, no path leaving the archive).
 // Throws CosimError naming the file, line and cause for anything malformed or unsupported.
 SystemDescription read_system_description(const std::filesystem::path& ssd);
+
+// An SSP parameter set file (.ssv, root <ssv:ParameterSet>), its names as written. Refused with CosimError
+// naming the file, line and parameter: not a regular file, over max_ssd_bytes, not well-formed, another root,
+// a parameter without a name or a typed value, a typed value without its value attribute.
+ParameterValues read_parameter_values(const std::filesystem::path& ssv);
+
+// The system parameter of that name, or null.
+const SystemParameter* find_system_parameter(const SystemDescription& d, const std::string& name);
 
 // A file an .ssp names (a component's source, a parameter file): an .ssp is a closed world, so only a
 // relative reference that stays inside the unpacked archive is taken (resolved against its root, where
