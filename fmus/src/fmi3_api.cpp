@@ -8,15 +8,14 @@
 // Reconfiguration Mode (no structural parameters), directional and adjoint derivatives, output
 // derivatives, fmi3EvaluateDiscreteStates, variables accessed in Intermediate Update Mode (the
 // intermediate-update callback is called at events only, to let the host request an early return).
-#include <mutex>
 #include <new>
 #include <type_traits>
-#include <unordered_set>
 
 #include "fmi3/fmi3Functions.h"
 #include "fmi3_instance.hpp"
 #include "fmu/description.hpp"
 #include "fmu/errors.hpp"
+#include "live_instances.hpp"
 
 namespace {
 
@@ -24,18 +23,12 @@ using fmu::Kind;
 using fmu::fmi3::Call;
 using fmu::fmi3::Instance3;
 
-struct Registry {
-    std::mutex mutex;
-    std::unordered_set<const void*> live;
-};
-Registry& registry() {
-    static Registry r;
+fmu::LiveInstances& registry() {
+    static fmu::LiveInstances r;
     return r;
 }
 bool is_live(const void* c) {
-    auto& r = registry();
-    std::lock_guard lock(r.mutex);
-    return r.live.contains(c);
+    return registry().contains(c);
 }
 
 const std::string& instantiation_token() {
@@ -99,9 +92,7 @@ fmi3Instance instantiate(fmi3String instanceName, fmi3String instantiationToken,
                           " does not match this FMU's " + instantiation_token());
         auto* instance = new Instance3(instanceName, kind, options, environment, logger, loggingOn, fmu::make_model(),
                                        instantiation_token());
-        auto& r = registry();
-        std::lock_guard lock(r.mutex);
-        r.live.insert(instance);
+        registry().insert(instance);
         return instance;
     } catch (const std::exception& e) {
         return refuse(e.what());
@@ -168,11 +159,7 @@ fmi3Instance fmi3InstantiateScheduledExecution(fmi3String instanceName, fmi3Stri
 
 void fmi3FreeInstance(fmi3Instance c) {
     if (!c) return;
-    {
-        auto& r = registry();
-        std::lock_guard lock(r.mutex);
-        if (r.live.erase(c) == 0) return;
-    }
+    if (!registry().erase(c)) return;
     delete static_cast<Instance3*>(c);
 }
 
