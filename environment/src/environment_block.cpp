@@ -190,9 +190,9 @@ void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
         .tunable();
     t.parameter("albedo_interval", &D::albedo_interval, "s",
                 "Albedo: seconds between the integrations over the cap, each expanded in spherical harmonics to "
-                "albedo_degree; between them the expansion is interpolated linearly and only the faces' response "
-                "is evaluated (0: the full integration at every evaluation). The default (10 s, degree 16) is "
-                "within 1.3 W/m2 of it on every face (docs/speed.md)")
+                "albedo_degree; between them the expansion is interpolated (cubic spline) and only the faces' "
+                "response is evaluated (0: the full integration at every evaluation). The default (10 s, degree 12) "
+                "is within 0.35 W/m2 of it on every face along an orbit (docs/speed.md)")
         .range(0.0, 86400.0);
     t.parameter("albedo_degree", &D::albedo_degree, "",
                 "Albedo: degree of the spherical-harmonic expansion used when albedo_interval > 0")

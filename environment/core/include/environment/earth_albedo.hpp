@@ -52,7 +52,7 @@ struct AlbedoParams {
     // spherical-harmonic expansion to `degree` at nodes this many seconds apart, linear between them, and
     // only the faces' response per evaluation (AlbedoHarmonics). Errors: docs/speed.md, earth_albedo_test.
     double interval = 10.0;  // s
-    int degree = 16;
+    int degree = 12;
 };
 
 /// The reflectivity at a latitude (its sine) under the model.
