@@ -3,15 +3,14 @@
 // fmi2Status plus a message through the host's logger. Nothing thrown inside crosses this file.
 // The error contract: fmu::Discard -> fmi2Discard, the instance stays in its mode; any other
 // exception -> fmi2Error (fmi2Fatal for a non-standard one) and the instance enters the error mode.
-#include <mutex>
 #include <new>
 #include <type_traits>
-#include <unordered_set>
 
 #include "fmi2/fmi2Functions.h"
 #include "fmu/description.hpp"
 #include "fmu/errors.hpp"
 #include "instance.hpp"
+#include "live_instances.hpp"
 
 namespace {
 
@@ -21,18 +20,12 @@ using fmu::Kind;
 
 // The instances alive in this process. A handle the host passes in is used only if it is one of them,
 // so a null, freed or foreign pointer gives fmi2Error instead of a crash.
-struct Registry {
-    std::mutex mutex;
-    std::unordered_set<const void*> live;
-};
-Registry& registry() {
-    static Registry r;
+fmu::LiveInstances& registry() {
+    static fmu::LiveInstances r;
     return r;
 }
 bool is_live(const void* c) {
-    auto& r = registry();
-    std::lock_guard lock(r.mutex);
-    return r.live.contains(c);
+    return registry().contains(c);
 }
 
 const std::string& model_guid() {
@@ -111,9 +104,7 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
         auto* instance =
             new Instance(instanceName, fmuType == fmi2ModelExchange ? Kind::model_exchange : Kind::co_simulation,
                          *functions, loggingOn != fmi2False, fmu::make_model(), model_guid());
-        auto& r = registry();
-        std::lock_guard lock(r.mutex);
-        r.live.insert(instance);
+        registry().insert(instance);
         return instance;
     } catch (const std::exception& e) {
         return refuse(std::string("fmi2Instantiate: ") + e.what());
@@ -124,11 +115,7 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
 
 void fmi2FreeInstance(fmi2Component c) {
     if (!c) return;
-    {
-        auto& r = registry();
-        std::lock_guard lock(r.mutex);
-        if (r.live.erase(c) == 0) return;
-    }
+    if (!registry().erase(c)) return;
     delete static_cast<Instance*>(c);
 }
 

@@ -10,15 +10,14 @@
 // intermediate-update callback is called at events only, to let the host request an early return; the
 // instance is in Intermediate Update Mode while it runs, and the call-rule table refuses every call
 // from there).
-#include <mutex>
 #include <new>
 #include <type_traits>
-#include <unordered_set>
 
 #include "fmi3/fmi3Functions.h"
 #include "fmi3_instance.hpp"
 #include "fmu/description.hpp"
 #include "fmu/errors.hpp"
+#include "live_instances.hpp"
 
 namespace {
 
@@ -26,18 +25,12 @@ using fmu::Kind;
 using fmu::fmi3::Call;
 using fmu::fmi3::Instance3;
 
-struct Registry {
-    std::mutex mutex;
-    std::unordered_set<const void*> live;
-};
-Registry& registry() {
-    static Registry r;
+fmu::LiveInstances& registry() {
+    static fmu::LiveInstances r;
     return r;
 }
 bool is_live(const void* c) {
-    auto& r = registry();
-    std::lock_guard lock(r.mutex);
-    return r.live.contains(c);
+    return registry().contains(c);
 }
 
 const std::string& instantiation_token() {
@@ -101,9 +94,7 @@ fmi3Instance instantiate(fmi3String instanceName, fmi3String instantiationToken,
                           " does not match this FMU's " + instantiation_token());
         auto* instance = new Instance3(instanceName, kind, options, environment, logger, loggingOn, fmu::make_model(),
                                        instantiation_token());
-        auto& r = registry();
-        std::lock_guard lock(r.mutex);
-        r.live.insert(instance);
+        registry().insert(instance);
         return instance;
     } catch (const std::exception& e) {
         return refuse(e.what());
@@ -170,20 +161,16 @@ fmi3Instance fmi3InstantiateScheduledExecution(fmi3String instanceName, fmi3Stri
 
 void fmi3FreeInstance(fmi3Instance c) {
     if (!c) return;
-    {
-        auto& r = registry();
-        std::lock_guard lock(r.mutex);
-        if (!r.live.contains(c)) return;
-        // From inside the intermediate-update callback the step that called it is still on the stack:
-        // freeing the instance under it is refused (the host frees it after fmi3DoStep returns).
-        if (static_cast<Instance3*>(c)->in_intermediate_update()) {
-            static_cast<Instance3*>(c)->log(fmi3Error, "logStatusError",
-                                            "fmi3FreeInstance is not allowed in Intermediate Update Mode (from inside "
-                                            "the intermediate-update callback): call it after fmi3DoStep returns");
-            return;
-        }
-        r.live.erase(c);
+    if (!registry().contains(c)) return;
+    // From inside the intermediate-update callback the step that called it is still on the stack:
+    // freeing the instance under it is refused (the host frees it after fmi3DoStep returns).
+    if (static_cast<Instance3*>(c)->in_intermediate_update()) {
+        static_cast<Instance3*>(c)->log(fmi3Error, "logStatusError",
+                                        "fmi3FreeInstance is not allowed in Intermediate Update Mode (from inside "
+                                        "the intermediate-update callback): call it after fmi3DoStep returns");
+        return;
     }
+    if (!registry().erase(c)) return;
     delete static_cast<Instance3*>(c);
 }
 

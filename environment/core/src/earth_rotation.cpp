@@ -8,14 +8,13 @@
 
 namespace environment {
 
-namespace {
-// Passive (frame) rotation about z by angle a.
-Eigen::Matrix3d r3(double a) {
+Eigen::Matrix3d earth_rotation_z(double a) {
+    // Passive (frame) rotation about z by angle a.
+    const double c = std::cos(a), s = std::sin(a);
     Eigen::Matrix3d m;
-    m << std::cos(a), std::sin(a), 0.0, -std::sin(a), std::cos(a), 0.0, 0.0, 0.0, 1.0;
+    m << c, s, 0.0, -s, c, 0.0, 0.0, 0.0, 1.0;
     return m;
 }
-}  // namespace
 
 Eigen::Vector3d precession_angles(double jd) {
     return orbit::precession_angles_iau1976(orbit::julian_centuries(jd));
@@ -26,7 +25,7 @@ Eigen::Matrix3d precession_matrix(double jd) {
 }
 
 Eigen::Matrix3d ecef_from_eci(double jd_utc) {
-    return r3(gmst(jd_utc)) * precession_matrix(jd_utc);
+    return earth_rotation_z(gmst(jd_utc)) * precession_matrix(jd_utc);
 }
 
 }  // namespace environment

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "environment/attitude.hpp"
 #include "environment/constants.hpp"
@@ -32,6 +33,11 @@ void validate(const EnvironmentParams& p) {
     if (p.albedo.rings < 1 || p.albedo.rings > 1000 || p.albedo.sectors < 3 || p.albedo.sectors > 4000) {
         throw std::invalid_argument("Environment: albedo grid must have 1..1000 rings and 3..4000 sectors");
     }
+    if (!(p.albedo.interval >= 0.0) || !(p.albedo.interval <= 86400.0))
+        throw std::invalid_argument("Environment: albedo interval must be 0 (every evaluation) to 86400 s");
+    if (p.albedo.degree < 2 || p.albedo.degree > AlbedoHarmonics::kMaxDegree)
+        throw std::invalid_argument("Environment: albedo degree must be 2 to " +
+                                    std::to_string(AlbedoHarmonics::kMaxDegree));
     if (!std::isfinite(p.seed002_elevation_amplitude))
         throw std::invalid_argument("Environment: seed002 amplitude not finite");
     if (p.orbit_model == OrbitModel::tle && !(p.tle.mean_motion_rev_per_day > 0.0)) {
@@ -54,6 +60,44 @@ Environment::Environment(const EnvironmentParams& params)
     if (params.field_model == FieldModel::igrf14 || params.field_model == FieldModel::dipole) {
         (void)igrf_coefficients(decimal_year(jd0_));
     }
+    if (params.albedo.enabled && params.albedo.interval > 0.0) {
+        albedo_harmonics_.emplace(params.albedo, params.albedo.degree);
+        albedo_nodes_.emplace(params.albedo.interval, albedo_harmonics_->size(), NodeInterpolator::Order::cubic);
+        albedo_coefficients_.assign(albedo_harmonics_->size(), 0.0);
+    }
+}
+
+Eigen::Vector3d Environment::sun_position_at(double t) const {
+    Eigen::Vector3d r_sun;
+    sun_nodes_.evaluate(
+        t,
+        [this](double t_node, double* out) {
+            Eigen::Map<Eigen::Vector3d>{out} = sun_position_eci(jd0_ + t_node / kSecondsPerDay);
+        },
+        r_sun.data());
+    return r_sun;
+}
+
+Eigen::Matrix3d Environment::precession_at(double t) const {
+    Eigen::Matrix3d p;
+    precession_nodes_.evaluate(
+        t,
+        [this](double t_node, double* out) {
+            Eigen::Map<Eigen::Matrix3d>{out} = precession_matrix(jd0_ + t_node / kSecondsPerDay);
+        },
+        p.data());
+    return p;
+}
+
+void Environment::orbit_state(double t, Eigen::Vector3d& r, Eigen::Vector3d& v) const {
+    if (tle_orbit_) {
+        const TleOrbit::State x = tle_orbit_->state_eci(t);
+        r = x.position;
+        v = x.velocity;
+    } else {
+        r = orbit_.position_eci(t);
+        v = orbit_.velocity_eci(t);
+    }
 }
 
 Eigen::Vector3d Environment::sun_position_eci(double jd) const {
@@ -73,15 +117,8 @@ EnvironmentOutputs Environment::evaluate(double t, const RigidBodyState* state) 
     // Orbit and sun.
     Eigen::Vector3d r;
     Eigen::Vector3d v;
-    if (tle_orbit_) {
-        const TleOrbit::State x = tle_orbit_->state_eci(t);
-        r = x.position;
-        v = x.velocity;
-    } else {
-        r = orbit_.position_eci(t);
-        v = orbit_.velocity_eci(t);
-    }
-    const Eigen::Vector3d r_sun = sun_position_eci(out.julian_date);
+    orbit_state(t, r, v);
+    const Eigen::Vector3d r_sun = sun_position_at(t);
     const Eigen::Vector3d to_sun = r_sun - r;
     const double d_sun = to_sun.norm();
     const Eigen::Vector3d s = to_sun / d_sun;
@@ -117,7 +154,7 @@ EnvironmentOutputs Environment::evaluate(double t, const RigidBodyState* state) 
     }
 
     // Geomagnetic field: evaluated Earth-fixed, rotated back to ECI (precession + GMST, earth_rotation.hpp).
-    const Eigen::Matrix3d to_ecef = ecef_from_eci(out.julian_date);
+    const Eigen::Matrix3d to_ecef = earth_rotation_z(out.gmst) * precession_at(t);  // ecef_from_eci
     const GaussCoefficients c = igrf_coefficients(decimal_year(out.julian_date));
     const Eigen::Vector3d r_ecef = to_ecef * r;
     const Eigen::Vector3d b_ecef = (params_.field_model == FieldModel::dipole)
@@ -131,7 +168,23 @@ EnvironmentOutputs Environment::evaluate(double t, const RigidBodyState* state) 
     const double d_earth_sun = r_sun.norm();
     const double e_earth =
         params_.solar_constant * (kAstronomicalUnit / d_earth_sun) * (kAstronomicalUnit / d_earth_sun);
-    out.albedo_face = earth_albedo(params_.albedo, r, r_sun / d_earth_sun, e_earth, A);
+    if (albedo_harmonics_) {
+        // The cap at the nodes (its own position, sun and irradiance there), the faces' response here.
+        albedo_nodes_->evaluate(
+            t,
+            [this](double t_node, double* c) {
+                Eigen::Vector3d r_node, v_node;
+                orbit_state(t_node, r_node, v_node);
+                const Eigen::Vector3d sun_node = sun_position_at(t_node);
+                const double d = sun_node.norm();
+                const double e = params_.solar_constant * (kAstronomicalUnit / d) * (kAstronomicalUnit / d);
+                albedo_harmonics_->project(r_node, sun_node / d, e, c);
+            },
+            albedo_coefficients_.data());
+        out.albedo_face = albedo_harmonics_->faces(albedo_coefficients_.data(), A);
+    } else {
+        out.albedo_face = earth_albedo(params_.albedo, r, r_sun / d_earth_sun, e_earth, A);
+    }
     const double rn = r.norm();
     out.nadir_body = to_array(A * (-r / rn));
     out.orbit_radius_ratio = rn / kEarthRadius;

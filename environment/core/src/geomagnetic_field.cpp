@@ -28,42 +28,66 @@ GaussCoefficients igrf_coefficients(double year) {
     return c;
 }
 
+namespace {
+// The recursions' constant factors, computed once at load time (square roots otherwise at every synthesis):
+// sectoral[n] = sqrt((2n-1)/(2n)) (1 for n = 1); den_inv[n][m] = 1/sqrt(n^2 - m^2); k2[n][m] = sqrt((n-1)^2 - m^2).
+struct Recursion {
+    double sectoral[14]{};
+    double den_inv[14][14]{};
+    double k2[14][14]{};
+};
+const Recursion kRecursion = [] {
+    Recursion r;
+    for (int n = 1; n <= kIgrfMaxDegree; ++n) {
+        r.sectoral[n] = (n == 1) ? 1.0 : std::sqrt((2.0 * n - 1.0) / (2.0 * n));
+        for (int m = 0; m < n; ++m) {
+            r.den_inv[n][m] = 1.0 / std::sqrt(double(n * n - m * m));
+            r.k2[n][m] = (n >= 2) ? std::sqrt(double((n - 1) * (n - 1) - m * m)) : 0.0;
+        }
+    }
+    return r;
+}();
+}  // namespace
+
 Eigen::Vector3d spherical_harmonic_field(const GaussCoefficients& c, int max_degree, const Eigen::Vector3d& r_ecef) {
     if (max_degree < 1 || max_degree > kIgrfMaxDegree)
         throw std::invalid_argument("spherical_harmonic_field: degree 1..13");
     const double r = r_ecef.norm();
     if (!(r > 1000.0) || !std::isfinite(r))
         throw std::invalid_argument("spherical_harmonic_field: position below 1 km or not finite");
-    const double rho = std::hypot(r_ecef.x(), r_ecef.y());
+    const double rho = std::sqrt(r_ecef.x() * r_ecef.x() + r_ecef.y() * r_ecef.y());
     const double ct = r_ecef.z() / r;  // cos(colatitude)
     // sin(colatitude) kept away from 0 so B_phi (which divides by it) stays finite at the poles; the
     // error this makes is below 1e-9 relative since every P_n^m with m > 0 carries a factor sin theta.
     const double st = std::max(rho / r, 1e-12);
-    const double lon = std::atan2(r_ecef.y(), r_ecef.x());
+    // cos and sin of the longitude from the position itself (atan2(0, 0) = 0 on the axis: cos 1, sin 0).
+    const double cl = rho > 0.0 ? r_ecef.x() / rho : 1.0;
+    const double sl = rho > 0.0 ? r_ecef.y() / rho : 0.0;
 
     // Schmidt semi-normalised P_n^m(cos theta) and dP/dtheta by the standard recursions.
+    const Recursion& k = kRecursion;
     double p[14][14] = {};
     double dp[14][14] = {};
     p[0][0] = 1.0;
     for (int n = 1; n <= max_degree; ++n) {
         // Sectoral terms: P_1^1 = sin theta; P_n^n = sqrt((2n-1)/(2n)) sin theta P_{n-1}^{n-1} for n >= 2.
-        const double k = (n == 1) ? 1.0 : std::sqrt((2.0 * n - 1.0) / (2.0 * n));
-        p[n][n] = k * st * p[n - 1][n - 1];
-        dp[n][n] = k * (ct * p[n - 1][n - 1] + st * dp[n - 1][n - 1]);
+        p[n][n] = k.sectoral[n] * st * p[n - 1][n - 1];
+        dp[n][n] = k.sectoral[n] * (ct * p[n - 1][n - 1] + st * dp[n - 1][n - 1]);
         // P_n^m = [(2n-1) cos theta P_{n-1}^m - sqrt((n-1)^2 - m^2) P_{n-2}^m] / sqrt(n^2 - m^2)
         for (int m = 0; m < n; ++m) {
-            const double den = std::sqrt(double(n * n - m * m));
-            const double k2 = (n >= 2) ? std::sqrt(double((n - 1) * (n - 1) - m * m)) : 0.0;
             const double pm2 = (n >= 2) ? p[n - 2][m] : 0.0;
             const double dpm2 = (n >= 2) ? dp[n - 2][m] : 0.0;
-            p[n][m] = ((2.0 * n - 1.0) * ct * p[n - 1][m] - k2 * pm2) / den;
-            dp[n][m] = ((2.0 * n - 1.0) * (ct * dp[n - 1][m] - st * p[n - 1][m]) - k2 * dpm2) / den;
+            p[n][m] = ((2.0 * n - 1.0) * ct * p[n - 1][m] - k.k2[n][m] * pm2) * k.den_inv[n][m];
+            dp[n][m] = ((2.0 * n - 1.0) * (ct * dp[n - 1][m] - st * p[n - 1][m]) - k.k2[n][m] * dpm2) * k.den_inv[n][m];
         }
     }
+    // cos(m lon), sin(m lon) by the angle-addition recurrence (m <= 13: a few ulp).
     double cos_m[14], sin_m[14];
-    for (int m = 0; m <= max_degree; ++m) {
-        cos_m[m] = std::cos(m * lon);
-        sin_m[m] = std::sin(m * lon);
+    cos_m[0] = 1.0;
+    sin_m[0] = 0.0;
+    for (int m = 1; m <= max_degree; ++m) {
+        cos_m[m] = cos_m[m - 1] * cl - sin_m[m - 1] * sl;
+        sin_m[m] = sin_m[m - 1] * cl + cos_m[m - 1] * sl;
     }
     // B = -grad V (nT): B_r = sum (n+1)(a/r)^(n+2) ..., B_theta = -sum (a/r)^(n+2) ... dP/dtheta,
     // B_phi = sum (a/r)^(n+2) m (g sin - h cos) P / sin theta.
@@ -85,7 +109,6 @@ Eigen::Vector3d spherical_harmonic_field(const GaussCoefficients& c, int max_deg
     }
     bp /= st;
     // Local spherical unit vectors in ECEF.
-    const double cl = std::cos(lon), sl = std::sin(lon);
     const Eigen::Vector3d e_r(st * cl, st * sl, ct);
     const Eigen::Vector3d e_t(ct * cl, ct * sl, -st);
     const Eigen::Vector3d e_p(-sl, cl, 0.0);

@@ -39,9 +39,19 @@ TleOrbit::State TleOrbit::state_eci(double t) const {
         throw std::domain_error("TleOrbit: at t = " + std::to_string(t) + " s (" + std::to_string(minutes) +
                                 " min from the element set's epoch): " + orbit::describe(status));
     }
-    // The rotation's date: TT taken as UTC (69 s, < 4 mm here; frames.hpp).
-    const double centuries = orbit::julian_centuries(epoch_jd_ + t / kSecondsPerDay);
-    const orbit::OrbitState<double> j2000 = orbit::teme_to_j2000(teme, centuries);
+    // The rotation's date: TT taken as UTC (69 s, < 4 mm here; frames.hpp). Interpolated between nodes (header).
+    Eigen::Matrix3d m;
+    frame_.evaluate(
+        t,
+        [this](double t_node, double* out) {
+            const Eigen::Matrix3d exact =
+                orbit::j2000_from_teme(orbit::julian_centuries(epoch_jd_ + t_node / kSecondsPerDay));
+            Eigen::Map<Eigen::Matrix3d>{out} = exact;
+        },
+        m.data());
+    orbit::OrbitState<double> j2000;
+    j2000.position_km = m * teme.position_km;
+    j2000.velocity_km_s = m * teme.velocity_km_s;
     return {j2000.position_km * 1000.0, j2000.velocity_km_s * 1000.0};
 }
 

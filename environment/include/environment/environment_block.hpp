@@ -75,6 +75,8 @@ struct EnvironmentData {
     ReflectivityModel albedo_reflectivity_model = AlbedoParams{}.model;
     double albedo_reflectivity_equator = AlbedoParams{}.reflectivity_equator;  // 1
     double albedo_reflectivity_pole = AlbedoParams{}.reflectivity_pole;        // 1
+    double albedo_interval = AlbedoParams{}.interval;                          // s
+    std::int32_t albedo_degree = AlbedoParams{}.degree;
     // --- calculated parameter
     double orbit_period = 0.0;  // s
     // --- continuous states and derivatives

@@ -16,6 +16,8 @@
 // the whole cap (no self-shadowing by the satellite), and E_sun is the irradiance at the Earth (the
 // satellite's own eclipse does not enter).
 #include <array>
+#include <cstddef>
+#include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross products
@@ -46,6 +48,11 @@ struct AlbedoParams {
     ReflectivityModel model = ReflectivityModel::uniform;
     double reflectivity_equator = 0.2;  // zonal model (assumed, see above)
     double reflectivity_pole = 0.6;
+    // How often the cap is integrated (Environment): 0 = at every evaluation (earth_albedo below); > 0 = its
+    // spherical-harmonic expansion to `degree` at nodes this many seconds apart, linear between them, and
+    // only the faces' response per evaluation (AlbedoHarmonics). Errors: docs/speed.md, earth_albedo_test.
+    double interval = 10.0;  // s
+    int degree = 12;
 };
 
 /// The reflectivity at a latitude (its sine) under the model.
@@ -59,5 +66,47 @@ inline double reflectivity_at(const AlbedoParams& p, double sin_latitude) {
 std::array<double, 6> earth_albedo(const AlbedoParams& params, const Eigen::Vector3d& r_sat,
                                    const Eigen::Vector3d& sun_direction, double solar_irradiance,
                                    const Eigen::Matrix3d& body_from_eci);
+
+/// The per-sector directions of the quadrature, kept between calls (allocated when the grid changes).
+struct CapScratch {
+    int rings = 0, sectors = 0;
+    std::vector<double> node, weight, cos_psi, sin_psi;
+    std::vector<Eigen::Vector3d> horizontal;
+    std::vector<double> sun_horizontal, polar_horizontal;
+};
+
+/// The same irradiance in two halves, for an attitude that moves faster than the orbit: the radiance the
+/// satellite sees, L(u) over the directions u (ECI), as real spherical harmonics to degree L,
+///   c_lm = sum over the quadrature's elements of a_e Y_lm(u_e)       (project: once per node),
+/// and a face's response f as its Legendre moments f_l = 2 pi integral_0^1 f(t) P_l(t) dt, so that by the
+/// addition theorem (Funk-Hecke) the face with normal n gets
+///   E(n) = sum_e a_e f(n . u_e) = sum_l f_l sum_m c_lm Y_lm(n)      (faces: per evaluation, (L+1)^2 terms)
+/// exactly up to the truncation at degree L (the kink of f at grazing incidence makes f_l fall as l^-5/2;
+/// the error against earth_albedo is measured in earth_albedo_test and stated in docs/speed.md).
+/// Owns its buffers: project and faces allocate nothing.
+class AlbedoHarmonics {
+public:
+    static constexpr int kMaxDegree = 40;
+    AlbedoHarmonics(const AlbedoParams& params, int degree);
+    std::size_t size() const { return size_; }  // (L+1)^2 coefficients
+    int degree() const { return degree_; }
+    /// c[0 … size) = the coefficients of the sunlit cap seen from r_sat (arguments as earth_albedo).
+    void project(const Eigen::Vector3d& r_sat, const Eigen::Vector3d& sun_direction, double solar_irradiance,
+                 double* c);
+    /// Irradiance on +x, -x, +y, -y, +z, -z from coefficients c (never negative).
+    std::array<double, 6> faces(const double* c, const Eigen::Matrix3d& body_from_eci);
+
+private:
+    static std::size_t index(int l, int m) { return static_cast<std::size_t>(l * l + l + m); }
+    void harmonics(const Eigen::Vector3d& unit, double* y) const;
+
+    AlbedoParams params_;
+    int degree_;
+    std::size_t size_;
+    std::vector<double> norm_, up_, down_;  // K_lm (2m-1)!! and the recursion's two factors
+    std::vector<double> response_;          // f_l
+    std::vector<double> basis_;             // scratch: Y_lm at one direction
+    CapScratch scratch_;
+};
 
 }  // namespace environment

@@ -19,6 +19,9 @@ Eigen::Vector3d precession_angles(double julian_date);
 /// Matrix taking J2000 (ECI) coordinates to mean-of-date coordinates.
 Eigen::Matrix3d precession_matrix(double julian_date);
 
+/// R3(gmst): mean of date -> Earth-fixed, the passive rotation about z by the sidereal angle (rad).
+Eigen::Matrix3d earth_rotation_z(double gmst);
+
 /// Matrix taking ECI (J2000) coordinates to Earth-fixed coordinates: R3(GMST) P.
 Eigen::Matrix3d ecef_from_eci(double julian_date_utc);
 

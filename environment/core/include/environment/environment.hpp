@@ -8,12 +8,14 @@
 //   // call RigidBody::renormalize(x) after each step, and evaluate(t, &x).
 #include <array>
 #include <optional>
+#include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross products
 
 #include "environment/circular_orbit.hpp"
 #include "environment/earth_albedo.hpp"
+#include "environment/node_interpolator.hpp"
 #include "environment/rigid_body.hpp"
 #include "environment/spin_attitude.hpp"
 #include "environment/time_scales.hpp"
@@ -92,8 +94,16 @@ public:
     double orbit_period() const { return tle_orbit_ ? tle_orbit_->period() : orbit_.period(); }
     const SpinAttitude& spin() const { return spin_; }
 
+    /// The sun's position and the precession are evaluated at nodes this far apart and interpolated
+    /// linearly: the Earth's curved path bends the sun's position by 2.7 m in 60 s (sagitta), 2e-11 rad,
+    /// against the almanac formula's 2e-4 rad; precession's second derivative is nil at this scale.
+    static constexpr double kSlowInterval = 60.0;  // s
+
 private:
-    Eigen::Vector3d sun_position_eci(double julian_date) const;  // m, Earth centre -> Sun
+    Eigen::Vector3d sun_position_eci(double julian_date) const;  // m, Earth centre -> Sun, exact
+    Eigen::Vector3d sun_position_at(double t) const;             // the same, from the nodes (t s since epoch)
+    Eigen::Matrix3d precession_at(double t) const;               // J2000 -> mean of date, from the nodes
+    void orbit_state(double t, Eigen::Vector3d& r, Eigen::Vector3d& v) const;
 
     EnvironmentParams params_;
     double jd0_;
@@ -102,6 +112,13 @@ private:
     std::optional<TleOrbit> tle_orbit_;  // OrbitModel::tle only
     RigidBody rigid_body_;
     SpinAttitude spin_;
+    // Memos of the slow quantities' nodes (node_interpolator.hpp: the values are functions of t alone, so an
+    // FMU state restored or a step taken again gives the same numbers). One instance is used by one thread.
+    mutable NodeInterpolator sun_nodes_{kSlowInterval, 3};
+    mutable NodeInterpolator precession_nodes_{kSlowInterval, 9};
+    mutable std::optional<AlbedoHarmonics> albedo_harmonics_;  // albedo.interval > 0
+    mutable std::optional<NodeInterpolator> albedo_nodes_;
+    mutable std::vector<double> albedo_coefficients_;
 };
 
 }  // namespace environment

@@ -5,6 +5,7 @@
 // lie before or after it (the offset is a parameter of the propagation, not an error).
 #include <Eigen/Core>
 
+#include "environment/node_interpolator.hpp"
 #include "environment/time_scales.hpp"
 #include "orbit/sgp4.hpp"
 #include "orbit/tle.hpp"
@@ -26,6 +27,11 @@ public:
     };
     State state_eci(double t) const;
 
+    /// The rotation TEME -> J2000 is evaluated at nodes this far apart and interpolated linearly between:
+    /// its entries' second derivatives are below 1e-16 /s^2 (the nutation's 13.7-day term: 1e-6 rad at
+    /// (5.3e-6 rad/s)^2), so the interpolation is within 60^2/8 * 1e-16 < 1e-13 rad, 1 um of the orbit.
+    static constexpr double kFrameInterval = 60.0;  // s
+
     /// Minutes from the element set's epoch to the environment's (t = 0), from whole days and day fractions
     /// apart: one Julian date in a double resolves only 40 us, 0.3 m of the orbit.
     double minutes_from_tle_epoch() const { return minutes_offset_; }
@@ -38,6 +44,7 @@ private:
     orbit::Sgp4<double> sgp4_;
     double epoch_jd_;
     double minutes_offset_;
+    mutable NodeInterpolator frame_{kFrameInterval, 9};  // j2000_from_teme, column-major
 };
 
 }  // namespace environment
