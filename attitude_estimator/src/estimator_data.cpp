@@ -72,8 +72,8 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
     if (d.reference_source == ReferenceSource::onboard) {
         // The status was checked in the block's configure(); the firmware's board checks the epoch.
         const orbit::Tle tle = onboard_element_set(d);
-        (void)make_reference_config(s.references, onboard_clock_epoch(d), tle.mean_elements<double>(),
-                                    tle.epoch_jd_utc, d.field_degree, d.reference_period);
+        (void)make_reference_config(s.references, onboard_clock_epoch(d), tle.mean_elements<double>(), tle.epoch_jd_utc,
+                                    d.field_degree, d.reference_period);
         orbit::Sgp4<double> sgp4;
         if (sgp4.initialize(tle.mean_elements<double>()) == orbit::Sgp4Status::ok)
             orbit_radius = sgp4.semi_major_axis_km() * 1e3;

@@ -202,7 +202,8 @@ TEST(EstimatorFmuReferences, ASetDecadesFromTheClockIsRefused) {
         sim.start(0.0);
         FAIL() << "a set 50 years from the clock was accepted";
     } catch (const fmu::Error& e) {
-        for (const char* part : {"1976-03-19 12:00", "2026-03-20", "the computer's clock", "366 days", "kMaxElementSetAgeDays"})
+        for (const char* part :
+             {"1976-03-19 12:00", "2026-03-20", "the computer's clock", "366 days", "kMaxElementSetAgeDays"})
             EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
     }
     // The numbers get the text's checks: an eccentricity of 1 is named.

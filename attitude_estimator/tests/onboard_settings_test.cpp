@@ -148,7 +148,8 @@ std::function<void(EstimatorData&)> configuration_for(const std::string& name) {
             onboard_references(d);
             d.reference_source = ReferenceSource::inputs;
         };
-    for (const char* prefix : {"tle_line", "field_degree", "clock_epoch_", "clock_offset", "uplink_age", "reference_period"})
+    for (const char* prefix :
+         {"tle_line", "field_degree", "clock_epoch_", "clock_offset", "uplink_age", "reference_period"})
         if (name.starts_with(prefix)) return onboard_references;
     return [](EstimatorData&) {};
 }

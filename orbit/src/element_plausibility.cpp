@@ -15,8 +15,8 @@ std::string format_utc(double jd_utc) {
     const CalendarDay d = calendar_day(midnight + std::floor(ms / 86'400'000.0) + 0.25);
     const long long rest = static_cast<long long>(ms) % 86'400'000;
     char text[64];
-    std::snprintf(text, sizeof text, "%04d-%02d-%02d %02lld:%02lld:%06.3f UTC", d.year, d.month, d.day, rest / 3'600'000,
-                  rest / 60'000 % 60, static_cast<double>(rest % 60'000) / 1000.0);
+    std::snprintf(text, sizeof text, "%04d-%02d-%02d %02lld:%02lld:%06.3f UTC", d.year, d.month, d.day,
+                  rest / 3'600'000, rest / 60'000 % 60, static_cast<double>(rest % 60'000) / 1000.0);
     return text;
 }
 

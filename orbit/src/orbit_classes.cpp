@@ -34,8 +34,8 @@ double kozai_mean_motion_for_altitude(double altitude_km, double eccentricity, d
     // SGP4's initialization (Vallado et al. 2006, initl): from the Kozai n_K, ak = (xke/n_K)^(2/3),
     // δ1 = d1/ak², adel = ak (1 - δ1² - δ1 (1/3 + 134 δ1²/81)), δ0 = d1/adel², n = n_K / (1 + δ0), and the
     // mean axis a = (xke/n)^(2/3) Earth radii. Given a: n, then n_K = n (1 + δ0(n_K)) by iteration (δ0 ~ 1e-3).
-    const double xke = 60.0 / std::sqrt(Wgs72::earth_radius_km * Wgs72::earth_radius_km * Wgs72::earth_radius_km /
-                                         Wgs72::mu_km3_s2);
+    const double xke =
+        60.0 / std::sqrt(Wgs72::earth_radius_km * Wgs72::earth_radius_km * Wgs72::earth_radius_km / Wgs72::mu_km3_s2);
     const double a = (Wgs72::earth_radius_km + altitude_km) / Wgs72::earth_radius_km;
     const double n = xke / std::pow(a, 1.5);  // rad/min
     const double cosi = std::cos(inclination_deg * kDeg);

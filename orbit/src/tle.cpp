@@ -165,11 +165,11 @@ TleElementsError::TleElementsError(int element, const std::string& reason)
 
 Tle checked_tle_from_elements(const TleElements& e) {
     static constexpr const char* names[kTleElementCount] = {
-        "epoch (Julian date, UTC)",  "mean motion (rev/day)",          "eccentricity",
-        "inclination (deg)",         "right ascension of the node (deg)", "argument of perigee (deg)",
-        "mean anomaly (deg)",        "B* (1/Earth radii)"};
+        "epoch (Julian date, UTC)",          "mean motion (rev/day)",     "eccentricity",       "inclination (deg)",
+        "right ascension of the node (deg)", "argument of perigee (deg)", "mean anomaly (deg)", "B* (1/Earth radii)"};
     auto fail = [&](std::size_t k, const std::string& reason) -> void {
-        throw TleElementsError(static_cast<int>(k + 1), std::string(names[k]) + " " + std::to_string(e[k]) + " " + reason);
+        throw TleElementsError(static_cast<int>(k + 1),
+                               std::string(names[k]) + " " + std::to_string(e[k]) + " " + reason);
     };
     for (std::size_t k = 0; k < kTleElementCount; ++k)
         if (!std::isfinite(e[k])) fail(k, "is not a finite number");
@@ -190,7 +190,8 @@ Tle checked_tle_from_elements(const TleElements& e) {
         fail(1, "is a period of " + std::to_string(sgp4.period_minutes()) +
                     " min >= 225 min: a deep-space element set, which needs SDP4 (not implemented; near-Earth sets "
                     "only)");
-    if (status != Sgp4Status::ok) throw TleElementsError(0, std::string("SGP4 cannot start from this set: ") + describe(status));
+    if (status != Sgp4Status::ok)
+        throw TleElementsError(0, std::string("SGP4 cannot start from this set: ") + describe(status));
     return tle;
 }
 

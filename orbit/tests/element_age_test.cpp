@@ -96,9 +96,9 @@ TEST(OrbitElementAge, NodeRateIsJ2sClosedForm) {
 
 TEST(OrbitElementAge, CrossesTheYearBoundary) {
     // 2026 day 1.25 made two days older: 2025 (not a leap year) day 364.25; and back again.
-    const orbit::Tle t = orbit::parse_tle(
-        with_checksum("1 90001U          26001.25000000  .00002000  00000-0  15000-3 0  999"),
-        with_checksum("2 90001  64.9000   0.0000 0012000  90.0000 270.0000 14.98524078  100"));
+    const orbit::Tle t =
+        orbit::parse_tle(with_checksum("1 90001U          26001.25000000  .00002000  00000-0  15000-3 0  999"),
+                         with_checksum("2 90001  64.9000   0.0000 0012000  90.0000 270.0000 14.98524078  100"));
     const orbit::Tle older = orbit::older_set(t, 2.0 * 86400.0);
     EXPECT_EQ(older.epoch_year, 2025);
     EXPECT_NEAR(older.epoch_day, 364.25, 1e-9);
@@ -149,8 +149,9 @@ TEST(OrbitElementPlausibility, OneRuleForTheDate) {
                              "kMaxElementSetAgeDays"})
         EXPECT_NE(far.find(part), std::string::npos) << far;
     // Within the bound, a set SGP4 has decayed by then: 28872 decays 55 min after its epoch.
-    const orbit::Tle decaying = orbit::parse_tle("1 28872U 05037B   05333.02012661  .25992681  00000-0  24476-3 0  1534",
-                                                 "2 28872  96.4736 157.9986 0303955 244.0492 110.6523 16.46015938 10708");
+    const orbit::Tle decaying =
+        orbit::parse_tle("1 28872U 05037B   05333.02012661  .25992681  00000-0  24476-3 0  1534",
+                         "2 28872  96.4736 157.9986 0303955 244.0492 110.6523 16.46015938 10708");
     EXPECT_EQ(orbit::element_set_problem_at(decaying, decaying.epoch_jd_utc + 50.0 / 1440.0, "t = 0"), "");
     EXPECT_NE(orbit::element_set_problem_at(decaying, decaying.epoch_jd_utc + 1.0, "t = 0").find("decayed"),
               std::string::npos);

@@ -79,7 +79,8 @@ struct EstimatorData {
     double cone_tolerance = SunMethodConfig<double>{}.cone_tolerance;  // 1: cones' agreement on the relative response
     double cube_max_step =
         SunMethodConfig<double>{}.cube_max_step;  // rad: cones may cross forbidden cube edges by this
-    double orbit_altitude = 570e3;  // m: cones' Earth-albedo model's height (reference_source = inputs; onboard: its set's)
+    double orbit_altitude =
+        570e3;  // m: cones' Earth-albedo model's height (reference_source = inputs; onboard: its set's)
     double cone_fit_tolerance =
         SunMethodConfig<double>{}.cone_fit_tolerance;  // 1: albedo fit's RMS misfit bound (0: off)
     double cone_albedo_max =
@@ -128,8 +129,8 @@ struct EstimatorData {
     // clock_offset, and its element set is the given one (tle_lines or tle_elements: the scenario's set)
     // made uplink_age older along SGP4's secular rates (orbit/element_age.hpp). 0, 0: the given values as
     // they are (a recorded uplink).
-    double clock_offset = 0.0;  // s
-    double uplink_age = 0.0;    // s
+    double clock_offset = 0.0;       // s
+    double uplink_age = 0.0;         // s
     double reference_period = 10.0;  // s between two evaluations of the on-board orbit, sun and field
     // The same element set as numbers, in the set's own units: epoch (Julian date, UTC), mean motion
     // (rev/day), eccentricity, inclination, right ascension of the node, argument of perigee, mean anomaly

@@ -612,8 +612,9 @@ CampaignSpec parse_spec(const std::string& text, const std::filesystem::path& fi
         if (d.kind == DrawKind::orbit || d.kind == DrawKind::epoch) written.push_back(d.target);
         for (const auto& w : written)
             if (!scenario.insert(w).second)
-                cx.fail("'" + w + "' is written by two draws (an orbit draw's set is made at the epoch draw's "
-                              "date: leave it out of the epoch draw's element_sets)");
+                cx.fail("'" + w +
+                        "' is written by two draws (an orbit draw's set is made at the epoch draw's "
+                        "date: leave it out of the epoch draw's element_sets)");
     }
     for (const auto& m : spec.metrics)
         if (!names.insert(m.name).second) cx.fail("two metrics named '" + m.name + "'");

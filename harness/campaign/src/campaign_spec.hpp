@@ -50,7 +50,7 @@ struct Draw {
     // The scenario's element set before the draws (epoch: element_sets[0]'s; orbit: target's), filled from
     // the system by read_scenario_base() (draws.hpp); empty until then.
     std::vector<double> base_elements;
-    bool figure = true;                                     // draw the metrics against it (false for a noise seed)
+    bool figure = true;  // draw the metrics against it (false for a noise seed)
     // The name its generator is seeded from (default: the target): draws of different targets that name
     // one stream draw the same numbers in a scene (a fault's onset shared by every case).
     std::string stream;

@@ -61,7 +61,8 @@ void set_elements(const std::string& target, const orbit::Tle& tle, RunDraws& ou
 
 orbit::Tle base_set(const Draw& d) {
     if (d.base_elements.size() != orbit::kTleElementCount)
-        throw CampaignError(d.target + ": the scenario's element set was not read from the system (read_scenario_base)");
+        throw CampaignError(d.target +
+                            ": the scenario's element set was not read from the system (read_scenario_base)");
     orbit::TleElements e{};
     std::copy(d.base_elements.begin(), d.base_elements.end(), e.begin());
     return orbit::tle_from_elements(e);
@@ -362,7 +363,8 @@ RunDraws draw_run(const CampaignSpec& spec, long index) {
     for (const auto& d : spec.draws) all.push_back(&d);
     if (which)
         for (const auto& d : spec.cases[*which].draws) all.push_back(&d);
-    const bool has_orbit = std::any_of(all.begin(), all.end(), [](const Draw* d) { return d->kind == DrawKind::orbit; });
+    const bool has_orbit =
+        std::any_of(all.begin(), all.end(), [](const Draw* d) { return d->kind == DrawKind::orbit; });
     const double jd = has_orbit ? scenario_jd(all, spec.seed, unit_index) : 0.0;
     if (which) {
         out.cells.push_back(spec.cases[*which].name);

@@ -225,7 +225,8 @@ const std::vector<double> kLeoSet = {2461119.5, 14.98524078, 0.0012, 64.9, 0.0, 
 
 std::optional<std::string> leo_values(const std::string& name) {
     for (const char* set : {"env.tle_elements[", "est.tle_elements["})
-        if (name.rfind(set, 0) == 0) return cosim::format_real(kLeoSet.at(std::stoul(name.substr(std::string(set).size())) - 1));
+        if (name.rfind(set, 0) == 0)
+            return cosim::format_real(kLeoSet.at(std::stoul(name.substr(std::string(set).size())) - 1));
     if (name.find("tle_line") != std::string::npos) return std::string();
     return std::nullopt;
 }
@@ -314,7 +315,8 @@ TEST(Draws, OrbitClassesAsElementSets) {
         const auto s = settings_of(d);
         const std::string cls = d.cells.at(2);
         ++counts[cls];
-        const double altitude = number(d.cells.at(3)), inclination = number(d.cells.at(4)), ltan = number(d.cells.at(5));
+        const double altitude = number(d.cells.at(3)), inclination = number(d.cells.at(4)),
+                     ltan = number(d.cells.at(5));
         EXPECT_EQ(s.at("env.tle_elements[4]"), s.at("est.tle_elements[4]"));
         EXPECT_NEAR(number(s.at("env.tle_elements[4]")), inclination, 1e-9);
         // The set's epoch is the epoch draw's date.
@@ -330,14 +332,19 @@ TEST(Draws, OrbitClassesAsElementSets) {
             EXPECT_GE(altitude, 450.0 - 1e-6);
             EXPECT_LE(altitude, 650.0 + 1e-6);
         }
-        if (cls == "polar") EXPECT_EQ(inclination, 90.0);
-        if (cls == "low_inclination") EXPECT_EQ(inclination, 20.0);
+        if (cls == "polar") {
+            EXPECT_EQ(inclination, 90.0);
+        }
+        if (cls == "low_inclination") {
+            EXPECT_EQ(inclination, 20.0);
+        }
         if (cls == "sun_synchronous") {
             // J2 alone: cos i = -2 rho a^{7/2} / (3 J2 R^2 sqrt(mu)), rho the mean sun's 360 deg per 365.2422 days.
             const double a = radius + altitude, rho = 2.0 * pi / (365.2422 * 86400.0);
-            EXPECT_NEAR(inclination,
-                        std::acos(-2.0 * rho * std::pow(a, 3.5) / (3.0 * j2 * radius * radius * std::sqrt(mu))) * 180 / pi,
-                        0.05);
+            EXPECT_NEAR(
+                inclination,
+                std::acos(-2.0 * rho * std::pow(a, 3.5) / (3.0 * j2 * radius * radius * std::sqrt(mu))) * 180 / pi,
+                0.05);
             EXPECT_GE(ltan, 9.0 - 1e-9);
             EXPECT_LE(ltan, 11.0 + 1e-9);
         }

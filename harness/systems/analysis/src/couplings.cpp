@@ -125,8 +125,8 @@ void check_uplink(const cosim::System& system, std::size_t env, std::size_t est,
     const double clock = *clock_epoch + offset / 86400.0;
     const double clock_error = (clock - *truth_epoch) * 86400.0;
     if (std::abs(clock_error) > max_clock_difference) {
-        out.push_back(e + "'s clock at t = 0 (clock_epoch_* + clock_offset) reads " + orbit::format_utc(clock) +
-                      ", " + cosim::format_real(std::round(clock_error * 1000.0) / 1000.0) + " s from the truth's " +
+        out.push_back(e + "'s clock at t = 0 (clock_epoch_* + clock_offset) reads " + orbit::format_utc(clock) + ", " +
+                      cosim::format_real(std::round(clock_error * 1000.0) / 1000.0) + " s from the truth's " +
                       orbit::format_utc(*truth_epoch) + " (" + t + ".epoch_*), more than the " +
                       cosim::format_real(max_clock_difference) + " s allowed (max_clock_difference; set " +
                       instant_settings(e + ".clock_epoch", *truth_epoch - offset / 86400.0) + ")");
