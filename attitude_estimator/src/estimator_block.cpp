@@ -10,6 +10,7 @@
 #include "fmu/errors.hpp"
 #include "fmu/instant_clock.hpp"
 #include "fmu/state_check.hpp"
+#include "orbit/element_plausibility.hpp"
 #include "orbit/tle.hpp"
 
 namespace attitude_estimator {
@@ -112,7 +113,9 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
         .range(0.0, 3.14159);
     t.parameter(
          "orbit_altitude", &D::orbit_altitude, "m",
-         "cones: altitude of the orbit, for the Earth-albedo model's view of the Earth (default 570 km, seed 004)")
+         "cones with reference_source = inputs: altitude of the orbit over a 6371 km Earth, for the Earth-albedo "
+         "model's view of the Earth (default 570 km, seed 004); onboard: not used, the computer's own element set "
+         "gives it (SGP4's mean semi-major axis)")
         .range(100e3, 100e6);
     t.parameter("cone_fit_tolerance", &D::cone_fit_tolerance, "1",
                 "cones: an albedo-model fit is accepted below this RMS misfit of the relative face responses; 0 "
@@ -355,6 +358,15 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.parameter("clock_epoch_second", &D::clock_epoch_second, "s",
                 "onboard: the computer's clock at t = 0: second of the minute")
         .range(0.0, 60.999);
+    t.parameter("clock_offset", &D::clock_offset, "s",
+                "onboard: the computer's clock error: at t = 0 it reads clock_epoch_* plus this (connect clock_epoch_* "
+                "to the scenario's epoch)")
+        .range(-86400.0, 86400.0);
+    t.parameter("uplink_age", &D::uplink_age, "s",
+                "onboard: the computer's element set is the given one (tle_line1/2 or tle_elements: connect the "
+                "scenario's set) made this much older along SGP4's secular rates (orbit/element_age.hpp); 0: the "
+                "given set as it is")
+        .range(0.0, orbit::kMaxElementSetAgeDays * 86400.0);
     t.parameter("reference_period", &D::reference_period, "s",
                 "onboard: time between two evaluations of the on-board orbit, sun and field models (each sample "
                 "interpolates between the two around it)")
@@ -534,23 +546,34 @@ void EstimatorBlock::configure() {
         if (text) {
             // The element set's text is parsed by the orbit library (it checks columns, checksums and ranges).
             try {
-                d.parsed_elements = numbers_from_tle(orbit::parse_tle(d.tle_line1.view(), d.tle_line2.view()));
+                d.parsed_elements = orbit::elements_of(orbit::parse_tle(d.tle_line1.view(), d.tle_line2.view()));
             } catch (const orbit::TleError& e) {
                 throw fmu::Error(std::string("reference_source = onboard: tle_line1/tle_line2: ") + e.what());
             }
         }
-        const orbit::Tle tle = tle_from_numbers(text ? d.parsed_elements : d.tle_elements);
+        if (!text) {
+            // The numbers get the checks the parser makes on the text.
+            try {
+                (void)orbit::checked_tle_from_elements(d.tle_elements);
+            } catch (const orbit::TleElementsError& e) {
+                throw fmu::Error(std::string("reference_source = onboard: tle_elements") + e.what());
+            }
+        }
+        const orbit::Tle tle = onboard_element_set(d);
         OnboardReferenceConfig<double> check;
-        const CalendarInstant epoch{.year = d.clock_epoch_year,
-                                    .month = d.clock_epoch_month,
-                                    .day = d.clock_epoch_day,
-                                    .hour = d.clock_epoch_hour,
-                                    .minute = d.clock_epoch_minute,
-                                    .second = d.clock_epoch_second};
-        const orbit::Sgp4Status status = make_reference_config(check, epoch, tle.mean_elements<double>(),
-                                                               tle.epoch_jd_utc, d.field_degree, d.reference_period);
+        const orbit::Sgp4Status status =
+            make_reference_config(check, onboard_clock_epoch(d), tle.mean_elements<double>(), tle.epoch_jd_utc,
+                                  d.field_degree, d.reference_period);
         if (status != orbit::Sgp4Status::ok)
-            throw fmu::Error(std::string("reference_source = onboard: the element set: ") + orbit::describe(status));
+            throw fmu::Error(std::string("reference_source = onboard: the element set") +
+                             (d.uplink_age > 0.0 ? " made uplink_age older" : "") + ": " + orbit::describe(status));
+        // The truth's rule (orbit/element_plausibility.hpp): the set within a year of the clock, SGP4 still
+        // propagating there.
+        const std::string problem =
+            orbit::element_set_problem_at(tle, check.clock.epoch_julian_date, "the computer's clock at t = 0");
+        if (!problem.empty())
+            throw fmu::Error("reference_source = onboard: " + problem +
+                             (d.uplink_age > 0.0 ? " (the given set made uplink_age older)" : ""));
     }
     settings_ = onboard_settings_from<double>(data());
     settings_float_ = onboard_settings_from<float>(data());

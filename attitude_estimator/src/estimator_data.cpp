@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "orbit/element_age.hpp"
+
 namespace attitude_estimator {
 
 namespace {
@@ -63,7 +65,20 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
     c.sun.min_sun_norm = static_cast<T>(d.min_sun_norm);
     c.sun.cone_tolerance = static_cast<T>(d.cone_tolerance);
     c.sun.cube_max_step = static_cast<T>(d.cube_max_step);
-    c.sun.cone_earth_sin_radius = static_cast<T>(kEarthMeanRadius / (kEarthMeanRadius + d.orbit_altitude));
+    s.reference_source = d.reference_source;
+    // With its own references the cones' Earth is seen from the computer's own orbit: SGP4's mean semi-major
+    // axis of its element set over its 6371 km sphere (no separate altitude to keep in step with the set).
+    double orbit_radius = kEarthMeanRadius + d.orbit_altitude;
+    if (d.reference_source == ReferenceSource::onboard) {
+        // The status was checked in the block's configure(); the firmware's board checks the epoch.
+        const orbit::Tle tle = onboard_element_set(d);
+        (void)make_reference_config(s.references, onboard_clock_epoch(d), tle.mean_elements<double>(), tle.epoch_jd_utc,
+                                    d.field_degree, d.reference_period);
+        orbit::Sgp4<double> sgp4;
+        if (sgp4.initialize(tle.mean_elements<double>()) == orbit::Sgp4Status::ok)
+            orbit_radius = sgp4.semi_major_axis_km() * 1e3;
+    }
+    c.sun.cone_earth_sin_radius = static_cast<T>(kEarthMeanRadius / orbit_radius);
     c.sun.cone_fit_tolerance = static_cast<T>(d.cone_fit_tolerance);
     c.sun.cone_albedo_max = static_cast<T>(d.cone_albedo_max);
     // The cones method's albedo model through the panels' response: a configure-time integral (1e6 response
@@ -108,19 +123,6 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
     m.max_init_gap = static_cast<T>(3.5 * d.sample_period);
 
     s.faults = fault_settings_from<T>(d);
-    s.reference_source = d.reference_source;
-    if (d.reference_source == ReferenceSource::onboard) {
-        const CalendarInstant epoch{.year = d.clock_epoch_year,
-                                    .month = d.clock_epoch_month,
-                                    .day = d.clock_epoch_day,
-                                    .hour = d.clock_epoch_hour,
-                                    .minute = d.clock_epoch_minute,
-                                    .second = d.clock_epoch_second};
-        // The status was checked in the block's configure(); the firmware's board checks the epoch.
-        const orbit::Tle tle = tle_from_numbers(d.parsed_elements[0] > 0.0 ? d.parsed_elements : d.tle_elements);
-        (void)make_reference_config(s.references, epoch, tle.mean_elements<double>(), tle.epoch_jd_utc, d.field_degree,
-                                    d.reference_period);
-    }
     return s;
 }
 
@@ -135,22 +137,19 @@ OnboardInputs<T> onboard_inputs_from(const EstimatorData& d) {
                             .sun_distance = static_cast<T>(d.sun_distance)};
 }
 
-orbit::Tle tle_from_numbers(const std::array<double, kElementCount>& e) noexcept {
-    orbit::Tle t;
-    t.epoch_jd_utc = e[0];
-    t.mean_motion_rev_per_day = e[1];
-    t.eccentricity = e[2];
-    t.inclination_deg = e[3];
-    t.raan_deg = e[4];
-    t.arg_perigee_deg = e[5];
-    t.mean_anomaly_deg = e[6];
-    t.bstar_per_earth_radius = e[7];
-    return t;
+orbit::Tle onboard_element_set(const EstimatorData& d) noexcept {
+    const orbit::Tle given = orbit::tle_from_elements(d.parsed_elements[0] > 0.0 ? d.parsed_elements : d.tle_elements);
+    return d.uplink_age == 0.0 ? given : orbit::older_set(given, d.uplink_age);
 }
 
-std::array<double, kElementCount> numbers_from_tle(const orbit::Tle& t) noexcept {
-    return {t.epoch_jd_utc, t.mean_motion_rev_per_day, t.eccentricity,     t.inclination_deg,
-            t.raan_deg,     t.arg_perigee_deg,         t.mean_anomaly_deg, t.bstar_per_earth_radius};
+CalendarInstant onboard_clock_epoch(const EstimatorData& d) noexcept {
+    // The offset joins the seconds (make_onboard_clock counts them past the minute and below zero alike).
+    return CalendarInstant{.year = d.clock_epoch_year,
+                           .month = d.clock_epoch_month,
+                           .day = d.clock_epoch_day,
+                           .hour = d.clock_epoch_hour,
+                           .minute = d.clock_epoch_minute,
+                           .second = d.clock_epoch_second + d.clock_offset};
 }
 
 template <class T>

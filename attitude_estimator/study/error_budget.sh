@@ -7,7 +7,7 @@
 #                        inputs), as leo_orbit did before the on-board references: the optimistic reference
 #   bundled              on-board references from a 24 h-old element set, IGRF-14 to degree 8, a 0.05 A.m2
 #                        residual dipole and the plant's currents read by the magnetometer
-#   tle 0 h / 72 h       the on-board element set the truth's own / 72 h older (study/older_tle.py)
+#   tle 0 h / 72 h       the on-board element set the truth's own / 72 h older (est.uplink_age)
 #   degree 13 / 1        the on-board field model to degree 13 (the truth's) / a dipole
 #   dipole 0 / 0.2       the spacecraft's residual dipole, A.m2
 #   no spacecraft field  the magnetometer reads the Earth's field alone (mag.read_spacecraft_field = false)
@@ -17,9 +17,6 @@ out=${1:?output directory}
 mkdir -p "$out"
 ssd=harness/systems/leo_orbit.ssd
 study=attitude_estimator/study
-line() { sed -nE "s/.*<ssv:Parameter name=\"tle_line$1\"><ssv:String value=\"([^\"]*)\".*/\1/p" "$ssd" | head -n 1; }
-truth1=$(line 1) truth2=$(line 2)   # the environment's set comes first in the file
-mapfile -t old72 < <(python3 "$study/older_tle.py" "$truth1" "$truth2" --hours 72)
 
 # The truth-fed system: the estimator's reference inputs declared and connected to the environment's truth.
 fed=$out/leo_orbit_truth_fed.ssd
@@ -55,8 +52,8 @@ run() {  # name, system, settings...
 }
 run "truth-fed" "$fed" --set est.reference_source=inputs
 run "bundled (24 h, degree 8, dipole 0.05)" "$ssd"
-run "tle 0 h" "$ssd" --set "est.tle_line1=$truth1" --set "est.tle_line2=$truth2"
-run "tle 72 h" "$ssd" --set "est.tle_line1=${old72[0]}" --set "est.tle_line2=${old72[1]}"
+run "tle 0 h" "$ssd" --set est.uplink_age=0
+run "tle 72 h" "$ssd" --set est.uplink_age=259200
 run "degree 13" "$ssd" --set est.field_degree=13
 run "degree 1 (dipole)" "$ssd" --set est.field_degree=1
 run "dipole 0" "$ssd" --set "mag.dipole_moment[3]=0"

@@ -133,7 +133,7 @@ void onboard_references(EstimatorData& d) {
 }
 void onboard_references_from_numbers(EstimatorData& d) {
     d.reference_source = ReferenceSource::onboard;
-    d.tle_elements = numbers_from_tle(orbit::parse_tle(kLine1, kLine2));
+    d.tle_elements = orbit::elements_of(orbit::parse_tle(kLine1, kLine2));
 }
 std::function<void(EstimatorData&)> configuration_for(const std::string& name) {
     auto sun_method_of_element = [name](EstimatorData& d) {  // "filter_sun_sigma_method[3]": method 2 (cones)
@@ -148,7 +148,8 @@ std::function<void(EstimatorData&)> configuration_for(const std::string& name) {
             onboard_references(d);
             d.reference_source = ReferenceSource::inputs;
         };
-    for (const char* prefix : {"tle_line", "field_degree", "clock_epoch_", "reference_period"})
+    for (const char* prefix :
+         {"tle_line", "field_degree", "clock_epoch_", "clock_offset", "uplink_age", "reference_period"})
         if (name.starts_with(prefix)) return onboard_references;
     return [](EstimatorData&) {};
 }

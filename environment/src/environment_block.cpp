@@ -45,11 +45,22 @@ EnvironmentParams environment_params(const EnvironmentData& d) {
     p.rigid_body = RigidBodyParams{.inertia = d.inertia, .q0 = d.q0, .omega0 = d.omega0};
     p.orbit_model = d.orbit_model;
     if (d.orbit_model == OrbitModel::tle) {
-        try {
-            p.tle = orbit::parse_tle(d.tle_line1.view(), d.tle_line2.view());
-        } catch (const orbit::TleError& e) {
-            throw fmu::Error(std::string("environment: the element set in tle_line1, tle_line2 is refused: ") +
-                             e.what());
+        if (d.tle_line1.view().empty() && d.tle_line2.view().empty()) {
+            // The set as numbers, with the checks the parser makes on the text.
+            try {
+                p.tle = orbit::checked_tle_from_elements(d.tle_elements);
+            } catch (const orbit::TleElementsError& e) {
+                throw fmu::Error(std::string("environment: the element set in tle_elements is refused (tle_line1 and "
+                                             "tle_line2 are empty): tle_elements") +
+                                 e.what());
+            }
+        } else {
+            try {
+                p.tle = orbit::parse_tle(d.tle_line1.view(), d.tle_line2.view());
+            } catch (const orbit::TleError& e) {
+                throw fmu::Error(std::string("environment: the element set in tle_line1, tle_line2 is refused: ") +
+                                 e.what());
+            }
         }
     }
     p.orbit = OrbitParams{.altitude = d.orbit_altitude,
@@ -118,13 +129,19 @@ void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
     // Orbit.
     t.choice("orbit_model", &D::orbit_model, {{"circular", OrbitModel::circular}, {"tle", OrbitModel::tle}},
              "Truth orbit: circular (Kepler, from orbit_altitude, orbit_inclination, orbit_raan, "
-             "orbit_argument_of_latitude0) or tle (SGP4 from the element set tle_line1, tle_line2, TEME rotated to "
-             "J2000; its epoch may differ from the epoch_* parameters)");
+             "orbit_argument_of_latitude0) or tle (SGP4 from the element set tle_line1, tle_line2 or tle_elements, "
+             "TEME rotated to J2000; its epoch may differ from the epoch_* parameters by up to "
+             "orbit::kMaxElementSetAgeDays, 366 days)");
     t.parameter("tle_line1", &D::tle_line1, "",
                 "orbit_model tle: line 1 of the two-line element set (69 columns, checksum in column 69)")
         .applies_when("orbit_model", {"tle"});
     t.parameter("tle_line2", &D::tle_line2, "",
                 "orbit_model tle: line 2 of the two-line element set (near-Earth: period below 225 min)")
+        .applies_when("orbit_model", {"tle"});
+    t.parameter("tle_elements", &D::tle_elements, "1",
+                "orbit_model tle, when tle_line1 and tle_line2 are empty: the element set as numbers in its own "
+                "units: epoch (Julian date, UTC), mean motion (rev/day), eccentricity, inclination, right ascension "
+                "of the node, argument of perigee, mean anomaly (deg), B* (1/Earth radii); default the bundled set")
         .applies_when("orbit_model", {"tle"});
     t.parameter("orbit_altitude", &D::orbit_altitude, "m",
                 "Circular orbit: altitude above the equatorial radius 6378.137 km (seed 004: about 570 km)")

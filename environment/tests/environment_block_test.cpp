@@ -403,7 +403,11 @@ TEST(EnvironmentFmu, TleOrbitIsTheLibrarysPropagation) {
     // The default set's epoch is day 79.0 of 2026 (2026-03-20 00:00 UTC); start the run 6 h later.
     d.epoch_hour = 6;
     sim.start();
-    const orbit::Tle tle = orbit::parse_tle(d.tle_line1.view(), d.tle_line2.view());
+    // The default set, as the numbers the block holds, and as the text they were written from.
+    const orbit::Tle tle = orbit::tle_from_elements(d.tle_elements);
+    const orbit::Tle text = orbit::parse_tle("1 90001U          26079.00000000  .00002000  00000-0  15000-3 0  9995",
+                                             "2 90001  64.9000   0.0000 0012000  90.0000 270.0000 14.98524078  1001");
+    for (std::size_t k = 0; k < 8; ++k) EXPECT_EQ(orbit::elements_of(tle)[k], orbit::elements_of(text)[k]) << k;
     orbit::Sgp4<double> sgp4;
     ASSERT_EQ(sgp4.initialize(tle.mean_elements<double>()), orbit::Sgp4Status::ok);
     EXPECT_NEAR(d.orbit_period, 60.0 * sgp4.period_minutes(), 1e-9);
@@ -440,7 +444,8 @@ TEST(EnvironmentFmu, BadElementSetIsRefusedAtConfigureNamingTheParameterAndColum
     Simulation sim;
     auto& d = sim.data();
     d.orbit_model = OrbitModel::tle;
-    std::string line2(d.tle_line2.view());
+    d.tle_line1.assign("1 90001U          26079.00000000  .00002000  00000-0  15000-3 0  9995");
+    std::string line2 = "2 90001  64.9000   0.0000 0012000  90.0000 270.0000 14.98524078  1001";
     line2[68] = line2[68] == '0' ? '1' : '0';  // a wrong checksum
     d.tle_line2.assign(line2);
     try {
@@ -456,6 +461,30 @@ TEST(EnvironmentFmu, BadElementSetIsRefusedAtConfigureNamingTheParameterAndColum
     Simulation circular;
     circular.data().tle_line2.assign(line2);
     EXPECT_NO_THROW(circular.start());
+}
+
+// The set as numbers (both lines empty): checked as the text is, and no further than a year from the epoch
+// (orbit::kMaxElementSetAgeDays, the on-board computer's rule too).
+TEST(EnvironmentFmu, ElementNumbersAreCheckedAndDated) {
+    auto refused = [](auto change, std::initializer_list<const char*> parts) {
+        Simulation sim;
+        sim.data().orbit_model = OrbitModel::tle;
+        change(sim.data());
+        try {
+            sim.start();
+            ADD_FAILURE() << "accepted";
+        } catch (const fmu::Error& e) {
+            for (const char* part : parts) EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+        }
+    };
+    refused([](EnvironmentData& d) { d.tle_elements[2] = 1.5; }, {"tle_elements[3]", "eccentricity", "[0, 1)"});
+    refused([](EnvironmentData& d) { d.tle_elements[0] = 2461119.5 - 50.0 * 365.25; },
+            {"1976-03-19 12:00", "2026-03-20", "the environment's epoch", "366 days"});
+    refused([](EnvironmentData& d) { d.epoch_year = 2029; }, {"2029-03-20", "366 days"});
+    Simulation moved;
+    moved.data().orbit_model = OrbitModel::tle;
+    moved.data().epoch_month = 9;  // six months from the set's epoch: within the bound
+    EXPECT_NO_THROW(moved.start());
 }
 
 TEST(EnvironmentFmu, TableDeclaresEveryVariableWithUnitsAndDescriptions) {

@@ -48,9 +48,11 @@ protected:
     }
     void TearDown() override { fmi2FreeInstance(c); }
 
+    // The bundled set's line 1 with the given line 2 (the block's default set is numbers, its lines empty).
     fmi2Status set_line2(const char* text) {
-        const fmi2ValueReference ref = vr("tle_line2");
-        return fmi2SetString(c, &ref, 1, &text);
+        const fmi2ValueReference refs[2] = {vr("tle_line1"), vr("tle_line2")};
+        const fmi2String lines[2] = {"1 90001U          26079.00000000  .00002000  00000-0  15000-3 0  9995", text};
+        return fmi2SetString(c, refs, 2, lines);
     }
 };
 

@@ -172,6 +172,41 @@ int tle_checksum(std::string_view line) {
     return sum % 10;
 }
 
+TleElementsError::TleElementsError(int element, const std::string& reason)
+    : std::invalid_argument(element > 0 ? "[" + std::to_string(element) + "] " + reason : reason), element_(element) {}
+
+Tle checked_tle_from_elements(const TleElements& e) {
+    static constexpr const char* names[kTleElementCount] = {
+        "epoch (Julian date, UTC)",          "mean motion (rev/day)",     "eccentricity",       "inclination (deg)",
+        "right ascension of the node (deg)", "argument of perigee (deg)", "mean anomaly (deg)", "B* (1/Earth radii)"};
+    auto fail = [&](std::size_t k, const std::string& reason) -> void {
+        throw TleElementsError(static_cast<int>(k + 1),
+                               std::string(names[k]) + " " + std::to_string(e[k]) + " " + reason);
+    };
+    for (std::size_t k = 0; k < kTleElementCount; ++k)
+        if (!std::isfinite(e[k])) fail(k, "is not a finite number");
+    // The text's two-digit years: 1957-01-01 to 2056-12-31.
+    const double first = julian_date_at_midnight(1957, 1, 1), last = julian_date_at_midnight(2057, 1, 1);
+    if (!(e[0] >= first && e[0] < last))
+        fail(0, "outside the element sets' years 1957-2056 (JD " + std::to_string(first) + " to " +
+                    std::to_string(last) + ")");
+    if (!(e[1] > 0.0)) fail(1, "must be positive (revolutions per day)");
+    if (!(e[2] >= 0.0 && e[2] < 1.0)) fail(2, "outside [0, 1)");
+    if (!(e[3] >= 0.0 && e[3] <= 180.0)) fail(3, "outside [0, 180]");
+    for (std::size_t k = 4; k <= 6; ++k)
+        if (!(e[k] >= 0.0 && e[k] <= 360.0)) fail(k, "outside [0, 360]");
+    const Tle tle = tle_from_elements(e);
+    Sgp4<double> sgp4;
+    const Sgp4Status status = sgp4.initialize(tle.mean_elements<double>());
+    if (status == Sgp4Status::deep_space)
+        fail(1, "is a period of " + std::to_string(sgp4.period_minutes()) +
+                    " min >= 225 min: a deep-space element set, which needs SDP4 (not implemented; near-Earth sets "
+                    "only)");
+    if (status != Sgp4Status::ok)
+        throw TleElementsError(0, std::string("SGP4 cannot start from this set: ") + describe(status));
+    return tle;
+}
+
 Tle parse_tle(std::string_view line1_text, std::string_view line2_text) {
     const Line l1(line1_text, 1);
     const Line l2(line2_text, 2);

@@ -37,9 +37,21 @@ TEST(E2eOnboardReferences, LeoOrbitConnectsNoTruthIntoTheEstimator) {
         found = true;
         EXPECT_EQ(parameter(c, "reference_source"), "onboard");
         EXPECT_EQ(parameter(c, "field_degree"), "8");
-        // Its own element set, as numbers (the way the firmware and OMSimulator take it): epoch a Julian date.
-        EXPECT_GT(std::stod(parameter(c, "tle_elements[1]")), 2.4e6);
+        // Its set: the scenario's numbers (the system's tle_elements, fed to env and est alike) made a day
+        // older on board (uplink_age); no String a tool must carry.
         EXPECT_EQ(parameter(c, "tle_line1"), "");
+        EXPECT_EQ(parameter(c, "uplink_age"), "86400");
+        for (int k = 1; k <= 8; ++k) {
+            const std::string name = "tle_elements[" + std::to_string(k) + "]";
+            int fed = 0;
+            for (const auto& f : s.feeds)
+                if (f.parameter == name && f.variable == name && (f.component == "est" || f.component == "env")) ++fed;
+            EXPECT_EQ(fed, 2) << name << " feeds env and est";
+        }
+        bool epoch = false;
+        for (const auto& v : s.system_bindings.values)
+            if (v.variable == "tle_elements[1]") epoch = v.value == "2461119.5";
+        EXPECT_TRUE(epoch) << "the scenario's set: epoch 2026-03-20 00:00 UTC";
         for (const auto& k : c.connectors)
             EXPECT_TRUE(k.name.rfind("sun_ref", 0) != 0 && k.name.rfind("mag_ref", 0) != 0 && k.name != "sun_distance")
                 << k.name;

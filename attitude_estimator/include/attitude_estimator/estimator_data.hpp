@@ -21,7 +21,7 @@ using Faces = std::array<double, 6>;  // one value per face: +x, −x, +y, −y,
 inline constexpr std::int32_t kMaxSpinWindow = 2048;
 
 // The numbers of a two-line element set (tle_elements): epoch, n, e, i, node, perigee, M, B*.
-inline constexpr std::size_t kElementCount = 8;
+inline constexpr std::size_t kElementCount = orbit::kTleElementCount;
 
 // The panels' angular response the sun methods invert (the `angular_response` choice).
 enum class AngularResponse : std::int32_t { cosine = 0, kelly = 1 };
@@ -79,7 +79,8 @@ struct EstimatorData {
     double cone_tolerance = SunMethodConfig<double>{}.cone_tolerance;  // 1: cones' agreement on the relative response
     double cube_max_step =
         SunMethodConfig<double>{}.cube_max_step;  // rad: cones may cross forbidden cube edges by this
-    double orbit_altitude = 570e3;                // m: cones' Earth-albedo model sees the Earth from this height
+    double orbit_altitude =
+        570e3;  // m: cones' Earth-albedo model's height (reference_source = inputs; onboard: its set's)
     double cone_fit_tolerance =
         SunMethodConfig<double>{}.cone_fit_tolerance;  // 1: albedo fit's RMS misfit bound (0: off)
     double cone_albedo_max =
@@ -124,6 +125,12 @@ struct EstimatorData {
     std::int32_t clock_epoch_hour = 0;
     std::int32_t clock_epoch_minute = 0;
     double clock_epoch_second = 0.0;
+    // The uplink's errors (docs/onboard_references.md): the computer's clock at t = 0 is clock_epoch_* plus
+    // clock_offset, and its element set is the given one (tle_lines or tle_elements: the scenario's set)
+    // made uplink_age older along SGP4's secular rates (orbit/element_age.hpp). 0, 0: the given values as
+    // they are (a recorded uplink).
+    double clock_offset = 0.0;       // s
+    double uplink_age = 0.0;         // s
     double reference_period = 10.0;  // s between two evaluations of the on-board orbit, sun and field
     // The same element set as numbers, in the set's own units: epoch (Julian date, UTC), mean motion
     // (rev/day), eccentricity, inclination, right ascension of the node, argument of perigee, mean anomaly
@@ -236,9 +243,11 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d);
 // The inputs of a sample, in T.
 template <class T>
 OnboardInputs<T> onboard_inputs_from(const EstimatorData& d);
-// The element set's numbers as the orbit library holds them (tle.hpp's Tle: its units, its epoch).
-orbit::Tle tle_from_numbers(const std::array<double, kElementCount>& e) noexcept;
-std::array<double, kElementCount> numbers_from_tle(const orbit::Tle& t) noexcept;
+// The computer's own element set: the given one (parsed_elements, else tle_elements; orbit's
+// tle_from_elements) made uplink_age older (orbit::older_set).
+orbit::Tle onboard_element_set(const EstimatorData& d) noexcept;
+// The computer's clock at t = 0: clock_epoch_* plus clock_offset.
+CalendarInstant onboard_clock_epoch(const EstimatorData& d) noexcept;
 // The fault detection's settings from the parameters (fault_data.cpp) and its outputs back.
 template <class T>
 FaultDetectionConfig<T> fault_settings_from(const EstimatorData& d);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "environment/constants.hpp"
+#include "orbit/element_plausibility.hpp"
 #include "orbit/frames.hpp"
 
 namespace environment {
@@ -29,6 +30,10 @@ TleOrbit::TleOrbit(const orbit::Tle& tle, const UtcDate& epoch)
         throw std::invalid_argument("TleOrbit: element set " + std::to_string(tle.catalog_number) + ": " +
                                     orbit::describe(status));
     }
+    // The rule the on-board computer's set obeys too (orbit/element_plausibility.hpp): no more than a year
+    // between the set and t = 0, and SGP4 still propagating there.
+    const std::string problem = orbit::element_set_problem_at(tle, epoch_jd_, "the environment's epoch (t = 0)");
+    if (!problem.empty()) throw std::invalid_argument("TleOrbit: " + problem);
 }
 
 TleOrbit::State TleOrbit::state_eci(double t) const {

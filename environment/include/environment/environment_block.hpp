@@ -37,10 +37,15 @@ struct EnvironmentData {
     double quaternion_norm_gain = 0.01;                         // 1/s, k above (see its description)
     // --- parameters: orbit
     OrbitModel orbit_model = EnvironmentParams{}.orbit_model;
-    // The element set for orbit_model = tle (69 columns each; parsed by orbit::parse_tle in configure()).
-    // Default: the bundled synthetic set matching the circular default (environment/README.md).
-    fmu::FixedString<80> tle_line1 = "1 90001U          26079.00000000  .00002000  00000-0  15000-3 0  9995";
-    fmu::FixedString<80> tle_line2 = "2 90001  64.9000   0.0000 0012000  90.0000 270.0000 14.98524078  1001";
+    // The element set for orbit_model = tle: two lines (69 columns each; parsed by orbit::parse_tle in
+    // configure()), or, when both are empty, its numbers in tle_elements (orbit::TleElements' layout, the
+    // estimator's: epoch JD UTC, rev/day, e, i, node, perigee, M in deg, B* in 1/Earth radii). Default: the
+    // bundled synthetic set matching the circular default (environment/README.md), as numbers
+    // ("1 90001U          26079.00000000  .00002000  00000-0  15000-3 0  9995",
+    //  "2 90001  64.9000   0.0000 0012000  90.0000 270.0000 14.98524078  1001").
+    fmu::FixedString<80> tle_line1{};
+    fmu::FixedString<80> tle_line2{};
+    std::array<double, 8> tle_elements{2461119.5, 14.98524078, 0.0012, 64.9, 0.0, 90.0, 270.0, 1.5e-4};
     double orbit_altitude = OrbitParams{}.altitude;        // m
     double orbit_inclination = OrbitParams{}.inclination;  // rad
     double orbit_raan = 0.0;                               // rad

@@ -100,6 +100,12 @@ CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path
             throw CampaignError(std::string("[set] or --set: ") + e.what());
         }
     }();
+    // The scenario's element set the epoch and orbit draws move or replace: as the system (and [set]) give it.
+    read_scenario_base(spec, [&](const std::string& name) -> std::optional<std::string> {
+        const auto split = cosim::split_variable_name(name);
+        if (!split) return std::nullopt;
+        return system.initial_value(system.component_index(split->component), split->variable);
+    });
     for (const auto& setting : s.options.settings) check_variable(system, setting_variable(setting), "[set]");
     for (const auto& d : spec.draws)
         for (const auto& v : drawn_variables(d)) check_variable(system, v, "draw of " + d.target);

@@ -111,6 +111,9 @@ std::vector<SpecValue> value_list(const Context& cx, const toml::table& t, const
     return out;
 }
 
+std::vector<std::string> name_list(const Context& cx, const toml::node& n, const std::string& what,
+                                   bool variables = true);
+
 Draw read_draw(const Context& cx, const toml::table& t, std::size_t index, const std::string& prefix = "") {
     const std::string where = prefix + "draw " + std::to_string(index + 1);
     Draw d;
@@ -184,15 +187,48 @@ Draw read_draw(const Context& cx, const toml::table& t, std::size_t index, const
         range("min", "max", true);
         if (d.min < 0.0) cx.fail(t, where + ": the rate range must not be negative");
     } else if (kind == "epoch") {
-        only_keys(cx, t, where, {"kind", "target", "figure", "stream", "from", "to"});
+        only_keys(cx, t, where, {"kind", "target", "figure", "stream", "from", "to", "clocks", "element_sets"});
         d.kind = DrawKind::epoch;
         d.epoch_from = epoch_seconds(cx, required(cx, t, "from", where), where + ": 'from'");
         d.epoch_to = epoch_seconds(cx, required(cx, t, "to", where), where + ": 'to'");
         if (d.epoch_to - d.epoch_from < 1e-3)
             cx.fail(t, where + ": 'to' must be after 'from' (epochs are drawn to the millisecond)");
+        if (const auto* n = t.get("clocks")) d.clocks = name_list(cx, *n, where + ": 'clocks'");
+        if (const auto* n = t.get("element_sets")) d.element_sets = name_list(cx, *n, where + ": 'element_sets'");
+    } else if (kind == "orbit") {
+        only_keys(cx, t, where,
+                  {"kind", "target", "figure", "stream", "classes", "min_altitude", "max_altitude", "min_ltan",
+                   "max_ltan", "copies"});
+        d.kind = DrawKind::orbit;
+        static const std::map<std::string, OrbitClass> classes = {{"sun_synchronous", OrbitClass::sun_synchronous},
+                                                                  {"iss_like", OrbitClass::iss_like},
+                                                                  {"polar", OrbitClass::polar},
+                                                                  {"low_inclination", OrbitClass::low_inclination}};
+        for (const auto& name : name_list(cx, required(cx, t, "classes", where), where + ": 'classes'", false)) {
+            const auto it = classes.find(name);
+            if (it == classes.end())
+                cx.fail(t, where + ": unknown orbit class '" + name +
+                               "' (sun_synchronous, iss_like, polar, low_inclination)");
+            d.orbit_classes.push_back(it->second);
+        }
+        range("min_altitude", "max_altitude", true);
+        d.altitude_min = d.min;
+        d.altitude_max = d.max;
+        if (d.altitude_min < orbit_min_altitude || d.altitude_max > orbit_max_altitude)
+            cx.fail(t, where + ": the altitudes must lie within [" + cosim::format_real(orbit_min_altitude) + ", " +
+                           cosim::format_real(orbit_max_altitude) + "] m (SGP4's near-Earth range, orbit_classes.hpp)");
+        if (t.contains("min_ltan") || t.contains("max_ltan")) {
+            range("min_ltan", "max_ltan", true);
+            d.ltan_min = d.min;
+            d.ltan_max = d.max;
+            if (d.ltan_min < 0.0 || d.ltan_max > 24.0)
+                cx.fail(t, where + ": the local times of the node must lie within [0, 24] h");
+        }
+        d.min = d.max = 0.0;
+        if (const auto* n = t.get("copies")) d.copies = name_list(cx, *n, where + ": 'copies'");
     } else {
         cx.fail(t, where + ": unknown kind '" + kind +
-                       "' (uniform, normal, integer, choice, grid, list, quaternion, tumble, epoch)");
+                       "' (uniform, normal, integer, choice, grid, list, quaternion, tumble, epoch, orbit)");
     }
     if (const auto* f = t.get("figure")) {
         if (!f->is_boolean()) cx.fail(*f, where + ": 'figure' must be true or false");
@@ -213,7 +249,7 @@ bool valid_stat(const std::string& s) {
 }
 
 // A column or group name, or a non-empty array of them.
-std::vector<std::string> name_list(const Context& cx, const toml::node& n, const std::string& what) {
+std::vector<std::string> name_list(const Context& cx, const toml::node& n, const std::string& what, bool variables) {
     std::vector<std::string> out;
     if (n.is_string()) {
         out.push_back(string(cx, n, what));
@@ -223,7 +259,7 @@ std::vector<std::string> name_list(const Context& cx, const toml::node& n, const
         cx.fail(n, what + " must be a string or a non-empty array of strings");
     }
     for (std::size_t i = 0; i < out.size(); ++i) {
-        check_target(cx, n, out[i], what);
+        if (variables) check_target(cx, n, out[i], what);
         for (std::size_t j = 0; j < i; ++j)
             if (out[i] == out[j]) cx.fail(n, what + ": '" + out[i] + "' listed twice");
     }
@@ -587,6 +623,24 @@ CampaignSpec parse_spec(const std::string& text, const std::filesystem::path& fi
     std::set<std::string> targets, names;
     for (const auto& d : spec.draws)
         if (!targets.insert(d.target).second) cx.fail("'" + d.target + "' is drawn twice");
+    // The scenario's draws: one epoch and one orbit draw at most, no variable written by two of them (the
+    // orbit draw makes its set at the epoch draw's date: the epoch draw must not re-epoch it too).
+    std::set<std::string> scenario;
+    for (DrawKind kind : {DrawKind::epoch, DrawKind::orbit})
+        if (std::count_if(spec.draws.begin(), spec.draws.end(), [&](const Draw& d) { return d.kind == kind; }) > 1)
+            cx.fail(std::string("more than one ") + (kind == DrawKind::epoch ? "epoch" : "orbit") +
+                    " draw (one scenario date, one orbit)");
+    for (const auto& d : spec.draws) {
+        std::vector<std::string> written = d.clocks;
+        written.insert(written.end(), d.element_sets.begin(), d.element_sets.end());
+        written.insert(written.end(), d.copies.begin(), d.copies.end());
+        if (d.kind == DrawKind::orbit || d.kind == DrawKind::epoch) written.push_back(d.target);
+        for (const auto& w : written)
+            if (!scenario.insert(w).second)
+                cx.fail("'" + w +
+                        "' is written by two draws (an orbit draw's set is made at the epoch draw's "
+                        "date: leave it out of the epoch draw's element_sets)");
+    }
     for (const auto& m : spec.metrics)
         if (!names.insert(m.name).second) cx.fail("two metrics named '" + m.name + "'");
     return spec;

@@ -12,9 +12,16 @@
 
 namespace campaign {
 
-enum class DrawKind { uniform, normal, integer, choice, grid, quaternion, tumble, epoch };
+enum class DrawKind { uniform, normal, integer, choice, grid, quaternion, tumble, epoch, orbit };
+
+// The orbit classes an `orbit` draw gives (orbit/orbit_classes.hpp).
+enum class OrbitClass { sun_synchronous, iss_like, polar, low_inclination };
 
 // A scalar value as the spec gives it: a number keeps its text for --set, a string is a string.
+// The orbit draw's altitude range (m): orbit/orbit_classes.hpp's kMinOrbitAltitudeKm, kMaxOrbitAltitudeKm.
+inline constexpr double orbit_min_altitude = 150e3;
+inline constexpr double orbit_max_altitude = 2000e3;
+
 struct SpecValue {
     std::string text;      // what is passed to the FMU ("0.5", "cones", "true")
     bool numeric = false;  // a TOML integer or float (plotted as a number)
@@ -30,7 +37,20 @@ struct Draw {
     std::vector<SpecValue> values;                          // choice, grid
     std::vector<double> weights;                            // choice (empty: equal)
     double epoch_from = 0.0, epoch_to = 0.0;                // epoch: seconds since 1970-01-01T00:00:00 UTC
-    bool figure = true;                                     // draw the metrics against it (false for a noise seed)
+    // epoch: the scenario moved with the date. `clocks`: prefixes of other _year.._second parameters set to
+    // the same instant (the on-board clock); `element_sets`: element-set arrays ([1..8], orbit::TleElements)
+    // re-epoched to it along SGP4's secular rates, from the system's set (base_elements, read by prepare()).
+    std::vector<std::string> clocks, element_sets;
+    // orbit: the classes drawn from (equally likely), the mean altitude range (m), the sun-synchronous
+    // class's local time of the ascending node range (h); `target` and `copies` the element-set arrays that
+    // receive the set. Its epoch is the epoch draw's instant, else the system's set's (base_elements).
+    std::vector<OrbitClass> orbit_classes;
+    double altitude_min = 0.0, altitude_max = 0.0, ltan_min = 0.0, ltan_max = 24.0;
+    std::vector<std::string> copies;
+    // The scenario's element set before the draws (epoch: element_sets[0]'s; orbit: target's), filled from
+    // the system by read_scenario_base() (draws.hpp); empty until then.
+    std::vector<double> base_elements;
+    bool figure = true;  // draw the metrics against it (false for a noise seed)
     // The name its generator is seeded from (default: the target): draws of different targets that name
     // one stream draw the same numbers in a scene (a fault's onset shared by every case).
     std::string stream;

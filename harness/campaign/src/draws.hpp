@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,6 +39,12 @@ std::optional<std::size_t> case_of(const CampaignSpec& spec, long index);
 std::optional<long> paired_control(const CampaignSpec& spec, long index);
 
 RunDraws draw_run(const CampaignSpec& spec, long index);
+
+// The scenario's element set the epoch and orbit draws start from (Draw::base_elements): read from the
+// system through `value_of` ("env.tle_elements[1]" -> its start value). Throws CampaignError when the system
+// gives that set as tle_line1/2 text (the drawn numbers would not replace it) or has no such variables.
+void read_scenario_base(CampaignSpec& spec,
+                        const std::function<std::optional<std::string>(const std::string&)>& value_of);
 
 // The generator seed of one draw of one run (exposed for the tests of independence).
 std::uint64_t stream_seed(std::uint64_t base_seed, std::uint64_t unit, const std::string& target);

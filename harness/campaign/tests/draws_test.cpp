@@ -9,8 +9,12 @@
 #include <map>
 #include <numbers>
 
+#include <optional>
+
+#include "campaign_error.hpp"
 #include "campaign_spec.hpp"
 #include "draws.hpp"
+#include "engine/value_text.hpp"
 
 using campaign::CampaignSpec;
 using campaign::draw_run;
@@ -212,4 +216,150 @@ TEST(Draws, EpochsAreCalendarDatesInTheirRange) {
         EXPECT_EQ(d.cells[0].substr(0, 8), "2024-0" + std::string(day_index == 2 ? "3" : "2") + "-");
     }
     EXPECT_LT(ks_distance(days, [](double v) { return v / 2.0; }), 1.95 / std::sqrt(2000.0));
+}
+
+namespace {
+
+// The bundled leo_orbit's set as the system gives it (harness/systems/leo_orbit.ssd).
+const std::vector<double> kLeoSet = {2461119.5, 14.98524078, 0.0012, 64.9, 0.0, 90.0, 270.0, 1.5e-4};
+
+std::optional<std::string> leo_values(const std::string& name) {
+    for (const char* set : {"env.tle_elements[", "est.tle_elements["})
+        if (name.rfind(set, 0) == 0)
+            return cosim::format_real(kLeoSet.at(std::stoul(name.substr(std::string(set).size())) - 1));
+    if (name.find("tle_line") != std::string::npos) return std::string();
+    return std::nullopt;
+}
+
+std::map<std::string, std::string> settings_of(const campaign::RunDraws& d) {
+    std::map<std::string, std::string> out;
+    for (const auto& s : d.settings) out[s.substr(0, s.find('='))] = s.substr(s.find('=') + 1);
+    return out;
+}
+
+double jd_of(int year, int month, int day, double hours) {
+    // Meeus ch. 7, written out here (not the orbit library's) for an independent check.
+    if (month <= 2) {
+        year -= 1;
+        month += 12;
+    }
+    const int a = year / 100, b = 2 - a + a / 4;
+    return std::floor(365.25 * (year + 4716)) + std::floor(30.6001 * (month + 1)) + day + b - 1524.5 + hours / 24.0;
+}
+
+const char* kScenarioEpoch =
+    "[[draw]]\nkind = \"epoch\"\ntarget = \"env.epoch\"\nfrom = 2026-01-01T00:00:00Z\nto = 2027-01-01T00:00:00Z\n"
+    "clocks = [\"est.clock_epoch\"]\nelement_sets = [\"env.tle_elements\", \"est.tle_elements\"]\n";
+
+}  // namespace
+
+// #37: an epoch draw moves the whole scenario: the truth's date, the on-board clock, and both element sets
+// moved to the drawn date along the secular rates (not propagated months from their epoch).
+TEST(Draws, EpochMovesTheWholeScenario) {
+    auto spec = spec_of(kScenarioEpoch);
+    campaign::read_scenario_base(spec, leo_values);
+    double largest_move = 0.0;
+    for (long run = 0; run < 50; ++run) {
+        const auto d = draw_run(spec, run);
+        auto s = settings_of(d);
+        for (const char* f : {"_year", "_month", "_day", "_hour", "_minute", "_second"})
+            EXPECT_EQ(s.at(std::string("est.clock_epoch") + f), s.at(std::string("env.epoch") + f)) << f;
+        const double jd = jd_of(std::stoi(s.at("env.epoch_year")), std::stoi(s.at("env.epoch_month")),
+                                std::stoi(s.at("env.epoch_day")),
+                                std::stoi(s.at("env.epoch_hour")) + std::stoi(s.at("env.epoch_minute")) / 60.0 +
+                                    number(s.at("env.epoch_second")) / 3600.0);
+        for (const char* set : {"env.tle_elements", "est.tle_elements"}) {
+            auto e = [&](int k) { return number(s.at(std::string(set) + "[" + std::to_string(k) + "]")); };
+            EXPECT_NEAR(e(1), jd, 1e-8);  // the set's epoch is the drawn date
+            EXPECT_EQ(e(2), kLeoSet[1]);  // n, e, i, B* kept
+            EXPECT_EQ(e(3), kLeoSet[2]);
+            EXPECT_EQ(e(4), kLeoSet[3]);
+            EXPECT_EQ(e(8), kLeoSet[7]);
+            // The node turned at J2's rate, -3/2 n J2 (R/p)^2 cos i (-3.13 deg/day for 570 km at 64.9 deg;
+            // SGP4's J2^2 and J4 terms add 0.1 %).
+            const double pi = std::numbers::pi, n = kLeoSet[1] * 2.0 * pi / 86400.0;  // rad/s
+            const double a = std::cbrt(398600.8 / (n * n)), p = a * (1.0 - kLeoSet[2] * kLeoSet[2]);
+            const double rate = -1.5 * kLeoSet[1] * 360.0 * 0.001082616 * std::pow(6378.135 / p, 2) *
+                                std::cos(kLeoSet[3] * pi / 180.0);  // deg/day
+            const double days = jd - kLeoSet[0];
+            const double expected = std::fmod(std::fmod(rate * days, 360.0) + 360.0, 360.0);
+            const double off = std::abs(e(5) - expected);
+            EXPECT_LT(std::min(off, 360.0 - off), 0.005 * std::abs(rate * days) + 1e-6) << days;
+            largest_move = std::max(largest_move, std::abs(days));
+        }
+    }
+    EXPECT_GT(largest_move, 100.0);  // the draws do reach months away
+    // Without the base set read from the system the draw cannot move the sets.
+    EXPECT_THROW(draw_run(spec_of(kScenarioEpoch), 0), campaign::CampaignError);
+    // A system that gives its set as text would ignore the drawn numbers: refused.
+    auto lines = spec_of(kScenarioEpoch);
+    EXPECT_THROW(campaign::read_scenario_base(lines,
+                                              [](const std::string& name) -> std::optional<std::string> {
+                                                  if (name == "env.tle_line1") return std::string("1 90001U ...");
+                                                  return leo_values(name);
+                                              }),
+                 campaign::CampaignError);
+}
+
+// #37: orbit classes as element sets, at the scenario's date.
+TEST(Draws, OrbitClassesAsElementSets) {
+    auto spec = spec_of(std::string(kScenarioEpoch).substr(0, std::string(kScenarioEpoch).find("element_sets")) +
+                        "[[draw]]\nkind = \"orbit\"\ntarget = \"env.tle_elements\"\ncopies = [\"est.tle_elements\"]\n"
+                        "classes = [\"sun_synchronous\", \"iss_like\", \"polar\", \"low_inclination\"]\n"
+                        "min_altitude = 450e3\nmax_altitude = 650e3\nmin_ltan = 9\nmax_ltan = 11\n");
+    campaign::read_scenario_base(spec, leo_values);
+    std::map<std::string, int> counts;
+    const double mu = 398600.8, radius = 6378.135, j2 = 0.001082616, pi = std::numbers::pi;
+    for (long run = 0; run < 400; ++run) {
+        const auto d = draw_run(spec, run);
+        const auto s = settings_of(d);
+        const std::string cls = d.cells.at(2);
+        ++counts[cls];
+        const double altitude = number(d.cells.at(3)), inclination = number(d.cells.at(4)),
+                     ltan = number(d.cells.at(5));
+        EXPECT_EQ(s.at("env.tle_elements[4]"), s.at("est.tle_elements[4]"));
+        EXPECT_NEAR(number(s.at("env.tle_elements[4]")), inclination, 1e-9);
+        // The set's epoch is the epoch draw's date.
+        const double jd = jd_of(std::stoi(s.at("env.epoch_year")), std::stoi(s.at("env.epoch_month")),
+                                std::stoi(s.at("env.epoch_day")),
+                                std::stoi(s.at("env.epoch_hour")) + std::stoi(s.at("env.epoch_minute")) / 60.0 +
+                                    number(s.at("env.epoch_second")) / 3600.0);
+        EXPECT_NEAR(number(s.at("env.tle_elements[1]")), jd, 1e-8);
+        if (cls == "iss_like") {
+            EXPECT_EQ(inclination, 51.6);
+            EXPECT_NEAR(altitude, 420.0, 1e-6);
+        } else {
+            EXPECT_GE(altitude, 450.0 - 1e-6);
+            EXPECT_LE(altitude, 650.0 + 1e-6);
+        }
+        if (cls == "polar") {
+            EXPECT_EQ(inclination, 90.0);
+        }
+        if (cls == "low_inclination") {
+            EXPECT_EQ(inclination, 20.0);
+        }
+        if (cls == "sun_synchronous") {
+            // J2 alone: cos i = -2 rho a^{7/2} / (3 J2 R^2 sqrt(mu)), rho the mean sun's 360 deg per 365.2422 days.
+            const double a = radius + altitude, rho = 2.0 * pi / (365.2422 * 86400.0);
+            EXPECT_NEAR(
+                inclination,
+                std::acos(-2.0 * rho * std::pow(a, 3.5) / (3.0 * j2 * radius * radius * std::sqrt(mu))) * 180 / pi,
+                0.05);
+            EXPECT_GE(ltan, 9.0 - 1e-9);
+            EXPECT_LE(ltan, 11.0 + 1e-9);
+        }
+    }
+    for (const char* c : {"sun_synchronous", "iss_like", "polar", "low_inclination"})
+        EXPECT_GT(counts[c], 70) << c;  // 100 expected of each; 70 is 3.5 sigma below
+    // The orbit draw's set must not also be re-epoched by the epoch draw.
+    EXPECT_THROW(spec_of(std::string(kScenarioEpoch) +
+                         "[[draw]]\nkind = \"orbit\"\ntarget = \"env.tle_elements\"\nclasses = [\"polar\"]\n"
+                         "min_altitude = 450e3\nmax_altitude = 650e3\n"),
+                 campaign::CampaignError);
+    EXPECT_THROW(spec_of("[[draw]]\nkind = \"orbit\"\ntarget = \"env.tle_elements\"\nclasses = [\"geo\"]\n"
+                         "min_altitude = 450e3\nmax_altitude = 650e3\n"),
+                 campaign::CampaignError);
+    EXPECT_THROW(spec_of("[[draw]]\nkind = \"orbit\"\ntarget = \"env.tle_elements\"\nclasses = [\"polar\"]\n"
+                         "min_altitude = 50e3\nmax_altitude = 650e3\n"),
+                 campaign::CampaignError);
 }

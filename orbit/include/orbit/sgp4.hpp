@@ -90,6 +90,11 @@ public:
     T period_minutes() const noexcept;
     /// The mean semi-major axis at epoch (km).
     T semi_major_axis_km() const noexcept;
+    /// The secular rates of the mean anomaly, the argument of perigee and the node (rad/min): the J2, J2²
+    /// and J4 terms of the initialization (drag's are not in them). element_age.hpp moves a set with them.
+    T mean_anomaly_rate() const noexcept { return mdot_; }
+    T arg_perigee_rate() const noexcept { return argpdot_; }
+    T raan_rate() const noexcept { return nodedot_; }
     const MeanElements<T>& elements() const noexcept { return elements_; }
 
 private:

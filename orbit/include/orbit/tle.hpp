@@ -1,9 +1,11 @@
 #pragma once
 // A two-line element set (the fixed-column format of NORAD / CelesTrak) and its parser.
+#include <array>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 
+#include "orbit/calendar.hpp"
 #include "orbit/sgp4.hpp"
 
 namespace orbit {
@@ -40,6 +42,38 @@ private:
     int column_;
 };
 
+/// An element set as eight numbers in the set's own units, the layout of the blocks' `tle_elements[1..8]`:
+/// epoch (Julian date, UTC), mean motion (rev/day), eccentricity, inclination, right ascension of the node,
+/// argument of perigee, mean anomaly (deg), B* (1/Earth radii). How the firmware and an SSP tool without
+/// String parameters get a set.
+inline constexpr std::size_t kTleElementCount = 8;
+using TleElements = std::array<double, kTleElementCount>;
+
+/// The numbers of a set (no check; the catalog number is 0, the epoch's year and day of year derived).
+/// Header-only and noexcept: the firmware converts its numbers with it.
+inline Tle tle_from_elements(const TleElements& e) noexcept;
+/// The eight numbers of a set.
+inline TleElements elements_of(const Tle& t) noexcept {
+    return {t.epoch_jd_utc, t.mean_motion_rev_per_day, t.eccentricity,     t.inclination_deg,
+            t.raan_deg,     t.arg_perigee_deg,         t.mean_anomaly_deg, t.bstar_per_earth_radius};
+}
+
+/// A set given as numbers that is refused: the message names the element (`[k]`, 1-based as the blocks'
+/// tle_elements[k]) and the reason.
+class TleElementsError : public std::invalid_argument {
+public:
+    TleElementsError(int element, const std::string& reason);
+    int element() const noexcept { return element_; }  // 1..8; 0 for the set as a whole
+
+private:
+    int element_;
+};
+
+/// The set of the numbers after the checks the text's parser makes (parse_tle): every number finite, the
+/// epoch within the format's years 1957-2056, a positive mean motion, 0 <= e < 1, the angles within their
+/// ranges, near-Earth (period < 225 min), and SGP4 able to start from it. Throws TleElementsError.
+Tle checked_tle_from_elements(const TleElements& e);
+
 /// Parses and validates a two-line element set: each line at least 69 columns (trailing blanks and a
 /// carriage return allowed), its line number in column 1, blanks where the format has them, every field
 /// a number of its format, the modulo-10 checksum in column 69 of each line, the same catalog number on
@@ -49,6 +83,22 @@ Tle parse_tle(std::string_view line1, std::string_view line2);
 
 /// The modulo-10 checksum of a line's first 68 columns (digits count their value, '-' counts 1).
 int tle_checksum(std::string_view line);
+
+inline Tle tle_from_elements(const TleElements& e) noexcept {
+    Tle t;
+    t.epoch_jd_utc = e[0];
+    const CalendarDay day = calendar_day(e[0]);
+    t.epoch_year = day.year;
+    t.epoch_day = e[0] - julian_date_at_midnight(day.year, 1, 1) + 1.0;
+    t.mean_motion_rev_per_day = e[1];
+    t.eccentricity = e[2];
+    t.inclination_deg = e[3];
+    t.raan_deg = e[4];
+    t.arg_perigee_deg = e[5];
+    t.mean_anomaly_deg = e[6];
+    t.bstar_per_earth_radius = e[7];
+    return t;
+}
 
 template <typename T>
 MeanElements<T> Tle::mean_elements() const noexcept {

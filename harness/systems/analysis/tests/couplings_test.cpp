@@ -39,15 +39,52 @@ TEST(Couplings, TheEstimatorsAngularResponseMustBeThePanels) {
 TEST(Couplings, TheEstimatorsAltitudeMustBeTheTruths) {
     // A circular truth at 400 km above the equatorial radius: an orbit radius of 6778.137 km. The
     // estimator's sphere is 6371 km: 407 km agrees, its 570 km default is 163 km off.
-    EXPECT_EQ(mismatches({"env.orbit_model=circular", "env.orbit_altitude=400e3", "est.orbit_altitude=407e3"}),
+    // (With reference_source = inputs: on board the computer takes its altitude from its own element set.)
+    EXPECT_EQ(mismatches({"est.reference_source=inputs", "env.orbit_model=circular", "env.orbit_altitude=400e3",
+                          "est.orbit_altitude=407e3"}),
               std::vector<std::string>{});
-    const auto m = mismatches({"env.orbit_model=circular", "env.orbit_altitude=400e3"});
+    const auto m = mismatches({"est.reference_source=inputs", "env.orbit_model=circular", "env.orbit_altitude=400e3"});
     ASSERT_EQ(m.size(), 1u);
     EXPECT_NE(m[0].find("est.orbit_altitude 570 km"), std::string::npos) << m[0];
     EXPECT_NE(m[0].find("set est.orbit_altitude=407000"), std::string::npos) << m[0];
     // The bundled element set: 14.98524078 rev/day, a semi-major axis near 6949.6 km (Kepler's third law,
     // mu 3.986004418e14; SGP4's mean semi-major axis is 6948 km): 400 km on board is refused.
-    EXPECT_EQ(mismatches({"est.orbit_altitude=400e3"}).size(), 1u);
+    EXPECT_EQ(mismatches({"est.reference_source=inputs", "est.orbit_altitude=400e3"}).size(), 1u);
+    EXPECT_EQ(mismatches({"est.orbit_altitude=400e3"}), std::vector<std::string>{});  // onboard: not used
+}
+
+// The uplink (reference_source = onboard): the computer's clock, its set's epoch and its orbit at t = 0
+// against the truth's, each with the values that would agree.
+TEST(Couplings, MovingTheDateAloneIsRefused) {
+    const auto m = mismatches({"env.epoch_month=9"});
+    ASSERT_EQ(m.size(), 1u);
+    for (const char* part :
+         {"est's clock at t = 0", "2026-03-20 00:00:00.000 UTC", "2026-09-20 00:00:00.000 UTC", "max_clock_difference",
+          "set est.clock_epoch_year=2026 est.clock_epoch_month=9 est.clock_epoch_day=20"})
+        EXPECT_NE(m[0].find(part), std::string::npos) << m[0];
+    // A clock error is a named parameter: within 10 s it is a study, beyond it a mismatch.
+    EXPECT_EQ(mismatches({"est.clock_offset=5"}), std::vector<std::string>{});
+    EXPECT_EQ(mismatches({"est.clock_offset=-30"}).size(), 1u);
+}
+
+TEST(Couplings, TheOnboardSetMustBeTheTruthsSatellite) {
+    // Thirty days older: beyond max_uplink_age_days; the value that agrees is the bound's age.
+    auto m = mismatches({"est.uplink_age=2592000"});
+    ASSERT_EQ(m.size(), 1u);
+    for (const char* part : {"30 days older", "max_uplink_age_days", "est.uplink_age=604800",
+                             "est.tle_elements=[2461119.5, 14.98524078, 0.0012, 64.9, 0, 90, 270, 0.00015]"})
+        EXPECT_NE(m[0].find(part), std::string::npos) << m[0];
+    // Another phase (mean anomaly 300 deg, not 270): the computer's satellite is 3600 km from the truth's.
+    // (Another plane alone would not show at t = 0: the bundled satellite starts at its ascending node.)
+    m = mismatches({"est.tle_elements[7]=300"});
+    ASSERT_EQ(m.size(), 1u);
+    EXPECT_NE(m[0].find("max_orbit_position_difference"), std::string::npos) << m[0];
+    EXPECT_NE(m[0].find("est.uplink_age=86400"), std::string::npos) << m[0];
+    // A recorded uplink: the older set given as it is (the study script's text), no age on board.
+    EXPECT_EQ(mismatches({"est.uplink_age=0",
+                          "est.tle_line1=1 90001U          26078.00000000  .00002000  00000-0  15000-3 0  9994",
+                          "est.tle_line2=2 90001  64.9000   3.1277 0012000  90.3760 275.3137 14.98524078  1006"}),
+              std::vector<std::string>{});
 }
 
 TEST(Couplings, ARunIsRefusedUnlessAllowed) {
