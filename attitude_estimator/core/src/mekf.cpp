@@ -226,6 +226,43 @@ void add_offset_to_start(MekfState<T>& s, const MekfSampleInputs<T>& in, const M
     store_p<T>(s, p);
 }
 
+// The divergence watch (MekfConfig::watch_time) takes this sample's field before its update. The innovation
+// y = B_meas − (Â B_ref + p b̂) turned into inertial axes, z = Âᵀ y, is [B_ref×] δθ_I plus noise for an
+// attitude error δθ_I fixed in inertial axes: a filter that has lost the attitude leaves a z that does not
+// average away, however fast the body turns. Over exponential weights w_k (time constant watch_time) the
+// average z̄ = Σ w_k z_k / Σ w_k of a consistent filter has E|z̄|² = Σ w_k² tr R_k / (Σ w_k)² (the noise as
+// weighted: a correlated error weighted as white noise of the same information averages down as that white
+// noise does) plus at most Σ w_k e_k / Σ w_k with e_k = E|[B_b×] δθ + δb|² from the filter's own covariance
+// (Cauchy–Schwarz: the errors of successive samples are correlated, at most fully). The ratio of the two is
+// ~1 when the filter is consistent (docs/filter.md, "The watch").
+template <class T>
+void watch_field(MekfState<T>& s, const MekfSampleInputs<T>& in, T polarity, const MekfConfig<T>& c) noexcept {
+    const T micro = T(1e6);
+    const Mat3<T> a = matrix_of(s.q);
+    const V3<T> field = a * (micro * v3(in.mag_ref));
+    const V3<T> y = micro * (v3(in.mag_body) - polarity * v3(s.mag_offset)) - field;
+    if (!y.allFinite()) return;
+    const V3<T> z = a.transpose() * y;
+    const T dt = in.t - s.t_watch;  // since the previous field, or the start (mekf_start)
+    s.t_watch = in.t;
+    if (!(dt > T(0))) return;
+    const T alpha = dt < c.watch_time ? dt / c.watch_time : T(1);
+    const T keep = T(1) - alpha;
+    const T sigma = micro * c.mag_sigma, ref_sigma = micro * c.mag_ref_sigma;
+    const T r = T(3) * (sigma * sigma + ref_sigma * ref_sigma);
+    const Mat3<T> p_att = view_p(s).template block<3, 3>(kMekfAttitude, kMekfAttitude);
+    const T p_off = view_p(s).template block<3, 3>(kMekfOffset, kMekfOffset).trace() * micro * micro;
+    const T spread = field.squaredNorm() * p_att.trace() - field.dot(p_att * field) + p_off;
+    for (int i = 0; i < 3; ++i) s.watch_sum[static_cast<std::size_t>(i)] = keep * s.watch_sum[i] + alpha * z(i);
+    s.watch_weight = keep * s.watch_weight + alpha;
+    s.watch_noise = keep * keep * s.watch_noise + alpha * alpha * r;
+    s.watch_spread = keep * s.watch_spread + alpha * spread;
+    const T w = s.watch_weight;
+    const T expected = s.watch_noise / (w * w) + s.watch_spread / w;
+    const V3<T> mean = v3(s.watch_sum) / w;
+    s.watch_ratio = expected > T(0) ? mean.squaredNorm() / expected : T(0);
+}
+
 }  // namespace
 
 template <class T>
@@ -235,6 +272,9 @@ void mekf_start(MekfState<T>& s, const Quaternion<T>& q, const Vec3<T>& omega, T
     s.t_last = t;
     s.stage = 2;
     s.refused_in_row = 0;
+    s.watch_sum = {};
+    s.watch_weight = s.watch_noise = s.watch_spread = s.watch_ratio = T(0);
+    s.t_watch = t;
     MatN<T> p = MatN<T>::Zero();
     const T sa = c.init_attitude_sigma, sw = c.init_rate_sigma;
     for (int i = 0; i < 3; ++i) {
@@ -473,6 +513,8 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
         MekfConfig<T> mag_config = c;
         if (in.mag_calibrated && c.mag_sigma_calibrated > T(0)) mag_config.mag_sigma = c.mag_sigma_calibrated;
         const T polarity = holds_hard_iron(s, c) ? T(1) : in.polarity;
+        // The watch needs the three axes (an excluded axis leaves no field to turn into inertial axes).
+        if (c.watch_time > T(0) && in.mag_axes == 7) watch_field(s, in, polarity, mag_config);
         result.mag = mekf_update_field(s, in.mag_ref, in.mag_body, polarity, mag_config, in.mag_axes);
         ++offered;
         accepted += result.mag.accepted;
@@ -482,7 +524,8 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
             mekf_update_faces(s, in.sun_ref, in.face_r, in.face_albedo, in.face_use, *in.response, c);
 
     if (offered > 0) s.refused_in_row = accepted > 0 ? 0 : s.refused_in_row + 1;
-    if (s.refused_in_row >= c.reset_after || !finite(s)) {
+    result.lost = c.watch_time > T(0) && s.watch_ratio > c.watch_gate;
+    if (s.refused_in_row >= c.reset_after || !finite(s) || result.lost) {
         // Diverged: back to the single-frame attitude (and a fresh rate from the next one).
         ++s.resets;
         result.reset = true;

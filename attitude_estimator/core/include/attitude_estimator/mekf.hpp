@@ -69,6 +69,16 @@ struct MekfConfig {
     T gate = T(16.27);              // chi² with 3 degrees of freedom at 0.999: a vector update beyond it is refused
     T face_gate = T(10.83);         // chi² with 1 degree of freedom at 0.999: a face update beyond it is refused
     int reset_after = 40;           // consecutive samples with every offered update refused → reset to the Q-method
+    // The divergence watch (mekf.cpp, docs/filter.md "The watch"): the field's innovation before each update,
+    // turned into inertial axes (where an attitude error of the filter stays put however the body tumbles) and
+    // averaged over watch_time (s, exponential weights; 0: off), against the size that average has when the
+    // filter is consistent: the measurement noise R as weighted (a correlated error weighted as white noise of
+    // the same information averages down as that white noise would) and the filter's own attitude and offset
+    // covariance. Its squared size per expected squared size above watch_gate means the filter is lost while
+    // its innovation test still accepts everything (each field weighted as 10 µT white noise cannot refuse a
+    // 4 µT error); it then resets to the single-frame attitude like a refused run of reset_after samples.
+    T watch_time = T(0);
+    T watch_gate = T(16);
     T valid_bound = T(0.17453293);  // rad: filter_valid while the 3σ attitude bound is below this (10°)
     // Two single-frame attitudes further apart than this cannot give the initial rate (it could alias).
     T max_init_gap = T(0.5);  // s
@@ -94,6 +104,14 @@ struct MekfState {
     T t_sun = T(0);                   // time of the last sun update (sun_correlation_time)
     std::int32_t has_sun = 0;         // 1 once a sun update was offered since the start
     std::int32_t mag_calibrated = 0;  // 1 when the last field offered came with the in-flight calibration
+    // The divergence watch (MekfConfig::watch_time): exponentially weighted sums since the start of the field's
+    // innovation in inertial axes (µT), of the weights, of the squared weights times R (µT², per axis).
+    std::array<T, 3> watch_sum{};
+    T watch_weight = T(0);
+    T watch_noise = T(0);
+    T watch_spread = T(0);  // weighted sum of the filter's own expected squared field error (attitude, offset)
+    T t_watch = T(0);       // time of the last field the watch took
+    T watch_ratio = T(0);  // the last watch statistic: squared average over its expected size (1: consistent)
 };
 
 // The outcome of one measurement update.
@@ -170,6 +188,7 @@ template <class T>
 struct MekfSampleResult {
     bool valid = false;  // running and the 3σ bound below config.valid_bound
     bool reset = false;  // this sample reset the filter to the single-frame attitude
+    bool lost = false;   // the reset came from the divergence watch (MekfConfig::watch_time)
     T bound = T(0);      // 3σ attitude bound (rad), 0 when not running
     MekfUpdate<T> sun{};
     MekfUpdate<T> mag{};
