@@ -4,7 +4,7 @@
 //   environment::EnvironmentParams p;                 // defaults: seed scenario, 570 km / 64.9 deg orbit
 //   environment::Environment env(p);                  // validates (throws std::invalid_argument)
 //   auto out = env.evaluate(t);                       // spin mode: a pure function of time
-//   // rigid_body mode: x = env.initial_state(); integrate env.derivative(x, dx) externally,
+//   // rigid_body mode: x = env.initial_state(); integrate env.derivative(t, x, dx) externally,
 //   // call RigidBody::renormalize(x) after each step, and evaluate(t, &x).
 #include <array>
 #include <optional>
@@ -13,6 +13,7 @@
 #include <Eigen/Geometry>  // cross products
 
 #include "environment/circular_orbit.hpp"
+#include "environment/disturbance_torques.hpp"
 #include "environment/earth_albedo.hpp"
 #include "environment/rigid_body.hpp"
 #include "environment/spin_attitude.hpp"
@@ -45,6 +46,12 @@ struct EnvironmentParams {
     FieldModel field_model = FieldModel::igrf14;
     int igrf_max_degree = 13;
     AlbedoParams albedo;
+    /// The spacecraft's box, centre of mass, drag and optical properties and residual dipole: what the
+    /// disturbance torques act on (disturbance_torques.hpp; the inertia is rigid_body.inertia).
+    SpacecraftBody body;
+    /// Gravity gradient, residual dipole, aerodynamic and solar pressure torques in Euler's equations
+    /// (rigid_body mode); false: the torque-free body, and the torque outputs are zero.
+    bool disturbance_torques = true;
 };
 
 struct EnvironmentOutputs {
@@ -70,6 +77,12 @@ struct EnvironmentOutputs {
     std::array<double, 3> nadir_body{};  // unit, satellite -> Earth's centre, body axes
     double orbit_radius_ratio = 1.0;     // r / R_E
     double albedo_source = 0.0;          // W/m^2, rho E_earth max(0, cos z_ss), z_ss the sun's zenith below
+    // The disturbance torques at the attitude (N m, body axes; zero with disturbance_torques off). In
+    // rigid_body mode their sum drives Euler's equations; in spin mode they are what would act.
+    std::array<double, 3> torque_gravity_gradient{};
+    std::array<double, 3> torque_magnetic{};
+    std::array<double, 3> torque_aerodynamic{};
+    std::array<double, 3> torque_solar_pressure{};
 };
 
 class Environment {
@@ -81,9 +94,15 @@ public:
     /// (missing state, NaN, date outside IGRF-14's validity).
     EnvironmentOutputs evaluate(double t, const RigidBodyState* state = nullptr) const;
 
-    /// Rigid body mode: the continuous states and their derivative (see rigid_body.hpp).
+    /// Rigid body mode: the continuous states and their derivative at t (see rigid_body.hpp) under the
+    /// disturbance torques at t and x (torque-free with disturbance_torques off). Costs the orbit, the sun,
+    /// the eclipse and the field at t (no albedo).
     RigidBodyState initial_state() const { return rigid_body_.initial_state(); }
-    void derivative(const double* x, double* dx) const { rigid_body_.derivative(x, dx); }
+    void derivative(double t, const double* x, double* dx) const;
+    /// The derivative under a torque already known (e.g. the sum of evaluate()'s torque outputs at t, x).
+    void derivative(const double* x, const Eigen::Vector3d& torque_body, double* dx) const {
+        rigid_body_.derivative(x, torque_body, dx);
+    }
 
     const EnvironmentParams& params() const { return params_; }
     double epoch_julian_date() const { return jd0_; }
@@ -93,7 +112,13 @@ public:
     const SpinAttitude& spin() const { return spin_; }
 
 private:
-    Eigen::Vector3d sun_position_eci(double julian_date) const;  // m, Earth centre -> Sun
+    Eigen::Vector3d sun_position_eci(double julian_date) const;                     // m, Earth centre -> Sun
+    void orbit_state(double t, Eigen::Vector3d& r, Eigen::Vector3d& v) const;       // m, m/s, ECI
+    Eigen::Vector3d field_eci(double julian_date, const Eigen::Vector3d& r) const;  // T
+    /// The four torques at the attitude A (ECI -> body) from the orbit state, the field, the unit sun
+    /// direction (ECI) and the irradiance at the satellite (after the eclipse).
+    DisturbanceTorques torques(const Eigen::Matrix3d& A, const Eigen::Vector3d& r, const Eigen::Vector3d& v,
+                               const Eigen::Vector3d& b_eci, const Eigen::Vector3d& sun_eci, double irradiance) const;
 
     EnvironmentParams params_;
     double jd0_;
@@ -102,6 +127,7 @@ private:
     std::optional<TleOrbit> tle_orbit_;  // OrbitModel::tle only
     RigidBody rigid_body_;
     SpinAttitude spin_;
+    std::array<Face, 6> faces_;  // from params.body
 };
 
 }  // namespace environment
