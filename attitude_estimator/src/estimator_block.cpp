@@ -181,6 +181,19 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.parameter("inertia", &D::inertia, "kg.m2",
                 "mekf: inertia matrix, body axes, row-major; all zero (default) = kinematic rate model, else "
                 "Euler's torque-free equations propagate the rate");
+    t.parameter("filter_dipole", &D::filter_dipole, "A.m2",
+                "mekf with inertia: the spacecraft's residual magnetic dipole, body axes (its magnetic budget, "
+                "uplinked): the filter propagates the rate with its torque m x B (B the reference field in the "
+                "body); 0 (default): not modelled");
+    t.parameter("filter_torque_noise", &D::filter_torque_noise, "N.m",
+                "mekf with inertia: the torques the filter does not model (drag, solar pressure, the models' "
+                "errors) as white noise, 1-sigma (N m s) of the angular momentum they add over 1 s (N m per "
+                "sqrt(Hz)); rate noise through the inertia, "
+                "added to filter_rate_noise")
+        .range(0.0, 1.0);
+    t.parameter("filter_gravity_gradient", &D::filter_gravity_gradient, "",
+                "mekf with inertia: the filter propagates the rate with the gravity-gradient torque (from the "
+                "on-board orbit: reference_source onboard only)");
     t.parameter("mag_calibration", &D::mag_calibration, "",
                 "Calibrate the magnetometer in flight (scale, non-orthogonality, offset against the reference "
                 "field's magnitude; Alonso and Shuster 2002) and correct the field with it once solved");

@@ -70,7 +70,8 @@ Outcome run(MekfState<T>& s, const MekfConfig<T>& c, const Eigen::Matrix3d& a0, 
         const double t = k * kPeriod;
         const Eigen::Matrix3d a = turn(kOmega, t) * a0;
         for (int i = 0; i < 3; ++i) {
-            field_error(i) = phi_field * field_error(i) + std::sqrt(1 - phi_field * phi_field) * kFieldSigma * rng.gauss();
+            field_error(i) =
+                phi_field * field_error(i) + std::sqrt(1 - phi_field * phi_field) * kFieldSigma * rng.gauss();
             sun_error(i) = phi_sun * sun_error(i) + std::sqrt(1 - phi_sun * phi_sun) * 0.02 * rng.gauss();
         }
         MekfSampleInputs<T> in;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "attitude_estimator/attitude_matrix.hpp"
+#include "attitude_estimator/vec3_math.hpp"
 
 namespace attitude_estimator {
 
@@ -95,10 +96,44 @@ template <class T>
 struct Euler {
     Mat3<T> j;
     Mat3<T> j_inv;
-    V3<T> rate(const V3<T>& w) const { return j_inv * (-w.cross(j * w)); }
+    V3<T> torque = V3<T>::Zero();  // N m, body: the modelled disturbance torques of this substep
+    V3<T> rate(const V3<T>& w) const { return j_inv * (torque - w.cross(j * w)); }
     // ∂ω̇/∂ω = J⁻¹ ([(Jω)×] − [ω×] J)
     Mat3<T> jacobian(const V3<T>& w) const { return j_inv * (skew<T>(j * w) - skew(w) * j); }
 };
+
+inline constexpr double kEarthMu = 3.986004418e14;  // m³/s², WGS-84
+
+template <class T>
+bool has_torques(const MekfConfig<T>& c) {
+    return c.gravity_gradient || c.dipole[0] != T(0) || c.dipole[1] != T(0) || c.dipole[2] != T(0);
+}
+
+// The modelled torques at attitude a (inertial to body) and their derivative by the attitude error δθ
+// (A_true = (I − [δθ×]) Â turns an inertial vector's body image v into v + [v×] δθ):
+//   m × B_b:            ∂/∂δθ = [m×][B_b×];
+//   k n × J n (k = 3μ/r³, n the unit position in the body): ∂/∂δθ = k ([n×] J − [(J n)×]) [n×].
+template <class T>
+void model_torques(const MekfState<T>& s, const MekfConfig<T>& c, const Mat3<T>& j, const Mat3<T>& a, V3<T>& torque,
+                   Mat3<T>& d_torque) {
+    torque.setZero();
+    d_torque.setZero();
+    const V3<T> m = v3(c.dipole);
+    const V3<T> field = a * v3(s.torque_field);
+    if (m.squaredNorm() > T(0) && field.allFinite()) {
+        torque += m.cross(field);
+        d_torque += skew(m) * skew(field);
+    }
+    const V3<T> r = v3(s.torque_position);
+    const T radius = r.norm();
+    if (c.gravity_gradient && radius > T(0) && std::isfinite(radius)) {
+        const V3<T> n = a * (r / radius);
+        const T k = T(3) * static_cast<T>(kEarthMu / static_cast<double>(radius)) / (radius * radius);
+        const V3<T> jn = j * n;
+        torque += k * n.cross(jn);
+        d_torque += k * (skew(n) * j - skew(jn)) * skew(n);
+    }
+}
 
 // P in place (no copy: a 10 × 10 on the firmware's stack is 400 B), and a copy of it to work on.
 template <class T>
@@ -314,9 +349,15 @@ void mekf_propagate(MekfState<T>& s, T dt, const MekfConfig<T>& c) noexcept {
         if (c.estimate_offset) q(kMekfOffset + i, kMekfOffset + i) = c.offset_noise * c.offset_noise * h;
     }
     if (c.estimate_scale) q(kMekfScale, kMekfScale) = c.scale_noise * c.scale_noise * h;
+    if (euler && c.torque_noise > T(0))  // the unmodelled torques' share, through the inertia
+        q.template block<3, 3>(kMekfRate, kMekfRate) +=
+            c.torque_noise * c.torque_noise * h * dyn.j_inv * dyn.j_inv.transpose();
+    const bool torques = euler && has_torques(c);
+    Mat3<T> d_torque = Mat3<T>::Zero(), phi_wt = Mat3<T>::Zero();
     for (int step = 0; step < n; ++step) {
         V3<T> w_next = w;
         Mat3<T> phi_ww = Mat3<T>::Identity();
+        if (torques) model_torques(s, c, dyn.j, matrix_of(s.q), dyn.torque, d_torque);
         if (euler) {  // RK4 on Euler's equations; the rate Jacobian at the midpoint
             const V3<T> k1 = dyn.rate(w);
             const V3<T> k2 = dyn.rate(w + h / T(2) * k1);
@@ -326,11 +367,15 @@ void mekf_propagate(MekfState<T>& s, T dt, const MekfConfig<T>& c) noexcept {
             phi_ww += h * dyn.jacobian(T(0.5) * (w + w_next));
         }
         const V3<T> w_mid = euler ? V3<T>(T(0.5) * (w + w_next)) : w;
+        // The torques at this substep's start attitude (a substep turns at most 0.05 rad): how an attitude
+        // error changes the rate through them.
+        if (torques) phi_wt = h * dyn.j_inv * d_torque;
         const Quaternion<T> turn = rotation<T>(w_mid * h);
         MatN<T> phi = MatN<T>::Identity();
         phi.template block<3, 3>(kMekfAttitude, kMekfAttitude) = matrix_of(turn);
         phi.template block<3, 3>(kMekfAttitude, kMekfRate) = rate_to_attitude(w_mid, h);
         phi.template block<3, 3>(kMekfRate, kMekfRate) = phi_ww;
+        if (torques) phi.template block<3, 3>(kMekfRate, kMekfAttitude) = phi_wt;
         const MatN<T> phi_p = phi.lazyProduct(p);
         p = phi_p.lazyProduct(phi.transpose()) + q;
         s.q = normalized(compose(turn, s.q));
@@ -460,6 +505,10 @@ T mekf_attitude_bound(const MekfState<T>& s) noexcept {
 template <class T>
 MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, const MekfConfig<T>& c) noexcept {
     MekfSampleResult<T> result;
+    // The torque models' surroundings for the step to this sample (they change by a few thousandths of a
+    // degree in one).
+    if (squared_norm(in.mag_ref) > T(0)) s.torque_field = in.mag_ref;
+    if (squared_norm(in.position) > T(0)) s.torque_position = in.position;
     if (s.stage == 2) {
         mekf_propagate(s, in.t - s.t_last, c);
     } else {
