@@ -184,6 +184,19 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.parameter("inertia", &D::inertia, "kg.m2",
                 "mekf: inertia matrix, body axes, row-major; all zero (default) = kinematic rate model, else "
                 "Euler's torque-free equations propagate the rate");
+    t.parameter("filter_dipole", &D::filter_dipole, "A.m2",
+                "mekf with inertia: the spacecraft's residual magnetic dipole, body axes (its magnetic budget, "
+                "uplinked): the filter propagates the rate with its torque m x B (B the reference field in the "
+                "body); 0 (default): not modelled");
+    t.parameter("filter_torque_noise", &D::filter_torque_noise, "N.m",
+                "mekf with inertia: the torques the filter does not model (drag, solar pressure, the models' "
+                "errors) as white noise, 1-sigma (N m s) of the angular momentum they add over 1 s (N m per "
+                "sqrt(Hz)); rate noise through the inertia, "
+                "added to filter_rate_noise")
+        .range(0.0, 1.0);
+    t.parameter("filter_gravity_gradient", &D::filter_gravity_gradient, "",
+                "mekf with inertia: the filter propagates the rate with the gravity-gradient torque (from the "
+                "on-board orbit: reference_source onboard only)");
     t.parameter("mag_calibration", &D::mag_calibration, "",
                 "Calibrate the magnetometer in flight (scale, non-orthogonality, offset against the reference "
                 "field's magnitude; Alonso and Shuster 2002) and correct the field with it once solved");
@@ -199,6 +212,14 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.parameter("filter_reset_after", &D::filter_reset_after, "",
                 "mekf: samples in a row whose every update fails the innovation test before the filter resets "
                 "to the single-frame attitude")
+        .range(1.0, 1e6);
+    t.parameter("filter_watch_time", &D::filter_watch_time, "s",
+                "mekf: averaging time of the divergence watch (the field's innovation in inertial axes against "
+                "its expected size; docs/filter.md); 0: off")
+        .range(0.0, 1e6);
+    t.parameter("filter_watch_gate", &D::filter_watch_gate, "1",
+                "mekf: the watch's squared average over its expected size above which the filter is lost and "
+                "resets to the single-frame attitude (counted in filter_resets)")
         .range(1.0, 1e6);
 
     t.output("q_est", &D::q_est, "1", "Estimated attitude quaternion, scalar-last [x, y, z, w], w >= 0")
@@ -623,6 +644,9 @@ void check_onboard_state(const OnboardState<T>& s, const std::string& name) {
                                 f.t_first,   f.t_last};
     for (const T x : filter_scalars) fmu::require_finite(static_cast<double>(x), name + ".filter");
     for (const T x : f.p) fmu::require_finite(static_cast<double>(x), name + ".filter.p");
+    const T watch[] = {f.watch_sum[0], f.watch_sum[1], f.watch_sum[2], f.watch_weight,
+                       f.watch_noise,  f.watch_spread, f.watch_ratio,  f.t_watch};
+    for (const T x : watch) fmu::require_finite(static_cast<double>(x), name + ".filter.watch");
     const T last[] = {s.last_q.x, s.last_q.y, s.last_q.z, s.last_q.w, s.last_t, s.step_turn};
     for (const T x : last) fmu::require_finite(static_cast<double>(x), name + ".last_q/last_t/step_turn");
     fmu::require_bool(s.has_last, name + ".has_last");

@@ -114,7 +114,12 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
     m.estimate_scale = d.filter_scale;
     m.face_sigma = static_cast<T>(d.filter_face_sigma);
     m.inertia = to<T>(d.inertia);
+    m.dipole = to<T>(d.filter_dipole);
+    m.gravity_gradient = d.filter_gravity_gradient;
+    m.torque_noise = static_cast<T>(d.filter_torque_noise);
     m.reset_after = d.filter_reset_after;
+    m.watch_time = static_cast<T>(d.filter_watch_time);
+    m.watch_gate = static_cast<T>(d.filter_watch_gate);
     s.mag_calibration = d.mag_calibration;
     s.mag_cal.sigma = static_cast<T>(d.mag_calibration_sigma);
     s.mag_cal.every = d.mag_calibration_every;

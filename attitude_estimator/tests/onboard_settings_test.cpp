@@ -89,8 +89,13 @@ std::vector<double> numbers(const OnboardSettings<double>& s) {
          f.face_gate,
          static_cast<double>(f.reset_after),
          f.valid_bound,
-         f.max_init_gap});
+         f.max_init_gap,
+         f.watch_time,
+         f.watch_gate,
+         static_cast<double>(f.gravity_gradient),
+         f.torque_noise});
     put_all(f.inertia);
+    put_all(f.dipole);
     const MagCalibrationConfig<double>& k = s.mag_cal;
     put({k.sigma, static_cast<double>(k.every), static_cast<double>(k.min_equations),
          static_cast<double>(k.solve_every), k.max_distortion, k.max_offset, k.max_gain_sigma, k.max_offset_sigma});

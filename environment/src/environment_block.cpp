@@ -86,6 +86,13 @@ EnvironmentParams environment_params(const EnvironmentData& d) {
                             .interval = d.albedo_interval,
                             .degree = d.albedo_degree};
     p.albedo.response = d.albedo_response;
+    p.disturbance_torques = d.disturbance_torques;
+    p.body = SpacecraftBody{.size = d.body_size,
+                            .centre_of_mass = d.centre_of_mass,
+                            .drag_coefficient = d.drag_coefficient,
+                            .specular_reflectivity = d.specular_reflectivity,
+                            .diffuse_reflectivity = d.diffuse_reflectivity,
+                            .dipole_moment = d.dipole_moment};
     return p;
 }
 
@@ -94,8 +101,8 @@ void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
     // Attitude motion.
     t.choice("attitude_mode", &D::attitude_mode,
              {{"spin", AttitudeMode::spin}, {"rigid_body", AttitudeMode::rigid_body}},
-             "Attitude motion: spin (seed 000 section 4, a pure function of time) or rigid_body (torque-free "
-             "Euler equations, states q and omega)");
+             "Attitude motion: spin (seed 000 section 4, a pure function of time) or rigid_body (Euler equations "
+             "under the disturbance torques, states q and omega)");
     t.parameter("spin_phi0", &D::spin_phi0, "rad",
                 "Spin mode: phi at t = 0 in s_body = (sin phi sin theta, cos phi "
                 "sin theta, cos theta)")
@@ -126,6 +133,29 @@ void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
                 "rate 2k under any integrator (zero on |q| = 1; 0 disables it). An explicit fixed-step host needs "
                 "steps below 1/k")
         .range(0.0, 1e3);
+    // The spacecraft the torques act on.
+    t.parameter("disturbance_torques", &D::disturbance_torques, "",
+                "Rigid-body mode: gravity gradient, residual dipole, aerodynamic and solar pressure torques in "
+                "Euler's equations (false: torque-free, and the torque outputs are zero)");
+    t.parameter("body_size", &D::body_size, "m",
+                "The spacecraft's box: edges along body x, y, z (faces +x, -x, +y, -y, +z, -z; default a 3U, "
+                "100 x 100 x 340 mm)")
+        .range(1e-3, 100.0);
+    t.parameter("centre_of_mass", &D::centre_of_mass, "m",
+                "Centre of mass from the box's geometric centre, body axes (inside the box)")
+        .range(-50.0, 50.0);
+    t.parameter("drag_coefficient", &D::drag_coefficient, "1",
+                "Drag coefficient of each face in free-molecular flow (flat plate: about 2.2)")
+        .range(0.0, 10.0);
+    t.parameter("specular_reflectivity", &D::specular_reflectivity, "1",
+                "Faces' specular reflectivity to sunlight (specular + diffuse <= 1, the rest absorbed)")
+        .range(0.0, 1.0);
+    t.parameter("diffuse_reflectivity", &D::diffuse_reflectivity, "1", "Faces' diffuse (Lambertian) reflectivity")
+        .range(0.0, 1.0);
+    t.parameter("dipole_moment", &D::dipole_moment, "A.m2",
+                "Residual magnetic dipole, body axes: the torque m x B (set it to the magnetometer's dipole_moment, "
+                "the same spacecraft)")
+        .range(-100.0, 100.0);
     // Orbit.
     t.choice("orbit_model", &D::orbit_model, {{"circular", OrbitModel::circular}, {"tle", OrbitModel::tle}},
              "Truth orbit: circular (Kepler, from orbit_altitude, orbit_inclination, orbit_raan, "
@@ -246,8 +276,8 @@ void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
     t.state("omega", &D::omega, &D::der_omega, "rad/s", "Rigid-body mode: angular velocity, body axes")
         .nominal(0.01)  // body rates of a tumbling satellite: about 1 deg/s
         .calculated_start()
-        .derivative_depends_on({"omega"});
-    q.derivative_depends_on({"q", "omega"});  // after omega is declared
+        .derivative_depends_on({"q", "omega"});  // the torques depend on the attitude
+    q.derivative_depends_on({"q", "omega"});     // after omega is declared
 
     t.output("sun_body", &D::sun_body, "1", "Unit vector satellite to sun, body axes").depends_on({"q"});
     t.output("sun_eci", &D::sun_eci, "1", "Unit vector satellite to sun, ECI (J2000)").depends_on({});
@@ -277,6 +307,19 @@ void EnvironmentBlock::declare(fmu::Table<EnvironmentData>& t) {
              "the cosine of its zenith angle at the sub-satellite point (0 over the night side)")
         .depends_on({});
 
+    t.output("torque_gravity_gradient", &D::torque_gravity_gradient, "N.m",
+             "Gravity-gradient torque 3 mu/r^5 r_b x (J r_b), body axes (0 with disturbance_torques off)")
+        .depends_on({"q"});
+    t.output("torque_magnetic", &D::torque_magnetic, "N.m",
+             "Torque of the residual dipole in the field, m x B, body axes")
+        .depends_on({"q"});
+    t.output("torque_aerodynamic", &D::torque_aerodynamic, "N.m",
+             "Aerodynamic torque of the faces in the relative wind (exponential atmosphere), body axes")
+        .depends_on({"q"});
+    t.output("torque_solar_pressure", &D::torque_solar_pressure, "N.m",
+             "Solar radiation pressure torque of the lit faces (0 in the umbra), body axes")
+        .depends_on({"q"});
+
     t.local("sunlight_fraction", &D::sunlight_fraction, "1", "Visible fraction of the solar disc (1 lit, 0 umbra)");
     t.output("sun_distance", &D::sun_distance, "m",
              "Distance satellite to sun (what an on-board ephemeris knows: scales the expected panel currents)")
@@ -301,8 +344,11 @@ fmu::ModelInfo EnvironmentBlock::describe() {
         "&phi;<sub>0</sub> "
         "+ &phi;&#775; t, &theta; = &theta;<sub>0</sub> + &theta;&#775; t, exactly for the sun direction at the "
         "epoch; the attitude is a pure function of time and the states q, omega are idle (derivatives 0). "
-        "<code>rigid_body</code> integrates the torque-free Euler equations J&omega;&#775; = &minus;&omega; &times; "
-        "J&omega; and q&#775; = &frac12;&Omega;(&omega;)q + k(1 &minus; |q|&sup2;)q as the continuous states q[1..4], "
+        "<code>rigid_body</code> integrates Euler's equations J&omega;&#775; = &minus;&omega; &times; "
+        "J&omega; + &tau; under the disturbance torques &tau; (gravity gradient, the residual dipole in the field, "
+        "the faces' drag and solar pressure; outputs torque_*, <code>disturbance_torques = false</code> for the "
+        "torque-free body) and q&#775; = &frac12;&Omega;(&omega;)q + k(1 &minus; |q|&sup2;)q as the continuous states "
+        "q[1..4], "
         "omega[1..3] (initial values q0, omega0). The second term (k = <code>quaternion_norm_gain</code>, default "
         "0.01/s) is zero on |q| = 1 and pulls the norm back at the rate 2k under any integrator, so |q| does not "
         "drift (an explicit fixed-step host needs steps below 1/k = 100 s); outputs use q/|q|.</li>"
@@ -370,7 +416,7 @@ void EnvironmentBlock::initialize(double) {
     d.orbit_period = core().orbit_period();
 }
 
-void EnvironmentBlock::evaluate_derivatives(double) {
+void EnvironmentBlock::evaluate_derivatives(double t) {
     const Environment& env = core();
     auto& d = data();
     if (env.params().attitude_mode != AttitudeMode::rigid_body) {
@@ -380,7 +426,12 @@ void EnvironmentBlock::evaluate_derivatives(double) {
     }
     const RigidBodyState x{d.q[0], d.q[1], d.q[2], d.q[3], d.omega[0], d.omega[1], d.omega[2]};
     RigidBodyState dx{};
-    env.derivative(x.data(), dx.data());
+    env.derivative(t, x.data(), dx.data());
+    store_derivatives(dx);
+}
+
+void EnvironmentBlock::store_derivatives(const RigidBodyState& dx) {
+    auto& d = data();
     // Norm stabilization (header): k (1 - |q|^2) q, zero on the unit sphere.
     const double n2 = d.q[0] * d.q[0] + d.q[1] * d.q[1] + d.q[2] * d.q[2] + d.q[3] * d.q[3];
     const double pull = d.quaternion_norm_gain * (1.0 - n2);
@@ -391,12 +442,22 @@ void EnvironmentBlock::evaluate_derivatives(double) {
 void EnvironmentBlock::evaluate(double t) {
     const Environment& env = core();
     auto& d = data();
-    evaluate_derivatives(t);
     EnvironmentOutputs o;
     if (env.params().attitude_mode == AttitudeMode::rigid_body) {
         const RigidBodyState x{d.q[0], d.q[1], d.q[2], d.q[3], d.omega[0], d.omega[1], d.omega[2]};
         o = env.evaluate(t, &x);  // normalises q before use
+        // The derivative under the torques just evaluated (the same as env.derivative(t, x), without
+        // computing the orbit, sun and field twice).
+        const Eigen::Vector3d torque(
+            o.torque_gravity_gradient[0] + o.torque_magnetic[0] + o.torque_aerodynamic[0] + o.torque_solar_pressure[0],
+            o.torque_gravity_gradient[1] + o.torque_magnetic[1] + o.torque_aerodynamic[1] + o.torque_solar_pressure[1],
+            o.torque_gravity_gradient[2] + o.torque_magnetic[2] + o.torque_aerodynamic[2] + o.torque_solar_pressure[2]);
+        RigidBodyState dx{};
+        env.derivative(x.data(), torque, dx.data());
+        store_derivatives(dx);
     } else {
+        d.der_q = {};
+        d.der_omega = {};
         o = env.evaluate(t);
     }
     d.sun_body = o.sun_body;
@@ -415,6 +476,10 @@ void EnvironmentBlock::evaluate(double t) {
     d.nadir_body = o.nadir_body;
     d.orbit_radius_ratio = o.orbit_radius_ratio;
     d.albedo_source = o.albedo_source;
+    d.torque_gravity_gradient = o.torque_gravity_gradient;
+    d.torque_magnetic = o.torque_magnetic;
+    d.torque_aerodynamic = o.torque_aerodynamic;
+    d.torque_solar_pressure = o.torque_solar_pressure;
 }
 
 }  // namespace environment

@@ -7,7 +7,7 @@ namespace fmu {
 
 namespace {
 
-constexpr std::array<UnitDefinition, 32> units{{
+constexpr std::array<UnitDefinition, 33> units{{
     {.name = "1"},
     {.name = "s", .s = 1},
     {.name = "Hz", .s = -1},
@@ -39,6 +39,7 @@ constexpr std::array<UnitDefinition, 32> units{{
     {.name = "J/K", .kg = 1, .m = 2, .s = -2, .K = -1},       // heat capacity
     {.name = "W/K", .kg = 1, .m = 2, .s = -3, .K = -1},       // thermal conductance
     {.name = "A.m2", .m = 2, .A = 1},                         // magnetic dipole moment
+    {.name = "N.m", .kg = 1, .m = 2, .s = -2},                // torque
     {.name = "1/year", .s = -1, .factor = 1.0 / 31557600.0},  // a fraction per Julian year (a degradation)
 }};
 

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "attitude_estimator/attitude_matrix.hpp"
+#include "attitude_estimator/vec3_math.hpp"
 
 namespace attitude_estimator {
 
@@ -95,10 +96,44 @@ template <class T>
 struct Euler {
     Mat3<T> j;
     Mat3<T> j_inv;
-    V3<T> rate(const V3<T>& w) const { return j_inv * (-w.cross(j * w)); }
+    V3<T> torque = V3<T>::Zero();  // N m, body: the modelled disturbance torques of this substep
+    V3<T> rate(const V3<T>& w) const { return j_inv * (torque - w.cross(j * w)); }
     // ∂ω̇/∂ω = J⁻¹ ([(Jω)×] − [ω×] J)
     Mat3<T> jacobian(const V3<T>& w) const { return j_inv * (skew<T>(j * w) - skew(w) * j); }
 };
+
+inline constexpr double kEarthMu = 3.986004418e14;  // m³/s², WGS-84
+
+template <class T>
+bool has_torques(const MekfConfig<T>& c) {
+    return c.gravity_gradient || c.dipole[0] != T(0) || c.dipole[1] != T(0) || c.dipole[2] != T(0);
+}
+
+// The modelled torques at attitude a (inertial to body) and their derivative by the attitude error δθ
+// (A_true = (I − [δθ×]) Â turns an inertial vector's body image v into v + [v×] δθ):
+//   m × B_b:            ∂/∂δθ = [m×][B_b×];
+//   k n × J n (k = 3μ/r³, n the unit position in the body): ∂/∂δθ = k ([n×] J − [(J n)×]) [n×].
+template <class T>
+void model_torques(const MekfState<T>& s, const MekfConfig<T>& c, const Mat3<T>& j, const Mat3<T>& a, V3<T>& torque,
+                   Mat3<T>& d_torque) {
+    torque.setZero();
+    d_torque.setZero();
+    const V3<T> m = v3(c.dipole);
+    const V3<T> field = a * v3(s.torque_field);
+    if (m.squaredNorm() > T(0) && field.allFinite()) {
+        torque += m.cross(field);
+        d_torque += skew(m) * skew(field);
+    }
+    const V3<T> r = v3(s.torque_position);
+    const T radius = r.norm();
+    if (c.gravity_gradient && radius > T(0) && std::isfinite(radius)) {
+        const V3<T> n = a * (r / radius);
+        const T k = T(3) * static_cast<T>(kEarthMu / static_cast<double>(radius)) / (radius * radius);
+        const V3<T> jn = j * n;
+        torque += k * n.cross(jn);
+        d_torque += k * (skew(n) * j - skew(jn)) * skew(n);
+    }
+}
 
 // P in place (no copy: a 10 × 10 on the firmware's stack is 400 B), and a copy of it to work on.
 template <class T>
@@ -226,6 +261,43 @@ void add_offset_to_start(MekfState<T>& s, const MekfSampleInputs<T>& in, const M
     store_p<T>(s, p);
 }
 
+// The divergence watch (MekfConfig::watch_time) takes this sample's field before its update. The innovation
+// y = B_meas − (Â B_ref + p b̂) turned into inertial axes, z = Âᵀ y, is [B_ref×] δθ_I plus noise for an
+// attitude error δθ_I fixed in inertial axes: a filter that has lost the attitude leaves a z that does not
+// average away, however fast the body turns. Over exponential weights w_k (time constant watch_time) the
+// average z̄ = Σ w_k z_k / Σ w_k of a consistent filter has E|z̄|² = Σ w_k² tr R_k / (Σ w_k)² (the noise as
+// weighted: a correlated error weighted as white noise of the same information averages down as that white
+// noise does) plus at most Σ w_k e_k / Σ w_k with e_k = E|[B_b×] δθ + δb|² from the filter's own covariance
+// (Cauchy–Schwarz: the errors of successive samples are correlated, at most fully). The ratio of the two is
+// ~1 when the filter is consistent (docs/filter.md, "The watch").
+template <class T>
+void watch_field(MekfState<T>& s, const MekfSampleInputs<T>& in, T polarity, const MekfConfig<T>& c) noexcept {
+    const T micro = T(1e6);
+    const Mat3<T> a = matrix_of(s.q);
+    const V3<T> field = a * (micro * v3(in.mag_ref));
+    const V3<T> y = micro * (v3(in.mag_body) - polarity * v3(s.mag_offset)) - field;
+    if (!y.allFinite()) return;
+    const V3<T> z = a.transpose() * y;
+    const T dt = in.t - s.t_watch;  // since the previous field, or the start (mekf_start)
+    s.t_watch = in.t;
+    if (!(dt > T(0))) return;
+    const T alpha = dt < c.watch_time ? dt / c.watch_time : T(1);
+    const T keep = T(1) - alpha;
+    const T sigma = micro * c.mag_sigma, ref_sigma = micro * c.mag_ref_sigma;
+    const T r = T(3) * (sigma * sigma + ref_sigma * ref_sigma);
+    const Mat3<T> p_att = view_p(s).template block<3, 3>(kMekfAttitude, kMekfAttitude);
+    const T p_off = view_p(s).template block<3, 3>(kMekfOffset, kMekfOffset).trace() * micro * micro;
+    const T spread = field.squaredNorm() * p_att.trace() - field.dot(p_att * field) + p_off;
+    for (int i = 0; i < 3; ++i) s.watch_sum[static_cast<std::size_t>(i)] = keep * s.watch_sum[i] + alpha * z(i);
+    s.watch_weight = keep * s.watch_weight + alpha;
+    s.watch_noise = keep * keep * s.watch_noise + alpha * alpha * r;
+    s.watch_spread = keep * s.watch_spread + alpha * spread;
+    const T w = s.watch_weight;
+    const T expected = s.watch_noise / (w * w) + s.watch_spread / w;
+    const V3<T> mean = v3(s.watch_sum) / w;
+    s.watch_ratio = expected > T(0) ? mean.squaredNorm() / expected : T(0);
+}
+
 }  // namespace
 
 template <class T>
@@ -235,6 +307,9 @@ void mekf_start(MekfState<T>& s, const Quaternion<T>& q, const Vec3<T>& omega, T
     s.t_last = t;
     s.stage = 2;
     s.refused_in_row = 0;
+    s.watch_sum = {};
+    s.watch_weight = s.watch_noise = s.watch_spread = s.watch_ratio = T(0);
+    s.t_watch = t;
     MatN<T> p = MatN<T>::Zero();
     const T sa = c.init_attitude_sigma, sw = c.init_rate_sigma;
     for (int i = 0; i < 3; ++i) {
@@ -274,9 +349,15 @@ void mekf_propagate(MekfState<T>& s, T dt, const MekfConfig<T>& c) noexcept {
         if (c.estimate_offset) q(kMekfOffset + i, kMekfOffset + i) = c.offset_noise * c.offset_noise * h;
     }
     if (c.estimate_scale) q(kMekfScale, kMekfScale) = c.scale_noise * c.scale_noise * h;
+    if (euler && c.torque_noise > T(0))  // the unmodelled torques' share, through the inertia
+        q.template block<3, 3>(kMekfRate, kMekfRate) +=
+            c.torque_noise * c.torque_noise * h * dyn.j_inv * dyn.j_inv.transpose();
+    const bool torques = euler && has_torques(c);
+    Mat3<T> d_torque = Mat3<T>::Zero(), phi_wt = Mat3<T>::Zero();
     for (int step = 0; step < n; ++step) {
         V3<T> w_next = w;
         Mat3<T> phi_ww = Mat3<T>::Identity();
+        if (torques) model_torques(s, c, dyn.j, matrix_of(s.q), dyn.torque, d_torque);
         if (euler) {  // RK4 on Euler's equations; the rate Jacobian at the midpoint
             const V3<T> k1 = dyn.rate(w);
             const V3<T> k2 = dyn.rate(w + h / T(2) * k1);
@@ -286,11 +367,15 @@ void mekf_propagate(MekfState<T>& s, T dt, const MekfConfig<T>& c) noexcept {
             phi_ww += h * dyn.jacobian(T(0.5) * (w + w_next));
         }
         const V3<T> w_mid = euler ? V3<T>(T(0.5) * (w + w_next)) : w;
+        // The torques at this substep's start attitude (a substep turns at most 0.05 rad): how an attitude
+        // error changes the rate through them.
+        if (torques) phi_wt = h * dyn.j_inv * d_torque;
         const Quaternion<T> turn = rotation<T>(w_mid * h);
         MatN<T> phi = MatN<T>::Identity();
         phi.template block<3, 3>(kMekfAttitude, kMekfAttitude) = matrix_of(turn);
         phi.template block<3, 3>(kMekfAttitude, kMekfRate) = rate_to_attitude(w_mid, h);
         phi.template block<3, 3>(kMekfRate, kMekfRate) = phi_ww;
+        if (torques) phi.template block<3, 3>(kMekfRate, kMekfAttitude) = phi_wt;
         const MatN<T> phi_p = phi.lazyProduct(p);
         p = phi_p.lazyProduct(phi.transpose()) + q;
         s.q = normalized(compose(turn, s.q));
@@ -420,6 +505,10 @@ T mekf_attitude_bound(const MekfState<T>& s) noexcept {
 template <class T>
 MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, const MekfConfig<T>& c) noexcept {
     MekfSampleResult<T> result;
+    // The torque models' surroundings for the step to this sample (they change by a few thousandths of a
+    // degree in one).
+    if (squared_norm(in.mag_ref) > T(0)) s.torque_field = in.mag_ref;
+    if (squared_norm(in.position) > T(0)) s.torque_position = in.position;
     if (s.stage == 2) {
         mekf_propagate(s, in.t - s.t_last, c);
     } else {
@@ -473,6 +562,8 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
         MekfConfig<T> mag_config = c;
         if (in.mag_calibrated && c.mag_sigma_calibrated > T(0)) mag_config.mag_sigma = c.mag_sigma_calibrated;
         const T polarity = holds_hard_iron(s, c) ? T(1) : in.polarity;
+        // The watch needs the three axes (an excluded axis leaves no field to turn into inertial axes).
+        if (c.watch_time > T(0) && in.mag_axes == 7) watch_field(s, in, polarity, mag_config);
         result.mag = mekf_update_field(s, in.mag_ref, in.mag_body, polarity, mag_config, in.mag_axes);
         ++offered;
         accepted += result.mag.accepted;
@@ -482,7 +573,8 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
             mekf_update_faces(s, in.sun_ref, in.face_r, in.face_albedo, in.face_use, *in.response, c);
 
     if (offered > 0) s.refused_in_row = accepted > 0 ? 0 : s.refused_in_row + 1;
-    if (s.refused_in_row >= c.reset_after || !finite(s)) {
+    result.lost = c.watch_time > T(0) && s.watch_ratio > c.watch_gate;
+    if (s.refused_in_row >= c.reset_after || !finite(s) || result.lost) {
         // Diverged: back to the single-frame attitude (and a fresh rate from the next one).
         ++s.resets;
         result.reset = true;

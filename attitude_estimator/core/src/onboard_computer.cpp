@@ -106,6 +106,9 @@ void update_filter(OnboardState<T>& s, const OnboardInputs<T>& in, const Onboard
     // offset state is what is left of the offset, with the sign of this reading's polarity.
     f.mag_body = r.mag_field;
     f.polarity = polarity;
+    // The on-board orbit's position (km, TEME; zero when the references are inputs) for the gravity gradient:
+    // TEME and J2000 differ by the precession since 2000 (0.3°), nothing to a torque.
+    for (std::size_t k = 0; k < 3; ++k) f.position[k] = T(1000) * out.references.position[k];
     f.mag_calibrated = settings.mag_calibration && s.mag_cal.valid && !bias_recovering_uncalibrated(s, settings);
     if (settings.filter_scale && nominal.sun.method != SunMethod::difference) {
         // Relative responses against the nominal normalization: the filter's model is (1 + ε) R(cos β).

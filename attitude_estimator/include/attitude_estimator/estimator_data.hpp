@@ -107,7 +107,12 @@ struct EstimatorData {
     bool filter_scale = MekfConfig<double>{}.estimate_scale;  // estimate a common panel scale (face-based methods)
     double filter_face_sigma = 0.02;                          // 1: relative face response noise and model error, 1σ
     std::array<double, 9> inertia{};                          // kg m², row-major; all zero = kinematic rate model
+    std::array<double, 3> filter_dipole{};  // A m², body: the uplinked residual dipole whose torque the filter models
+    bool filter_gravity_gradient = false;   // the filter models the gravity-gradient torque
+    double filter_torque_noise = 0.0;       // N m √s: the unmodelled torques as white noise (through the inertia)
     std::int32_t filter_reset_after = MekfConfig<double>{}.reset_after;  // samples all refused before a reset
+    double filter_watch_time = MekfConfig<double>{}.watch_time;          // s: the divergence watch's averaging (0: off)
+    double filter_watch_gate = MekfConfig<double>{}.watch_gate;          // its ratio above which the filter is lost
     // HMC2003 set/reset (set_reset.hpp): pulse every this many samples and average the offset over this
     // many set/reset pairs. 0 (default): no pulses, the offset stays in the field — the safe default for a
     // magnetometer whose set_reset_command is not wired to mag_set_reset (its readings never flip).

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "environment/atmosphere.hpp"
 #include "environment/attitude.hpp"
 #include "environment/constants.hpp"
 #include "environment/earth_rotation.hpp"
@@ -43,6 +44,11 @@ void validate(const EnvironmentParams& p) {
     if (p.orbit_model == OrbitModel::tle && !(p.tle.mean_motion_rev_per_day > 0.0)) {
         throw std::invalid_argument("Environment: orbit_model tle needs an element set (orbit::parse_tle)");
     }
+    validate(p.body);
+}
+
+Eigen::Vector3d vector3(const std::array<double, 3>& a) {
+    return {a[0], a[1], a[2]};
 }
 }  // namespace
 
@@ -55,7 +61,8 @@ Environment::Environment(const EnvironmentParams& params)
                      ? std::optional<TleOrbit>(std::in_place, params.tle, params.epoch)
                      : std::nullopt),
       rigid_body_(params.rigid_body),
-      spin_(params.spin, sun_position_eci(jd0_)) {
+      spin_(params.spin, sun_position_eci(jd0_)),
+      faces_(box_faces(params.body)) {
     // Fail at construction, not at the first step, when the epoch lies outside IGRF-14's validity.
     if (params.field_model == FieldModel::igrf14 || params.field_model == FieldModel::dipole) {
         (void)igrf_coefficients(decimal_year(jd0_));
@@ -107,6 +114,58 @@ Eigen::Vector3d Environment::sun_position_eci(double jd) const {
     return s.direction_eci * s.distance;
 }
 
+Eigen::Vector3d Environment::field_eci(double t, const Eigen::Vector3d& r) const {
+    // Evaluated Earth-fixed, rotated back to ECI (precession from its nodes + GMST, earth_rotation.hpp).
+    const double jd = jd0_ + t / kSecondsPerDay;
+    const Eigen::Matrix3d to_ecef = earth_rotation_z(gmst(jd)) * precession_at(t);  // ecef_from_eci
+    const GaussCoefficients c = igrf_coefficients(decimal_year(jd));
+    const Eigen::Vector3d r_ecef = to_ecef * r;
+    const Eigen::Vector3d b_ecef = (params_.field_model == FieldModel::dipole)
+                                       ? dipole_field(c, r_ecef)
+                                       : spherical_harmonic_field(c, params_.igrf_max_degree, r_ecef);
+    return to_ecef.transpose() * b_ecef;
+}
+
+DisturbanceTorques Environment::torques(const Eigen::Matrix3d& A, const Eigen::Vector3d& r, const Eigen::Vector3d& v,
+                                        const Eigen::Vector3d& b_eci, const Eigen::Vector3d& sun_eci,
+                                        double irradiance) const {
+    DisturbanceTorques tau;
+    if (!params_.disturbance_torques) return tau;
+    const SpacecraftBody& body = params_.body;
+    tau.gravity_gradient = gravity_gradient_torque(rigid_body_.inertia(), A * r);
+    tau.magnetic = magnetic_torque(vector3(body.dipole_moment), A * b_eci);
+    // The air turns with the Earth (about the J2000 z axis: the precession's 0.3 deg is negligible here).
+    const Eigen::Vector3d v_air = kEarthRotationRate * Eigen::Vector3d::UnitZ().cross(r);
+    tau.aerodynamic =
+        aerodynamic_torque(faces_, body.drag_coefficient, atmosphere_density(ellipsoid_altitude(r)), A * (v - v_air));
+    tau.solar_pressure =
+        solar_pressure_torque(faces_, body.specular_reflectivity, body.diffuse_reflectivity, irradiance, A * sun_eci);
+    return tau;
+}
+
+void Environment::derivative(double t, const double* x, double* dx) const {
+    if (!params_.disturbance_torques || params_.attitude_mode != AttitudeMode::rigid_body) {
+        rigid_body_.derivative(x, dx);
+        return;
+    }
+    if (!std::isfinite(t)) throw std::invalid_argument("Environment::derivative: time is not finite");
+    RigidBodyState unit{};
+    std::copy(x, x + unit.size(), unit.begin());
+    RigidBody::renormalize(unit.data());
+    const Eigen::Matrix3d A = attitude_matrix({unit[0], unit[1], unit[2], unit[3]});
+    Eigen::Vector3d r;
+    Eigen::Vector3d v;
+    orbit_state(t, r, v);
+    const Eigen::Vector3d r_sun = sun_position_at(t);
+    const Eigen::Vector3d to_sun = r_sun - r;
+    const double d_sun = to_sun.norm();
+    const double fraction = params_.eclipse_enabled ? sunlight_fraction(r, r_sun) : 1.0;
+    const double au_ratio = kAstronomicalUnit / d_sun;
+    const double irradiance = params_.solar_constant * au_ratio * au_ratio * fraction;
+    const DisturbanceTorques tau = torques(A, r, v, field_eci(t, r), to_sun / d_sun, irradiance);
+    rigid_body_.derivative(x, tau.total(), dx);
+}
+
 EnvironmentOutputs Environment::evaluate(double t, const RigidBodyState* state) const {
     if (!std::isfinite(t)) throw std::invalid_argument("Environment::evaluate: time is not finite");
     EnvironmentOutputs out;
@@ -153,14 +212,8 @@ EnvironmentOutputs Environment::evaluate(double t, const RigidBodyState* state) 
         out.sun_face[k] = out.irradiance * std::max(0.0, cos_beta);
     }
 
-    // Geomagnetic field: evaluated Earth-fixed, rotated back to ECI (precession + GMST, earth_rotation.hpp).
-    const Eigen::Matrix3d to_ecef = earth_rotation_z(out.gmst) * precession_at(t);  // ecef_from_eci
-    const GaussCoefficients c = igrf_coefficients(decimal_year(out.julian_date));
-    const Eigen::Vector3d r_ecef = to_ecef * r;
-    const Eigen::Vector3d b_ecef = (params_.field_model == FieldModel::dipole)
-                                       ? dipole_field(c, r_ecef)
-                                       : spherical_harmonic_field(c, params_.igrf_max_degree, r_ecef);
-    const Eigen::Vector3d b_eci = to_ecef.transpose() * b_ecef;
+    // Geomagnetic field.
+    const Eigen::Vector3d b_eci = field_eci(t, r);
     out.mag_eci = to_array(b_eci);
     out.mag_body = to_array(A * b_eci);
 
@@ -191,6 +244,12 @@ EnvironmentOutputs Environment::evaluate(double t, const RigidBodyState* state) 
     const double cos_zss = r.dot(r_sun) / (rn * d_earth_sun);
     out.albedo_source =
         params_.albedo.enabled ? reflectivity_at(params_.albedo, r.z() / rn) * e_earth * std::max(0.0, cos_zss) : 0.0;
+
+    const DisturbanceTorques tau = torques(A, r, v, b_eci, s, out.irradiance);
+    out.torque_gravity_gradient = to_array(tau.gravity_gradient);
+    out.torque_magnetic = to_array(tau.magnetic);
+    out.torque_aerodynamic = to_array(tau.aerodynamic);
+    out.torque_solar_pressure = to_array(tau.solar_pressure);
     return out;
 }
 

@@ -38,14 +38,18 @@ RigidBodyState RigidBody::initial_state() const {
 }
 
 void RigidBody::derivative(const double* x, double* dx) const {
+    derivative(x, Eigen::Vector3d::Zero(), dx);
+}
+
+void RigidBody::derivative(const double* x, const Eigen::Vector3d& torque_body, double* dx) const {
     const Eigen::Vector3d Q(x[0], x[1], x[2]);
     const double w = x[3];
     const Eigen::Vector3d om(x[4], x[5], x[6]);
     // Kinematics q' = 1/2 Omega(w) q (Shuster 1993) for A(q) inertial -> body.
     const Eigen::Vector3d dQ = 0.5 * (w * om - om.cross(Q));
     const double dw = -0.5 * om.dot(Q);
-    // Euler's equations, torque-free: J w' = -w x (J w).
-    const Eigen::Vector3d dom = j_inv_ * (-om.cross(j_ * om));
+    // Euler's equations: J w' = -w x (J w) + tau.
+    const Eigen::Vector3d dom = j_inv_ * (torque_body - om.cross(j_ * om));
     dx[0] = dQ.x();
     dx[1] = dQ.y();
     dx[2] = dQ.z();

@@ -4,7 +4,8 @@
 // copies its outputs. Time t of the FMU is seconds since the epoch parameters (UTC).
 //
 // Continuous states: q[1..4] (scalar-last, ECI -> body) and omega[1..3] (rad/s, body), always declared.
-// In rigid_body mode they are the core's torque-free rigid body, with a stabilizing term added to the
+// In rigid_body mode they are the core's rigid body under the disturbance torques (torque-free with
+// disturbance_torques = false), with a stabilizing term added to the
 // quaternion kinematics so that |q| = 1 is attracting for any host integrator:
 //   dq/dt = 1/2 Omega(w) q + k (1 - |q|^2) q,   k = quaternion_norm_gain [1/s]
 // On |q| = 1 the added term vanishes, so the exact solution is unchanged; off it, d|q|^2/dt =
@@ -35,6 +36,14 @@ struct EnvironmentData {
     std::array<double, 4> q0 = RigidBodyParams{}.q0;            // [x, y, z, w], normalised on use
     std::array<double, 3> omega0 = RigidBodyParams{}.omega0;    // rad/s, body
     double quaternion_norm_gain = 0.01;                         // 1/s, k above (see its description)
+    // --- parameters: the spacecraft the torques act on (docs/design.md, "The spacecraft")
+    bool disturbance_torques = EnvironmentParams{}.disturbance_torques;
+    std::array<double, 3> body_size = SpacecraftBody{}.size;                 // m
+    std::array<double, 3> centre_of_mass = SpacecraftBody{}.centre_of_mass;  // m, from the box's centre
+    double drag_coefficient = SpacecraftBody{}.drag_coefficient;             // 1
+    double specular_reflectivity = SpacecraftBody{}.specular_reflectivity;   // 1
+    double diffuse_reflectivity = SpacecraftBody{}.diffuse_reflectivity;     // 1
+    std::array<double, 3> dipole_moment = SpacecraftBody{}.dipole_moment;    // A m^2, body
     // --- parameters: orbit
     OrbitModel orbit_model = EnvironmentParams{}.orbit_model;
     // The element set for orbit_model = tle: two lines (69 columns each; parsed by orbit::parse_tle in
@@ -103,7 +112,11 @@ struct EnvironmentData {
     std::array<double, 3> v_eci{};
     std::array<double, 3> nadir_body{};
     double orbit_radius_ratio = 1.0;
-    double albedo_source = 0.0;  // W/m2
+    double albedo_source = 0.0;                       // W/m2
+    std::array<double, 3> torque_gravity_gradient{};  // N m, body
+    std::array<double, 3> torque_magnetic{};
+    std::array<double, 3> torque_aerodynamic{};
+    std::array<double, 3> torque_solar_pressure{};
     // --- locals
     double sunlight_fraction = 1.0;
     double sun_distance = 0.0;  // m
@@ -120,7 +133,8 @@ public:
 
     void initialize(double t) override;
     void evaluate(double t) override;
-    // The rigid-body derivatives alone (no sun, field or albedo): what a solver's Jacobian needs.
+    // The rigid-body derivatives alone (the torques' orbit, sun, eclipse and field, but no albedo): what a
+    // solver's Jacobian needs.
     void evaluate_derivatives(double t) override;
     void validate() const override;
 
@@ -129,6 +143,8 @@ public:
 
 private:
     const Environment& core() const;
+    // der_q, der_omega from the rigid body's dx plus the norm stabilization (zeros in spin mode).
+    void store_derivatives(const RigidBodyState& dx);
 
     // Derived from the parameters by configure(), outside the FMU state; a plain copyable member, so
     // clone() copies it along.

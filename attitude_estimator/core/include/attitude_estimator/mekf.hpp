@@ -65,10 +65,31 @@ struct MekfConfig {
     // --- rate propagation. Inertia (kg m², row-major, body axes): all zero = kinematic (the rate is a
     // random walk); otherwise Euler's torque-free equations J ω̇ = −ω × J ω propagate the rate.
     std::array<T, 9> inertia{};
+    // --- the disturbance torques the propagation models (with the inertia only; docs/filter.md, "Torques"):
+    // the residual dipole's m × B, B the reference field turned into the body by the estimate, and the gravity
+    // gradient 3μ/r⁵ r_b × J r_b, r_b the on-board orbit's position turned into the body. m is the spacecraft's
+    // uplinked magnetic budget (body axes, A m²; zero: no magnetic torque); what the models leave (their
+    // errors, drag, solar pressure) is rate_noise's.
+    std::array<T, 3> dipole{};
+    bool gravity_gradient = false;
+    // The torques not modelled as white noise (N m √s: 1σ of the angular momentum they add over 1 s), turned
+    // into rate noise through the inertia, Q_ωω += σ² h J⁻¹ J⁻ᵀ: an axis of small inertia (a 3U's long axis)
+    // is pushed harder by the same torque. Adds to rate_noise; only with the inertia.
+    T torque_noise = T(0);
     // --- innovation test and divergence reset
-    T gate = T(16.27);              // chi² with 3 degrees of freedom at 0.999: a vector update beyond it is refused
-    T face_gate = T(10.83);         // chi² with 1 degree of freedom at 0.999: a face update beyond it is refused
-    int reset_after = 40;           // consecutive samples with every offered update refused → reset to the Q-method
+    T gate = T(16.27);       // chi² with 3 degrees of freedom at 0.999: a vector update beyond it is refused
+    T face_gate = T(10.83);  // chi² with 1 degree of freedom at 0.999: a face update beyond it is refused
+    int reset_after = 40;    // consecutive samples with every offered update refused → reset to the Q-method
+    // The divergence watch (mekf.cpp, docs/filter.md "The watch"): the field's innovation before each update,
+    // turned into inertial axes (where an attitude error of the filter stays put however the body tumbles) and
+    // averaged over watch_time (s, exponential weights; 0: off), against the size that average has when the
+    // filter is consistent: the measurement noise R as weighted (a correlated error weighted as white noise of
+    // the same information averages down as that white noise would) and the filter's own attitude and offset
+    // covariance. Its squared size per expected squared size above watch_gate means the filter is lost while
+    // its innovation test still accepts everything (each field weighted as 10 µT white noise cannot refuse a
+    // 4 µT error); it then resets to the single-frame attitude like a refused run of reset_after samples.
+    T watch_time = T(0);
+    T watch_gate = T(16);
     T valid_bound = T(0.17453293);  // rad: filter_valid while the 3σ attitude bound is below this (10°)
     // Two single-frame attitudes further apart than this cannot give the initial rate (it could alias).
     T max_init_gap = T(0.5);  // s
@@ -94,6 +115,18 @@ struct MekfState {
     T t_sun = T(0);                   // time of the last sun update (sun_correlation_time)
     std::int32_t has_sun = 0;         // 1 once a sun update was offered since the start
     std::int32_t mag_calibrated = 0;  // 1 when the last field offered came with the in-flight calibration
+    // The torque models' surroundings, from the last sample (MekfSampleInputs::mag_ref, position): the
+    // reference field (T) and the orbit position (m), inertial; zero: not known (that torque is left out).
+    Vec3<T> torque_field{};
+    Vec3<T> torque_position{};
+    // The divergence watch (MekfConfig::watch_time): exponentially weighted sums since the start of the field's
+    // innovation in inertial axes (µT), of the weights, of the squared weights times R (µT², per axis).
+    std::array<T, 3> watch_sum{};
+    T watch_weight = T(0);
+    T watch_noise = T(0);
+    T watch_spread = T(0);  // weighted sum of the filter's own expected squared field error (attitude, offset)
+    T t_watch = T(0);       // time of the last field the watch took
+    T watch_ratio = T(0);   // the last watch statistic: squared average over its expected size (1: consistent)
 };
 
 // The outcome of one measurement update.
@@ -157,6 +190,7 @@ struct MekfSampleInputs {
     Vec3<T> mag_ref{};            // T
     Vec3<T> mag_body{};           // T
     T polarity = T(1);            // set/reset sign of this field reading
+    Vec3<T> position{};           // m, inertial: the on-board orbit (gravity gradient; zero: unknown)
     bool mag_calibrated = false;  // mag_body comes through the in-flight calibration (mag_sigma_calibrated)
     std::uint8_t mag_axes = 7;    // the magnetometer axes to use (bit k = axis k; fault_detection.hpp)
     // Face update (only with config.estimate_scale): relative responses and the faces to use.
@@ -170,6 +204,7 @@ template <class T>
 struct MekfSampleResult {
     bool valid = false;  // running and the 3σ bound below config.valid_bound
     bool reset = false;  // this sample reset the filter to the single-frame attitude
+    bool lost = false;   // the reset came from the divergence watch (MekfConfig::watch_time)
     T bound = T(0);      // 3σ attitude bound (rad), 0 when not running
     MekfUpdate<T> sun{};
     MekfUpdate<T> mag{};

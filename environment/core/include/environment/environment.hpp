@@ -4,7 +4,7 @@
 //   environment::EnvironmentParams p;                 // defaults: seed scenario, 570 km / 64.9 deg orbit
 //   environment::Environment env(p);                  // validates (throws std::invalid_argument)
 //   auto out = env.evaluate(t);                       // spin mode: a pure function of time
-//   // rigid_body mode: x = env.initial_state(); integrate env.derivative(x, dx) externally,
+//   // rigid_body mode: x = env.initial_state(); integrate env.derivative(t, x, dx) externally,
 //   // call RigidBody::renormalize(x) after each step, and evaluate(t, &x).
 #include <array>
 #include <optional>
@@ -14,6 +14,7 @@
 #include <Eigen/Geometry>  // cross products
 
 #include "environment/circular_orbit.hpp"
+#include "environment/disturbance_torques.hpp"
 #include "environment/earth_albedo.hpp"
 #include "environment/node_interpolator.hpp"
 #include "environment/rigid_body.hpp"
@@ -47,6 +48,12 @@ struct EnvironmentParams {
     FieldModel field_model = FieldModel::igrf14;
     int igrf_max_degree = 13;
     AlbedoParams albedo;
+    /// The spacecraft's box, centre of mass, drag and optical properties and residual dipole: what the
+    /// disturbance torques act on (disturbance_torques.hpp; the inertia is rigid_body.inertia).
+    SpacecraftBody body;
+    /// Gravity gradient, residual dipole, aerodynamic and solar pressure torques in Euler's equations
+    /// (rigid_body mode); false: the torque-free body, and the torque outputs are zero.
+    bool disturbance_torques = true;
 };
 
 struct EnvironmentOutputs {
@@ -72,6 +79,12 @@ struct EnvironmentOutputs {
     std::array<double, 3> nadir_body{};  // unit, satellite -> Earth's centre, body axes
     double orbit_radius_ratio = 1.0;     // r / R_E
     double albedo_source = 0.0;          // W/m^2, rho E_earth max(0, cos z_ss), z_ss the sun's zenith below
+    // The disturbance torques at the attitude (N m, body axes; zero with disturbance_torques off). In
+    // rigid_body mode their sum drives Euler's equations; in spin mode they are what would act.
+    std::array<double, 3> torque_gravity_gradient{};
+    std::array<double, 3> torque_magnetic{};
+    std::array<double, 3> torque_aerodynamic{};
+    std::array<double, 3> torque_solar_pressure{};
 };
 
 class Environment {
@@ -83,9 +96,15 @@ public:
     /// (missing state, NaN, date outside IGRF-14's validity).
     EnvironmentOutputs evaluate(double t, const RigidBodyState* state = nullptr) const;
 
-    /// Rigid body mode: the continuous states and their derivative (see rigid_body.hpp).
+    /// Rigid body mode: the continuous states and their derivative at t (see rigid_body.hpp) under the
+    /// disturbance torques at t and x (torque-free with disturbance_torques off). Costs the orbit, the sun,
+    /// the eclipse and the field at t (no albedo).
     RigidBodyState initial_state() const { return rigid_body_.initial_state(); }
-    void derivative(const double* x, double* dx) const { rigid_body_.derivative(x, dx); }
+    void derivative(double t, const double* x, double* dx) const;
+    /// The derivative under a torque already known (e.g. the sum of evaluate()'s torque outputs at t, x).
+    void derivative(const double* x, const Eigen::Vector3d& torque_body, double* dx) const {
+        rigid_body_.derivative(x, torque_body, dx);
+    }
 
     const EnvironmentParams& params() const { return params_; }
     double epoch_julian_date() const { return jd0_; }
@@ -103,7 +122,12 @@ private:
     Eigen::Vector3d sun_position_eci(double julian_date) const;  // m, Earth centre -> Sun, exact
     Eigen::Vector3d sun_position_at(double t) const;             // the same, from the nodes (t s since epoch)
     Eigen::Matrix3d precession_at(double t) const;               // J2000 -> mean of date, from the nodes
-    void orbit_state(double t, Eigen::Vector3d& r, Eigen::Vector3d& v) const;
+    void orbit_state(double t, Eigen::Vector3d& r, Eigen::Vector3d& v) const;  // m, m/s, ECI
+    Eigen::Vector3d field_eci(double t, const Eigen::Vector3d& r) const;       // T (t s since epoch)
+    /// The four torques at the attitude A (ECI -> body) from the orbit state, the field, the unit sun
+    /// direction (ECI) and the irradiance at the satellite (after the eclipse).
+    DisturbanceTorques torques(const Eigen::Matrix3d& A, const Eigen::Vector3d& r, const Eigen::Vector3d& v,
+                               const Eigen::Vector3d& b_eci, const Eigen::Vector3d& sun_eci, double irradiance) const;
 
     EnvironmentParams params_;
     double jd0_;
@@ -119,6 +143,7 @@ private:
     mutable std::optional<AlbedoHarmonics> albedo_harmonics_;  // albedo.interval > 0
     mutable std::optional<NodeInterpolator> albedo_nodes_;
     mutable std::vector<double> albedo_coefficients_;
+    std::array<Face, 6> faces_;  // from params.body
 };
 
 }  // namespace environment

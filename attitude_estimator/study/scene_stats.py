@@ -1,0 +1,91 @@
+#!/usr/bin/env python3
+"""Per run of a `cosim run` CSV: the filter's figures over a span (issue 39's aims), one table row per file.
+
+Reads env.q_true[1..4], est.q_filt[1..4], est.attitude_cov_sqrt[1..6] (lower Cholesky factor of P_theta by
+rows), est.attitude_bound, env.irradiance and, when recorded, est.filter_resets. Over the span [--from, --to):
+sunlit and eclipse p95 of the attitude error, NEES/dof (mean of dtheta' P^-1 dtheta / 3), the chi2(3) 99 %
+coverage (share of rows with dtheta' P^-1 dtheta <= 11.345), the resets in the span; over the whole run the
+first time the 3-sigma bound is below 2 deg. Standard library only; dtheta as consistency_spans.py.
+"""
+import argparse
+import csv
+import math
+
+CHI2_3_99 = 11.345  # chi2 quantile, 3 degrees of freedom, 0.99
+
+
+def pct(values, p):
+    if not values:
+        return float("nan")
+    v = sorted(values)
+    return v[min(len(v) - 1, int(p * (len(v) - 1) + 0.5))]
+
+
+def delta_theta(qt, qf):
+    x1, y1, z1, w1 = qt
+    x2, y2, z2, w2 = -qf[0], -qf[1], -qf[2], qf[3]
+    d = [w1 * x2 + w2 * x1 - (y1 * z2 - z1 * y2), w1 * y2 + w2 * y1 - (z1 * x2 - x1 * z2),
+         w1 * z2 + w2 * z1 - (x1 * y2 - y1 * x2)]
+    s = -2.0 if (w1 * w2 - (x1 * x2 + y1 * y2 + z1 * z2)) < 0 else 2.0
+    return [v * s for v in d]
+
+
+def stats(path, t0, t1):
+    rows = csv.DictReader(open(path))
+    sun, ecl, nees, first_valid, n_rows, resets0, resets1 = [], [], [], None, 0, None, None
+    for r in rows:
+        t = float(r["time"])
+        l = [float(r[f"est.attitude_cov_sqrt[{i}]"]) for i in range(1, 7)]
+        running = l[0] > 0 and l[2] > 0 and l[5] > 0
+        bound = float(r["est.attitude_bound"])
+        if first_valid is None and running and bound < math.radians(2.0):
+            first_valid = t
+        if "est.filter_resets" in r:
+            k = float(r["est.filter_resets"])
+            if t < t0:
+                resets0 = k
+            elif t < t1:
+                resets1 = k
+        if t < t0 or t >= t1:
+            continue
+        n_rows += 1
+        if not running:
+            nees.append(float("inf"))
+            continue
+        d = delta_theta([float(r[f"env.q_true[{i}]"]) for i in range(1, 5)],
+                        [float(r[f"est.q_filt[{i}]"]) for i in range(1, 5)])
+        z0 = d[0] / l[0]
+        z1 = (d[1] - l[1] * z0) / l[2]
+        z2 = (d[2] - l[3] * z0 - l[4] * z1) / l[5]
+        nees.append(z0 * z0 + z1 * z1 + z2 * z2)
+        e = math.degrees(math.sqrt(sum(v * v for v in d)))
+        (sun if float(r["env.irradiance"]) > 0 else ecl).append(e)
+    finite = [v for v in nees if math.isfinite(v)]
+    return {
+        "rows": n_rows,
+        "sunlit_p95": pct(sun, 0.95),
+        "eclipse_p95": pct(ecl, 0.95),
+        "nees_dof": sum(finite) / (3 * len(finite)) if finite else float("nan"),
+        "coverage": 100.0 * sum(v <= CHI2_3_99 for v in nees) / len(nees) if nees else float("nan"),
+        "first_valid": first_valid,
+        "resets": (resets1 or 0) - (resets0 or 0) if resets1 is not None else float("nan"),
+    }
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("csv", nargs="+")
+    ap.add_argument("--from", dest="t0", type=float, default=5763.86)
+    ap.add_argument("--to", dest="t1", type=float, default=1e30)
+    a = ap.parse_args()
+    print("| run | rows | sunlit p95 | eclipse p95 | NEES/dof | chi2 99 % coverage | first valid (s) | resets |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- |")
+    for path in a.csv:
+        s = stats(path, a.t0, a.t1)
+        fv = "never" if s["first_valid"] is None else f"{s['first_valid']:.0f}"
+        print(f"| {path} | {s['rows']} | {s['sunlit_p95']:.3f} | {s['eclipse_p95']:.3f} | {s['nees_dof']:.2f} | "
+              f"{s['coverage']:.1f} % | {fv} | {s['resets']} |")
+
+
+if __name__ == "__main__":
+    main()
