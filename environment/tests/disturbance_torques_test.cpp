@@ -95,9 +95,10 @@ TEST(EnvironmentCoreTorques, ABoxAboutItsCentreFeelsNoAerodynamicTorqueInAnyWind
     // Each axis' exposed face gives (V/2) v_i along its normal: Σ c_k × F_k ∝ v̂ × v̂ = 0 (header).
     const env::SpacecraftBody centred = box_with_centre_of_mass(0.0, 0.0, 0.0);
     const double f0 = 0.5 * 2e-13 * 2.2 * 0.034 * 7600.0 * 7600.0;
-    for (const Eigen::Vector3d& w : {Eigen::Vector3d(1.0, 2.0, 3.0), Eigen::Vector3d(-0.3, 0.1, -2.0),
-                                     Eigen::Vector3d(0.0, -1.0, 0.2)}) {
-        const Eigen::Vector3d tau = env::aerodynamic_torque(env::box_faces(centred), 2.2, 2e-13, 7600.0 * w.normalized());
+    for (const Eigen::Vector3d& w :
+         {Eigen::Vector3d(1.0, 2.0, 3.0), Eigen::Vector3d(-0.3, 0.1, -2.0), Eigen::Vector3d(0.0, -1.0, 0.2)}) {
+        const Eigen::Vector3d tau =
+            env::aerodynamic_torque(env::box_faces(centred), 2.2, 2e-13, 7600.0 * w.normalized());
         EXPECT_LT(tau.norm(), 1e-13 * f0 * 0.17);
     }
 }
@@ -118,8 +119,7 @@ TEST(EnvironmentCoreTorques, FlatPlateInTheSunAndInTheUmbra) {
     const Eigen::Vector3d s(std::sin(1.0471975511965976), 0.0, std::cos(1.0471975511965976));
     const double p = E / 299792458.0;
     const Eigen::Vector3d lever_x(0.05 - 0.01, 0.0, 0.0), lever_z(-0.01, 0.0, 0.17);
-    const Eigen::Vector3d expected =
-        -p * (0.034 * s.x() * lever_x.cross(s) + 0.01 * s.z() * lever_z.cross(s));
+    const Eigen::Vector3d expected = -p * (0.034 * s.x() * lever_x.cross(s) + 0.01 * s.z() * lever_z.cross(s));
     EXPECT_LT((env::solar_pressure_torque(faces, 0.0, 0.0, E, s) - expected).norm(), 1e-12 * expected.norm());
     // In the umbra the irradiance is 0 and so is the torque; in the penumbra it scales with the lit fraction.
     EXPECT_EQ(env::solar_pressure_torque(faces, rs, rd, 0.0, {0.0, 0.0, 1.0}).norm(), 0.0);
@@ -200,8 +200,8 @@ TEST(EnvironmentCoreTorques, OutputsAreTheClosedFormsAtTheTruthsGeometry) {
         e.derivative(t, x.data(), dx.data());
         const env::RigidBody free_body(e.params().rigid_body);
         free_body.derivative(x.data(), dx_free.data());
-        const Eigen::Vector3d tau = v3(o.torque_gravity_gradient) + v3(o.torque_magnetic) +
-                                    v3(o.torque_aerodynamic) + v3(o.torque_solar_pressure);
+        const Eigen::Vector3d tau = v3(o.torque_gravity_gradient) + v3(o.torque_magnetic) + v3(o.torque_aerodynamic) +
+                                    v3(o.torque_solar_pressure);
         const Eigen::Vector3d jdw = J * Eigen::Vector3d(dx[4] - dx_free[4], dx[5] - dx_free[5], dx[6] - dx_free[6]);
         EXPECT_LT((jdw - tau).norm(), 1e-9 * tau.norm());
     }
@@ -258,8 +258,8 @@ private:
         env::RigidBodyState s{};
         for (int i = 0; i < 7; ++i) s[i] = x[i];
         const env::EnvironmentOutputs o = self->e_.evaluate(t, &s);
-        const Eigen::Vector3d tau = v3(o.torque_gravity_gradient) + v3(o.torque_magnetic) +
-                                    v3(o.torque_aerodynamic) + v3(o.torque_solar_pressure);
+        const Eigen::Vector3d tau = v3(o.torque_gravity_gradient) + v3(o.torque_magnetic) + v3(o.torque_aerodynamic) +
+                                    v3(o.torque_solar_pressure);
         const Eigen::Vector3d tau_eci = env::attitude_matrix(o.q_true).transpose() * tau;
         for (int i = 0; i < 3; ++i) dx[7 + i] = tau_eci(i);
         dx[10] = v3(o.omega_body).dot(tau);

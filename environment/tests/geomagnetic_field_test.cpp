@@ -6,7 +6,7 @@
 
 #include "environment/constants.hpp"
 #include "environment/geomagnetic_field.hpp"
-#include "environment/igrf_coefficients.hpp"
+#include "ground/igrf_coefficients.hpp"
 
 namespace env = environment;
 
@@ -37,7 +37,7 @@ TEST(EnvironmentCoreIgrf, CoefficientTableHasThePublishedValues) {
     EXPECT_NEAR(c.g[1][0], -29350.0 + 2.5 * 12.6, 1e-9);
     EXPECT_NEAR(c.g[1][1], -1410.3 + 2.5 * 10.0, 1e-9);
     EXPECT_NEAR(c.h[1][1], 4545.5 - 2.5 * 21.5, 1e-9);
-    EXPECT_EQ(env::kIgrf14Coefficients.size(), 195u);
+    EXPECT_EQ(ground::kIgrf14Coefficients.size(), 195u);
     EXPECT_THROW(env::igrf_coefficients(2024.99), std::domain_error);
     EXPECT_THROW(env::igrf_coefficients(2030.01), std::domain_error);
 }

@@ -89,7 +89,7 @@ double mean(const std::vector<double>& x) {
 
 // bus_per_sample: the bus compared sample by sample (a modulator without sub-harmonics), else its mean.
 void expect_agreement(const Outcome& fast, const Outcome& ref, bool well_conditioned, double sun_bound,
-                      bool bus_per_sample = true) {
+                      bool bus_per_sample = true, double percentile_bound = 0.05) {
     ASSERT_EQ(fast.time.size(), ref.time.size());
     double worst_sun = 0, worst_attitude = 0, worst_bus = 0, worst_soc = 0;
     for (std::size_t k = 0; k < fast.time.size(); ++k) {
@@ -106,9 +106,11 @@ void expect_agreement(const Outcome& fast, const Outcome& ref, bool well_conditi
         EXPECT_LE(worst_attitude, 0.05) << "attitude error, deg";
     }
     for (double p : {0.5, 0.95}) {
-        EXPECT_NEAR(percentile(fast.sun_error, fast.valid, p), percentile(ref.sun_error, ref.valid, p), 0.05)
+        EXPECT_NEAR(percentile(fast.sun_error, fast.valid, p), percentile(ref.sun_error, ref.valid, p),
+                    percentile_bound)
             << "sun error percentile " << p;
-        EXPECT_NEAR(percentile(fast.attitude_error, fast.valid, p), percentile(ref.attitude_error, ref.valid, p), 0.05)
+        EXPECT_NEAR(percentile(fast.attitude_error, fast.valid, p), percentile(ref.attitude_error, ref.valid, p),
+                    percentile_bound)
             << "attitude error percentile " << p;
     }
     if (bus_per_sample) {
@@ -154,15 +156,18 @@ TEST(E2eFastVsReference, SeedSpinAsBundledAgreesWithTheReferenceExecution) {
 
 // The orbit with its rigid body, IGRF, albedo, averaged plant and magnetometer noise, over the first
 // 600 s, sampled every second at estimator instants. The truth itself differs between the two runs by
-// the integration error of the rigid body at rtol 1e-6 (0.005 deg after 600 s), and eq. 5 on Kelly
-// panels under albedo errs by 5-90 deg in attitude here: at those samples the single-frame solution is
-// so ill-conditioned that the reference run at rtol 1e-6 and at 1e-8 already differ by 0.44 deg in
-// attitude error and 0.052 deg in sun error (measured when this test was written). So the attitude is
-// compared by its statistics (median and 95th percentile within 0.05 deg) and the sun error sample by
-// sample within 0.1 deg.
+// the integration error of the rigid body at rtol 1e-6: 0.005 deg after 600 s for the former torque-free
+// 3 kg m^2 body, 0.17 deg for the bundled 3U under its torques (measured: q_true of the two executions;
+// 80 times less inertia under a residual dipole's 1.5e-6 N m turns the error of one step into a different
+// push on the next). And eq. 5 on Kelly panels under albedo errs by 5-90 deg in attitude here: at those
+// samples the single-frame solution is so ill-conditioned that the reference run at rtol 1e-6 and at 1e-8
+// already differed by 0.44 deg in attitude error and 0.052 deg in sun error (measured when this test was
+// written). So the attitude is compared by its statistics (median and 95th percentile within 0.2 deg;
+// 0.11 measured with the 3U, torques on or off) and the sun error sample by sample within 0.25 deg (0.154
+// measured with the torques, 0.075 without).
 TEST(E2eFastVsReference, LeoOrbitAgreesWithTheReferenceExecution) {
     const Outcome fast = run("leo_orbit.ssd", 600.0, 1.0, false);
     const Outcome ref = run("leo_orbit.ssd", 600.0, 1.0, true);
     EXPECT_LT(fast.stats.restarts, ref.stats.restarts / 10);
-    expect_agreement(fast, ref, false, 0.1);
+    expect_agreement(fast, ref, false, 0.25, true, 0.2);
 }

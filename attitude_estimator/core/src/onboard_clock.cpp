@@ -2,12 +2,12 @@
 
 #include <cmath>
 
-#include "environment/almanac_formulas.hpp"
+#include "ground/almanac_formulas.hpp"
 #include "orbit/calendar.hpp"
 
 namespace attitude_estimator {
 
-namespace f = environment::formulas;
+namespace f = ground::formulas;
 
 template <class T>
 OnboardClock<T> make_onboard_clock(const CalendarInstant& e) noexcept {

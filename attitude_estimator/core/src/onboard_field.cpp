@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "environment/igrf_coefficients.hpp"
+#include "ground/igrf_coefficients.hpp"
 
 namespace attitude_estimator {
 
@@ -17,9 +17,9 @@ template <class T>
 FieldModel<T> make_field_model(std::int32_t degree) noexcept {
     FieldModel<T> model;
     model.degree = std::clamp(degree, std::int32_t{1}, kFieldMaxDegree);
-    model.base_year = static_cast<T>(environment::kIgrfFirstYear);
-    const double span = environment::kIgrfLastYear - environment::kIgrfFirstYear;
-    for (const environment::IgrfCoefficient& k : environment::kIgrf14Coefficients) {
+    model.base_year = static_cast<T>(ground::kIgrfFirstYear);
+    const double span = ground::kIgrfLastYear - ground::kIgrfFirstYear;
+    for (const ground::IgrfCoefficient& k : ground::kIgrf14Coefficients) {
         if (k.n > model.degree) continue;
         const T value = static_cast<T>(k.at_2025);
         const T rate = static_cast<T>((k.at_2030 - k.at_2025) / span);

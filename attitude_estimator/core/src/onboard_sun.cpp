@@ -3,12 +3,12 @@
 #include <cmath>
 
 #include "attitude_estimator/onboard_computer.hpp"  // kAstronomicalUnit
-#include "environment/almanac_formulas.hpp"
+#include "ground/almanac_formulas.hpp"
 #include "orbit/frames.hpp"  // IAU 1976 precession
 
 namespace attitude_estimator {
 
-namespace f = environment::formulas;
+namespace f = ground::formulas;
 
 template <class T>
 SunReference<T> onboard_sun(const OnboardClock<T>& clock, T t) noexcept {

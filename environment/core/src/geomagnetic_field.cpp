@@ -5,19 +5,19 @@
 #include <string>
 
 #include "environment/constants.hpp"
-#include "environment/igrf_coefficients.hpp"
+#include "ground/igrf_coefficients.hpp"
 
 namespace environment {
 
 GaussCoefficients igrf_coefficients(double year) {
-    if (!(year >= kIgrfFirstYear && year <= kIgrfLastYear)) {
+    if (!(year >= ground::kIgrfFirstYear && year <= ground::kIgrfLastYear)) {
         throw std::domain_error("IGRF-14: date " + std::to_string(year) +
                                 " outside the model's 2025.0-2030.0 validity");
     }
     // IGRF: main field at 2025.0 plus the constant predictive secular variation (2030 column = 2025 + 5 SV).
-    const double f = (year - kIgrfFirstYear) / (kIgrfLastYear - kIgrfFirstYear);
+    const double f = (year - ground::kIgrfFirstYear) / (ground::kIgrfLastYear - ground::kIgrfFirstYear);
     GaussCoefficients c;
-    for (const IgrfCoefficient& k : kIgrf14Coefficients) {
+    for (const ground::IgrfCoefficient& k : ground::kIgrf14Coefficients) {
         const double v = k.at_2025 + f * (k.at_2030 - k.at_2025);
         if (k.is_h) {
             c.h[k.n][k.m] = v;
@@ -50,7 +50,7 @@ const Recursion kRecursion = [] {
 }  // namespace
 
 Eigen::Vector3d spherical_harmonic_field(const GaussCoefficients& c, int max_degree, const Eigen::Vector3d& r_ecef) {
-    if (max_degree < 1 || max_degree > kIgrfMaxDegree)
+    if (max_degree < 1 || max_degree > ground::kIgrfMaxDegree)
         throw std::invalid_argument("spherical_harmonic_field: degree 1..13");
     const double r = r_ecef.norm();
     if (!(r > 1000.0) || !std::isfinite(r))

@@ -2,16 +2,16 @@
 
 #include <cmath>
 
-#include "environment/almanac_formulas.hpp"
 #include "environment/constants.hpp"
 #include "environment/earth_rotation.hpp"
+#include "ground/almanac_formulas.hpp"
 
 namespace environment {
 
 SunPosition sun_almanac(double jd) {
     // Astronomical Almanac, low-precision formulas for the Sun (valid 1950-2050, ~0.01 deg).
     // The formula is shared with the on-board computer (almanac_formulas.hpp).
-    const formulas::AlmanacSun<double> a = formulas::sun_almanac_of_date(jd - kJulianDateJ2000);
+    const ground::formulas::AlmanacSun<double> a = ground::formulas::sun_almanac_of_date(jd - kJulianDateJ2000);
     SunPosition s;
     s.direction_eci = Eigen::Vector3d(a.direction[0], a.direction[1], a.direction[2]);
     s.distance = a.distance_au * kAstronomicalUnit;

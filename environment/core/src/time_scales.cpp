@@ -3,8 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "environment/almanac_formulas.hpp"
 #include "environment/constants.hpp"
+#include "ground/almanac_formulas.hpp"
 #include "orbit/calendar.hpp"
 
 namespace environment {
@@ -29,7 +29,7 @@ double julian_date(const UtcDate& d) {
 double gmst(double jd_ut1) {
     // IAU 1982 GMST (Vallado eq. 3-47), seconds of time; T in Julian centuries of UT1 from J2000.
     // (almanac_formulas.hpp, shared with the on-board computer)
-    return formulas::gmst_seconds((jd_ut1 - kJulianDateJ2000) / 36525.0) / kSecondsPerDay * 2.0 * kPi;
+    return ground::formulas::gmst_seconds((jd_ut1 - kJulianDateJ2000) / 36525.0) / kSecondsPerDay * 2.0 * kPi;
 }
 
 double decimal_year(double jd) {

@@ -1,5 +1,5 @@
 // The on-board computer's geomagnetic model: IGRF-14 (the table the environment's truth is generated from,
-// environment/data/IGRF14.SHC) truncated to a degree N chosen by the user, 1 (the tilted dipole) to 13
+// ground/data/IGRF14.SHC) truncated to a degree N chosen by the user, 1 (the tilted dipole) to 13
 // (the whole model). Spherical-harmonic synthesis with Schmidt semi-normalised Legendre functions by the
 // standard recursions (Langel 1987; Wertz 1978 app. H), in the computer's float type, no heap, no
 // exceptions. The cost grows as N²: (N+1)(N+2)/2 Legendre terms.

@@ -1,5 +1,5 @@
 // The on-board computer's sun: the Astronomical Almanac's low-precision formula (~0.01°, 1950–2050; the
-// same source as the environment's truth, environment/almanac_formulas.hpp) at its own clock, rotated from
+// same source as the environment's truth, ground/almanac_formulas.hpp) at its own clock, rotated from
 // the mean equator and equinox of date to J2000 by the IAU 1976 precession. Geocentric: the parallax of
 // the satellite's position, 7000 km / 1 AU, is 0.003°.
 #pragma once

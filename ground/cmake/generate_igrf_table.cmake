@@ -41,12 +41,12 @@ if(NOT count EQUAL 195)
 endif()
 
 file(WRITE "${OUTPUT}.tmp"
-"// Generated at build time from environment/data/IGRF14.SHC by generate_igrf_table.cmake. Do not edit.\n"
-"#include \"environment/igrf_coefficients.hpp\"\n\n"
-"namespace environment {\n\n"
+"// Generated at build time from ground/data/IGRF14.SHC by generate_igrf_table.cmake. Do not edit.\n"
+"#include \"ground/igrf_coefficients.hpp\"\n\n"
+"namespace ground {\n\n"
 "const std::array<IgrfCoefficient, kIgrfCoefficientCount> kIgrf14Coefficients = {{\n"
 "${entries}"
 "}};\n\n"
-"}  // namespace environment\n")
+"}  // namespace ground\n")
 file(COPY_FILE "${OUTPUT}.tmp" "${OUTPUT}" ONLY_IF_DIFFERENT)
 file(REMOVE "${OUTPUT}.tmp")

@@ -1,10 +1,11 @@
 #pragma once
 // The IGRF-14 main field at 2025.0 and its 2030.0 extrapolation (2025 + 5 yr x predictive SV), generated
-// at build time from environment/data/IGRF14.SHC (see environment/data/README.md for the source).
+// at build time from ground/data/IGRF14.SHC (see ground/data/README.md for the source). The truth
+// (environment) and the on-board computer (attitude_estimator/core and its firmware) both read it.
 #include <array>
 #include <cstddef>
 
-namespace environment {
+namespace ground {
 
 struct IgrfCoefficient {
     int n;           // degree 1..13
@@ -21,4 +22,4 @@ inline constexpr double kIgrfLastYear = 2030.0;
 
 extern const std::array<IgrfCoefficient, kIgrfCoefficientCount> kIgrf14Coefficients;
 
-}  // namespace environment
+}  // namespace ground

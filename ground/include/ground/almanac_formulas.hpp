@@ -7,7 +7,7 @@
 #include <array>
 #include <cmath>
 
-namespace environment::formulas {
+namespace ground::formulas {
 
 inline constexpr double kJ2000 = 2451545.0;  // Julian date of 2000-01-01 12:00
 inline constexpr double kTwoPi = 6.28318530717958647692;
@@ -52,4 +52,4 @@ inline double gmst_seconds(double centuries) {
 /// The Earth's sidereal rotation rate of the IAU 1982 GMST, rad per second of UT1 (1.00273790935 turns a day).
 inline constexpr double kEarthRotationRate = 7.292115855306589e-5;
 
-}  // namespace environment::formulas
+}  // namespace ground::formulas

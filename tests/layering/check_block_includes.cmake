@@ -1,0 +1,41 @@
+# Fails, listing each, when a block's own code includes another block's headers: an #include "<other>/..."
+# in its sources, or a CMake line (outside a comment) naming <other>/include or <other>/core/include (the
+# firmware's own project, built with the cross compiler, lists include folders by path). What two blocks
+# share lives below them (orbit/, ground/, panel_response/). A block's tests and studies may include the
+# truth's headers to compare against it; they are not flight or model code and are skipped.
+set(problems "")
+foreach(block IN LISTS BLOCKS)
+  if(NOT IS_DIRECTORY ${ROOT}/${block})
+    continue()
+  endif()
+  set(others ${BLOCKS})
+  list(REMOVE_ITEM others ${block})
+  list(JOIN others "|" alternatives)
+  file(GLOB_RECURSE sources ${ROOT}/${block}/*.cpp ${ROOT}/${block}/*.hpp ${ROOT}/${block}/*.h ${ROOT}/${block}/*.c
+       ${ROOT}/${block}/CMakeLists.txt ${ROOT}/${block}/*.cmake)
+  foreach(file IN LISTS sources)
+    file(RELATIVE_PATH where ${ROOT} ${file})
+    if(where MATCHES "/(tests|study)/")
+      continue()
+    endif()
+    file(STRINGS ${file} lines REGEX "(${alternatives})/")
+    foreach(line IN LISTS lines)
+      if(file MATCHES "\\.(cpp|hpp|h|c)$")
+        set(bad_pattern "^[ \t]*#[ \t]*include[ \t]*[\"<](${alternatives})/")
+      else()
+        string(REGEX REPLACE "#.*$" "" line "${line}")
+        set(bad_pattern "(^|[^A-Za-z_])(${alternatives})/(core/)?include")
+      endif()
+      if(line MATCHES "${bad_pattern}")
+        list(APPEND problems "${where}: ${line}")
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
+
+if(problems)
+  list(JOIN problems "\n  " text)
+  message(FATAL_ERROR "a block including another block's headers (share it from below: orbit/, ground/):\n  ${text}")
+endif()
+list(JOIN BLOCKS ", " names)
+message(STATUS "no block includes another block's headers (${names})")
