@@ -38,7 +38,7 @@ struct Recursion {
 };
 const Recursion kRecursion = [] {
     Recursion r;
-    for (int n = 1; n <= kIgrfMaxDegree; ++n) {
+    for (int n = 1; n <= ground::kIgrfMaxDegree; ++n) {
         r.sectoral[n] = (n == 1) ? 1.0 : std::sqrt((2.0 * n - 1.0) / (2.0 * n));
         for (int m = 0; m < n; ++m) {
             r.den_inv[n][m] = 1.0 / std::sqrt(double(n * n - m * m));
