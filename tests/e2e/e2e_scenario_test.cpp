@@ -16,8 +16,8 @@
 namespace {
 
 struct Scene {
-    double sun_gap_deg = 0.0;  // the on-board sun against the truth's, largest over the run
-    double sun_z = 0.0;        // the truth's sun, J2000 z, at the end
+    double sun_gap_deg = 0.0;   // the on-board sun against the truth's, largest over the run
+    double sun_z = 0.0;         // the truth's sun, J2000 z, at the end
     double radius_ratio = 0.0;  // the truth's orbit radius over 6378.137 km, at the end
 };
 

@@ -12,18 +12,12 @@
 namespace e2e {
 
 inline std::vector<std::string> torque_free_body_settings() {
-    return {"inertia[1]=3.2",
-            "inertia[2]=0.05",
-            "inertia[3]=-0.02",
-            "inertia[4]=0.05",
-            "inertia[5]=2.9",
-            "inertia[6]=0.03",
-            "inertia[7]=-0.02",
-            "inertia[8]=0.03",
-            "inertia[9]=3.6",
-            "env.disturbance_torques=false",
-            "est.filter_dipole[3]=0",
-            "est.filter_gravity_gradient=false",
+    return {"inertia[1]=3.2",           "inertia[2]=0.05",
+            "inertia[3]=-0.02",         "inertia[4]=0.05",
+            "inertia[5]=2.9",           "inertia[6]=0.03",
+            "inertia[7]=-0.02",         "inertia[8]=0.03",
+            "inertia[9]=3.6",           "env.disturbance_torques=false",
+            "est.filter_dipole[3]=0",   "est.filter_gravity_gradient=false",
             "est.filter_torque_noise=0"};
 }
 

@@ -113,8 +113,8 @@ TEST(SystemParameters, ParameterFilesInOrderThenSet) {
     const auto five = s.ssv("five.ssv", R"(<ssv:Parameter name="gain_k"><ssv:Real value="5"/></ssv:Parameter>
 <ssv:Parameter name="b.k"><ssv:Real value="1"/></ssv:Parameter>)");
     EXPECT_EQ(final_y(s, {}, {two}), 4.0);
-    EXPECT_EQ(final_y(s, {}, {two, five}), 5.0);          // a.k = 5, b.k = 1 directly
-    EXPECT_EQ(final_y(s, {}, {five, two}), 2.0);          // b.k = 1 stays direct
+    EXPECT_EQ(final_y(s, {}, {two, five}), 5.0);            // a.k = 5, b.k = 1 directly
+    EXPECT_EQ(final_y(s, {}, {five, two}), 2.0);            // b.k = 1 stays direct
     EXPECT_EQ(final_y(s, {"gain_k=7"}, {five, two}), 7.0);  // --set after every file
     const auto bad = s.ssv("bad.ssv", R"(<ssv:Parameter name="gain_k"><ssv:Real value="three"/></ssv:Parameter>)");
     try {
@@ -130,7 +130,8 @@ TEST(SystemParameters, InfoListsThemWithValueUnitAndWhatEachFeeds) {
     Scratch s;
     std::ostringstream out;
     print_info(s.ssd(), out);
-    EXPECT_NE(out.str().find("system parameters (--set NAME=VALUE, --parameters FILE.ssv):\n  gain_k = 3  (Real) -> a.k b.k\n"),
+    EXPECT_NE(out.str().find(
+                  "system parameters (--set NAME=VALUE, --parameters FILE.ssv):\n  gain_k = 3  (Real) -> a.k b.k\n"),
               std::string::npos)
         << out.str();
 }
