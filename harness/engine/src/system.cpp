@@ -223,7 +223,9 @@ void System::check_parameter_value(const std::string& name, const std::string& v
 std::vector<std::string> System::fed_parameters_set_directly() const {
     std::vector<std::string> out;
     for (std::size_t k = 0; k < fed_.size(); ++k) {
-        const auto& [c, fed] = fed_[k];
+        // Not a structured binding: clang 14 (the fuzz build) cannot capture one in the lambda below.
+        const std::size_t c = fed_[k].first;
+        const auto& fed = fed_[k].second;
         const bool direct = std::any_of(settings_.begin(), settings_.end(), [&](const auto& s) {
             return s.first == c && s.second.variable == fed.variable;
         });
