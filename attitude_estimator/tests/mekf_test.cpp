@@ -16,17 +16,6 @@ template <class T>
 class EstimatorCoreMekf : public ::testing::Test {};
 TYPED_TEST_SUITE(EstimatorCoreMekf, Scalars, ScalarName);
 
-// Our quaternion of an attitude matrix: A(q) of attitude_matrix.hpp is Eigen's rotation matrix of
-// (w, x, y, z) transposed, so Eigen's quaternion of Aᵀ has our components.
-template <class T>
-Quaternion<T> quaternion_of(const Eigen::Matrix3d& a) {
-    const Eigen::Quaterniond e(Eigen::Matrix3d(a.transpose()));
-    return {static_cast<T>(e.x()), static_cast<T>(e.y()), static_cast<T>(e.z()), static_cast<T>(e.w())};
-}
-template <class T>
-Eigen::Matrix3d matrix_of(const Quaternion<T>& q) {
-    return Eigen::Quaterniond(q.w, q.x, q.y, q.z).normalized().toRotationMatrix().transpose();
-}
 // exp(−[ω×] t): the body frame turned by ω t.
 Eigen::Matrix3d turn(const Eigen::Vector3d& omega, double t) {
     const double n = omega.norm();

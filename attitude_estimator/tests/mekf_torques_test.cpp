@@ -13,15 +13,6 @@ template <class T>
 class EstimatorCoreMekfTorques : public ::testing::Test {};
 TYPED_TEST_SUITE(EstimatorCoreMekfTorques, Scalars, ScalarName);
 
-template <class T>
-Quaternion<T> quaternion_of(const Eigen::Matrix3d& a) {
-    const Eigen::Quaterniond e(Eigen::Matrix3d(a.transpose()));
-    return {static_cast<T>(e.x()), static_cast<T>(e.y()), static_cast<T>(e.z()), static_cast<T>(e.w())};
-}
-template <class T>
-Eigen::Matrix3d matrix_of(const Quaternion<T>& q) {
-    return Eigen::Quaterniond(q.w, q.x, q.y, q.z).normalized().toRotationMatrix().transpose();
-}
 Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
     Eigen::Matrix3d m;
     m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;

@@ -29,6 +29,18 @@ constexpr double tol(double for_float, double for_double) {
     return std::is_same_v<T, float> ? for_float : for_double;
 }
 
+// Our quaternion of an attitude matrix: A(q) of attitude_matrix.hpp is Eigen's rotation matrix of
+// (w, x, y, z) transposed, so Eigen's quaternion of Aᵀ has our components; and back.
+template <class T>
+Quaternion<T> quaternion_of(const Eigen::Matrix3d& a) {
+    const Eigen::Quaterniond e(Eigen::Matrix3d(a.transpose()));
+    return {static_cast<T>(e.x()), static_cast<T>(e.y()), static_cast<T>(e.z()), static_cast<T>(e.w())};
+}
+template <class T>
+Eigen::Matrix3d matrix_of(const Quaternion<T>& q) {
+    return Eigen::Quaterniond(q.w, q.x, q.y, q.z).normalized().toRotationMatrix().transpose();
+}
+
 template <class T>
 Vec3<T> to_vec(const Eigen::Vector3d& v) {
     return {static_cast<T>(v.x()), static_cast<T>(v.y()), static_cast<T>(v.z())};
