@@ -9,7 +9,8 @@
 
 namespace fmu {
 
-CsSolver::CsSolver(ModelRunner& runner, double relative_tolerance) : runner_(runner), x_(runner.state_count()) {
+CsSolver::CsSolver(ModelRunner& runner, double relative_tolerance)
+    : runner_(runner), relative_tolerance_(relative_tolerance), x_(runner.state_count()) {
     const std::size_t n = runner_.state_count();
     if (n == 0) return;  // nothing to integrate; events are located by bisection
     // Absolute tolerance of each state from its nominal magnitude: reltol × nominal.
@@ -108,7 +109,15 @@ CsSolver::Outcome CsSolver::advance(double t_end, HostEvents host_events,
             return Outcome::reached;
         }
         const double t_stop = std::min(t_end, runner_.next_time_event());
-        const bool state_event = cvode_ ? integrate_to(t_stop) : locate_without_states(t_stop);
+        // A block that steps its own states between events (a linear circuit) needs no integrator there.
+        bool state_event = false;
+        if (const auto span = runner_.advance_between_events(t_stop, relative_tolerance_)) {
+            restart_needed_ = true;  // the integrator's history no longer matches the states
+            ++stats_.block_spans;
+            state_event = span->state_event;
+        } else {
+            state_event = cvode_ ? integrate_to(t_stop) : locate_without_states(t_stop);
+        }
         if (state_event) {
             ++stats_.state_events;
             if (hosts(false)) {

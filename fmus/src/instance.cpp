@@ -143,7 +143,8 @@ void Instance::terminate() {
         log(fmi2OK, "logStatistics",
             "steps " + std::to_string(s.steps) + ", right-hand sides " + std::to_string(s.rhs_evaluations) +
                 ", time events " + std::to_string(s.time_events) + ", state events " + std::to_string(s.state_events) +
-                ", integrator restarts " + std::to_string(s.restarts));
+                ", integrator restarts " + std::to_string(s.restarts) + ", spans the block stepped itself " +
+                std::to_string(s.block_spans));
     }
     mode_ = Mode::terminated;
 }

@@ -23,6 +23,16 @@ void ModelRunner::set_time(double t) {
     if (!input_slopes_.empty()) apply_input_slopes();
 }
 
+std::optional<SpanReached> ModelRunner::advance_between_events(double t_stop, double relative_tolerance) {
+    if (initializing_) return std::nullopt;
+    ensure_configured();
+    const double t0 = time_;
+    const auto reached =
+        model_->advance_between_events(t0, t_stop, relative_tolerance, [this](double t) { set_time(t); });
+    set_time(reached ? reached->time : t0);  // the block's states changed (or its trial times must be undone)
+    return reached;
+}
+
 void ModelRunner::set_input_slope(std::size_t variable, double slope) {
     const auto& v = table().variables()[variable];
     if (!std::isfinite(slope)) throw Error("the derivative of input " + v.name + " is not finite");

@@ -474,6 +474,22 @@ fmu::EventUpdate SsrPlantBlock::event_update(double t, bool) {
     return {};  // the core settles an instant in one call; states never jump
 }
 
+std::optional<fmu::SpanReached> SsrPlantBlock::advance_between_events(double t, double t_stop, double rtol,
+                                                                      const std::function<void(double)>& move_to) {
+    const ssr_plant::Model& m = plant();
+    if (m.parameters.fidelity != Fidelity::switching) return std::nullopt;
+    // The inputs at time s are what the runtime sets when its clock moves there (a host's interpolation).
+    const auto inputs_at = [&](double s) {
+        move_to(s);
+        return inputs();
+    };
+    const auto r = advance_between_edges(m, inputs_at, data().discrete, t, state(), t_stop, rtol);
+    if (!r) return std::nullopt;
+    data().v_cap = r->x[state_v_bus];
+    data().soc_state = r->x[state_soc];
+    return fmu::SpanReached{r->t, r->state_event};
+}
+
 double SsrPlantBlock::next_time_event() const {
     return ssr_plant::next_time_event(plant(), data().discrete);  // PWM edges (switching), fault onsets and ends
 }

@@ -417,6 +417,37 @@ TEST(SsrFmu, SwitchingRippleIsTheLoadChargeOfOneOnTime) {
     EXPECT_NEAR(v_max - v_min, expected, 0.03 * expected);  // i_load varies by 0.13 % over the swing
 }
 
+// The ripple of one period exactly: while the gate is on the panels are shorted and the battery is behind its
+// blocking diode, so the bus is the RC discharge v(t) = v(t_k) e^{−(t − t_k)/(R_L C)} (closed form written
+// here), and the peak-to-peak of the period is v(t_k) (1 − e^{−D T/(R_L C)}). The step between PWM edges takes
+// this exactly (to 1e-9 V; CVODE at rtol 1e-6 was within ~1e-6 V). Its figure must match the hand ripple
+// i_load D T / C above (its linearization: they differ by D T / (2 R_L C) = 0.06 %) to 0.1 %.
+TEST(SsrFmu, OnTimeDropIsTheExactRcDischarge) {
+    PlantRun run;
+    run.set_choice("angular_response", "cosine");
+    run.data().sun_body = seed_sun(0.3);
+    run.start();
+    const auto& d = run.data();
+    for (int k = 500; k < 503; ++k) {  // period starts at k T (0.1 s on)
+        const double t_k = k / d.pwm_frequency;
+        run.step_to(t_k);
+        ASSERT_TRUE(d.gate);
+        ASSERT_EQ(d.i_batt, 0.0);  // the battery diode blocks: the bus sees the load alone
+        const double v_k = d.v_bus, duty = d.duty;
+        const double on_time = duty / d.pwm_frequency;
+        run.step_to(t_k + 0.5 * on_time);
+        EXPECT_NEAR(d.v_bus, v_k * std::exp(-0.5 * on_time / (d.load_resistance * d.bus_capacitance)), 1e-9);
+        run.step_to(t_k + on_time);
+        const double drop = v_k - d.v_bus;
+        const double exact = v_k * -std::expm1(-on_time / (d.load_resistance * d.bus_capacitance));
+        EXPECT_NEAR(drop, exact, 1e-9);
+        const double hand = v_k / d.load_resistance * on_time / d.bus_capacitance;
+        std::printf("period %d: on-time drop %.6f mV (closed form %.6f mV, hand i_load D T / C %.4f mV)\n", k,
+                    1e3 * drop, 1e3 * exact, 1e3 * hand);
+        EXPECT_NEAR(drop, hand, 1e-3 * hand);
+    }
+}
+
 // Eclipse load current from the circuit laws alone (KCL at the battery terminal and at the bus, written
 // here independently of the core): EMF e behind R_int; from terminal to bus the charge path R_sw (only
 // when the charge switch is closed) in parallel with the series diode (V_f, R_d); bus load R_L; the panels

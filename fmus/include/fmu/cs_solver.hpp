@@ -20,6 +20,7 @@ struct SolverStatistics {
     std::int64_t time_events = 0;
     std::int64_t state_events = 0;
     std::int64_t restarts = 0;
+    std::int64_t block_spans = 0;  // spans between events the block advanced itself (no integrator)
 };
 
 class CsSolver {
@@ -47,6 +48,7 @@ private:
     bool locate_without_states(double t_stop);  // no states: bisection on the indicators
 
     ModelRunner& runner_;
+    double relative_tolerance_;
     std::unique_ptr<integrator::CvodeIntegrator> cvode_;
     std::vector<double> x_;
     bool restart_needed_ = true;

@@ -4,8 +4,10 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -43,6 +45,12 @@ struct EventUpdate {
 };
 
 inline constexpr double no_time_event = std::numeric_limits<double>::infinity();
+
+// What a block's own step between events reports (Model::advance_between_events).
+struct SpanReached {
+    double time = 0.0;         // where the block stopped: t_stop, or the zero of an event indicator
+    bool state_event = false;  // it stopped at an indicator's zero (the event iteration runs there)
+};
 
 // True when time t has reached event_time, allowing for the rounding of a host that computed t as a
 // sum of steps. Blocks use it in event_update; the runtime uses it to decide that a time event is due.
@@ -96,6 +104,18 @@ public:
     //   the fields the table does not cover (finite numbers, bool bytes, indices in range, a live
     //   generator); throw fmu::Error. The table's own variables are checked by the runtime.
     virtual void check_state() const {}
+    // - advance_between_events(t, t_stop, rtol, move_to): optional. A block whose states between two events
+    //   follow a closed form (a linear circuit, say) advances them itself in Co-Simulation instead of the
+    //   solver's integrator. From time t and the states in its data, toward t_stop (no time event of the
+    //   block lies before t_stop): it sets the states at the time it reached and returns that time, t_stop
+    //   or the first zero of one of its event indicators (with state_event set). `move_to(t)` moves the
+    //   runtime's clock (and inputs the host interpolates) to t, so that the block's inputs are those of t;
+    //   it ends at the time returned. Local error per step: at most rtol × 1e-3 of each state's nominal.
+    //   std::nullopt: the block leaves the span to the integrator (its states untouched).
+    virtual std::optional<SpanReached> advance_between_events(double /*t*/, double /*t_stop*/, double /*rtol*/,
+                                                              const std::function<void(double)>& /*move_to*/) {
+        return std::nullopt;
+    }
 };
 
 // Every block defines this once (FMU_BLOCK in block.hpp); the runtime and the tools call it.

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -64,6 +65,9 @@ public:
         ensure_configured();
         return model_->next_time_event();
     }
+    // The block's own step between events toward t_stop (Model::advance_between_events), if it has one;
+    // std::nullopt leaves time and states as they were.
+    std::optional<SpanReached> advance_between_events(double t_stop, double relative_tolerance);
     // One round of discrete updates at the current time.
     EventUpdate update_discrete();
     // Rounds until the block needs no more; throws if it never settles. `states_changed` and

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "plant_internals.hpp"
 #include "ssr_plant/angular_response.hpp"
 #include "ssr_plant/appendage_shadow.hpp"
 #include "ssr_plant/battery.hpp"
@@ -77,9 +78,9 @@ double sun_norm(const Inputs& u) {
     return std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
 }
 
-// The panels without any solve: each face's circuit, photocurrent and the faults that change its wiring.
-// A shadow takes its fraction of the direct sun (the albedo comes from the Earth's side); a degradation
-// scales the photocurrent.
+}  // namespace
+
+namespace detail {
 Illumination panels(const Model& m, const Inputs& u, const FaultState& s, double t) {
     const auto& f = m.parameters.faults;
     Illumination l;
@@ -108,6 +109,10 @@ Illumination panels(const Model& m, const Inputs& u, const FaultState& s, double
     }
     return l;
 }
+}  // namespace detail
+
+namespace {
+using detail::panels;
 
 // Current each panel pushes through its OR diode into the bus when its shunt switch is off: the panel
 // sits at v_bus + V_f + I R_or; a reverse-biased diode (panel below bus + V_f) passes nothing. A dark
@@ -193,15 +198,6 @@ void update_charge_switch(const Model& m, DiscreteState& d, const State& x) {
     d.charge_connected = !d.charge_connected;
 }
 
-// The bus node and the battery at one instant: what derivatives() and outputs() share.
-struct BusBalance {
-    double sigma = 0.0;                              // shunt fraction
-    std::array<double, face_count> sigma_face = {};  // each face's (a stuck switch's own)
-    std::array<double, face_count> i_pv = {};        // A, bus-side panel currents with the shunts open
-    BatteryPoint batt;
-    State dx = {};
-};
-
 // The bus-side currents at v through the caller's memo (if any): a hit is the earlier solve's result.
 std::array<double, face_count> memoized_bus_side_currents(const Model& m, const Illumination& l, double v,
                                                           BusSideMemo* memo) {
@@ -214,8 +210,11 @@ std::array<double, face_count> memoized_bus_side_currents(const Model& m, const 
     return e.current;
 }
 
+}  // namespace
+
+namespace detail {
 BusBalance bus_balance(const Model& m, const Illumination& l, const DiscreteState& d, const State& x,
-                       BusSideMemo* memo = nullptr) {
+                       BusSideMemo* memo) {
     const auto& p = m.parameters;
     const double v = x[state_v_bus];
     BusBalance b;
@@ -240,6 +239,11 @@ BusBalance bus_balance(const Model& m, const Illumination& l, const DiscreteStat
     b.dx[state_soc] = stored_charge_rate(p.battery, b.batt.current) / p.battery.capacity;
     return b;
 }
+}  // namespace detail
+
+namespace {
+using detail::bus_balance;
+using detail::BusBalance;
 
 // What face k's Hall channel reads, its fault applied to the physical sample/hold value `physical`.
 double measured_face_current(const Model& m, const DiscreteState& d, std::size_t k, double physical) {
@@ -393,7 +397,7 @@ DiscreteState initialize(const Model& m, const Inputs& u, double t0, const State
 }
 
 State derivatives(const Model& m, const Inputs& u, const DiscreteState& d, double t, const State& x) {
-    return bus_balance(m, panels(m, u, d.faults, t), d, x).dx;
+    return bus_balance(m, panels(m, u, d.faults, t), d, x, nullptr).dx;
 }
 
 Evaluation evaluate(const Model& m, const Illumination& l, const DiscreteState& d, double /*t*/, const State& x) {

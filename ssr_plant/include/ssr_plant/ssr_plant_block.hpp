@@ -129,6 +129,10 @@ public:
     double next_time_event() const override;
     void validate() const override;
     void check_state() const override;
+    // Co-Simulation between PWM edges: the core's exact step of the bus (advance_between_edges), in place of
+    // the solver's CVODE, which would restart at every edge (switching fidelity; averaged: CVODE).
+    std::optional<fmu::SpanReached> advance_between_events(double t, double t_stop, double rtol,
+                                                           const std::function<void(double)>& move_to) override;
 
     // Fits the plant (panel fit ~0.2 ms) to the parameters: the runtime calls it after a parameter
     // change, a state restore or a reset.

@@ -15,7 +15,9 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
+#include <optional>
 #include <type_traits>
 
 #include "ssr_plant/faults.hpp"
@@ -195,5 +197,27 @@ struct EventResult {
 // Idempotent: a second call at the same t with the result changes nothing.
 EventResult event_update(const Model& m, const Inputs& u, const DiscreteState& d, double t, const State& x);
 EventResult event_update(const Model& m, const Illumination& l, const DiscreteState& d, double t, const State& x);
+
+// The step between events of the switching plant (between_edges.cpp). Between two PWM edges the gate is fixed
+// and the bus is C dv/dt = Σ (1 − σ_k) I_k(v) − v/R_L − I_batt(v, soc): linear in v except for the panels'
+// diode law (while the shunts are open) and the battery network's kinks. Each step linearizes the right-hand
+// side at its start in v and in t, f ≈ f0 + a (v − v0) + b (t − t0) (a from the panels' and the battery's
+// exact slopes, b from the photocurrents at both ends: the inputs may move), and takes the exact solution
+// of that linear equation, v(τ) = v0 + τ φ1(aτ) f0 + τ² φ2(aτ) b: exact for the linear circuit (gate on,
+// panels dark). The slope at the step's end, f(t1, v1), measures what the linearization left out (it grows
+// as (τ/h)²); its integral, 2 h φ3(ah) (f(t1, v1) − (f0 + a Δv + b h)), is added to v1 (third order) and its
+// size is the error estimate, kept below 0.1 · rtol · max(1 V, |v|) by shorter steps.
+// soc follows by the trapezoidal rule (dsoc/dt ≈ 1e-4 /s). Event indicators are watched at each step's end; a
+// zero is located on the step's solution (Illinois) and the step ends there. Switching fidelity only
+// (averaged: std::nullopt).
+struct SpanResult {
+    double t = 0.0;  // s, t_stop or the first indicator zero
+    State x = {};
+    bool state_event = false;
+    int steps = 0;  // accepted steps
+};
+using InputsAt = std::function<Inputs(double)>;  // the inputs at time t (a host may interpolate them)
+std::optional<SpanResult> advance_between_edges(const Model& m, const InputsAt& inputs_at, const DiscreteState& d,
+                                                double t0, const State& x0, double t_stop, double rtol);
 
 }  // namespace ssr_plant
