@@ -40,8 +40,8 @@ struct Linear {
 // photocurrents of l0 and l1 (h later), in t. A panel delivering I through R_s' = R_s + R_or at the diode
 // voltage x_d = V + I R_s' has, from eq. 2 differentiated, dI/dV = −g / (1 + R_s' g) and dI/dI_ph =
 // 1 / (1 + R_s' g), g = I_D e^{x_d/a} / a + 1/R_sh; a reverse-biased (clipped) panel has neither.
-Linear linearize(const Model& m, const Illumination& l0, const Illumination& l1, const DiscreteState& d,
-                 const State& x, const detail::BusBalance& b0, double h) {
+Linear linearize(const Model& m, const Illumination& l0, const Illumination& l1, const DiscreteState& d, const State& x,
+                 const detail::BusBalance& b0, double h) {
     const auto& p = m.parameters;
     const double v = x[state_v_bus];
     double di_dv = 0.0, di_dt = 0.0;
@@ -70,12 +70,12 @@ Linear linearize(const Model& m, const Illumination& l0, const Illumination& l1,
 // located on the step's solution (v exact for the linear equation, soc linear); Illinois' rule.
 State dense(const State& x0, const State& x1, const Linear& lin, double correction, double h, double tau) {
     const double s = tau / h;
-    return {x0[state_v_bus] + lin.dv(tau) + correction * s * s * s, x0[state_soc] + s * (x1[state_soc] - x0[state_soc])};
+    return {x0[state_v_bus] + lin.dv(tau) + correction * s * s * s,
+            x0[state_soc] + s * (x1[state_soc] - x0[state_soc])};
 }
 
-double locate_zero(const Model& m, const Inputs& u, const DiscreteState& d, double t0, const State& x0,
-                   const State& x1, const Linear& lin, double correction, double h, std::size_t i, double z0,
-                   double z1) {
+double locate_zero(const Model& m, const Inputs& u, const DiscreteState& d, double t0, const State& x0, const State& x1,
+                   const Linear& lin, double correction, double h, std::size_t i, double z0, double z1) {
     auto z = [&](double tau) {
         const State x = dense(x0, x1, lin, correction, h, tau);
         return event_indicators(m, u, d, t0 + tau, x)[i];
@@ -147,7 +147,7 @@ std::optional<SpanResult> advance_between_edges(const Model& m, const InputsAt& 
         }
         x1[state_v_bus] += correction;
         b1.dx[state_v_bus] += lin.a * correction;  // the slope at the corrected end, to first order (δ ≈ 1e-8 V)
-        if (b1.dx[state_soc] != g0) {  // the battery carries current: the trapezoidal rule for soc
+        if (b1.dx[state_soc] != g0) {              // the battery carries current: the trapezoidal rule for soc
             x1[state_soc] = x[state_soc] + 0.5 * h * (g0 + b1.dx[state_soc]);
             b1 = detail::bus_balance(m, l1, d, x1, nullptr);
         }
@@ -175,8 +175,10 @@ std::optional<SpanResult> advance_between_edges(const Model& m, const InputsAt& 
         l = l1;
         b = b1;
         z = z1;
-        if (err > 0.0) h *= std::min(5.0, 0.9 * std::cbrt(tol / err));
-        else h *= 5.0;
+        if (err > 0.0)
+            h *= std::min(5.0, 0.9 * std::cbrt(tol / err));
+        else
+            h *= 5.0;
     }
     r.t = t_stop;
     r.x = x;
