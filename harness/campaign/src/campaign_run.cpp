@@ -31,7 +31,15 @@ std::string setting_variable(const std::string& setting) {
 void check_variable(const cosim::System& system, const std::string& name, const std::string& what) {
     if (system.is_system_parameter(name)) return;  // its name and value checked as the system was built
     const auto split = cosim::split_variable_name(name);
-    if (!split) throw CampaignError(what + ": '" + name + "' is not component.variable");
+    if (!split) {
+        // A name without a '.' is a system parameter of the .ssd (set as --set NAME=VALUE sets it).
+        std::vector<std::string> names;
+        for (const auto& p : system.description().parameters) names.push_back(p.name);
+        throw CampaignError(what + ": '" + name + "' is no system parameter of " +
+                            system.description().file.filename().string() + cosim::name_hint(name, names) +
+                            (names.empty() ? " (it has none)" : "") +
+                            "; a component's variable is named component.variable");
+    }
     const std::size_t c = system.component_index(split->component);
     const auto* v = system.components()[c].description().find_variable(split->variable);
     if (!v)
@@ -58,6 +66,18 @@ void check_value(const cosim::System& system, const std::string& setting, const 
     } catch (const std::exception& e) {
         throw CampaignError(what + ": " + e.what());
     }
+}
+
+// A system parameter's value as the run starts: as the .ssd, a parameter file or --set give it, else the
+// start value of the first component parameter it feeds (a system parameter without a value feeds nothing).
+std::optional<std::string> system_parameter_value(const cosim::System& system, const std::string& name) {
+    const auto& parameters = system.description().parameters;
+    for (std::size_t i = 0; i < parameters.size(); ++i)
+        if (parameters[i].name == name && !system.system_parameter_values()[i].value.empty())
+            return system.system_parameter_values()[i].value;
+    for (const auto& f : system.description().feeds)
+        if (f.parameter == name) return system.initial_value(system.component_index(f.component), f.variable);
+    return std::nullopt;
 }
 
 }  // namespace
@@ -102,8 +122,18 @@ CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path
     }();
     // The scenario's element set the epoch and orbit draws move or replace: as the system (and [set]) give it.
     read_scenario_base(spec, [&](const std::string& name) -> std::optional<std::string> {
+        if (system.is_system_parameter(name)) return system_parameter_value(system, name);
         const auto split = cosim::split_variable_name(name);
         if (!split) return std::nullopt;
+        // "tle_elements.tle_line1": the text set of a component the system parameter set feeds.
+        if (system.is_system_parameter(split->component + "[1]")) {
+            for (const auto& f : system.description().feeds)
+                if (f.parameter == split->component + "[1]")
+                    if (auto text = system.initial_value(system.component_index(f.component), split->variable);
+                        text && !text->empty())
+                        return text;
+            return std::nullopt;
+        }
         return system.initial_value(system.component_index(split->component), split->variable);
     });
     for (const auto& setting : s.options.settings) check_variable(system, setting_variable(setting), "[set]");

@@ -19,6 +19,7 @@
 #include "campaign_spec.hpp"
 #include "draws.hpp"
 #include "engine/csv_table.hpp"
+#include "engine/system.hpp"
 #include "results_table.hpp"
 
 using namespace campaign;
@@ -428,4 +429,37 @@ TEST(Campaign, ParameterFilesOfTheSpecReachEveryRun) {
     const double kepler = std::cbrt(mu / (n * n)) / 6378137.0;
     EXPECT_NEAR(std::stod(cells[static_cast<std::size_t>(at)]), kepler, 0.003);
     std::filesystem::remove_all(dir);
+}
+
+// A draw may target a system parameter of the .ssd, set as `--set NAME=VALUE` sets it: it feeds every
+// component it is connected to (leo_orbit's epoch_month feeds env.epoch_month and est.clock_epoch_month).
+// An unknown name is refused before any run with the closest system parameter.
+TEST(Campaign, DrawsOnSystemParameters) {
+    const auto write_spec = [](const std::string& name, const std::string& target) {
+        const auto file = fresh_dir(name + "_spec");
+        std::filesystem::create_directories(file);
+        std::ofstream out(file / "spec.toml");
+        out << "system = \"" << CAMPAIGN_TEST_SPECS << "/../../../systems/leo_orbit.ssd\"\nstop_time = 2.0\n"
+            << "output_interval = 1.0\nruns = 2\nseed = 7\n[[draw]]\nkind = \"integer\"\ntarget = \"" << target
+            << "\"\nmin = 3\nmax = 3\n[[metric]]\nname = \"light\"\nkind = \"column\"\ncolumn = "
+            << "\"env.irradiance\"\nstats = [\"final\"]\n";
+        return file / "spec.toml";
+    };
+    const CampaignSetup setup = prepare(read_spec(write_spec("sysparam", "epoch_month")), {PVATT_FMU_DIR}, {});
+    const auto drawn = draw_run(setup.spec, 0).settings;
+    EXPECT_EQ(drawn, std::vector<std::string>{"epoch_month=3"});
+    auto options = setup.options;
+    options.settings.insert(options.settings.end(), drawn.begin(), drawn.end());
+    const cosim::System system(setup.description, options);  // the run's system: both blocks get the month
+    EXPECT_EQ(system.initial_value(system.component_index("env"), "epoch_month"), "3");
+    EXPECT_EQ(system.initial_value(system.component_index("est"), "clock_epoch_month"), "3");
+    std::string refused;
+    try {
+        (void)prepare(read_spec(write_spec("sysparam_typo", "epoch_mnth")), {PVATT_FMU_DIR}, {});
+    } catch (const std::exception& e) {
+        refused = e.what();
+    }
+    EXPECT_NE(refused.find("'epoch_mnth' is no system parameter of leo_orbit.ssd (did you mean 'epoch_month'?)"),
+              std::string::npos)
+        << refused;
 }

@@ -111,6 +111,26 @@ void declarations(const cosim::CsvTable& table, RunMeasures& m) {
               [](const auto& a, const auto& b) { return a.time < b.time; });
 }
 
+// The onset columns `cosim run` wrote ("mag.fault_stuck_onset"): one injected fault each.
+void onsets(const cosim::CsvTable& table, RunMeasures& m) {
+    if (table.rows() == 0) return;
+    const std::string head = "fault_", tail = "_onset";
+    for (std::size_t i = 0; i < table.names.size(); ++i) {
+        const std::string& name = table.names[i];
+        const auto dot = name.rfind('.');
+        const std::string variable = dot == std::string::npos ? name : name.substr(dot + 1);
+        if (variable.size() <= head.size() + tail.size() || variable.rfind(head, 0) != 0 ||
+            variable.compare(variable.size() - tail.size(), tail.size(), tail) != 0)
+            continue;
+        const double t = table.columns[i][0];
+        if (!std::isfinite(t)) continue;
+        m.injected.push_back({dot == std::string::npos ? std::string() : name.substr(0, dot),
+                              variable.substr(head.size(), variable.size() - head.size() - tail.size()), "", t});
+    }
+    std::stable_sort(m.injected.begin(), m.injected.end(),
+                     [](const auto& a, const auto& b) { return a.onset < b.onset; });
+}
+
 }  // namespace
 
 RunMeasures measure_run(const cosim::CsvTable& table, const MeasureOptions& options) {
@@ -120,6 +140,7 @@ RunMeasures measure_run(const cosim::CsvTable& table, const MeasureOptions& opti
     const auto* irradiance = column(table, "irradiance");
     m.phases = irradiance != nullptr;
     if (time) declarations(table, m);
+    onsets(table, m);
     if (!time || q_true.empty()) return m;
     const std::size_t n = time->size();
 
@@ -272,12 +293,34 @@ void print_measures(const RunMeasures& m, const std::vector<FaultOnset>& injecte
         if (!m.not_valid_reason.empty()) out << m.not_valid_reason << "\n";
     }
     if (wants("faults")) {
-        for (const auto& f : injected)
-            out << "fault injected: " << f.component << " " << f.group << " (" << f.settings << ") from "
-                << time_text(f.onset) << "\n";
-        for (const auto& d : m.declarations) out << "fault declared: " << d.what << " at " << time_text(d.time) << "\n";
-        if (!injected.empty() && m.declarations.empty()) out << "no fault declared by the on-board computer\n";
+        RunMeasures with = m;
+        with.injected = injected;
+        for (const auto& line : fault_lines(with)) out << line << "\n";
     }
+}
+
+std::vector<std::string> fault_lines(const RunMeasures& m) {
+    std::vector<std::string> out;
+    const auto name = [](const FaultOnset& f) { return (f.component.empty() ? "" : f.component + " ") + f.group; };
+    for (const auto& f : m.injected)
+        out.push_back("fault injected: " + name(f) + (f.settings.empty() ? "" : " (" + f.settings + ")") + " from " +
+                      time_text(f.onset));
+    for (const auto& d : m.declarations) {
+        std::string line = "fault declared: " + d.what + " at " + time_text(d.time);
+        const FaultOnset* cause = nullptr;  // the latest onset at or before the declaration
+        for (const auto& f : m.injected)
+            if (f.onset <= d.time && (!cause || f.onset >= cause->onset)) cause = &f;
+        if (cause) line += ", " + time_text(d.time - cause->onset) + " after the onset of " + name(*cause);
+        out.push_back(line);
+    }
+    if (!m.injected.empty() && m.declarations.empty()) out.push_back("no fault declared by the on-board computer");
+    return out;
+}
+
+std::vector<std::string> onset_columns(const std::vector<FaultOnset>& injected) {
+    std::vector<std::string> out;
+    for (const auto& f : injected) out.push_back(f.component + ".fault_" + f.group + "_onset");
+    return out;
 }
 
 void check_measure_names(const std::vector<std::string>& report, const std::string& where) {
@@ -290,9 +333,10 @@ void check_measure_names(const std::vector<std::string>& report, const std::stri
         }
 }
 
-std::vector<FaultOnset> fault_onsets(cosim::System& system) {
+std::vector<FaultOnset> fault_onsets(const cosim::System& system) {
     std::vector<FaultOnset> out;
-    for (const auto& c : system.components()) {
+    for (std::size_t ci = 0; ci < system.components().size(); ++ci) {
+        const auto& c = system.components()[ci];
         const auto& variables = c.description().model_variables;
         for (const auto& onset : variables) {
             const std::string& n = onset.name;
@@ -306,19 +350,19 @@ std::vector<FaultOnset> fault_onsets(cosim::System& system) {
                 if (v.causality != fmi_loader::Causality::parameter || v.name.rfind(prefix, 0) != 0 || v.name == n ||
                     v.name == prefix + "end")
                     continue;
-                const std::string now = c.instance->get_as_text(v);
+                const std::string now = system.initial_value(ci, v.name).value_or("");
                 bool differs = false;
                 if (v.type == fmi_loader::VariableType::string) {
                     differs = now != v.start.value_or("");
                 } else if (v.type == fmi_loader::VariableType::boolean) {
-                    differs = (now == "1") != v.start_as_boolean().value_or(false);
+                    differs = (now == "1" || now == "true") != v.start_as_boolean().value_or(false);
                 } else {
                     differs = std::strtod(now.c_str(), nullptr) != v.start_as_real().value_or(0.0);
                 }
                 if (differs) f.settings += (f.settings.empty() ? "" : ", ") + v.name + " = " + now;
             }
             if (f.settings.empty()) continue;
-            f.onset = c.instance->get_real(onset.value_reference);
+            f.onset = std::strtod(system.initial_value(ci, n).value_or("0").c_str(), nullptr);
             out.push_back(f);
         }
     }
@@ -385,7 +429,19 @@ std::string measures_json(const RunMeasures& m) {
     for (std::size_t i = 0; i < m.declarations.size(); ++i)
         out += std::string(i ? ", " : "") + "{\"what\": " + json_string(m.declarations[i].what) +
                ", \"time\": " + json_number(m.declarations[i].time) + "}";
+    out += "], \"injected\": [";
+    for (std::size_t i = 0; i < m.injected.size(); ++i)
+        out += std::string(i ? ", " : "") + "{\"component\": " + json_string(m.injected[i].component) +
+               ", \"group\": " + json_string(m.injected[i].group) + ", \"onset\": " + json_number(m.injected[i].onset) +
+               "}";
     return out + "]}";
+}
+
+// The text of a line in HTML (a fault's description may hold < or &).
+static std::string html_text(const std::string& text) {
+    std::string out;
+    for (const char c : text) out += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
+    return out;
 }
 
 std::string measures_html(const RunMeasures& m) {
@@ -426,9 +482,10 @@ std::string measures_html(const RunMeasures& m) {
         if (!m.not_valid_reason.empty()) h << "<li>" << m.not_valid_reason << "</li>\n";
         h << "</ul>\n";
     }
-    if (!m.declarations.empty()) {
-        h << "<h2>Faults declared by the on-board computer</h2>\n<ul>\n";
-        for (const auto& d : m.declarations) h << "<li>" << d.what << " at " << time_text(d.time) << "</li>\n";
+    if (!m.declarations.empty() || !m.injected.empty()) {
+        h << "<h2>Faults injected and declared</h2>\n<p>Onsets from the run's fault parameters (orange dotted "
+             "lines on the figures), declarations by the on-board computer (red dashed lines).</p>\n<ul>\n";
+        for (const auto& line : fault_lines(m)) h << "<li>" << html_text(line) << "</li>\n";
         h << "</ul>\n";
     }
     return h.str();

@@ -62,6 +62,13 @@ struct FaultDeclaration {
     double time = 0.0;
 };
 
+// A fault injected through a block's parameters (fault_onsets below, or a CSV's onset columns).
+struct FaultOnset {
+    std::string component, group;  // "mag", "stuck"
+    std::string settings;          // "fault_stuck_axis = 2" (empty when read from a CSV's onset column)
+    double onset = 0.0;
+};
+
 struct RunMeasures {
     std::vector<EstimateMeasures> estimates;
     // Where "after convergence" starts (s): the .ssd's declaration, else when the filter was valid with the
@@ -71,7 +78,8 @@ struct RunMeasures {
     // Why the filter was not valid from the start: its 3σ bound at its first sample and when it came down.
     std::string not_valid_reason;
     std::vector<FaultDeclaration> declarations;
-    bool phases = false;  // the table had an irradiance column: sunlit and eclipse are split
+    std::vector<FaultOnset> injected;  // from the table's onset columns (onset_columns), by onset
+    bool phases = false;               // the table had an irradiance column: sunlit and eclipse are split
 };
 
 struct MeasureOptions {
@@ -87,7 +95,7 @@ void print_measures(const RunMeasures& m, std::ostream& out);
 
 // The same as one JSON object (numbers null where NaN), for pvatt.analysis through the C API:
 // {"estimates": [{"name", "first_valid", "overall": SPAN, "converged": SPAN|null}], "converged_from",
-//  "converged_because", "not_valid_reason", "phases", "declarations": [{"what", "time"}]} with SPAN
+//  "converged_because", "not_valid_reason", "phases", "declarations": [{"what", "time"}], "injected": [{"component", "group", "onset"}]} with SPAN
 // {"all"|"sunlit"|"eclipse": {"samples", "median", "p95"}, "consistency": {"samples", "nees_per_dof",
 //  "chi2_coverage"}|null}.
 std::string measures_json(const RunMeasures& m);
@@ -107,15 +115,22 @@ void check_measure_names(const std::vector<std::string>& report, const std::stri
 
 // A fault injected through a block's parameters: group G of `component` is injected when a parameter
 // fault_G_* other than its onset and end differs from the FMU's start value; its onset is fault_G_onset.
-struct FaultOnset {
-    std::string component, group;  // "mag", "stuck"
-    std::string settings;          // "fault_stuck_axis = 2"
-    double onset = 0.0;
-};
-std::vector<FaultOnset> fault_onsets(cosim::System& system);
+// Read from the values the run gives (System::initial_value: its bindings, parameter files, --set), so
+// before the run as well as after it.
+std::vector<FaultOnset> fault_onsets(const cosim::System& system);
+
+// The columns `cosim run` adds to its CSV for the faults it injects ("mag.fault_stuck_onset"), so that the
+// CSV alone gives `cosim plot` (measure_run) each onset.
+std::vector<std::string> onset_columns(const std::vector<FaultOnset>& injected);
+
+// The faults of a run, one line each, the one text of the end of `cosim run` and of the results page:
+// "fault injected: mag stuck (fault_stuck_axis = 2) from 3000 s", "fault declared: magnetometer axis y
+// (fault word 4) at 3012.5 s, 12.5 s after the onset of mag stuck" (the latest onset at or before it),
+// "no fault declared by the on-board computer" when faults were injected and none declared.
+std::vector<std::string> fault_lines(const RunMeasures& m);
 
 // The end of `cosim run` for a system that declares its measures: the items of `report` only (all when
-// empty), faults injected beside those declared.
+// empty), faults injected (`injected`, with their settings, in place of m.injected) beside those declared.
 void print_measures(const RunMeasures& m, const std::vector<FaultOnset>& injected,
                     const std::vector<std::string>& report, std::ostream& out);
 
