@@ -138,7 +138,9 @@ RunMeasures measure_run(const cosim::CsvTable& table, const MeasureOptions& opti
     const auto* time = column(table, "time");
     const auto q_true = group(table, "q_true", 4);
     const auto* irradiance = column(table, "irradiance");
-    m.phases = irradiance != nullptr;
+    // Sunlit and eclipse split where the run has both (the seed's lab sun never sets: one phase, "all").
+    m.phases = irradiance && std::any_of(irradiance->begin(), irradiance->end(), [](double e) { return e <= 0.0; }) &&
+               std::any_of(irradiance->begin(), irradiance->end(), [](double e) { return e > 0.0; });
     if (time) declarations(table, m);
     onsets(table, m);
     if (!time || q_true.empty()) return m;
@@ -181,6 +183,40 @@ RunMeasures measure_run(const cosim::CsvTable& table, const MeasureOptions& opti
         per_estimate.push_back(std::move(samples));
     }
 
+    // The sun vector: at the samples where sun_meas changed while sun_valid (unit vectors: the angle).
+    const auto sun_true = group(table, "sun_body", 3), sun_meas = group(table, "sun_meas", 3);
+    std::vector<Sample> sun_samples;
+    if (!sun_true.empty() && !sun_meas.empty()) {
+        const auto* sun_valid = column(table, "sun_valid");
+        for (std::size_t r = 0; r < n; ++r) {
+            bool changed = r == 0;
+            for (const auto* c : sun_meas) changed = changed || (*c)[r] != (*c)[r - 1];
+            if (!changed || (sun_valid && !((*sun_valid)[r] > 0.5))) continue;
+            double dot = 0.0, na = 0.0, nb = 0.0;
+            for (std::size_t i = 0; i < 3; ++i) {
+                const double a = (*sun_true[i])[r], b = (*sun_meas[i])[r];
+                dot += a * b;
+                na += a * a;
+                nb += b * b;
+            }
+            if (!(na > 0.0 && nb > 0.0)) continue;
+            // atan2 of |a x b| and a.b: accurate at small angles, where acos of a rounded cosine is not.
+            const double cx = (*sun_true[1])[r] * (*sun_meas[2])[r] - (*sun_true[2])[r] * (*sun_meas[1])[r];
+            const double cy = (*sun_true[2])[r] * (*sun_meas[0])[r] - (*sun_true[0])[r] * (*sun_meas[2])[r];
+            const double cz = (*sun_true[0])[r] * (*sun_meas[1])[r] - (*sun_true[1])[r] * (*sun_meas[0])[r];
+            const double angle = std::atan2(std::hypot(cx, cy, cz), dot) * 180.0 / std::numbers::pi;
+            if (!std::isfinite(angle)) continue;
+            sun_samples.push_back({(*time)[r], angle, !irradiance || (*irradiance)[r] > 0.0, std::nan("")});
+        }
+        if (!sun_samples.empty()) {
+            EstimateMeasures em;
+            em.name = "sun vector sun_meas";
+            em.first_valid = sun_samples.front().t;
+            em.overall = span(sun_samples, -INFINITY, false);
+            m.sun_vectors.push_back(em);
+        }
+    }
+
     // After convergence: as declared, else the first sample where the filter is valid with the in-flight
     // calibration applied (before it, the field carries the spacecraft's own hard iron).
     const auto* filter_valid = column(table, "filter_valid");
@@ -201,6 +237,8 @@ RunMeasures measure_run(const cosim::CsvTable& table, const MeasureOptions& opti
             const bool cov = m.estimates[i].overall.consistency.has_value();
             m.estimates[i].converged = span(per_estimate[i], *m.converged_from, cov);
         }
+    if (m.converged_from && !sun_samples.empty() && *m.converged_from < time->back())
+        m.sun_vectors.front().converged = span(sun_samples, *m.converged_from, false);
 
     // Why the filter was not valid from the start: its own 3σ bound, and the calibration's moment.
     const auto* bound = column(table, "attitude_bound");
@@ -220,8 +258,9 @@ RunMeasures measure_run(const cosim::CsvTable& table, const MeasureOptions& opti
                 }
         const auto deg = [&](std::size_t r) { return fmt((*bound)[r] * 180.0 / std::numbers::pi) + "°"; };
         std::ostringstream why;
+        // A covariance factor zero throughout is a filter that is off (filter = none, the seed): nothing to
+        // explain.
         if (!running) {
-            why << "the filter never ran (its covariance factor stayed zero)";
         } else if (!valid) {
             why << "the filter never became valid: its 3σ bound was " << deg(*running) << " at "
                 << time_text((*time)[*running]) << " and " << deg(n - 1) << " at the end, above its validity limit";
@@ -286,6 +325,17 @@ void print_measures(const RunMeasures& m, const std::vector<FaultOnset>& injecte
             }
         }
         if (m.converged_from) out << "  (from " << time_text(*m.converged_from) << ": " << m.converged_because << ")\n";
+    }
+    if (wants("sun_vector") && !m.sun_vectors.empty()) {
+        out << "sun vector error, median / p95 (samples)" << (m.phases ? ", sunlit and in eclipse" : "") << ":\n";
+        for (const auto& e : m.sun_vectors) {
+            out << "  " << e.name << ", whole run: ";
+            print_span(e.overall, m.phases, out);
+            if (e.converged) {
+                out << "  " << e.name << ", from " << time_text(*m.converged_from) << ": ";
+                print_span(*e.converged, m.phases, out);
+            }
+        }
     }
     if (wants("first_valid")) {
         for (const auto& e : m.estimates)
@@ -414,14 +464,18 @@ std::string json_span(const SpanMeasures& s) {
 }  // namespace
 
 std::string measures_json(const RunMeasures& m) {
-    std::string out = "{\"estimates\": [";
-    for (std::size_t i = 0; i < m.estimates.size(); ++i) {
-        const auto& e = m.estimates[i];
-        out += std::string(i ? ", " : "") + "{\"name\": " + json_string(e.name) +
-               ", \"first_valid\": " + (e.first_valid ? json_number(*e.first_valid) : "null") +
-               ", \"overall\": " + json_span(e.overall) +
-               ", \"converged\": " + (e.converged ? json_span(*e.converged) : "null") + "}";
-    }
+    const auto list = [](const std::vector<EstimateMeasures>& estimates) {
+        std::string out;
+        for (std::size_t i = 0; i < estimates.size(); ++i) {
+            const auto& e = estimates[i];
+            out += std::string(i ? ", " : "") + "{\"name\": " + json_string(e.name) +
+                   ", \"first_valid\": " + (e.first_valid ? json_number(*e.first_valid) : "null") +
+                   ", \"overall\": " + json_span(e.overall) +
+                   ", \"converged\": " + (e.converged ? json_span(*e.converged) : "null") + "}";
+        }
+        return out;
+    };
+    std::string out = "{\"estimates\": [" + list(m.estimates) + "], \"sun_vectors\": [" + list(m.sun_vectors);
     out += "], \"converged_from\": " + (m.converged_from ? json_number(*m.converged_from) : std::string("null")) +
            ", \"converged_because\": " + json_string(m.converged_because) +
            ", \"not_valid_reason\": " + json_string(m.not_valid_reason) +
@@ -468,10 +522,11 @@ std::string measures_html(const RunMeasures& m) {
               << "</td><td>" << (s.consistency ? fmt(s.consistency->chi2_coverage, "%.1f") + " %" : "")
               << "</td></tr>\n";
         };
-        for (const auto& e : m.estimates) {
-            row(e.name, "whole run", e.overall);
-            if (e.converged) row(e.name, "from " + time_text(*m.converged_from), *e.converged);
-        }
+        for (const auto* list : {&m.estimates, &m.sun_vectors})
+            for (const auto& e : *list) {
+                row(e.name, "whole run", e.overall);
+                if (e.converged) row(e.name, "from " + time_text(*m.converged_from), *e.converged);
+            }
         h << "</table>\n<p>Errors at each estimate's own samples while it is valid. NEES/dof is the mean of "
              "δθᵀP⁻¹δθ / 3 (1 when the filter's covariance is right); the χ²(3) 99 % coverage is the share of "
              "samples with δθᵀP⁻¹δθ ≤ 11.34 (99 % when it is right, less when it is overconfident).</p>\n<ul>\n";
@@ -504,6 +559,9 @@ bool measured(const std::string& variable) {
                                         "attitude_bound",
                                         "irradiance",
                                         "mag_cal_valid",
+                                        "sun_body",
+                                        "sun_meas",
+                                        "sun_valid",
                                         "fault_face",
                                         "fault_face_time",
                                         "fault_mag_axis",

@@ -71,6 +71,9 @@ struct FaultOnset {
 
 struct RunMeasures {
     std::vector<EstimateMeasures> estimates;
+    // The measured sun vector (sun_meas, unit, body axes) against the truth's (sun_body) at the on-board
+    // computer's samples while sun_valid: the angle between them (deg); no consistency.
+    std::vector<EstimateMeasures> sun_vectors;
     // Where "after convergence" starts (s): the .ssd's declaration, else when the filter was valid with the
     // in-flight magnetometer calibration applied (both columns present), else nothing.
     std::optional<double> converged_from;
@@ -94,7 +97,8 @@ RunMeasures measure_run(const cosim::CsvTable& table, const MeasureOptions& opti
 void print_measures(const RunMeasures& m, std::ostream& out);
 
 // The same as one JSON object (numbers null where NaN), for pvatt.analysis through the C API:
-// {"estimates": [{"name", "first_valid", "overall": SPAN, "converged": SPAN|null}], "converged_from",
+// {"estimates": [{"name", "first_valid", "overall": SPAN, "converged": SPAN|null}], "sun_vectors": [the same],
+//  "converged_from",
 //  "converged_because", "not_valid_reason", "phases", "declarations": [{"what", "time"}], "injected": [{"component", "group", "onset"}]} with SPAN
 // {"all"|"sunlit"|"eclipse": {"samples", "median", "p95"}, "consistency": {"samples", "nees_per_dof",
 //  "chi2_coverage"}|null}.
@@ -108,7 +112,9 @@ std::string measures_html(const RunMeasures& m);
 //   consistency  the filter's NEES/dof and chi2(3) 99 % coverage beside its errors
 //   first_valid  when each estimate was first valid, and why the filter was not valid before
 //   faults       the faults injected (the blocks' fault_* parameters) and those the on-board computer declared
-inline const std::vector<std::string> measure_names = {"attitude", "consistency", "first_valid", "faults"};
+//   sun_vector   the error of the measured sun vector (sun_meas against sun_body), median and p95 as attitude
+inline const std::vector<std::string> measure_names = {"attitude", "consistency", "first_valid", "faults",
+                                                       "sun_vector"};
 
 // Throws CosimError naming a report item that is not one of measure_names (with the closest one).
 void check_measure_names(const std::vector<std::string>& report, const std::string& where);
