@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "analysis/couplings.hpp"
+#include "analysis/run_measures.hpp"
 #include "campaign_error.hpp"
 #include "draws.hpp"
 #include "engine/cosim_error.hpp"
@@ -16,6 +17,7 @@
 #include "engine/observer.hpp"
 #include "engine/run_defaults.hpp"
 #include "engine/setting.hpp"
+#include "engine/value_text.hpp"
 #include "metric_observer.hpp"
 
 namespace campaign {
@@ -181,6 +183,13 @@ CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path
                   << (spec.runs < grid ? " (" + std::to_string(grid - spec.runs) + " combinations are never run)"
                                        : std::string(" (some run once more than others)"))
                   << "; give a multiple of " << grid << " in 'runs' or --runs\n";
+    // What the system declares it reached: recorded in every run, beside the spec's metrics.
+    if (s.description.measures) {
+        analysis::check_measure_names(s.description.measures->report, spec.system.string());
+        spec.measures = true;
+        spec.measure_report = s.description.measures->report;
+        spec.measures_converged_after = s.description.measures->converged_after;
+    }
     s.spec = std::move(spec);
     return s;
 }
@@ -200,6 +209,11 @@ RunResult run_one(const CampaignSetup& setup, long index, const std::optional<st
         MetricObserver metrics(setup.spec.metrics, system, which ? &setup.spec.cases[*which] : nullptr);
         cosim::InterruptCheck interrupt;  // a signal ends the campaign, not just this run
         std::vector<cosim::Observer*> observers = {&interrupt, &metrics};
+        std::unique_ptr<analysis::MeasureRecorder> measures;
+        if (setup.spec.measures) {
+            measures = std::make_unique<analysis::MeasureRecorder>(system);
+            observers.push_back(measures.get());
+        }
         std::unique_ptr<cosim::CsvWriter> csv;
         if (full_csv) {
             csv = std::make_unique<cosim::CsvWriter>(*full_csv, system, std::vector<std::string>{});
@@ -212,6 +226,14 @@ RunResult run_one(const CampaignSetup& setup, long index, const std::optional<st
         ex.relative_tolerance = setup.tolerance;
         const auto stats = cosim::Execution(system, ex).run(observers);
         r.metric_cells = metrics.cells();
+        if (measures) {
+            analysis::MeasureOptions mo;
+            mo.converged_after = setup.spec.measures_converged_after;
+            // The same text as the metrics' cells: round-trip numbers, "nan" where the run has none.
+            for (const double v :
+                 analysis::measure_values(analysis::measure_run(measures->table(), mo), setup.spec.measure_report))
+                r.metric_cells.push_back(cosim::format_real(v));
+        }
         r.status = stats.terminated_early ? "stopped" : "ok";
         if (stats.terminated_early)
             r.message = "a component ended the run at t = " + std::to_string(stats.simulated_time) + " s";

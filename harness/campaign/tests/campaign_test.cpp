@@ -13,13 +13,16 @@
 #include <fstream>
 #include <sstream>
 
+#include "analysis/run_measures.hpp"
 #include "campaign_command.hpp"
 #include "campaign_error.hpp"
 #include "campaign_run.hpp"
 #include "campaign_spec.hpp"
 #include "draws.hpp"
 #include "engine/csv_table.hpp"
+#include "engine/execution.hpp"
 #include "engine/system.hpp"
+#include "engine/value_text.hpp"
 #include "results_table.hpp"
 
 using namespace campaign;
@@ -462,4 +465,52 @@ TEST(Campaign, DrawsOnSystemParameters) {
     EXPECT_NE(refused.find("'epoch_mnth' is no system parameter of leo_orbit.ssd (did you mean 'epoch_month'?)"),
               std::string::npos)
         << refused;
+}
+
+// A campaign over a system that declares its measures (seed_spin: the sun vector and the single-frame
+// attitude) records them per run, from the same code as the end of `cosim run`: the run's cells equal
+// analysis::measure_run on the same run made directly, and the end of the campaign says them over runs.
+TEST(Campaign, DeclaredMeasuresPerRunAndOverRuns) {
+    const auto dir = fresh_dir("measures");
+    std::filesystem::create_directories(dir);
+    const std::string ssd = std::string(CAMPAIGN_TEST_SPECS) + "/../../../systems/seed_spin.ssd";
+    {
+        std::ofstream spec(dir / "spec.toml");
+        spec << "system = \"" << ssd << "\"\nstop_time = 0.5\noutput_interval = 0.05\nruns = 1\nseed = 3\n"
+             << "[[metric]]\nname = \"bus\"\nkind = \"column\"\ncolumn = \"plant.v_bus\"\nstats = [\"final\"]\n";
+    }
+    auto o = options_for("leo_short.toml", dir / "out");
+    o.spec = dir / "spec.toml";
+    o.figures = false;
+    std::ostringstream out;
+    ASSERT_EQ(run_campaign(o, out), 0) << out.str();
+    EXPECT_NE(out.str().find("measure.sun_vector.run.all.p50: median "), std::string::npos) << out.str();
+    const auto rows = lines_of(dir / "out" / "results.csv");
+    ASSERT_EQ(rows.size(), 2u);
+    const auto header = split_csv_line(rows[0]), cells = split_csv_line(rows[1]);
+    const auto cell = [&](const std::string& name) {
+        const auto at = std::find(header.begin(), header.end(), name) - header.begin();
+        return static_cast<std::size_t>(at) < header.size() ? cells[static_cast<std::size_t>(at)] : "absent";
+    };
+    // The same run made directly.
+    cosim::SystemOptions options;
+    options.fmu_dirs = {PVATT_FMU_DIR};
+    const auto description = cosim::read_system_description(ssd);
+    ASSERT_TRUE(description.measures);
+    cosim::System system(description, options);
+    analysis::MeasureRecorder recorder(system);
+    cosim::ExecutionOptions ex;
+    ex.stop_time = 0.5;
+    ex.output_interval = 0.05;
+    std::vector<cosim::Observer*> observers{&recorder};
+    (void)cosim::Execution(system, ex).run(observers);
+    const auto m = analysis::measure_run(recorder.table());
+    ASSERT_EQ(m.sun_vectors.size(), 1u);
+    ASSERT_EQ(m.estimates.size(), 1u);
+    EXPECT_EQ(cell("measure.sun_vector.run.all.p50"), cosim::format_real(m.sun_vectors[0].overall.all.median));
+    EXPECT_EQ(cell("measure.sun_vector.run.all.p95"), cosim::format_real(m.sun_vectors[0].overall.all.p95));
+    EXPECT_EQ(cell("measure.single_frame.run.all.p95"), cosim::format_real(m.estimates[0].overall.all.p95));
+    EXPECT_EQ(cell("measure.single_frame.first_valid"), "0");
+    EXPECT_EQ(cell("measure.filter.run.all.p50"), "nan");  // the seed runs no filter
+    std::filesystem::remove_all(dir);
 }

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <numbers>
 #include <sstream>
 
@@ -150,8 +151,10 @@ RunMeasures measure_run(const cosim::CsvTable& table, const MeasureOptions& opti
         const char* column;
         const char* valid;
         const char* name;
+        const char* key;
     };
-    const Estimate kinds[] = {{"q_filt", "filter_valid", "filter q_filt"}, {"q_est", "valid", "single-frame q_est"}};
+    const Estimate kinds[] = {{"q_filt", "filter_valid", "filter q_filt", "filter"},
+                              {"q_est", "valid", "single-frame q_est", "single_frame"}};
     std::vector<std::vector<Sample>> per_estimate;
     for (const auto& e : kinds) {
         const auto q = group(table, e.column, 4);
@@ -161,6 +164,7 @@ RunMeasures measure_run(const cosim::CsvTable& table, const MeasureOptions& opti
         const auto l = filter ? group(table, "attitude_cov_sqrt", 6) : std::vector<const std::vector<double>*>{};
         EstimateMeasures em;
         em.name = e.name;
+        em.key = e.key;
         std::vector<Sample> samples;
         for (std::size_t r = 0; r < n; ++r) {
             bool changed = r == 0;
@@ -211,6 +215,7 @@ RunMeasures measure_run(const cosim::CsvTable& table, const MeasureOptions& opti
         if (!sun_samples.empty()) {
             EstimateMeasures em;
             em.name = "sun vector sun_meas";
+            em.key = "sun_vector";
             em.first_valid = sun_samples.front().t;
             em.overall = span(sun_samples, -INFINITY, false);
             m.sun_vectors.push_back(em);
@@ -370,6 +375,81 @@ std::vector<std::string> fault_lines(const RunMeasures& m) {
 std::vector<std::string> onset_columns(const std::vector<FaultOnset>& injected) {
     std::vector<std::string> out;
     for (const auto& f : injected) out.push_back(f.component + ".fault_" + f.group + "_onset");
+    return out;
+}
+
+namespace {
+
+// Each measure column with how a run's value is found: the estimate's key, and what to take of it.
+struct MeasureColumn {
+    std::string name, key;
+    std::function<double(const EstimateMeasures&)> value;
+};
+
+std::vector<MeasureColumn> measure_table(const std::vector<std::string>& report) {
+    const auto wants = [&](const char* item) {
+        return report.empty() || std::find(report.begin(), report.end(), item) != report.end();
+    };
+    std::vector<MeasureColumn> out;
+    const auto spans = [&](const std::string& key) {
+        for (const char* span_name : {"run", "converged"}) {
+            const bool converged = std::string(span_name) == "converged";
+            for (const char* phase : {"all", "sunlit", "eclipse"})
+                for (const char* stat : {"p50", "p95"}) {
+                    const std::string ph = phase, st = stat;
+                    out.push_back(
+                        {"measure." + key + "." + span_name + "." + ph + "." + st, key, [=](const EstimateMeasures& e) {
+                             if (converged && !e.converged) return std::nan("");
+                             const SpanMeasures& s = converged ? *e.converged : e.overall;
+                             const ErrorStats& x = ph == "all" ? s.all : ph == "sunlit" ? s.sunlit : s.eclipse;
+                             if (x.samples == 0) return std::nan("");
+                             return st == "p50" ? x.median : x.p95;
+                         }});
+                }
+        }
+    };
+    if (wants("attitude"))
+        for (const char* key : {"filter", "single_frame"}) spans(key);
+    if (wants("sun_vector")) spans("sun_vector");
+    if (wants("consistency"))
+        for (const char* span_name : {"run", "converged"})
+            for (const char* what : {"nees_per_dof", "chi2_99"}) {
+                const bool converged = std::string(span_name) == "converged",
+                           nees = std::string(what) == "nees_per_dof";
+                out.push_back(
+                    {std::string("measure.filter.") + span_name + "." + what, "filter", [=](const EstimateMeasures& e) {
+                         if (converged && !e.converged) return std::nan("");
+                         const auto& c = (converged ? *e.converged : e.overall).consistency;
+                         if (!c || c->samples == 0) return std::nan("");
+                         return nees ? c->nees_per_dof : c->chi2_coverage;
+                     }});
+            }
+    if (wants("first_valid"))
+        for (const char* key : {"filter", "single_frame", "sun_vector"})
+            if (std::string(key) != "sun_vector" || wants("sun_vector"))
+                out.push_back({std::string("measure.") + key + ".first_valid", key, [](const EstimateMeasures& e) {
+                                   return e.first_valid ? *e.first_valid : std::nan("");
+                               }});
+    return out;
+}
+
+}  // namespace
+
+std::vector<std::string> measure_columns(const std::vector<std::string>& report) {
+    std::vector<std::string> out;
+    for (const auto& c : measure_table(report)) out.push_back(c.name);
+    return out;
+}
+
+std::vector<double> measure_values(const RunMeasures& m, const std::vector<std::string>& report) {
+    std::vector<double> out;
+    for (const auto& c : measure_table(report)) {
+        double v = std::nan("");
+        for (const auto* list : {&m.estimates, &m.sun_vectors})
+            for (const auto& e : *list)
+                if (e.key == c.key) v = c.value(e);
+        out.push_back(v);
+    }
     return out;
 }
 

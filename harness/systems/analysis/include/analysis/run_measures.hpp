@@ -51,6 +51,7 @@ struct SpanMeasures {
 
 struct EstimateMeasures {
     std::string name;  // "filter q_filt", "single-frame q_est"
+    std::string key;   // "filter", "single_frame", "sun_vector": its columns' names (measure_columns)
     SpanMeasures overall;
     std::optional<SpanMeasures> converged;  // after `converged_from`, when that is inside the run
     std::optional<double> first_valid;      // the first sample it was valid at (s)
@@ -115,6 +116,15 @@ std::string measures_html(const RunMeasures& m);
 //   sun_vector   the error of the measured sun vector (sun_meas against sun_body), median and p95 as attitude
 inline const std::vector<std::string> measure_names = {"attitude", "consistency", "first_valid", "faults",
                                                        "sun_vector"};
+
+// The declared measures as numbers, one column each, for a campaign's results table and summary: named
+// "measure.<estimate>.<span>.<phase>.<stat>" (estimate filter, single_frame or sun_vector; span run or
+// converged; phase all, sunlit or eclipse; stat p50 or p95), "measure.filter.<span>.nees_per_dof" and
+// ".chi2_99" (consistency), "measure.<estimate>.first_valid" (first_valid). The columns depend on `report`
+// alone (all when empty; faults has none: a campaign measures them with its detection metrics), so that
+// every run of a campaign has the same; measure_values gives a run's, NaN where it has none.
+std::vector<std::string> measure_columns(const std::vector<std::string>& report);
+std::vector<double> measure_values(const RunMeasures& m, const std::vector<std::string>& report);
 
 // Throws CosimError naming a report item that is not one of measure_names (with the closest one).
 void check_measure_names(const std::vector<std::string>& report, const std::string& where);
