@@ -331,7 +331,9 @@ void print_measures(const RunMeasures& m, const std::vector<FaultOnset>& injecte
         }
         if (m.converged_from) out << "  (from " << time_text(*m.converged_from) << ": " << m.converged_because << ")\n";
     }
-    if (wants("sun_vector") && !m.sun_vectors.empty()) {
+    // The sun vector only where the system names it (print_measures(m, out), without a report, prints what
+    // leo_orbit declares: pvatt.analysis.report's lines are those of its `cosim run`).
+    if (std::find(report.begin(), report.end(), "sun_vector") != report.end() && !m.sun_vectors.empty()) {
         out << "sun vector error, median / p95 (samples)" << (m.phases ? ", sunlit and in eclipse" : "") << ":\n";
         for (const auto& e : m.sun_vectors) {
             out << "  " << e.name << ", whole run: ";

@@ -145,8 +145,8 @@ std::vector<std::string> onset_columns(const std::vector<FaultOnset>& injected);
 // "no fault declared by the on-board computer" when faults were injected and none declared.
 std::vector<std::string> fault_lines(const RunMeasures& m);
 
-// The end of `cosim run` for a system that declares its measures: the items of `report` only (all when
-// empty), faults injected (`injected`, with their settings, in place of m.injected) beside those declared.
+// The end of `cosim run` for a system that declares its measures: the items of `report` only (all but
+// sun_vector when empty), faults injected (`injected`, with their settings, in place of m.injected) beside those declared.
 void print_measures(const RunMeasures& m, const std::vector<FaultOnset>& injected,
                     const std::vector<std::string>& report, std::ostream& out);
 
