@@ -91,11 +91,13 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.parameter("kelly_angle", &D::kelly_angle, "deg",
                 "Kelly table: incidence angles, increasing, the first 0, the second where the cosine ends, all "
                 "below 90 (default ssr_plant's, 000 fig. 4)")
-        .range(0.0, 90.0);
+        .range(0.0, 90.0)
+        .applies_when("angular_response", {"kelly"});
     t.parameter("kelly_value", &D::kelly_value, "1",
                 "Kelly table: relative response at kelly_angle, the first 1, the second the cosine of its angle "
                 "(default ssr_plant's)")
-        .range(0.0, 1.0);
+        .range(0.0, 1.0)
+        .applies_when("angular_response", {"kelly"});
     t.parameter(
          "i_face_norm", &D::i_face_norm, "A",
          "Each face's current facing the sun squarely in full sun at 1 AU (default ssr_plant's i_sc at 1367 W/m2)")
@@ -106,24 +108,29 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.parameter("i_face_adc_max", &D::i_face_adc_max, "A", "Face-current channels span 0 to this").min(1e-6);
     t.parameter("cone_tolerance", &D::cone_tolerance, "1",
                 "cones: agreement tolerance on a face's relative response (larger: fewer faces rejected)")
-        .range(1e-6, 1.0);
+        .range(1e-6, 1.0)
+        .applies_when("sun_method", {"cones"});
     t.parameter("cube_max_step", &D::cube_max_step, "rad",
                 "cones: a transition the panel-cube graph forbids is accepted when the sun moved less than this "
                 "since the last sample (0: the seed's graph alone; fast spin: about 1.5 x the turn per sample)")
-        .range(0.0, 3.14159);
+        .range(0.0, 3.14159)
+        .applies_when("sun_method", {"cones"});
     t.parameter(
          "orbit_altitude", &D::orbit_altitude, "m",
          "cones with reference_source = inputs: altitude of the orbit over a 6371 km Earth, for the Earth-albedo "
          "model's view of the Earth (default 570 km, seed 004); onboard: not used, the computer's own element set "
          "gives it (SGP4's mean semi-major axis)")
-        .range(100e3, 100e6);
+        .range(100e3, 100e6)
+        .applies_when("sun_method", {"cones"});
     t.parameter("cone_fit_tolerance", &D::cone_fit_tolerance, "1",
                 "cones: an albedo-model fit is accepted below this RMS misfit of the relative face responses; 0 "
                 "turns the model off (face rejection only)")
-        .range(0.0, 1.0);
+        .range(0.0, 1.0)
+        .applies_when("sun_method", {"cones"});
     t.parameter("cone_albedo_max", &D::cone_albedo_max, "1",
                 "cones: largest albedo the model may fit on a face squarely toward the Earth (fraction of full sun)")
-        .range(0.0, 1.0);
+        .range(0.0, 1.0)
+        .applies_when("sun_method", {"cones"});
     t.parameter("spin_window", &D::spin_window, "",
                 "Samples in the spin-rate FFT window (0: no spin-rate analysis); at most 2048")
         .range(0.0, static_cast<double>(kMaxSpinWindow));
@@ -143,84 +150,106 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
              "extended Kalman filter with rate, magnetometer-offset and panel-scale states; docs/filter.md)");
     t.parameter("filter_sun_sigma", &D::filter_sun_sigma, "rad",
                 "mekf: 1-sigma error of one sun vector per axis (noise and the sun method's model error)")
-        .range(1e-6, 1.0);
+        .range(1e-6, 1.0)
+        .applies_when("filter", {"mekf"});
     t.parameter("filter_mag_sigma", &D::filter_mag_sigma, "T",
                 "mekf: 1-sigma error of one field vector per axis (noise, quantization, field-model error)")
-        .range(1e-10, 1e-4);
+        .range(1e-10, 1e-4)
+        .applies_when("filter", {"mekf"});
     t.parameter("filter_sun_sigma_method", &D::filter_sun_sigma_method, "rad",
                 "mekf: 1-sigma error of one sun vector per axis for each sun_method (difference, "
                 "inverse_response, cones, three_faces); 0 = filter_sun_sigma")
-        .range(0.0, 100.0);
+        .range(0.0, 100.0)
+        .applies_when("filter", {"mekf"});
     t.parameter("filter_sun_correlation", &D::filter_sun_correlation, "s",
                 "mekf: correlation time of the sun vector's error for each sun_method (same order): an update "
                 "counts as white noise of sigma^2 max(1, 2 tau / dt); 0 = white")
-        .range(0.0, 1e5);
+        .range(0.0, 1e5)
+        .applies_when("filter", {"mekf"});
     t.parameter("filter_mag_ref_sigma", &D::filter_mag_ref_sigma, "T",
                 "mekf: 1-sigma error per axis of the reference field model (adds to filter_mag_sigma in quadrature)")
-        .range(0.0, 1e-4);
+        .range(0.0, 1e-4)
+        .applies_when("filter", {"mekf"});
     t.parameter("filter_mag_sigma_calibrated", &D::filter_mag_sigma_calibrated, "T",
                 "mekf: filter_mag_sigma once the in-flight magnetometer calibration applies (0 = filter_mag_sigma)")
-        .range(0.0, 1e-4);
+        .range(0.0, 1e-4)
+        .applies_when("filter", {"mekf"});
     t.parameter("filter_mag_hard_iron", &D::filter_mag_hard_iron, "T",
                 "mekf: 1-sigma per axis of the spacecraft's own field at the magnetometer (the uplinked prior of its "
                 "hard iron) until the in-flight calibration applies; the offset state then estimates it fixed in "
                 "body axes (0 = not modelled)")
-        .range(0.0, 1e-4);
+        .range(0.0, 1e-4)
+        .applies_when("filter", {"mekf"});
     t.parameter("filter_rate_noise", &D::filter_rate_noise, "rad/s",
                 "mekf: 1-sigma unpredictable change of the body rate over 1 s (a random walk: it grows as the "
                 "square root of time; the rate random-walk density in rad/s per root second)")
-        .range(0.0, 10.0);
+        .range(0.0, 10.0)
+        .applies_when("filter", {"mekf"});
     t.parameter("filter_attitude_noise", &D::filter_attitude_noise, "rad",
                 "mekf: 1-sigma attitude drift over 1 s that the rate state does not explain (random walk)")
-        .range(0.0, 1.0);
+        .range(0.0, 1.0)
+        .applies_when("filter", {"mekf"});
     t.parameter("filter_offset", &D::filter_offset, "",
-                "mekf: estimate the magnetometer's offset (3 states; its sign follows the set/reset polarity)");
+                "mekf: estimate the magnetometer's offset (3 states; its sign follows the set/reset polarity)")
+        .applies_when("filter", {"mekf"});
     t.parameter("filter_scale", &D::filter_scale, "",
                 "mekf: estimate a common scale error of the panels' current normalization from the face "
-                "currents and correct i_face_norm/i_sc_norm with it (face-based sun methods)");
+                "currents and correct i_face_norm/i_sc_norm with it (face-based sun methods)")
+        .applies_when("filter", {"mekf"});
     t.parameter("filter_face_sigma", &D::filter_face_sigma, "1",
                 "mekf: 1-sigma error of one face's relative response in the panel-scale update (noise, albedo)")
-        .range(1e-6, 1.0);
+        .range(1e-6, 1.0)
+        .applies_when("filter", {"mekf"});
     t.parameter("inertia", &D::inertia, "kg.m2",
                 "mekf: inertia matrix, body axes, row-major; all zero (default) = kinematic rate model, else "
-                "Euler's torque-free equations propagate the rate");
+                "Euler's torque-free equations propagate the rate")
+        .applies_when("filter", {"mekf"});
     t.parameter("filter_dipole", &D::filter_dipole, "A.m2",
                 "mekf with inertia: the spacecraft's residual magnetic dipole, body axes (its magnetic budget, "
                 "uplinked): the filter propagates the rate with its torque m x B (B the reference field in the "
-                "body); 0 (default): not modelled");
+                "body); 0 (default): not modelled")
+        .applies_when("filter", {"mekf"});
     t.parameter("filter_torque_noise", &D::filter_torque_noise, "N.m",
                 "mekf with inertia: the torques the filter does not model (drag, solar pressure, the models' "
                 "errors) as white noise, 1-sigma (N m s) of the angular momentum they add over 1 s (N m per "
                 "sqrt(Hz)); rate noise through the inertia, "
                 "added to filter_rate_noise")
-        .range(0.0, 1.0);
+        .range(0.0, 1.0)
+        .applies_when("filter", {"mekf"});
     t.parameter("filter_gravity_gradient", &D::filter_gravity_gradient, "",
                 "mekf with inertia: the filter propagates the rate with the gravity-gradient torque (from the "
-                "on-board orbit: reference_source onboard only)");
+                "on-board orbit: reference_source onboard only)")
+        .applies_when("filter", {"mekf"});
     t.parameter("mag_calibration", &D::mag_calibration, "",
                 "Calibrate the magnetometer in flight (scale, non-orthogonality, offset against the reference "
                 "field's magnitude; Alonso and Shuster 2002) and correct the field with it once solved");
     t.parameter("mag_calibration_sigma", &D::mag_calibration_sigma, "T",
                 "mag_calibration: 1-sigma error of one field reading per axis (weights the equations)")
-        .range(1e-10, 1e-4);
+        .range(1e-10, 1e-4)
+        .applies_when("mag_calibration", {"true"});
     t.parameter("mag_calibration_every", &D::mag_calibration_every, "",
                 "mag_calibration: samples between two calibration equations")
-        .range(1.0, 1e6);
+        .range(1.0, 1e6)
+        .applies_when("mag_calibration", {"true"});
     t.parameter("mag_calibration_min", &D::mag_calibration_min, "",
                 "mag_calibration: equations before the first solution is applied")
-        .range(10.0, 1e8);
+        .range(10.0, 1e8)
+        .applies_when("mag_calibration", {"true"});
     t.parameter("filter_reset_after", &D::filter_reset_after, "",
                 "mekf: samples in a row whose every update fails the innovation test before the filter resets "
                 "to the single-frame attitude")
-        .range(1.0, 1e6);
+        .range(1.0, 1e6)
+        .applies_when("filter", {"mekf"});
     t.parameter("filter_watch_time", &D::filter_watch_time, "s",
                 "mekf: averaging time of the divergence watch (the field's innovation in inertial axes against "
                 "its expected size; docs/filter.md); 0: off")
-        .range(0.0, 1e6);
+        .range(0.0, 1e6)
+        .applies_when("filter", {"mekf"});
     t.parameter("filter_watch_gate", &D::filter_watch_gate, "1",
                 "mekf: the watch's squared average over its expected size above which the filter is lost and "
                 "resets to the single-frame attitude (counted in filter_resets)")
-        .range(1.0, 1e6);
+        .range(1.0, 1e6)
+        .applies_when("filter", {"mekf"});
 
     t.output("q_est", &D::q_est, "1", "Estimated attitude quaternion, scalar-last [x, y, z, w], w >= 0")
         .discrete()

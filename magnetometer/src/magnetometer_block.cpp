@@ -92,7 +92,8 @@ void MagnetometerBlock::declare(fmu::Table<MagnetometerData>& t) {
              "sensor alternates set and reset every set_reset_period by itself) or none (set at power-up only)");
     t.parameter("set_reset_period", &D::set_reset_period, "s",
                 "Time between set/reset pulses when set_reset_source = timer")
-        .min(1e-4);
+        .min(1e-4)
+        .applies_when("set_reset_source", {"timer"});
     t.parameter("cross_axis", &D::cross_axis, "1",
                 "Cross-axis sensitivity: fraction of each transverse field seen by an axis")
         .range(-0.1, 0.1);

@@ -79,7 +79,8 @@ void declare_faults(fmu::Table<SsrPlantData>& t) {
              "The Hall channel's fault: offset (reads fault_hall_offset too much) or stuck (keeps the value it "
              "read at the onset)");
     t.parameter("fault_hall_offset", &D::fault_hall_offset, "A", "Offset of the faulty Hall channel (mode offset)")
-        .range(-100.0, 100.0);
+        .range(-100.0, 100.0)
+        .applies_when("fault_hall_mode", {"offset"});
     onset("fault_hall_onset", &D::fault_hall_onset, "the Hall channel fails");
     end("fault_hall_end", &D::fault_hall_end, "the Hall channel's fault");
     t.parameter("fault_appendage_face", &D::fault_appendage_face, "",
@@ -124,7 +125,8 @@ void SsrPlantBlock::declare(fmu::Table<SsrPlantData>& t) {
              "PWM modulator (switching fidelity): latched_natural (default: gate on at each period start, off "
              "when the live controller output falls to the carrier, a state event; seed scenario 15.04 V) or "
              "regular (controller sampled once per period, pulse of D*T; a 0/1 limit cycle at 300 per volt, "
-             "15.28 V at 3 per volt)");
+             "15.28 V at 3 per volt)")
+        .applies_when("fidelity", {"switching"});
     t.parameter("rated_irradiance", &D::rated_irradiance, "W/m2",
                 "Irradiance of the datasheet ratings (seed: 10 Wp at 1000 W/m2)")
         .min(1.0);

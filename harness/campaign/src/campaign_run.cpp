@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "analysis/couplings.hpp"
+#include "analysis/run_measures.hpp"
 #include "campaign_error.hpp"
 #include "draws.hpp"
 #include "engine/cosim_error.hpp"
@@ -16,6 +17,7 @@
 #include "engine/observer.hpp"
 #include "engine/run_defaults.hpp"
 #include "engine/setting.hpp"
+#include "engine/value_text.hpp"
 #include "metric_observer.hpp"
 
 namespace campaign {
@@ -31,7 +33,15 @@ std::string setting_variable(const std::string& setting) {
 void check_variable(const cosim::System& system, const std::string& name, const std::string& what) {
     if (system.is_system_parameter(name)) return;  // its name and value checked as the system was built
     const auto split = cosim::split_variable_name(name);
-    if (!split) throw CampaignError(what + ": '" + name + "' is not component.variable");
+    if (!split) {
+        // A name without a '.' is a system parameter of the .ssd (set as --set NAME=VALUE sets it).
+        std::vector<std::string> names;
+        for (const auto& p : system.description().parameters) names.push_back(p.name);
+        throw CampaignError(what + ": '" + name + "' is no system parameter of " +
+                            system.description().file.filename().string() + cosim::name_hint(name, names) +
+                            (names.empty() ? " (it has none)" : "") +
+                            "; a component's variable is named component.variable");
+    }
     const std::size_t c = system.component_index(split->component);
     const auto* v = system.components()[c].description().find_variable(split->variable);
     if (!v)
@@ -58,6 +68,18 @@ void check_value(const cosim::System& system, const std::string& setting, const 
     } catch (const std::exception& e) {
         throw CampaignError(what + ": " + e.what());
     }
+}
+
+// A system parameter's value as the run starts: as the .ssd, a parameter file or --set give it, else the
+// start value of the first component parameter it feeds (a system parameter without a value feeds nothing).
+std::optional<std::string> system_parameter_value(const cosim::System& system, const std::string& name) {
+    const auto& parameters = system.description().parameters;
+    for (std::size_t i = 0; i < parameters.size(); ++i)
+        if (parameters[i].name == name && !system.system_parameter_values()[i].value.empty())
+            return system.system_parameter_values()[i].value;
+    for (const auto& f : system.description().feeds)
+        if (f.parameter == name) return system.initial_value(system.component_index(f.component), f.variable);
+    return std::nullopt;
 }
 
 }  // namespace
@@ -102,8 +124,18 @@ CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path
     }();
     // The scenario's element set the epoch and orbit draws move or replace: as the system (and [set]) give it.
     read_scenario_base(spec, [&](const std::string& name) -> std::optional<std::string> {
+        if (system.is_system_parameter(name)) return system_parameter_value(system, name);
         const auto split = cosim::split_variable_name(name);
         if (!split) return std::nullopt;
+        // "tle_elements.tle_line1": the text set of a component the system parameter set feeds.
+        if (system.is_system_parameter(split->component + "[1]")) {
+            for (const auto& f : system.description().feeds)
+                if (f.parameter == split->component + "[1]")
+                    if (auto text = system.initial_value(system.component_index(f.component), split->variable);
+                        text && !text->empty())
+                        return text;
+            return std::nullopt;
+        }
         return system.initial_value(system.component_index(split->component), split->variable);
     });
     for (const auto& setting : s.options.settings) check_variable(system, setting_variable(setting), "[set]");
@@ -151,6 +183,13 @@ CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path
                   << (spec.runs < grid ? " (" + std::to_string(grid - spec.runs) + " combinations are never run)"
                                        : std::string(" (some run once more than others)"))
                   << "; give a multiple of " << grid << " in 'runs' or --runs\n";
+    // What the system declares it reached: recorded in every run, beside the spec's metrics.
+    if (s.description.measures) {
+        analysis::check_measure_names(s.description.measures->report, spec.system.string());
+        spec.measures = true;
+        spec.measure_report = s.description.measures->report;
+        spec.measures_converged_after = s.description.measures->converged_after;
+    }
     s.spec = std::move(spec);
     return s;
 }
@@ -170,6 +209,11 @@ RunResult run_one(const CampaignSetup& setup, long index, const std::optional<st
         MetricObserver metrics(setup.spec.metrics, system, which ? &setup.spec.cases[*which] : nullptr);
         cosim::InterruptCheck interrupt;  // a signal ends the campaign, not just this run
         std::vector<cosim::Observer*> observers = {&interrupt, &metrics};
+        std::unique_ptr<analysis::MeasureRecorder> measures;
+        if (setup.spec.measures) {
+            measures = std::make_unique<analysis::MeasureRecorder>(system);
+            observers.push_back(measures.get());
+        }
         std::unique_ptr<cosim::CsvWriter> csv;
         if (full_csv) {
             csv = std::make_unique<cosim::CsvWriter>(*full_csv, system, std::vector<std::string>{});
@@ -182,6 +226,14 @@ RunResult run_one(const CampaignSetup& setup, long index, const std::optional<st
         ex.relative_tolerance = setup.tolerance;
         const auto stats = cosim::Execution(system, ex).run(observers);
         r.metric_cells = metrics.cells();
+        if (measures) {
+            analysis::MeasureOptions mo;
+            mo.converged_after = setup.spec.measures_converged_after;
+            // The same text as the metrics' cells: round-trip numbers, "nan" where the run has none.
+            for (const double v :
+                 analysis::measure_values(analysis::measure_run(measures->table(), mo), setup.spec.measure_report))
+                r.metric_cells.push_back(cosim::format_real(v));
+        }
         r.status = stats.terminated_early ? "stopped" : "ok";
         if (stats.terminated_early)
             r.message = "a component ended the run at t = " + std::to_string(stats.simulated_time) + " s";

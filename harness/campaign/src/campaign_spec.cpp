@@ -102,6 +102,18 @@ void check_target(const Context& cx, const toml::node& at, const std::string& ta
         cx.fail(at, what + ": '" + target + "' is not component.variable");
 }
 
+// A name without a '.' (and nothing a setting would split on): a system parameter of the .ssd, or its prefix
+// ("epoch" for epoch_year .. epoch_second), checked against the system when it loads (campaign_run.cpp).
+bool system_parameter_name(const std::string& name) {
+    return !name.empty() && name.find_first_of(".=,\"\n ") == std::string::npos;
+}
+
+// What a draw sets: component.variable (prefix), or a system parameter (prefix) set as `--set NAME=VALUE`
+// sets it, for every component it feeds.
+void check_draw_target(const Context& cx, const toml::node& at, const std::string& target, const std::string& what) {
+    if (!system_parameter_name(target)) check_target(cx, at, target, what);
+}
+
 std::vector<SpecValue> value_list(const Context& cx, const toml::table& t, const std::string& where) {
     const auto& n = required(cx, t, "values", where);
     const auto* arr = n.as_array();
@@ -111,15 +123,17 @@ std::vector<SpecValue> value_list(const Context& cx, const toml::table& t, const
     return out;
 }
 
+// What a list names: plain words, component.variable columns, or what a draw sets (check_draw_target).
+enum class Names { plain, variables, draw_targets };
 std::vector<std::string> name_list(const Context& cx, const toml::node& n, const std::string& what,
-                                   bool variables = true);
+                                   Names names = Names::variables);
 
 Draw read_draw(const Context& cx, const toml::table& t, std::size_t index, const std::string& prefix = "") {
     const std::string where = prefix + "draw " + std::to_string(index + 1);
     Draw d;
     const std::string kind = string(cx, required(cx, t, "kind", where), where + ": 'kind'");
     d.target = string(cx, required(cx, t, "target", where), where + ": 'target'");
-    check_target(cx, t, d.target, where);
+    check_draw_target(cx, t, d.target, where);
     auto range = [&](const char* lo, const char* hi, bool allow_equal) {
         d.min = number(cx, required(cx, t, lo, where), where + ": '" + lo + "'");
         d.max = number(cx, required(cx, t, hi, where), where + ": '" + hi + "'");
@@ -193,8 +207,9 @@ Draw read_draw(const Context& cx, const toml::table& t, std::size_t index, const
         d.epoch_to = epoch_seconds(cx, required(cx, t, "to", where), where + ": 'to'");
         if (d.epoch_to - d.epoch_from < 1e-3)
             cx.fail(t, where + ": 'to' must be after 'from' (epochs are drawn to the millisecond)");
-        if (const auto* n = t.get("clocks")) d.clocks = name_list(cx, *n, where + ": 'clocks'");
-        if (const auto* n = t.get("element_sets")) d.element_sets = name_list(cx, *n, where + ": 'element_sets'");
+        if (const auto* n = t.get("clocks")) d.clocks = name_list(cx, *n, where + ": 'clocks'", Names::draw_targets);
+        if (const auto* n = t.get("element_sets"))
+            d.element_sets = name_list(cx, *n, where + ": 'element_sets'", Names::draw_targets);
     } else if (kind == "orbit") {
         only_keys(cx, t, where,
                   {"kind", "target", "figure", "stream", "classes", "min_altitude", "max_altitude", "min_ltan",
@@ -204,7 +219,7 @@ Draw read_draw(const Context& cx, const toml::table& t, std::size_t index, const
                                                                   {"iss_like", OrbitClass::iss_like},
                                                                   {"polar", OrbitClass::polar},
                                                                   {"low_inclination", OrbitClass::low_inclination}};
-        for (const auto& name : name_list(cx, required(cx, t, "classes", where), where + ": 'classes'", false)) {
+        for (const auto& name : name_list(cx, required(cx, t, "classes", where), where + ": 'classes'", Names::plain)) {
             const auto it = classes.find(name);
             if (it == classes.end())
                 cx.fail(t, where + ": unknown orbit class '" + name +
@@ -225,7 +240,7 @@ Draw read_draw(const Context& cx, const toml::table& t, std::size_t index, const
                 cx.fail(t, where + ": the local times of the node must lie within [0, 24] h");
         }
         d.min = d.max = 0.0;
-        if (const auto* n = t.get("copies")) d.copies = name_list(cx, *n, where + ": 'copies'");
+        if (const auto* n = t.get("copies")) d.copies = name_list(cx, *n, where + ": 'copies'", Names::draw_targets);
     } else {
         cx.fail(t, where + ": unknown kind '" + kind +
                        "' (uniform, normal, integer, choice, grid, list, quaternion, tumble, epoch, orbit)");
@@ -249,7 +264,7 @@ bool valid_stat(const std::string& s) {
 }
 
 // A column or group name, or a non-empty array of them.
-std::vector<std::string> name_list(const Context& cx, const toml::node& n, const std::string& what, bool variables) {
+std::vector<std::string> name_list(const Context& cx, const toml::node& n, const std::string& what, Names names) {
     std::vector<std::string> out;
     if (n.is_string()) {
         out.push_back(string(cx, n, what));
@@ -259,7 +274,8 @@ std::vector<std::string> name_list(const Context& cx, const toml::node& n, const
         cx.fail(n, what + " must be a string or a non-empty array of strings");
     }
     for (std::size_t i = 0; i < out.size(); ++i) {
-        if (variables) check_target(cx, n, out[i], what);
+        if (names == Names::variables) check_target(cx, n, out[i], what);
+        if (names == Names::draw_targets) check_draw_target(cx, n, out[i], what);
         for (std::size_t j = 0; j < i; ++j)
             if (out[i] == out[j]) cx.fail(n, what + ": '" + out[i] + "' listed twice");
     }
@@ -395,8 +411,7 @@ std::vector<std::string> read_settings(const Context& cx, const toml::node& n, c
     std::vector<std::string> out;
     for (const auto& [key, value] : *t) {
         const std::string name(key.str());
-        const bool system_parameter = !name.empty() && name.find_first_of(".=,\"\n ") == std::string::npos;
-        if (!system_parameter) check_target(cx, value, name, where);
+        if (!system_parameter_name(name)) check_target(cx, value, name, where);
         out.push_back(name + "=" + scalar(cx, value, where + " " + name).text);
     }
     return out;

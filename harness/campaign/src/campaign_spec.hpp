@@ -146,6 +146,11 @@ struct CampaignSpec {
     std::vector<Draw> draws;
     std::vector<Metric> metrics;
     std::vector<Case> cases;  // empty: every run alike
+    // What the system declares it reached (<ex:Measures>, analysis/run_measures.hpp), set by prepare():
+    // each run records it and its table and summary get the measure columns (analysis::measure_columns).
+    bool measures = false;
+    std::vector<std::string> measure_report;
+    std::optional<double> measures_converged_after;
 };
 
 // Limits, named in the errors that enforce them.

@@ -1,5 +1,7 @@
 #include "metric_observer.hpp"
 
+#include "analysis/run_measures.hpp"
+
 #include <array>
 #include <cmath>
 #include <utility>
@@ -28,6 +30,8 @@ std::vector<std::string> metric_columns(const CampaignSpec& spec) {
     std::vector<std::string> out;
     for (const auto& m : spec.metrics)
         for (const auto& s : m.stats) out.push_back(m.name + "." + s);
+    if (spec.measures)
+        for (const auto& c : analysis::measure_columns(spec.measure_report)) out.push_back(c);
     return out;
 }
 

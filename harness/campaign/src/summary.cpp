@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "analysis/run_measures.hpp"
 #include "campaign_error.hpp"
 #include "draws.hpp"
 #include "engine/cosim_error.hpp"
@@ -393,6 +394,20 @@ std::vector<std::filesystem::path> draw_figures(const std::filesystem::path& dir
     return written;
 }
 
+void print_measures_over_runs(const CampaignSpec& spec, const ResultRows& table, std::ostream& out) {
+    if (!spec.measures) return;
+    bool said = false;
+    for (const auto& name : analysis::measure_columns(spec.measure_report)) {
+        auto v = table.finished_values(name);
+        if (v.empty()) continue;
+        std::sort(v.begin(), v.end());
+        if (!said) out << "what the runs reached (the system's declared measures; angles in degrees, over runs):\n";
+        said = true;
+        out << std::setprecision(4) << "  " << name << ": median " << percentile(v, 50) << ", p95 " << percentile(v, 95)
+            << ", max " << v.back() << " (" << v.size() << " runs)\n";
+    }
+}
+
 void write_summary(const std::filesystem::path& file, const CampaignSetup& setup, const ResultRows& table,
                    const CampaignStatistics& stats, const std::vector<std::filesystem::path>& figures,
                    const std::string& figure_note) {
@@ -460,7 +475,11 @@ void write_summary(const std::filesystem::path& file, const CampaignSetup& setup
         }
     };
     md << "\n## Metrics across runs\n\nPercentiles over the runs that finished (ok or stopped early) with a value; "
-          "angles in degrees.\n\n";
+          "angles in degrees.";
+    if (spec.measures)
+        md << " The `measure.*` columns are what the system declares it reached (its `<ex:Measures>`: the same "
+              "numbers as the end of `cosim run`; `run` the whole run, `converged` after convergence).";
+    md << "\n\n";
     metrics_table([](const auto&) { return true; });
     // The compared designs apart: one table per value of each grid draw (averaging them together would
     // mix what the grid separates).

@@ -13,12 +13,16 @@
 #include <fstream>
 #include <sstream>
 
+#include "analysis/run_measures.hpp"
 #include "campaign_command.hpp"
 #include "campaign_error.hpp"
 #include "campaign_run.hpp"
 #include "campaign_spec.hpp"
 #include "draws.hpp"
 #include "engine/csv_table.hpp"
+#include "engine/execution.hpp"
+#include "engine/system.hpp"
+#include "engine/value_text.hpp"
 #include "results_table.hpp"
 
 using namespace campaign;
@@ -427,5 +431,86 @@ TEST(Campaign, ParameterFilesOfTheSpecReachEveryRun) {
     const double mu = 398600.4418e9, n = 15.5 * 2.0 * M_PI / 86400.0;
     const double kepler = std::cbrt(mu / (n * n)) / 6378137.0;
     EXPECT_NEAR(std::stod(cells[static_cast<std::size_t>(at)]), kepler, 0.003);
+    std::filesystem::remove_all(dir);
+}
+
+// A draw may target a system parameter of the .ssd, set as `--set NAME=VALUE` sets it: it feeds every
+// component it is connected to (leo_orbit's epoch_month feeds env.epoch_month and est.clock_epoch_month).
+// An unknown name is refused before any run with the closest system parameter.
+TEST(Campaign, DrawsOnSystemParameters) {
+    const auto write_spec = [](const std::string& name, const std::string& target) {
+        const auto file = fresh_dir(name + "_spec");
+        std::filesystem::create_directories(file);
+        std::ofstream out(file / "spec.toml");
+        out << "system = \"" << CAMPAIGN_TEST_SPECS << "/../../../systems/leo_orbit.ssd\"\nstop_time = 2.0\n"
+            << "output_interval = 1.0\nruns = 2\nseed = 7\n[[draw]]\nkind = \"integer\"\ntarget = \"" << target
+            << "\"\nmin = 3\nmax = 3\n[[metric]]\nname = \"light\"\nkind = \"column\"\ncolumn = "
+            << "\"env.irradiance\"\nstats = [\"final\"]\n";
+        return file / "spec.toml";
+    };
+    const CampaignSetup setup = prepare(read_spec(write_spec("sysparam", "epoch_month")), {PVATT_FMU_DIR}, {});
+    const auto drawn = draw_run(setup.spec, 0).settings;
+    EXPECT_EQ(drawn, std::vector<std::string>{"epoch_month=3"});
+    auto options = setup.options;
+    options.settings.insert(options.settings.end(), drawn.begin(), drawn.end());
+    const cosim::System system(setup.description, options);  // the run's system: both blocks get the month
+    EXPECT_EQ(system.initial_value(system.component_index("env"), "epoch_month"), "3");
+    EXPECT_EQ(system.initial_value(system.component_index("est"), "clock_epoch_month"), "3");
+    std::string refused;
+    try {
+        (void)prepare(read_spec(write_spec("sysparam_typo", "epoch_mnth")), {PVATT_FMU_DIR}, {});
+    } catch (const std::exception& e) {
+        refused = e.what();
+    }
+    EXPECT_NE(refused.find("'epoch_mnth' is no system parameter of leo_orbit.ssd (did you mean 'epoch_month'?)"),
+              std::string::npos)
+        << refused;
+}
+
+// A campaign over a system that declares its measures (seed_spin: the sun vector and the single-frame
+// attitude) records them per run, from the same code as the end of `cosim run`: the run's cells equal
+// analysis::measure_run on the same run made directly, and the end of the campaign says them over runs.
+TEST(Campaign, DeclaredMeasuresPerRunAndOverRuns) {
+    const auto dir = fresh_dir("measures");
+    std::filesystem::create_directories(dir);
+    const std::string ssd = std::string(CAMPAIGN_TEST_SPECS) + "/../../../systems/seed_spin.ssd";
+    {
+        std::ofstream spec(dir / "spec.toml");
+        spec << "system = \"" << ssd << "\"\nstop_time = 0.5\noutput_interval = 0.05\nruns = 1\nseed = 3\n"
+             << "[[metric]]\nname = \"bus\"\nkind = \"column\"\ncolumn = \"plant.v_bus\"\nstats = [\"final\"]\n";
+    }
+    auto o = options_for("leo_short.toml", dir / "out");
+    o.spec = dir / "spec.toml";
+    o.figures = false;
+    std::ostringstream out;
+    ASSERT_EQ(run_campaign(o, out), 0) << out.str();
+    EXPECT_NE(out.str().find("measure.sun_vector.run.all.p50: median "), std::string::npos) << out.str();
+    const auto rows = lines_of(dir / "out" / "results.csv");
+    ASSERT_EQ(rows.size(), 2u);
+    const auto header = split_csv_line(rows[0]), cells = split_csv_line(rows[1]);
+    const auto cell = [&](const std::string& name) {
+        const auto at = std::find(header.begin(), header.end(), name) - header.begin();
+        return static_cast<std::size_t>(at) < header.size() ? cells[static_cast<std::size_t>(at)] : "absent";
+    };
+    // The same run made directly.
+    cosim::SystemOptions options;
+    options.fmu_dirs = {PVATT_FMU_DIR};
+    const auto description = cosim::read_system_description(ssd);
+    ASSERT_TRUE(description.measures);
+    cosim::System system(description, options);
+    analysis::MeasureRecorder recorder(system);
+    cosim::ExecutionOptions ex;
+    ex.stop_time = 0.5;
+    ex.output_interval = 0.05;
+    std::vector<cosim::Observer*> observers{&recorder};
+    (void)cosim::Execution(system, ex).run(observers);
+    const auto m = analysis::measure_run(recorder.table());
+    ASSERT_EQ(m.sun_vectors.size(), 1u);
+    ASSERT_EQ(m.estimates.size(), 1u);
+    EXPECT_EQ(cell("measure.sun_vector.run.all.p50"), cosim::format_real(m.sun_vectors[0].overall.all.median));
+    EXPECT_EQ(cell("measure.sun_vector.run.all.p95"), cosim::format_real(m.sun_vectors[0].overall.all.p95));
+    EXPECT_EQ(cell("measure.single_frame.run.all.p95"), cosim::format_real(m.estimates[0].overall.all.p95));
+    EXPECT_EQ(cell("measure.single_frame.first_valid"), "0");
+    EXPECT_EQ(cell("measure.filter.run.all.p50"), "nan");  // the seed runs no filter
     std::filesystem::remove_all(dir);
 }

@@ -106,7 +106,10 @@ TEST(Spec, MistakesAreErrorsWithTheirPlace) {
               std::string::npos);
     EXPECT_NE(error_of(head + "[[draw]]\nkind = \"gauss\"\ntarget = \"a.x\"\n").find("unknown kind 'gauss'"),
               std::string::npos);
-    EXPECT_NE(error_of(head + "[[draw]]\nkind = \"uniform\"\ntarget = \"x\"\nmin = 0\nmax = 1\n")
+    EXPECT_NE(error_of(head + "[[draw]]\nkind = \"uniform\"\ntarget = \"a.\"\nmin = 0\nmax = 1\n")
+                  .find("not component.variable"),
+              std::string::npos);
+    EXPECT_NE(error_of(head + "[[draw]]\nkind = \"uniform\"\ntarget = \"x y\"\nmin = 0\nmax = 1\n")
                   .find("not component.variable"),
               std::string::npos);
     // [4, 5] sd 1 around 0: Phi(5) - Phi(4) = 3.2e-5, below the 1e-3 limit.

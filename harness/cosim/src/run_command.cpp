@@ -141,7 +141,16 @@ RunStatistics run_system(const RunOptions& options, std::ostream& report) {
     }
     std::unique_ptr<CsvWriter> csv;
     if (options.csv) {
-        csv = std::make_unique<CsvWriter>(*options.csv, system, options.columns);
+        // A run that injects faults writes each one's onset parameter as a column beside the outputs: the CSV
+        // alone then gives `cosim plot` the onsets to mark (analysis::measure_run reads them back).
+        std::vector<std::string> columns = options.columns;
+        if (const auto onsets = analysis::onset_columns(analysis::fault_onsets(system));
+            columns.empty() && !onsets.empty()) {
+            for (const auto& c : output_columns(system, {}))
+                columns.push_back(system.components()[c.component].name + "." + c.variable->name);
+            columns.insert(columns.end(), onsets.begin(), onsets.end());
+        }
+        csv = std::make_unique<CsvWriter>(*options.csv, system, columns);
         check_output_size(ex, *csv, options.force, std::cerr);
         observers.push_back(csv.get());
     }

@@ -63,12 +63,22 @@ struct Style {
     std::string format = "png";
     const std::vector<double>* irradiance = nullptr;  // 0 in the Earth's shadow; null: no shading
     std::vector<FaultDeclaration> marks;              // a vertical line at each fault's declaration
+    std::vector<FaultOnset> onsets;                   // and at each injected fault's onset
 };
 
 // gnuplot commands for the fault declarations: a dashed red line from the bottom to the top of the plot at
 // each, labelled at its top (the label through gnuplot_string: quotes doubled, control characters gone).
-std::string fault_marks(const std::vector<FaultDeclaration>& marks) {
+std::string fault_marks(const std::vector<FaultDeclaration>& marks, const std::vector<FaultOnset>& onsets) {
     std::string out;
+    // Each injected fault's onset: a dotted orange line, labelled at its foot.
+    for (const auto& f : onsets) {
+        char t[40];
+        std::snprintf(t, sizeof t, "%.17g", f.onset);
+        out += std::string("set arrow from ") + t + ", graph 0 to " + t +
+               ", graph 1 nohead dashtype 3 lw 1.5 lc rgb 'dark-orange' front\n" + "set label " +
+               gnuplot_string("onset: " + (f.component.empty() ? "" : f.component + " ") + f.group) + " at " + t +
+               ", graph 0.02 rotate by 90 left offset -0.6,0 font ',8' tc rgb 'dark-orange' front\n";
+    }
     for (const auto& m : marks) {
         char t[40];
         std::snprintf(t, sizeof t, "%.17g", m.time);
@@ -114,7 +124,7 @@ std::filesystem::path draw(const std::filesystem::path& out_dir, const Style& st
     std::string script = "set terminal " + terminal + "\nset output " + gnuplot_string(image) + "\nset title " +
                          gnuplot_string(title) + "\nset xlabel 'time (s)'\nset ylabel " + gnuplot_string(ylabel) +
                          "\nset grid\nset key below\nset datafile missing 'nan'\n" + flat_range(series, first_row) +
-                         fault_marks(style.marks);
+                         fault_marks(style.marks, style.onsets);
     std::string plots;
     if (shaded) {
         // Eclipse rows as boxes of height 1 on the second y axis (0..1, not shown): grey bands behind.
@@ -281,7 +291,10 @@ std::vector<std::filesystem::path> plot_results(const std::filesystem::path& csv
     style.irradiance = column("irradiance");
     // What the run reached (per phase, after convergence, the filter's consistency) and the faults declared.
     const RunMeasures measures = measure_run(table);
-    if (!close_up_csv(time)) style.marks = measures.declarations;
+    if (!close_up_csv(time)) {
+        style.marks = measures.declarations;
+        style.onsets = measures.injected;
+    }
     // --columns: any variables against time, in one figure.
     if (!options.columns.empty()) {
         std::vector<Series> chosen;

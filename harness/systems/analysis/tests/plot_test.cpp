@@ -140,9 +140,10 @@ TEST(CosimPlot, AFailingFigureFailsAloneAndLeavesNoPng) {
 }
 
 // Issue 40: the page says what the run reached (per phase, the chi-square coverage) and marks each fault
-// the on-board computer declared on the figures; the battery's axis says what it is. The filter is 1 deg
+// the on-board computer declared on the figures, and each injected fault's onset (the onset column `cosim
+// run` writes) with the delay to the declaration; the battery's axis says what it is. The filter is 1 deg
 // off about z with sigma 1 deg per axis (epsilon = 1 at every sample: coverage 100 %, NEES/dof 1/3), sunlit
-// for the first half; face +y is declared at t = 0.5 s.
+// for the first half; the shadow falls on the plant at 0.3 s, face +y is declared at t = 0.5 s.
 TEST(CosimPlot, ThePageSaysWhatTheRunReachedAndMarksTheFaults) {
     const auto dir = std::filesystem::temp_directory_path() /
                      ("cosim_plot_measures_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
@@ -154,7 +155,7 @@ TEST(CosimPlot, ThePageSaysWhatTheRunReachedAndMarksTheFaults) {
                "est.q_filt[3],est.q_filt[4],est.filter_valid,env.irradiance,plant.soc";
         for (int i = 1; i <= 6; ++i) out << ",est.attitude_cov_sqrt[" << i << "]";
         for (int i = 1; i <= 6; ++i) out << ",est.fault_face_time[" << i << "]";
-        out << "\n";
+        out << ",plant.fault_shadow_onset\n";
         const double s = M_PI / 180.0, h = 0.5 * s;
         for (int k = 0; k <= 10; ++k) {
             const double t = 0.1 * k, turn = 0.01 * k;  // the truth turns; the filter stays 1 deg behind
@@ -162,7 +163,7 @@ TEST(CosimPlot, ThePageSaysWhatTheRunReachedAndMarksTheFaults) {
                 << "," << std::cos(turn / 2 - h) << ",1," << (k < 5 ? 1361 : 0) << "," << 0.9 + 0.001 * k << "," << s
                 << ",0," << s << ",0,0," << s;
             for (int f = 1; f <= 6; ++f) out << "," << (f == 3 && k >= 5 ? 0.5 : -1.0);
-            out << "\n";
+            out << ",0.3\n";
         }
     }
     std::ostringstream notes;
@@ -176,12 +177,16 @@ TEST(CosimPlot, ThePageSaysWhatTheRunReachedAndMarksTheFaults) {
                         "<td>100.0 %</td>"),
               std::string::npos)
         << html;
-    EXPECT_NE(html.find("<li>panel face +y at 0.5 s</li>"), std::string::npos) << html;
+    EXPECT_NE(html.find("<li>fault injected: plant shadow from 0.3 s</li>"), std::string::npos) << html;
+    EXPECT_NE(html.find("<li>fault declared: panel face +y at 0.5 s, 0.2 s after the onset of plant shadow</li>"),
+              std::string::npos)
+        << html;
     const auto read = [&](const char* name) {
         std::ifstream f(dir / name);
         return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
     };
     EXPECT_NE(read("attitude_error.svg").find("declared: panel face +y"), std::string::npos);
+    EXPECT_NE(read("attitude_error.svg").find("onset: plant shadow"), std::string::npos);
     EXPECT_NE(read("battery_soc.svg").find("state of charge (0 to 1)"), std::string::npos);
     std::filesystem::remove_all(dir);
 }

@@ -109,11 +109,34 @@ TEST(RunMeasures, EndOfRunTextSaysEachPhaseTheCoverageAndTheFaults) {
         << s;
     EXPECT_NE(s.find("fault injected: mag stuck (fault_stuck_axis = 3) from 33 s"), std::string::npos) << s;
     EXPECT_NE(s.find("fault declared: magnetometer axis z at 35 s"), std::string::npos) << s;
+    // Each declaration after an onset says how long it took (the latest onset at or before it).
+    EXPECT_NE(s.find("fault declared: magnetometer axis z at 35 s, 2 s after the onset of mag stuck"),
+              std::string::npos)
+        << s;
+    EXPECT_NE(s.find("fault declared: panel face +y at 25 s\n"), std::string::npos) << s;  // before any onset
     // Only what the system asks for.
     std::ostringstream faults_only;
     print_measures(measure_run(overconfident_filter()), {}, {"faults"}, faults_only);
     EXPECT_EQ(faults_only.str().find("attitude error"), std::string::npos) << faults_only.str();
     EXPECT_NE(faults_only.str().find("panel face +y at 25 s"), std::string::npos);
+}
+
+// A CSV written by `cosim run` holds each injected fault's onset as a column: the same lines come from it.
+TEST(RunMeasures, OnsetColumnsOfACsvGiveTheSameFaultLines) {
+    auto t = overconfident_filter();
+    t.names.push_back("mag.fault_stuck_onset");
+    t.columns.push_back(std::vector<double>(t.rows(), 33.0));
+    const RunMeasures m = measure_run(t);
+    ASSERT_EQ(m.injected.size(), 1u);
+    EXPECT_EQ(m.injected[0].component, "mag");
+    EXPECT_EQ(m.injected[0].group, "stuck");
+    EXPECT_EQ(m.injected[0].onset, 33.0);
+    EXPECT_EQ(onset_columns(m.injected), std::vector<std::string>{"mag.fault_stuck_onset"});
+    const auto lines = fault_lines(m);
+    ASSERT_EQ(lines.size(), 3u);
+    EXPECT_EQ(lines[0], "fault injected: mag stuck from 33 s");
+    EXPECT_EQ(lines[1], "fault declared: panel face +y at 25 s");
+    EXPECT_EQ(lines[2], "fault declared: magnetometer axis z at 35 s, 2 s after the onset of mag stuck");
 }
 
 TEST(RunMeasures, UnknownMeasureNameRefusedWithTheClosest) {

@@ -51,6 +51,7 @@ struct SpanMeasures {
 
 struct EstimateMeasures {
     std::string name;  // "filter q_filt", "single-frame q_est"
+    std::string key;   // "filter", "single_frame", "sun_vector": its columns' names (measure_columns)
     SpanMeasures overall;
     std::optional<SpanMeasures> converged;  // after `converged_from`, when that is inside the run
     std::optional<double> first_valid;      // the first sample it was valid at (s)
@@ -62,8 +63,18 @@ struct FaultDeclaration {
     double time = 0.0;
 };
 
+// A fault injected through a block's parameters (fault_onsets below, or a CSV's onset columns).
+struct FaultOnset {
+    std::string component, group;  // "mag", "stuck"
+    std::string settings;          // "fault_stuck_axis = 2" (empty when read from a CSV's onset column)
+    double onset = 0.0;
+};
+
 struct RunMeasures {
     std::vector<EstimateMeasures> estimates;
+    // The measured sun vector (sun_meas, unit, body axes) against the truth's (sun_body) at the on-board
+    // computer's samples while sun_valid: the angle between them (deg); no consistency.
+    std::vector<EstimateMeasures> sun_vectors;
     // Where "after convergence" starts (s): the .ssd's declaration, else when the filter was valid with the
     // in-flight magnetometer calibration applied (both columns present), else nothing.
     std::optional<double> converged_from;
@@ -71,7 +82,8 @@ struct RunMeasures {
     // Why the filter was not valid from the start: its 3σ bound at its first sample and when it came down.
     std::string not_valid_reason;
     std::vector<FaultDeclaration> declarations;
-    bool phases = false;  // the table had an irradiance column: sunlit and eclipse are split
+    std::vector<FaultOnset> injected;  // from the table's onset columns (onset_columns), by onset
+    bool phases = false;               // the table had an irradiance column: sunlit and eclipse are split
 };
 
 struct MeasureOptions {
@@ -86,8 +98,9 @@ RunMeasures measure_run(const cosim::CsvTable& table, const MeasureOptions& opti
 void print_measures(const RunMeasures& m, std::ostream& out);
 
 // The same as one JSON object (numbers null where NaN), for pvatt.analysis through the C API:
-// {"estimates": [{"name", "first_valid", "overall": SPAN, "converged": SPAN|null}], "converged_from",
-//  "converged_because", "not_valid_reason", "phases", "declarations": [{"what", "time"}]} with SPAN
+// {"estimates": [{"name", "first_valid", "overall": SPAN, "converged": SPAN|null}], "sun_vectors": [the same],
+//  "converged_from",
+//  "converged_because", "not_valid_reason", "phases", "declarations": [{"what", "time"}], "injected": [{"component", "group", "onset"}]} with SPAN
 // {"all"|"sunlit"|"eclipse": {"samples", "median", "p95"}, "consistency": {"samples", "nees_per_dof",
 //  "chi2_coverage"}|null}.
 std::string measures_json(const RunMeasures& m);
@@ -100,22 +113,40 @@ std::string measures_html(const RunMeasures& m);
 //   consistency  the filter's NEES/dof and chi2(3) 99 % coverage beside its errors
 //   first_valid  when each estimate was first valid, and why the filter was not valid before
 //   faults       the faults injected (the blocks' fault_* parameters) and those the on-board computer declared
-inline const std::vector<std::string> measure_names = {"attitude", "consistency", "first_valid", "faults"};
+//   sun_vector   the error of the measured sun vector (sun_meas against sun_body), median and p95 as attitude
+inline const std::vector<std::string> measure_names = {"attitude", "consistency", "first_valid", "faults",
+                                                       "sun_vector"};
+
+// The declared measures as numbers, one column each, for a campaign's results table and summary: named
+// "measure.<estimate>.<span>.<phase>.<stat>" (estimate filter, single_frame or sun_vector; span run or
+// converged; phase all, sunlit or eclipse; stat p50 or p95), "measure.filter.<span>.nees_per_dof" and
+// ".chi2_99" (consistency), "measure.<estimate>.first_valid" (first_valid). The columns depend on `report`
+// alone (all when empty; faults has none: a campaign measures them with its detection metrics), so that
+// every run of a campaign has the same; measure_values gives a run's, NaN where it has none.
+std::vector<std::string> measure_columns(const std::vector<std::string>& report);
+std::vector<double> measure_values(const RunMeasures& m, const std::vector<std::string>& report);
 
 // Throws CosimError naming a report item that is not one of measure_names (with the closest one).
 void check_measure_names(const std::vector<std::string>& report, const std::string& where);
 
 // A fault injected through a block's parameters: group G of `component` is injected when a parameter
 // fault_G_* other than its onset and end differs from the FMU's start value; its onset is fault_G_onset.
-struct FaultOnset {
-    std::string component, group;  // "mag", "stuck"
-    std::string settings;          // "fault_stuck_axis = 2"
-    double onset = 0.0;
-};
-std::vector<FaultOnset> fault_onsets(cosim::System& system);
+// Read from the values the run gives (System::initial_value: its bindings, parameter files, --set), so
+// before the run as well as after it.
+std::vector<FaultOnset> fault_onsets(const cosim::System& system);
 
-// The end of `cosim run` for a system that declares its measures: the items of `report` only (all when
-// empty), faults injected beside those declared.
+// The columns `cosim run` adds to its CSV for the faults it injects ("mag.fault_stuck_onset"), so that the
+// CSV alone gives `cosim plot` (measure_run) each onset.
+std::vector<std::string> onset_columns(const std::vector<FaultOnset>& injected);
+
+// The faults of a run, one line each, the one text of the end of `cosim run` and of the results page:
+// "fault injected: mag stuck (fault_stuck_axis = 2) from 3000 s", "fault declared: magnetometer axis y
+// (fault word 4) at 3012.5 s, 12.5 s after the onset of mag stuck" (the latest onset at or before it),
+// "no fault declared by the on-board computer" when faults were injected and none declared.
+std::vector<std::string> fault_lines(const RunMeasures& m);
+
+// The end of `cosim run` for a system that declares its measures: the items of `report` only (all but
+// sun_vector when empty), faults injected (`injected`, with their settings, in place of m.injected) beside those declared.
 void print_measures(const RunMeasures& m, const std::vector<FaultOnset>& injected,
                     const std::vector<std::string>& report, std::ostream& out);
 
