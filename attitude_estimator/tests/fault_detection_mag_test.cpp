@@ -281,6 +281,75 @@ TYPED_TEST(EstimatorCoreMagFaults, AStuckAxisInAStrongFieldIsStillDeclaredNoFlip
     EXPECT_EQ(excluded_axes(s), 0b100);
 }
 
+// The readings through the bundled converters (issue 39): 12 bits over 0 … 5 V, one step q = 5 / 4095 V
+// (0.122 µT at S = 1e4 V/T), the reading v − v_ref with v_ref at 2.5 V. Each channel's code toggles by
+// one step between samples (analog noise across a code boundary): v's every sample, v_ref's every other
+// pair, so two readings in a row differ by 0, 1 or 2 steps. mag_reading_step holds one step of each.
+template <class T>
+struct Quantized {
+    static constexpr double q = 5.0 / 4095.0;
+    static long code(double v) { return std::lround(v / q); }
+    // The reading of a voltage v at sample i, with the toggling codes.
+    static T reading(double v, int i) {
+        const long cv = code(v) + (i % 2), cref = code(2.5) + ((i / 2) % 2);
+        return static_cast<T>(static_cast<double>(cv - cref) * q);
+    }
+    static void set_step(FaultObservation<T>& o) {
+        for (std::size_t k = 0; k < 3; ++k) o.mag_reading_step[k] = static_cast<T>(2.0 * q);
+    }
+};
+
+// z stuck at its sample-100 output (−40 µT, a set) read through the toggling converters: half differences
+// of 0 and 0.061 µT, the latter above the 0.02 µT tolerance, so a test blind to the steps saw it "move"
+// on every other pair and never confirmed. Below 2 × 2q / 2S = 0.244 µT it did not move: still declared
+// "no flip" at its 100th failing sample, 200 (t = 10 s).
+TYPED_TEST(EstimatorCoreMagFaults, AnAxisStuckWithConverterStepNoiseIsStillDeclared) {
+    using T = TypeParam;
+    using Q = Quantized<T>;
+    const Field<T> f;
+    FaultDetectionState<T> s;
+    const double latched = 2.5 + static_cast<double>(f.s * f.b[2] + f.v_os);
+    for (int i = 0; i < 400; ++i) {
+        auto o = f.observation(i);
+        Q::set_step(o);
+        for (std::size_t k = 0; k < 2; ++k)
+            o.mag_reading[k] = Q::reading(2.5 + static_cast<double>(o.polarity * f.s * f.b[k] + f.v_os), i);
+        o.mag_reading[2] = i >= 100 ? Q::reading(latched, i)
+                                    : Q::reading(2.5 + static_cast<double>(o.polarity * f.s * f.b[2] + f.v_os), i);
+        fault_detect(s, o, enabled<T>());
+    }
+    EXPECT_EQ(s.axis_word[2] & kFaultAxisNoFlip, kFaultAxisNoFlip);
+    EXPECT_NEAR(s.axis_time[2], 10.0, 0.051);
+    EXPECT_EQ(s.axis_word[0] | s.axis_word[1], 0u);
+}
+
+// A healthy axis in a weak field, through the same toggling converters: y at 1.2 µT (above the frozen
+// test's 1 µT bar, below the flip test's 3 µT) flips by 2 S B_y = 24 mV, about 20 steps, give or take two:
+// its half difference 1.2 ± 0.12 µT stays above the 0.244 µT bar, nothing declared over 20 s. A bar ten
+// times the steps (1.22 µT) would call it frozen.
+TYPED_TEST(EstimatorCoreMagFaults, AHealthyAxisWithConverterStepNoiseIsNotTakenForFrozen) {
+    using T = TypeParam;
+    using Q = Quantized<T>;
+    Field<T> f;
+    f.b[1] = T(1.2e-6);
+    const auto run = [&](const FaultDetectionConfig<T>& c) {
+        FaultDetectionState<T> s;
+        for (int i = 0; i < 400; ++i) {
+            auto o = f.observation(i);
+            Q::set_step(o);
+            for (std::size_t k = 0; k < 3; ++k)
+                o.mag_reading[k] = Q::reading(2.5 + static_cast<double>(o.polarity * f.s * f.b[k] + f.v_os), i);
+            fault_detect(s, o, c);
+        }
+        return s;
+    };
+    const FaultDetectionState<T> s = run(enabled<T>());
+    EXPECT_EQ(s.axis_word[0] | s.axis_word[1] | s.axis_word[2], 0u);
+    auto blunt = enabled<T>();
+    blunt.frozen_steps = T(20);
+    EXPECT_EQ(run(blunt).axis_word[1], kFaultAxisNoFlip);
+}
+
 TYPED_TEST(EstimatorCoreMagFaults, AStrapThatWorksAgainIsNoticedAndSetResetResumes) {
     using T = TypeParam;
     const Field<T> f;

@@ -21,9 +21,11 @@ TEST(E2eLeoMagCalibration, TheCalibratedFieldLosesTheCrossAxisCoupling) {
     // The spacecraft's own field is not read here: its currents' part follows the sun on the faces, so no
     // calibration removes it (with it read the calibrated field is 254 nT RMS off the true body field sunlit,
     // 75 nT in eclipse: docs/filter.md); what this test judges is the sensor's coupling, which it can remove.
-    options.settings = {"est.sample_period=1",         "mag.noise_sample_period=1",
-                        "est.mag_calibration=true",    "est.mag_calibration_every=1",
-                        "est.mag_calibration_min=600", "mag.read_spacecraft_field=false"};
+    options.settings = {"est.sample_period=1", "mag.noise_sample_period=1", "est.mag_calibration=true",
+                        "est.mag_calibration_every=1", "est.mag_calibration_min=600", "mag.read_spacecraft_field=false",
+                        // The fault detection (on as bundled) is made for the bundled 20 Hz set/reset pairs: at
+                        // 1 Hz it declared every axis spiking and biased once the calibration applied (open).
+                        "est.detect_faults=false"};
     cosim::System system(cosim::read_system_description(PVATT_SYSTEMS_DIR "/leo_orbit.ssd"), options);
     cosim::ExecutionOptions ex;
     ex.stop_time = 5764.0;

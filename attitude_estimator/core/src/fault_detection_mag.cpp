@@ -84,6 +84,13 @@ Outcome strap_outcome(const FaultDetectionState<T>& s, const FaultObservation<T>
     return strap;
 }
 
+// The half difference p (r_k − r_{k−1})/2S below which axis k did not move (flip and frozen tests): the
+// tolerance, or the converter's steps a stuck reading can still toggle (FaultDetectionConfig::frozen_steps).
+template <class T>
+T still_bar(const FaultObservation<T>& o, const FaultDetectionConfig<T>& c, std::size_t k) {
+    return std::max(c.frozen_tolerance, c.frozen_steps * o.mag_reading_step[k] / (T(2) * o.sensitivity));
+}
+
 // At most this many outliers in a row are spikes; on an axis declared spiking, this many more (half a
 // second at 20 Hz: frequent spikes come two or three in a row now and then, a change of the field stays).
 constexpr std::int32_t kSpikeMaxRun = 2;
@@ -185,7 +192,7 @@ void axis_tests(FaultDetectionState<T>& s, const FaultObservation<T>& o, const F
             //   difference falls below the fraction for as long as the tumble keeps |b_k| > (1 − f) |B_k|
             //   (seconds to minutes), but it stays clear of zero (within frozen_tolerance only while B_k + b_k
             //   crosses zero, a sample or two). Such a sample is a flip: it passes, and the bias test judges.
-            const bool moved = std::abs(half) >= c.frozen_tolerance;
+            const bool moved = std::abs(half) >= still_bar(o, c, k);
             flips = along >= c.flip_fraction * std::abs(expected) || moved ? Outcome::pass : Outcome::fail;
         }
         if (flips == Outcome::not_applicable && flip && !strap_suspect && o.predicted && o.field_calibrated &&
@@ -195,7 +202,7 @@ void axis_tests(FaultDetectionState<T>& s, const FaultObservation<T>& o, const F
             const T bar = std::max(c.frozen_min_field, kFrozenSigmas<T> * o.field_sigma[k]);
             if (std::abs(expected) >= bar) {
                 const T half = (o.mag_reading[k] - s.last_reading[k]) / (T(2) * o.sensitivity);
-                flips = std::abs(half) < c.frozen_tolerance ? Outcome::fail : Outcome::pass;
+                flips = std::abs(half) < still_bar(o, c, k) ? Outcome::fail : Outcome::pass;
             }
         }
         if (confirmed(s.axis_failing[k][1], flips, dt, c.confirm_time))

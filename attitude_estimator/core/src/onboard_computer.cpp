@@ -288,6 +288,7 @@ FaultObservation<T> observe(const OnboardState<T>& s, const OnboardInputs<T>& in
         const T v = convert(adc, in.v_mag[k]).value;
         o.mag_reading[k] = v - v_ref;
         o.at_rail[k] = !(v > adc.min + nominal.mag_rail_margin && v < adc.max - nominal.mag_rail_margin);
+        o.mag_reading_step[k] = adc_step(adc) + adc_step(nominal.mag_ref_adc);
     }
     o.polarity = polarity;
     o.commanded_polarity = s.set_reset.polarity;

@@ -36,6 +36,14 @@ constexpr bool adc_config_valid(const AdcConfig<T>& adc) noexcept {
     return adc.max > adc.min;  // also false when either end is NaN
 }
 
+// One step (LSB) of the converter, (max − min) / (2^bits − 1); 0 for an ideal one (bits == 0).
+template <class T>
+constexpr T adc_step(const AdcConfig<T>& adc) noexcept {
+    if (adc.bits == 0) return T(0);
+    const unsigned bits = adc.bits > kAdcMaxBits ? kAdcMaxBits : adc.bits;
+    return (adc.max - adc.min) / static_cast<T>((std::uint32_t{1} << bits) - 1u);
+}
+
 // Converts x. Rounding: to the nearest code, halves rounded up (code = floor(u + 1/2) with
 // u = (x − min)(2^bits − 1)/(max − min)), done explicitly so the result does not depend on the FPU
 // rounding mode. Clipping: x <= min gives code 0, x >= max gives the full code, both flagged `clipped`

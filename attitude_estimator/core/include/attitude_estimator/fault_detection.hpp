@@ -114,6 +114,12 @@ struct FaultDetectionConfig {
     // of a second).
     T frozen_min_field = T(1e-6);     // T
     T frozen_tolerance = T(0.02e-6);  // T
+    // The reading's own steps (issue 39): a stuck output read through the converter can still toggle a code
+    // on its channel and on the reference's (FaultObservation::mag_reading_step, one step of each), so two
+    // readings of a stuck axis differ by up to that much. The difference counts as moved (the flip test) and
+    // as not frozen (the frozen test) only above frozen_steps of it: half difference
+    // max(frozen_tolerance, frozen_steps × mag_reading_step / 2S).
+    T frozen_steps = T(2);  // 1
     // Spike test: an axis' measured field (before the calibration) further from the prediction than
     // spike_gate × √(field_sigma_k² + spike_sigma²) is an outlier; spike_sigma is what a healthy axis
     // strays besides the attitude's uncertainty (noise, the on-board field model's truncation, the
@@ -155,7 +161,10 @@ struct FaultObservation {
     // The polarity the computer commanded for it (differs from `polarity` once a failed strap is declared:
     // the recovery test pairs readings by the command).
     T commanded_polarity = T(1);
-    Vec3<T> mag_offset{};           // V: the sensor offset the computer takes out of this reading
+    Vec3<T> mag_offset{};  // V: the sensor offset the computer takes out of this reading
+    // V: the most two readings of a stuck axis differ by through the converter alone, one step of the axis'
+    // channel plus one of the reference's (each may toggle between two codes); 0 for ideal converters.
+    Vec3<T> mag_reading_step{};
     T sensitivity = T(1e4);         // V/T
     std::array<bool, 3> at_rail{};  // each channel within the rail margin of its converter's ends
     bool field_usable = false;      // the measured field below is complete (no axis excluded or at a rail)
