@@ -14,10 +14,10 @@ template <class T>
 class EstimatorCoreMekfPhaseSigma : public ::testing::Test {};
 TYPED_TEST_SUITE(EstimatorCoreMekfPhaseSigma, Scalars, ScalarName);
 
-constexpr double kStartSigma = 0.5;    // rad, the start covariance per axis (the field, not it, decides)
-constexpr double kField = 40e-6;       // T, along z
-constexpr double kSunlit = 14e-6;      // T, mag_sigma_calibrated
-constexpr double kEclipse = 6e-6;      // T, mag_sigma_calibrated_eclipse
+constexpr double kStartSigma = 0.5;  // rad, the start covariance per axis (the field, not it, decides)
+constexpr double kField = 40e-6;     // T, along z
+constexpr double kSunlit = 14e-6;    // T, mag_sigma_calibrated
+constexpr double kEclipse = 6e-6;    // T, mag_sigma_calibrated_eclipse
 
 template <class T>
 MekfConfig<T> config(double eclipse_sigma) {
@@ -51,7 +51,9 @@ std::array<double, 3> after_one_field(const MekfConfig<T>& c, bool sun) {
             static_cast<double>(s.p[2 * kMekfStates + 2])};
 }
 
-double closed_form(double sigma) { return 1.0 / (1.0 / (kStartSigma * kStartSigma) + kField * kField / (sigma * sigma)); }
+double closed_form(double sigma) {
+    return 1.0 / (1.0 / (kStartSigma * kStartSigma) + kField * kField / (sigma * sigma));
+}
 
 TYPED_TEST(EstimatorCoreMekfPhaseSigma, EclipseFieldWeighedWithItsOwnSigma) {
     using T = TypeParam;

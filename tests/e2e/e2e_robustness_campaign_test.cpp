@@ -46,10 +46,11 @@ std::map<std::string, double> run_shortened(long index) {
 
 void expect_consistent_while_converging(long index, const char* what) {
     std::map<std::string, double> m = run_shortened(index);
-    std::printf("robustness run %ld (%s), %.0f-%.0f s: NEES/dof %.3f, chi2(3) 99 %% coverage %.2f %%, resets %.0f, "
-                "unconverged rows %.0f\n",
-                index, what, kFrom, kStop, m["nees_sunlit.per_dof"], m["nees_sunlit.chi2_99"],
-                m["filter_resets.final"], m["unconverged.count"]);
+    std::printf(
+        "robustness run %ld (%s), %.0f-%.0f s: NEES/dof %.3f, chi2(3) 99 %% coverage %.2f %%, resets %.0f, "
+        "unconverged rows %.0f\n",
+        index, what, kFrom, kStop, m["nees_sunlit.per_dof"], m["nees_sunlit.chi2_99"], m["filter_resets.final"],
+        m["unconverged.count"]);
     // The shortened span is sunlit in both runs (no eclipse before 1800 s): the eclipse metrics have no sample.
     EXPECT_LE(m["nees_sunlit.per_dof"], 1.5) << what;
     EXPECT_GE(m["nees_sunlit.chi2_99"], 95.0) << what;
