@@ -174,6 +174,11 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
                 "mekf: filter_mag_sigma once the in-flight magnetometer calibration applies (0 = filter_mag_sigma)")
         .range(0.0, 1e-4)
         .applies_when("filter", {"mekf"});
+    t.parameter("filter_mag_sigma_eclipse", &D::filter_mag_sigma_eclipse, "T",
+                "mekf: filter_mag_sigma_calibrated in a sample without a sun vector (eclipse: no panel currents' "
+                "field at the magnetometer; 0 = filter_mag_sigma_calibrated)")
+        .range(0.0, 1e-4)
+        .applies_when("filter", {"mekf"});
     t.parameter("filter_mag_hard_iron", &D::filter_mag_hard_iron, "T",
                 "mekf: 1-sigma per axis of the spacecraft's own field at the magnetometer (the uplinked prior of its "
                 "hard iron) until the in-flight calibration applies; the offset state then estimates it fixed in "
@@ -202,7 +207,8 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
         .applies_when("filter", {"mekf"});
     t.parameter("inertia", &D::inertia, "kg.m2",
                 "mekf: inertia matrix, body axes, row-major; all zero (default) = kinematic rate model, else "
-                "Euler's torque-free equations propagate the rate")
+                "Euler's equations propagate the rate, with the torques of filter_dipole and "
+                "filter_gravity_gradient")
         .applies_when("filter", {"mekf"});
     t.parameter("filter_dipole", &D::filter_dipole, "A.m2",
                 "mekf with inertia: the spacecraft's residual magnetic dipole, body axes (its magnetic budget, "

@@ -106,6 +106,7 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
     m.sun_correlation_time = static_cast<T>(d.filter_sun_correlation[method]);
     m.mag_ref_sigma = static_cast<T>(d.filter_mag_ref_sigma);
     m.mag_sigma_calibrated = static_cast<T>(d.filter_mag_sigma_calibrated);
+    m.mag_sigma_calibrated_eclipse = static_cast<T>(d.filter_mag_sigma_eclipse);
     m.mag_hard_iron_sigma = static_cast<T>(d.filter_mag_hard_iron);
     m.mag_sigma = static_cast<T>(d.filter_mag_sigma);
     m.rate_noise = static_cast<T>(d.filter_rate_noise);

@@ -6,7 +6,7 @@
 //
 //   attitude_estimator_mekf_replay run.csv [--from T] [--trace out.csv] [key=value ...]
 //   keys: sun_sigma, sun_correlation (s), mag_sigma (T), mag_ref_sigma (T), mag_sigma_calibrated (T: from the rows where
-//   est.mag_cal_valid, when recorded), rate_noise, attitude_noise, offset (0/1), polarity (plus | column:
+//   est.mag_cal_valid, when recorded), mag_sigma_eclipse (T: the same in rows without a sun vector), rate_noise, attitude_noise, offset (0/1), polarity (plus | column:
 //   est.mag_set_reset of the row before), euler (0/1: the environment's default inertia), inertia_diag (Jxx,Jyy,Jzz), reset_after,
 //   scale (0/1: face update from plant.i_face_sh with the Kelly law), face_sigma, i_face_norm (A, at 1 AU),
 //   face_min (smallest relative response of a face used for the scale)
@@ -83,6 +83,8 @@ Options parse(int argc, char** argv, std::string& file) {
             f.mag_ref_sigma = std::stod(v);
         else if (k == "mag_sigma_calibrated")
             f.mag_sigma_calibrated = std::stod(v);
+        else if (k == "mag_sigma_eclipse")
+            f.mag_sigma_calibrated_eclipse = std::stod(v);
         else if (k == "rate_noise")
             f.rate_noise = std::stod(v);
         else if (k == "attitude_noise")

@@ -78,6 +78,7 @@ std::vector<double> numbers(const OnboardSettings<double>& s) {
          f.sun_correlation_time,
          f.mag_ref_sigma,
          f.mag_sigma_calibrated,
+         f.mag_sigma_calibrated_eclipse,
          f.mag_hard_iron_sigma,
          f.init_attitude_sigma,
          f.init_rate_sigma,

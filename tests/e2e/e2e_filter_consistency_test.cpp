@@ -1,12 +1,14 @@
-// Issues 27 and 30 end to end: the recursive filter tells the truth about itself in the bundled leo_orbit, for
-// every sun method the bundled system can run. One run of harness/systems/leo_orbit.ssd as bundled (read at
-// test time) over two orbits through the master, with the on-board computer `est` (difference, as bundled)
-// and three copies of it beside it, each with only est.sun_method changed and the same inputs: they see one
-// truth, and the truth's blocks are run once instead of four times (the copies' set/reset commands stay
-// unconnected: the schedule is the same for all, so each reads the magnetometer in the polarity it
-// commanded). For each estimator the normalized estimation error squared per degree of freedom,
-// δθᵀ P_θθ⁻¹ δθ / 3, with P_θθ from its own attitude_cov_sqrt and δθ from the environment's true attitude
-// (1 when the covariance is right; docs/filter.md), must lie
+// Issues 27 and 30 end to end: the recursive filter tells the truth about itself in the bundled leo_orbit. One run
+// of harness/systems/leo_orbit.ssd as bundled (read at test time) over two orbits through the master, its
+// on-board computer `est` running the bundled sun method (difference). The test can run further methods as
+// copies of `est` beside it on the same inputs (kMethods; the copies' set/reset commands stay unconnected: the
+// schedule is the same for all, so each reads the magnetometer in the polarity it commanded); issue 39 cut it to
+// the bundled method for CI's sake: with all four methods it took 99 s under the sanitizers, the longest in CI,
+// with inverse_response and three_faces 71 s of CPU, with difference alone 48 s (the truth's blocks over two
+// orbits are most of it; judging a shorter span does not hold: the eclipse before 5764 s is the first orbit's,
+// NEES/dof 0.17). The other methods' figures: docs/filter.md. The normalized estimation error squared per degree
+// of freedom, δθᵀ P_θθ⁻¹ δθ / 3, with P_θθ from the estimator's own attitude_cov_sqrt and δθ from the
+// environment's true attitude (1 when the covariance is right; docs/filter.md), must lie
 // - over the second orbit (after the start and the in-flight calibration), in [0.5, 1.5] sunlit and in
 //   eclipse, the filter running throughout;
 // - over the first orbit (the convergence, most of it before the calibration applies), at most 1.5: the
@@ -33,7 +35,7 @@
 namespace {
 
 constexpr double kOrbit = 5764.0;  // s, leo_orbit's period (its DefaultExperiment)
-constexpr std::array<const char*, 4> kMethods = {"difference", "inverse_response", "cones", "three_faces"};
+constexpr std::array<const char*, 1> kMethods = {"difference"};
 
 // The bundled system with a copy of `est` for each sun method after the first ("est_<method>").
 cosim::SystemDescription with_every_sun_method() {
@@ -121,7 +123,7 @@ struct Consistency : cosim::Observer {
     double coverage(int k) const { return rows[k] ? 100.0 * covered[k] / rows[k] : NAN; }
 };
 
-TEST(E2eLeoFilterConsistency, NormalizedErrorNearOneForEverySunMethodAndBoundedWhileConverging) {
+TEST(E2eLeoFilterConsistency, NormalizedErrorNearOneForTheBundledSunMethodAndBoundedWhileConverging) {
     cosim::SystemOptions options;
     options.fmu_dirs = {PVATT_FMU_DIR};
     cosim::System system(with_every_sun_method(), options);

@@ -561,6 +561,8 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
         if (changed && c.estimate_offset) restart_offset(s, c);
         MekfConfig<T> mag_config = c;
         if (in.mag_calibrated && c.mag_sigma_calibrated > T(0)) mag_config.mag_sigma = c.mag_sigma_calibrated;
+        if (in.mag_calibrated && !in.sun_valid && c.mag_sigma_calibrated_eclipse > T(0))
+            mag_config.mag_sigma = c.mag_sigma_calibrated_eclipse;
         const T polarity = holds_hard_iron(s, c) ? T(1) : in.polarity;
         // The watch needs the three axes (an excluded axis leaves no field to turn into inertial axes).
         if (c.watch_time > T(0) && in.mag_axes == 7) watch_field(s, in, polarity, mag_config);

@@ -76,6 +76,7 @@ MekfConfig<T> field_recovery_config(const OnboardState<T>& s, const OnboardSetti
     if (bias_recovering_uncalibrated(s, settings)) {
         c.mag_sigma *= settings.faults.bias_noise_factor;
         c.mag_sigma_calibrated *= settings.faults.bias_noise_factor;
+        c.mag_sigma_calibrated_eclipse *= settings.faults.bias_noise_factor;
         const T jump = std::sqrt(squared_norm(s.faults.bias_jump));
         if (jump > T(0)) c.mag_hard_iron_sigma = jump;
         // The field still comes through the calibration's scale and non-orthogonality (kept by the reopening):

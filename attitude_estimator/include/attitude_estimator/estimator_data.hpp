@@ -100,7 +100,9 @@ struct EstimatorData {
     std::array<double, 4> filter_sun_correlation{};
     double filter_mag_ref_sigma = MekfConfig<double>{}.mag_ref_sigma;  // T: 1σ per axis of the reference field's error
     double filter_mag_sigma_calibrated = MekfConfig<double>{}.mag_sigma_calibrated;  // T: once calibrated (0: the same)
-    double filter_mag_hard_iron = MekfConfig<double>{}.mag_hard_iron_sigma;          // T: hard-iron prior (0: none)
+    double filter_mag_sigma_eclipse =
+        MekfConfig<double>{}.mag_sigma_calibrated_eclipse;                   // T: calibrated, no sun (0: the same)
+    double filter_mag_hard_iron = MekfConfig<double>{}.mag_hard_iron_sigma;  // T: hard-iron prior (0: none)
     double filter_rate_noise = MekfConfig<double>{}.rate_noise;          // rad/s: 1σ rate change over 1 s (rad/s/√s)
     double filter_attitude_noise = MekfConfig<double>{}.attitude_noise;  // rad: 1σ attitude drift over 1 s (rad/√s)
     bool filter_offset = MekfConfig<double>{}.estimate_offset;           // estimate the magnetometer offset (3 states)

@@ -47,6 +47,11 @@ struct MekfConfig {
     // an uncalibrated HMC2003 carries its 0.3 % cross-axis coupling (0.1 µT), a calibrated one little more
     // than its 12-bit steps (0.12 µT / √12).
     T mag_sigma_calibrated = T(0);
+    // mag_sigma_calibrated in a sample without a sun vector (eclipse: T; 0: mag_sigma_calibrated). In sunlight
+    // the field carries the panels' and shunts' currents' field, correlated with the sun's geometry over the
+    // tumble, which the calibration cannot take out; in eclipse those currents are zero. One σ for both leaves
+    // the filter overconfident in sunlight and underconfident in eclipse (docs/filter.md, "Per phase").
+    T mag_sigma_calibrated_eclipse = T(0);
     // The spacecraft's own field at the sensor before the in-flight calibration applies (the uplinked prior
     // of its hard iron, 1σ per axis, T; 0: not modelled). Fixed in body axes, it is no white noise: weighed
     // as one, thousands of readings pin the attitude to a field that is several µT off (NEES/dof 4 over the
@@ -63,7 +68,8 @@ struct MekfConfig {
     bool estimate_offset = true;
     bool estimate_scale = false;
     // --- rate propagation. Inertia (kg m², row-major, body axes): all zero = kinematic (the rate is a
-    // random walk); otherwise Euler's torque-free equations J ω̇ = −ω × J ω propagate the rate.
+    // random walk); otherwise Euler's equations J ω̇ = −ω × J ω + τ propagate the rate, τ the torques modelled
+    // below (none: torque-free).
     std::array<T, 9> inertia{};
     // --- the disturbance torques the propagation models (with the inertia only; docs/filter.md, "Torques"):
     // the residual dipole's m × B, B the reference field turned into the body by the estimate, and the gravity

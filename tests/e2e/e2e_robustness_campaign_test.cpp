@@ -1,0 +1,66 @@
+// Issue 39 end to end: the bundled robustness campaign (harness/campaigns/robustness.toml, read at test time)
+// runs as CI can afford it: two of its runs, shortened to the first 1800 s, through the campaign library itself
+// (the spec's draws, settings and metrics; only the stop time and the metrics' start moved). The two fastest
+// tumbles of the campaign (seed 39): run 19, ISS-like 420 km at 4.74 deg/s, and run 11, sun-synchronous
+// (17.6 h ascending node) at 4.67 deg/s. What holds there over 600-1800 s (measured with the campaign's
+// --run replay and attitude_estimator/study/scene_stats.py; docs/results.md, "Robustness"): the filter runs
+// from the first seconds (its bound still above 10 deg: filter_valid comes later), is never reset, and is
+// consistent or cautious while it converges — NEES/dof 1.33 and
+// 0.38, chi2(3) 99 % coverage 100 % both. Not held here: the accuracy and the NEES/dof's lower bound of
+// the second orbit (issue 39's aims; before the in-flight calibration applies, about 3000 s, the field is
+// weighed at 100 uT and run 11 is underconfident), nor the 3-sigma bound below 2 deg within 10 minutes (no run
+// of the campaign meets it). Each run costs 18 s of CPU over the campaign's two orbits; this test is about a
+// sixth of that per run.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "campaign_run.hpp"
+#include "campaign_spec.hpp"
+#include "metric_observer.hpp"
+#include "results_table.hpp"
+
+namespace {
+
+constexpr double kStop = 1800.0;  // s
+constexpr double kFrom = 600.0;   // s: the metrics judge from 10 minutes on
+
+std::map<std::string, double> run_shortened(long index) {
+    campaign::CampaignSpec spec = campaign::read_spec(PVATT_SYSTEMS_DIR "/../campaigns/robustness.toml");
+    spec.stop_time = kStop;
+    for (auto& m : spec.metrics)
+        if (m.after > kFrom) m.after = kFrom;
+    const campaign::CampaignSetup setup = campaign::prepare(spec, {PVATT_FMU_DIR}, {});
+    const campaign::RunResult r = campaign::run_one(setup, index);
+    EXPECT_EQ(r.status, "ok") << r.message;
+    const std::vector<std::string> names = campaign::metric_columns(spec);
+    std::map<std::string, double> cells;
+    for (std::size_t i = 0; i < names.size() && i < r.metric_cells.size(); ++i)
+        cells[names[i]] = std::stod(r.metric_cells[i]);
+    return cells;
+}
+
+void expect_consistent_while_converging(long index, const char* what) {
+    std::map<std::string, double> m = run_shortened(index);
+    std::printf(
+        "robustness run %ld (%s), %.0f-%.0f s: NEES/dof %.3f, chi2(3) 99 %% coverage %.2f %%, resets %.0f, "
+        "unconverged rows %.0f\n",
+        index, what, kFrom, kStop, m["nees_sunlit.per_dof"], m["nees_sunlit.chi2_99"], m["filter_resets.final"],
+        m["unconverged.count"]);
+    // The shortened span is sunlit in both runs (no eclipse before 1800 s): the eclipse metrics have no sample.
+    EXPECT_LE(m["nees_sunlit.per_dof"], 1.5) << what;
+    EXPECT_GE(m["nees_sunlit.chi2_99"], 95.0) << what;
+    EXPECT_EQ(m["filter_resets.final"], 0.0) << what;
+    EXPECT_TRUE(std::isfinite(m["nees_sunlit.per_dof"])) << what;  // the filter runs (its covariance is given)
+}
+
+TEST(E2eRobustnessCampaign, FastestTumblesConvergeConsistentlyWithoutReset) {
+    expect_consistent_while_converging(19, "ISS-like, 4.74 deg/s");
+    expect_consistent_while_converging(11, "sun-synchronous, 4.67 deg/s");
+}
+
+}  // namespace
