@@ -9,20 +9,12 @@
 #include <vector>
 
 #include "attitude_estimator/estimator_block.hpp"
-#include "fmu/value_check.hpp"
+#include "fmu/testing/setting_notes_of.hpp"
 
 using attitude_estimator::EstimatorData;
 
-namespace {
-
-std::vector<std::string> notes_for(const EstimatorData& d) {
-    fmu::Table<EstimatorData> t;
-    attitude_estimator::EstimatorBlock::declare(t);
-    const EstimatorData defaults;
-    return fmu::setting_notes(t.variables(), std::as_bytes(std::span(&d, 1)), std::as_bytes(std::span(&defaults, 1)));
-}
-
-}  // namespace
+// The notes the runtime would log for these values.
+constexpr auto notes_for = fmu::testing::setting_notes_of<attitude_estimator::EstimatorBlock>;
 
 TEST(EstimatorSettingNotes, ParametersTheChosenModeIgnores) {
     EstimatorData d;

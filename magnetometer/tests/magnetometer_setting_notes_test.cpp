@@ -6,21 +6,13 @@
 #include <string>
 #include <vector>
 
-#include "fmu/value_check.hpp"
+#include "fmu/testing/setting_notes_of.hpp"
 #include "magnetometer/magnetometer_block.hpp"
 
 using magnetometer::MagnetometerData;
 
-namespace {
-
-std::vector<std::string> notes_for(const MagnetometerData& d) {
-    fmu::Table<MagnetometerData> t;
-    magnetometer::MagnetometerBlock::declare(t);
-    const MagnetometerData defaults;
-    return fmu::setting_notes(t.variables(), std::as_bytes(std::span(&d, 1)), std::as_bytes(std::span(&defaults, 1)));
-}
-
-}  // namespace
+// The notes the runtime would log for these values.
+constexpr auto notes_for = fmu::testing::setting_notes_of<magnetometer::MagnetometerBlock>;
 
 TEST(MagnetometerSettingNotes, SetResetPeriodWithoutTheTimer) {
     MagnetometerData d;

@@ -6,21 +6,13 @@
 #include <string>
 #include <vector>
 
-#include "fmu/value_check.hpp"
+#include "fmu/testing/setting_notes_of.hpp"
 #include "ssr_plant/ssr_plant_block.hpp"
 
 using ssr_plant::SsrPlantData;
 
-namespace {
-
-std::vector<std::string> notes_for(const SsrPlantData& d) {
-    fmu::Table<SsrPlantData> t;
-    ssr_plant::SsrPlantBlock::declare(t);
-    const SsrPlantData defaults;
-    return fmu::setting_notes(t.variables(), std::as_bytes(std::span(&d, 1)), std::as_bytes(std::span(&defaults, 1)));
-}
-
-}  // namespace
+// The notes the runtime would log for these values.
+constexpr auto notes_for = fmu::testing::setting_notes_of<ssr_plant::SsrPlantBlock>;
 
 TEST(SsrPlantSettingNotes, ModulatorInAveragedFidelityAndOffsetOfAStuckHall) {
     SsrPlantData d;
