@@ -5,29 +5,15 @@ Reads env.q_true[1..4], est.q_filt[1..4], est.attitude_cov_sqrt[1..6] (lower Cho
 rows), est.attitude_bound, env.irradiance and, when recorded, est.filter_resets. Over the span [--from, --to):
 sunlit and eclipse p95 of the attitude error, NEES/dof (mean of dtheta' P^-1 dtheta / 3), the chi2(3) 99 %
 coverage (share of rows with dtheta' P^-1 dtheta <= 11.345), both also per phase (sunlit, eclipse), the resets in the span; over the whole run the
-first time the 3-sigma bound is below 2 deg. Standard library only; dtheta as consistency_spans.py.
+first time the 3-sigma bound is below 2 deg. Standard library only; dtheta and percentiles from consistency_spans.py.
 """
 import argparse
 import csv
 import math
 
+from consistency_spans import delta_theta, pct  # the same error and percentile, one definition
+
 CHI2_3_99 = 11.345  # chi2 quantile, 3 degrees of freedom, 0.99
-
-
-def pct(values, p):
-    if not values:
-        return float("nan")
-    v = sorted(values)
-    return v[min(len(v) - 1, int(p * (len(v) - 1) + 0.5))]
-
-
-def delta_theta(qt, qf):
-    x1, y1, z1, w1 = qt
-    x2, y2, z2, w2 = -qf[0], -qf[1], -qf[2], qf[3]
-    d = [w1 * x2 + w2 * x1 - (y1 * z2 - z1 * y2), w1 * y2 + w2 * y1 - (z1 * x2 - x1 * z2),
-         w1 * z2 + w2 * z1 - (x1 * y2 - y1 * x2)]
-    s = -2.0 if (w1 * w2 - (x1 * x2 + y1 * y2 + z1 * z2)) < 0 else 2.0
-    return [v * s for v in d]
 
 
 def stats(path, t0, t1):
