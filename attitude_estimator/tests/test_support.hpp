@@ -9,6 +9,7 @@
 #include <cmath>
 #include <random>
 #include <string>
+#include <utility>
 
 #include "attitude_estimator/types.hpp"
 
@@ -52,6 +53,28 @@ Eigen::Matrix3d to_eigen(const Matrix3RowMajor<T>& a) {
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) m(r, c) = static_cast<double>(a[3 * r + c]);
     return m;
+}
+
+// The tests' reference rigid-body motion, independent of the filter's propagation: `steps` RK4 steps of
+// `h` on the pair (ω, A) with ω̇ = wdot(ω, A) and Ȧ = −[ω×]A.
+template <class Wdot>
+void rk4_rate_and_attitude(Eigen::Vector3d& w, Eigen::Matrix3d& a, double h, int steps, Wdot wdot) {
+    auto skew = [](const Eigen::Vector3d& v) {
+        Eigen::Matrix3d m;
+        m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+        return m;
+    };
+    auto f = [&](const Eigen::Vector3d& wv, const Eigen::Matrix3d& av) {
+        return std::make_pair(Eigen::Vector3d(wdot(wv, av)), Eigen::Matrix3d(-skew(wv) * av));
+    };
+    for (int k = 0; k < steps; ++k) {
+        const auto k1 = f(w, a);
+        const auto k2 = f(w + h / 2 * k1.first, a + h / 2 * k1.second);
+        const auto k3 = f(w + h / 2 * k2.first, a + h / 2 * k2.second);
+        const auto k4 = f(w + h * k3.first, a + h * k3.second);
+        w += h / 6 * (k1.first + 2 * k2.first + 2 * k3.first + k4.first);
+        a += h / 6 * (k1.second + 2 * k2.second + 2 * k3.second + k4.second);
+    }
 }
 
 // Rotation angle (rad) of A1 A2ᵀ, i.e. the attitude difference, computed in double through Eigen's own
