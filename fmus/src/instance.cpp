@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <utility>
 
 #include "fmu/description.hpp"
 #include "fmu/errors.hpp"
@@ -160,7 +161,11 @@ void Instance::reset() {
 }
 
 const Variable& Instance::variable(fmi2ValueReference vr, ValueType type) const {
-    const auto& vars = runner_.table().variables();
+    return variable(runner_.table().variables(), vr, type);
+}
+
+// The table looked up once per call by the getters and setters, not once per value (a virtual call each).
+const Variable& Instance::variable(std::span<const Variable> vars, fmi2ValueReference vr, ValueType type) const {
     if (vr >= vars.size()) throw Error("unknown value reference " + std::to_string(vr));
     const Variable& v = vars[vr];
     // An Enumeration is read and written through the Integer functions (FMI 2.0 section 2.1.7).
@@ -209,22 +214,27 @@ void require_arrays(std::span<const fmi2ValueReference> vr, const T* values) {
 void Instance::get_real(std::span<const fmi2ValueReference> vr, fmi2Real* values) {
     require_arrays(vr, values);
     runner_.ensure_evaluated();
-    for (std::size_t i = 0; i < vr.size(); ++i)
-        values[i] = read_real(runner_.model().bytes(), variable(vr[i], ValueType::Real));
+    const auto bytes = std::as_const(runner_.model()).bytes();
+    const auto& vars = runner_.table().variables();
+    for (std::size_t i = 0; i < vr.size(); ++i) values[i] = read_real(bytes, variable(vars, vr[i], ValueType::Real));
 }
 
 void Instance::get_integer(std::span<const fmi2ValueReference> vr, fmi2Integer* values) {
     require_arrays(vr, values);
     runner_.ensure_evaluated();
+    const auto bytes = std::as_const(runner_.model()).bytes();
+    const auto& vars = runner_.table().variables();
     for (std::size_t i = 0; i < vr.size(); ++i)
-        values[i] = read_integer(runner_.model().bytes(), variable(vr[i], ValueType::Integer));
+        values[i] = read_integer(bytes, variable(vars, vr[i], ValueType::Integer));
 }
 
 void Instance::get_boolean(std::span<const fmi2ValueReference> vr, fmi2Boolean* values) {
     require_arrays(vr, values);
     runner_.ensure_evaluated();
+    const auto bytes = std::as_const(runner_.model()).bytes();
+    const auto& vars = runner_.table().variables();
     for (std::size_t i = 0; i < vr.size(); ++i)
-        values[i] = read_boolean(runner_.model().bytes(), variable(vr[i], ValueType::Boolean)) ? fmi2True : fmi2False;
+        values[i] = read_boolean(bytes, variable(vars, vr[i], ValueType::Boolean)) ? fmi2True : fmi2False;
 }
 
 void Instance::get_string(std::span<const fmi2ValueReference> vr, fmi2String* values) {
@@ -243,8 +253,9 @@ void Instance::set_values(std::span<const fmi2ValueReference> vr, const T* value
                           Write&& write) {
     require_arrays(vr, values);
     bool parameter_changed = false;
+    const auto& vars = runner_.table().variables();
     for (std::size_t i = 0; i < vr.size(); ++i) {
-        const Variable& v = variable(vr[i], type);
+        const Variable& v = variable(vars, vr[i], type);
         check_settable(v);
         check(v, values[i]);
         parameter_changed = parameter_changed || v.causality == Causality::parameter;
@@ -257,7 +268,7 @@ void Instance::set_values(std::span<const fmi2ValueReference> vr, const T* value
         auto b = runner_.model().bytes();
         before.assign(b.begin(), b.end());
     }
-    for (std::size_t i = 0; i < vr.size(); ++i) write(variable(vr[i], type), values[i]);
+    for (std::size_t i = 0; i < vr.size(); ++i) write(vars[vr[i]], values[i]);  // checked above
     if (parameter_changed)
         runner_.parameters_changed();
     else

@@ -109,6 +109,7 @@ public:
 
 private:
     const Variable& variable(fmi2ValueReference vr, ValueType type) const;
+    const Variable& variable(std::span<const Variable> vars, fmi2ValueReference vr, ValueType type) const;
     void check_settable(const Variable& v) const;
     void check_count(std::size_t given, std::size_t expected, const char* what) const;
     template <class T, class Check, class Write>
