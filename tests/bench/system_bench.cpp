@@ -6,13 +6,20 @@
 //   1. seed_spin.ssd as bundled, 10 s: real-time factor, and its speed over ssr_plant.fmu alone driven
 //      with the same kind of inputs (the seed spin, interpolated over the same 1 ms steps);
 //   2. leo_orbit.ssd as bundled, one orbit: real-time factor;
-//   and the reference execution (--reference of cosim run) of both systems, for the speed-up.
+//   and the reference execution (--reference of cosim run) of both systems, for the speed-up;
+//   3. with PVATT_OMSIMULATOR naming an OMSimulator executable: OMSimulator against `cosim run` on the
+//      packed archives (build/systems/*.ssp), each a child process, CPU from RUSAGE_CHILDREN, both writing
+//      the same rows (OMSimulator through a Lua script setting its logging interval) and OMSimulator with
+//      its default output (a row every step).
+#include <sys/resource.h>
 #include <time.h>
 
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <string_view>
@@ -117,6 +124,48 @@ Row run_plant_alone(double stop) {
     return r;
 }
 
+double children_cpu_seconds() {
+    rusage ru{};
+    getrusage(RUSAGE_CHILDREN, &ru);
+    return static_cast<double>(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) +
+           1e-6 * static_cast<double>(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
+}
+
+// CPU seconds of one shell command (its children included), or a negative value when it failed.
+double child_cpu(const std::string& command) {
+    const double before = children_cpu_seconds();
+    const int status = std::system((command + " > /dev/null 2>&1").c_str());
+    const double cpu = children_cpu_seconds() - before;
+    return status == 0 ? cpu : -1.0;
+}
+
+// OMSimulator and `cosim run` on one packed archive for `stop` s; `interval` is cosim's row interval,
+// which the Lua run of OMSimulator is given too.
+void compare_omsimulator(const std::string& oms, const std::string& ssp, double stop, double interval) {
+    const auto dir = std::filesystem::temp_directory_path() / "pvatt_system_bench_oms";
+    std::filesystem::create_directories(dir);
+    const std::string archive = std::string(PVATT_PACKED_DIR) + "/" + ssp;
+    const auto lua = dir / "run.lua";
+    {
+        std::ofstream out(lua);
+        out << "model = oms_importFile(\"" << archive << "\")\n"
+            << "oms_setResultFile(model, \"" << (dir / "oms_rows.csv").string() << "\")\n"
+            << "oms_setStopTime(model, " << stop << ")\noms_setLoggingInterval(model, " << interval << ")\n"
+            << "oms_instantiate(model)\noms_initialize(model)\noms_simulate(model)\noms_terminate(model)\n"
+            << "oms_delete(model)\n";
+    }
+    const std::string in_dir = "cd '" + dir.string() + "' && ";
+    const double cosim =
+        child_cpu(in_dir + "'" + PVATT_COSIM + "' run '" + archive + "' --stop-time " + std::to_string(stop) +
+                  " --output-interval " + std::to_string(interval) + " --output cosim.csv");
+    const double same_rows = child_cpu(in_dir + "'" + oms + "' '" + lua.string() + "'");
+    const double dflt = child_cpu(in_dir + "'" + oms + "' '" + archive + "' --stopTime=" + std::to_string(stop) +
+                                  " --resultFile=oms_default.csv");
+    std::filesystem::remove_all(dir);  // the default result file is hundreds of MB
+    std::printf("| %s, %.0f s | %.3f | %.3f | %.1f | %.3f | %.1f |\n", ssp.c_str(), stop, cosim, same_rows,
+                same_rows / cosim, dflt, dflt / cosim);
+}
+
 void print(const Row& r) {
     const auto& s = r.stats;
     long events = 0;
@@ -173,4 +222,11 @@ int main(int argc, char** argv) {
         100.0 * leo_setup.cpu / leo.cpu);
     std::printf("speed-up over the reference execution: seed %.1fx, orbit %.1fx (CPU)\n",
                 rtf(seed, true) / rtf(seed_ref, true), rtf(leo, true) / rtf(leo_ref, true));
+    if (const char* oms = std::getenv("PVATT_OMSIMULATOR"); oms && *oms) {
+        std::printf(
+            "\n| packed archive | cosim run CPU s | OMSimulator, same rows, CPU s | ratio | OMSimulator, default "
+            "output, CPU s | ratio |\n|---|---|---|---|---|---|\n");
+        compare_omsimulator(oms, "seed_spin.ssp", seed_stop, 0.01);
+        compare_omsimulator(oms, "leo_orbit.ssp", quick ? 60.0 : 600.0, 10.0);
+    }
 }
