@@ -42,10 +42,11 @@ function(add_fmu name)
   if(NOT PVATT_SANITIZE)
     # A host such as MATLAB may bring an older C++ runtime; carry our own, kept local by fmu.map.
     target_link_options(${name} PRIVATE -static-libstdc++ -static-libgcc)
+    # Only what the exported entry points reach: the static C++ runtime's unused members and sections
+    # would otherwise be unpacked from the archive and mapped at every load. (Not under the sanitizers,
+    # whose instrumented globals are not worth the risk for a test build's load time.)
+    target_link_options(${name} PRIVATE -Wl,--gc-sections)
   endif()
-  # Only what the exported entry points reach: the static C++ runtime's unused members and sections
-  # would otherwise be unpacked from the archive and mapped at every load.
-  target_link_options(${name} PRIVATE -Wl,--gc-sections)
 
   add_executable(${name}_describe $<TARGET_OBJECTS:pvatt::fmu_describe_main>)
   target_link_libraries(${name}_describe PRIVATE ${name}_model pvatt::fmu_description_writer)
@@ -79,8 +80,8 @@ function(add_fmu name)
   target_link_options(${name}_fmi3 PRIVATE -Wl,--version-script=${FMU3_VERSION_SCRIPT} -Wl,--no-undefined)
   if(NOT PVATT_SANITIZE)
     target_link_options(${name}_fmi3 PRIVATE -static-libstdc++ -static-libgcc)
+    target_link_options(${name}_fmi3 PRIVATE -Wl,--gc-sections)
   endif()
-  target_link_options(${name}_fmi3 PRIVATE -Wl,--gc-sections)
   set(stage3 ${CMAKE_BINARY_DIR}/fmu_staging3/${name})
   set(fmu3_file ${ARG_OUTPUT_DIR3}/${name}.fmu)
   add_custom_command(
