@@ -222,11 +222,14 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
                 "added to filter_rate_noise")
         .range(0.0, 1.0)
         .applies_when("filter", {"mekf"});
+    t.parameter("filter_drag", &D::filter_drag, "",
+                "mekf with inertia: the filter propagates the rate with the drag torque of the box (body_size, "
+                "centre_of_mass, drag_coefficient) in the wind of the on-board orbit (reference_source onboard "
+                "only), at its table's density times filter_drag_density_scale")
+        .applies_when("filter", {"mekf"});
     t.parameter("body_size", &D::body_size, "m",
-                "mekf with inertia: the spacecraft's box as the computer knows it (its design, uplinked), edges "
-                "along body x, y, z; with centre_of_mass and drag_coefficient the filter propagates the rate with "
-                "the drag torque of its faces in the wind of the on-board orbit (reference_source onboard only); "
-                "0 (default): not modelled")
+                "mekf drag: the spacecraft's box as the computer knows it (its design, uplinked), edges along body "
+                "x, y, z; 0 (default): not modelled")
         .range(0.0, 10.0)
         .applies_when("filter", {"mekf"});
     t.parameter("centre_of_mass", &D::centre_of_mass, "m",

@@ -5,8 +5,8 @@
 // (17.6 h ascending node) at 4.67 deg/s. What holds there over 600-1800 s (measured with the campaign's
 // --run replay and attitude_estimator/study/scene_stats.py; docs/results.md, "Robustness"): the filter runs
 // from the first seconds (its bound still above 10 deg: filter_valid comes later), is never reset, and is
-// consistent or cautious while it converges — NEES/dof 1.33 and
-// 0.38, chi2(3) 99 % coverage 100 % both. Not held here: the accuracy and the NEES/dof's lower bound of
+// consistent or cautious while it converges — NEES/dof 0.61 and
+// 0.36, chi2(3) 99 % coverage 100 % both, with the drag on board as the campaign sets it (1.33 and 0.38 without). Not held here: the accuracy and the NEES/dof's lower bound of
 // the second orbit (issue 39's aims; before the in-flight calibration applies, about 3000 s, the field is
 // weighed at 100 uT and run 11 is underconfident), nor the 3-sigma bound below 2 deg within 10 minutes (no run
 // of the campaign meets it). Each run costs 18 s of CPU over the campaign's two orbits; this test is about a

@@ -112,8 +112,9 @@ struct EstimatorData {
     std::array<double, 3> filter_dipole{};  // A m², body: the uplinked residual dipole whose torque the filter models
     bool filter_gravity_gradient = false;   // the filter models the gravity-gradient torque
     double filter_torque_noise = 0.0;       // N m √s: the unmodelled torques as white noise (through the inertia)
-    // The drag torque (MekfConfig::drag): the box as the computer knows it (the design's, uplinked; all zero: not
-    // modelled), its belief of the density against its table, and that density's uncertainty.
+    // The drag torque (MekfConfig::drag), on with filter_drag: the box as the computer knows it (the design's,
+    // uplinked), its belief of the density against its table, and that density's uncertainty.
+    bool filter_drag = false;
     std::array<double, 3> body_size{};                                            // m: edges along body x, y, z
     std::array<double, 3> centre_of_mass{};                                       // m: from the box's geometric centre
     double drag_coefficient = 0.0;                                                // 1
