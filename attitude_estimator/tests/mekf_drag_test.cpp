@@ -36,7 +36,7 @@ Eigen::Vector3d box_drag(const Eigen::Vector3d& v) {
             const double area = kSize((axis + 1) % 3) * kSize((axis + 2) % 3);
             const Eigen::Vector3d centroid = 0.5 * kSize(axis) * n - kCom;
             const double cos_v = n.dot(v);
-            if (cos_v > 0.0) torque += centroid.cross(-0.5 * kRho * kCd * area * v.norm() * cos_v * v);
+            if (cos_v > 0.0) torque += centroid.cross(-0.5 * kRho * kCd * area * cos_v * v);  // |v|² cos α v̂
         }
     }
     return torque;
