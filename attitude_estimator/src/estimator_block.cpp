@@ -222,6 +222,42 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
                 "added to filter_rate_noise")
         .range(0.0, 1.0)
         .applies_when("filter", {"mekf"});
+    t.parameter("filter_drag", &D::filter_drag, "",
+                "mekf with inertia: the filter propagates the rate with the drag torque of the box (body_size, "
+                "centre_of_mass, drag_coefficient) in the wind of the on-board orbit (reference_source onboard "
+                "only), at its table's density times filter_drag_density_scale")
+        .applies_when("filter", {"mekf"});
+    t.parameter("body_size", &D::body_size, "m",
+                "mekf drag: the spacecraft's box as the computer knows it (its design, uplinked), edges along body "
+                "x, y, z; 0 (default): not modelled")
+        .range(0.0, 10.0)
+        .applies_when("filter", {"mekf"});
+    t.parameter("centre_of_mass", &D::centre_of_mass, "m",
+                "mekf drag: the centre of mass from the box's geometric centre, body axes, as the computer knows it")
+        .range(-5.0, 5.0)
+        .applies_when("filter", {"mekf"});
+    t.parameter("drag_coefficient", &D::drag_coefficient, "1",
+                "mekf drag: the drag coefficient of a face (free-molecular flat plate about 2.2) as the computer "
+                "knows it; 0 (default): not modelled")
+        .range(0.0, 10.0)
+        .applies_when("filter", {"mekf"});
+    t.parameter("filter_drag_density_scale", &D::filter_drag_density_scale, "1",
+                "mekf drag: the computer's density against its table (CIRA-72 at mean solar activity, Vallado "
+                "2013 table 8-4): its belief of the solar activity, the named on-board error of the density (the "
+                "truth flies the table itself)")
+        .range(1e-3, 1e3)
+        .applies_when("filter", {"mekf"});
+    t.parameter("filter_drag_density_sigma", &D::filter_drag_density_sigma, "1",
+                "mekf drag: relative 1-sigma uncertainty of the density (a factor of several over the solar "
+                "cycle at 400 km); the modelled drag torque times it enters the rate noise as white torque noise "
+                "over filter_drag_correlation")
+        .range(0.0, 100.0)
+        .applies_when("filter", {"mekf"});
+    t.parameter("filter_drag_correlation", &D::filter_drag_correlation, "s",
+                "mekf drag: the time over which the drag torque's error stays put in body axes (white noise of "
+                "the same information: (sigma |tau|)^2 2 tau_c per second); 0: no drag noise")
+        .range(0.0, 1e5)
+        .applies_when("filter", {"mekf"});
     t.parameter("filter_gravity_gradient", &D::filter_gravity_gradient, "",
                 "mekf with inertia: the filter propagates the rate with the gravity-gradient torque (from the "
                 "on-board orbit: reference_source onboard only)")

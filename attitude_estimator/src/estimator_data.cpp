@@ -118,6 +118,14 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
     m.dipole = to<T>(d.filter_dipole);
     m.gravity_gradient = d.filter_gravity_gradient;
     m.torque_noise = static_cast<T>(d.filter_torque_noise);
+    if (d.filter_drag) {  // otherwise the geometry stays zero: no drag model
+        m.drag.size = to<T>(d.body_size);
+        m.drag.centre_of_mass = to<T>(d.centre_of_mass);
+        m.drag.drag_coefficient = static_cast<T>(d.drag_coefficient);
+    }
+    m.drag_density_scale = static_cast<T>(d.filter_drag_density_scale);
+    m.drag_density_sigma = static_cast<T>(d.filter_drag_density_sigma);
+    m.drag_correlation_time = static_cast<T>(d.filter_drag_correlation);
     m.reset_after = d.filter_reset_after;
     m.watch_time = static_cast<T>(d.filter_watch_time);
     m.watch_gate = static_cast<T>(d.filter_watch_gate);

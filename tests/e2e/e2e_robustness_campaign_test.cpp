@@ -5,8 +5,8 @@
 // (17.6 h ascending node) at 4.67 deg/s. What holds there over 600-1800 s (measured with the campaign's
 // --run replay and attitude_estimator/study/scene_stats.py; docs/results.md, "Robustness"): the filter runs
 // from the first seconds (its bound still above 10 deg: filter_valid comes later), is never reset, and is
-// consistent or cautious while it converges — NEES/dof 1.33 and
-// 0.38, chi2(3) 99 % coverage 100 % both. Not held here: the accuracy and the NEES/dof's lower bound of
+// consistent or cautious while it converges — NEES/dof 0.61 and
+// 0.36, chi2(3) 99 % coverage 100 % both, with the drag on board as the campaign sets it (1.33 and 0.38 without). Not held here: the accuracy and the NEES/dof's lower bound of
 // the second orbit (issue 39's aims; before the in-flight calibration applies, about 3000 s, the field is
 // weighed at 100 uT and run 11 is underconfident), nor the 3-sigma bound below 2 deg within 10 minutes (no run
 // of the campaign meets it). Each run costs 18 s of CPU over the campaign's two orbits; this test is about a
@@ -30,11 +30,11 @@ namespace {
 constexpr double kStop = 1800.0;  // s
 constexpr double kFrom = 600.0;   // s: the metrics judge from 10 minutes on
 
-std::map<std::string, double> run_shortened(long index) {
+std::map<std::string, double> run_shortened(long index, double stop = kStop, double from = kFrom) {
     campaign::CampaignSpec spec = campaign::read_spec(PVATT_SYSTEMS_DIR "/../campaigns/robustness.toml");
-    spec.stop_time = kStop;
+    spec.stop_time = stop;
     for (auto& m : spec.metrics)
-        if (m.after > kFrom) m.after = kFrom;
+        if (m.after > from) m.after = from;
     const campaign::CampaignSetup setup = campaign::prepare(spec, {PVATT_FMU_DIR}, {});
     const campaign::RunResult r = campaign::run_one(setup, index);
     EXPECT_EQ(r.status, "ok") << r.message;
@@ -63,6 +63,24 @@ void expect_consistent_while_converging(long index, const char* what) {
     EXPECT_EQ(m["filter_resets.final"], 0.0) << what;
     EXPECT_EQ(m["declarations.declared"], 0.0) << what;  // nothing is injected: a declaration is a false alarm
     EXPECT_TRUE(std::isfinite(m["nees_sunlit.per_dof"])) << what;  // the filter runs (its covariance is given)
+}
+
+// The campaign's worst ISS-like run (run 31: 420 km, 0.90 deg/s; over its second orbit 172 deg sunlit, NEES/dof 4740,
+// 9 false declarations without the drag on board) over its first 1800 s: with the drag torque in the filter's
+// propagation (docs/filter.md, "Drag") it is no longer lost while converging. Measured over 600-1800 s with the
+// campaign's --run replay and study/scene_stats.py: sunlit p95 10.0 deg, NEES/dof 3.55, chi2(3) 99 % coverage 61.8 %
+// without it; 3.7 deg, 0.23, 100 % with it (the density's uncertainty in the rate noise leaves it cautious).
+TEST(E2eRobustnessCampaign, WorstIssLikeRunHoldsWithTheDragOnBoard) {
+    std::map<std::string, double> m = run_shortened(31);
+    std::printf(
+        "robustness run 31 (ISS-like, 0.90 deg/s), %.0f-%.0f s: sunlit p95 %.2f deg, NEES/dof %.3f, chi2(3) 99 %% "
+        "coverage %.2f %%, resets %.0f, declarations %.0f\n",
+        kFrom, kStop, m["error_sunlit.p95"], m["nees_sunlit.per_dof"], m["nees_sunlit.chi2_99"],
+        m["filter_resets.final"], m["declarations.declared"]);
+    EXPECT_LE(m["nees_sunlit.per_dof"], 1.5);
+    EXPECT_GE(m["nees_sunlit.chi2_99"], 95.0);
+    EXPECT_LT(m["error_sunlit.p95"], 6.0);  // deg: converging (10 deg when lost)
+    EXPECT_EQ(m["filter_resets.final"], 0.0);
 }
 
 TEST(E2eRobustnessCampaign, FastestTumblesConvergeConsistentlyWithoutReset) {

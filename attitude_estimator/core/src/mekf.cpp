@@ -106,13 +106,29 @@ inline constexpr double kEarthMu = 3.986004418e14;  // m³/s², WGS-84
 
 template <class T>
 bool has_torques(const MekfConfig<T>& c) {
-    return c.gravity_gradient || c.dipole[0] != T(0) || c.dipole[1] != T(0) || c.dipole[2] != T(0);
+    return c.gravity_gradient || c.dipole[0] != T(0) || c.dipole[1] != T(0) || c.dipole[2] != T(0) || has_drag(c.drag);
+}
+
+// The drag torque at attitude a and its derivative by the wind in body axes (drag_torque.hpp); zero when the
+// model or its surroundings are missing.
+template <class T>
+V3<T> drag_at(const MekfState<T>& s, const MekfConfig<T>& c, const Mat3<T>& a, Mat3<T>* d_by_wind) {
+    if (d_by_wind != nullptr) d_by_wind->setZero();
+    if (!has_drag(c.drag) || !(s.torque_air_density > T(0))) return V3<T>::Zero();
+    const V3<T> wind = a * v3(s.torque_air_velocity);
+    if (!wind.allFinite()) return V3<T>::Zero();
+    Matrix3RowMajor<T> d{};
+    const Vec3<T> tau = drag_torque(c.drag, c.drag_density_scale * s.torque_air_density,
+                                    Vec3<T>{wind.x(), wind.y(), wind.z()}, d_by_wind != nullptr ? &d : nullptr);
+    if (d_by_wind != nullptr) *d_by_wind = Eigen::Map<const Eigen::Matrix<T, 3, 3, Eigen::RowMajor>>(d.data());
+    return v3(tau);
 }
 
 // The modelled torques at attitude a (inertial to body) and their derivative by the attitude error δθ
 // (A_true = (I − [δθ×]) Â turns an inertial vector's body image v into v + [v×] δθ):
 //   m × B_b:            ∂/∂δθ = [m×][B_b×];
-//   k n × J n (k = 3μ/r³, n the unit position in the body): ∂/∂δθ = k ([n×] J − [(J n)×]) [n×].
+//   k n × J n (k = 3μ/r³, n the unit position in the body): ∂/∂δθ = k ([n×] J − [(J n)×]) [n×];
+//   drag τ(v_b), v_b the wind in the body:       ∂/∂δθ = ∂τ/∂v [v_b×].
 template <class T>
 void model_torques(const MekfState<T>& s, const MekfConfig<T>& c, const Mat3<T>& j, const Mat3<T>& a, V3<T>& torque,
                    Mat3<T>& d_torque) {
@@ -132,6 +148,12 @@ void model_torques(const MekfState<T>& s, const MekfConfig<T>& c, const Mat3<T>&
         const V3<T> jn = j * n;
         torque += k * n.cross(jn);
         d_torque += k * (skew(n) * j - skew(jn)) * skew(n);
+    }
+    Mat3<T> d_by_wind;
+    const V3<T> drag = drag_at(s, c, a, &d_by_wind);
+    if (drag.squaredNorm() > T(0)) {
+        torque += drag;
+        d_torque += d_by_wind * skew(V3<T>(a * v3(s.torque_air_velocity)));
     }
 }
 
@@ -352,6 +374,14 @@ void mekf_propagate(MekfState<T>& s, T dt, const MekfConfig<T>& c) noexcept {
     if (euler && c.torque_noise > T(0))  // the unmodelled torques' share, through the inertia
         q.template block<3, 3>(kMekfRate, kMekfRate) +=
             c.torque_noise * c.torque_noise * h * dyn.j_inv * dyn.j_inv.transpose();
+    if (euler && c.drag_density_sigma > T(0) && c.drag_correlation_time > T(0)) {
+        // The density's uncertainty: the drag torque as modelled at the step's start, times its relative 1σ, as
+        // white noise of the same information over drag_correlation_time (a step turns the wind by little).
+        const T size = c.drag_density_sigma * drag_at<T>(s, c, matrix_of(s.q), nullptr).norm();
+        if (size > T(0))
+            q.template block<3, 3>(kMekfRate, kMekfRate) +=
+                size * size * T(2) * c.drag_correlation_time * h * dyn.j_inv * dyn.j_inv.transpose();
+    }
     const bool torques = euler && has_torques(c);
     Mat3<T> d_torque = Mat3<T>::Zero(), phi_wt = Mat3<T>::Zero();
     for (int step = 0; step < n; ++step) {
@@ -509,6 +539,10 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
     // degree in one).
     if (squared_norm(in.mag_ref) > T(0)) s.torque_field = in.mag_ref;
     if (squared_norm(in.position) > T(0)) s.torque_position = in.position;
+    if (squared_norm(in.air_velocity) > T(0) && in.air_density > T(0)) {
+        s.torque_air_velocity = in.air_velocity;
+        s.torque_air_density = in.air_density;
+    }
     if (s.stage == 2) {
         mekf_propagate(s, in.t - s.t_last, c);
     } else {

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 
+#include "ground/atmosphere_table.hpp"
+
 namespace attitude_estimator {
 
 namespace {
@@ -110,6 +112,12 @@ void update_filter(OnboardState<T>& s, const OnboardInputs<T>& in, const Onboard
     // The on-board orbit's position (km, TEME; zero when the references are inputs) for the gravity gradient:
     // TEME and J2000 differ by the precession since 2000 (0.3°), nothing to a torque.
     for (std::size_t k = 0; k < 3; ++k) f.position[k] = T(1000) * out.references.position[k];
+    // The drag's surroundings from the same orbit: its wind, and the density the table (a constant the computer
+    // carries: mean solar activity) gives at its altitude; the filter scales it by its belief of the activity.
+    if (out.references.valid && squared_norm(out.references.air_velocity) > T(0)) {
+        f.air_velocity = out.references.air_velocity;
+        f.air_density = ground::atmosphere::density(out.references.altitude);
+    }
     f.mag_calibrated = settings.mag_calibration && s.mag_cal.valid && !bias_recovering_uncalibrated(s, settings);
     if (settings.filter_scale && nominal.sun.method != SunMethod::difference) {
         // Relative responses against the nominal normalization: the filter's model is (1 + ε) R(cos β).

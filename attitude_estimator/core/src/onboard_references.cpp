@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "ground/atmosphere_table.hpp"
+
 namespace attitude_estimator {
 
 template <class T>
@@ -38,6 +40,15 @@ ReferenceKnot<T> evaluate_references(const OnboardReferenceConfig<T>& c, T t) no
     // Earth-fixed → J2000: the transpose of ecef_from_j2000.
     const Matrix3RowMajor<T> m = ecef_from_j2000(c.clock, t);
     for (int i = 0; i < 3; ++i) k.field[i] = m[i] * b_ecef[0] + m[3 + i] * b_ecef[1] + m[6 + i] * b_ecef[2];
+    // The drag's wind: the velocity in the Earth-fixed frame, where the air is at rest (the atmosphere co-rotates),
+    // d/dt (R3(GMST) r) = R3(GMST) v − ω_E ẑ × r_ecef, turned to J2000 as the field is.
+    const Vec3<T> v_teme{T(1000) * state.velocity_km_s[0], T(1000) * state.velocity_km_s[1],
+                         T(1000) * state.velocity_km_s[2]};
+    const T omega_earth = static_cast<T>(ground::atmosphere::kEarthRotationRate);
+    const Vec3<T> v_ecef{ca * v_teme[0] + sa * v_teme[1] + omega_earth * r_ecef[1],
+                         -sa * v_teme[0] + ca * v_teme[1] - omega_earth * r_ecef[0], v_teme[2]};
+    for (int i = 0; i < 3; ++i) k.air_velocity[i] = m[i] * v_ecef[0] + m[3 + i] * v_ecef[1] + m[6 + i] * v_ecef[2];
+    k.altitude = ground::atmosphere::ellipsoid_altitude(r_ecef[0], r_ecef[1], r_ecef[2]);
     return k;
 }
 
@@ -63,11 +74,13 @@ References<T> onboard_references(ReferenceState<T>& s, const OnboardReferenceCon
         r.sun[i] = s.before.sun[i] + w * (s.after.sun[i] - s.before.sun[i]);
         r.field[i] = s.before.field[i] + w * (s.after.field[i] - s.before.field[i]);
         r.position[i] = s.before.position[i] + w * (s.after.position[i] - s.before.position[i]);
+        r.air_velocity[i] = s.before.air_velocity[i] + w * (s.after.air_velocity[i] - s.before.air_velocity[i]);
         norm += r.sun[i] * r.sun[i];
     }
     norm = std::sqrt(norm);
     for (auto& v : r.sun) v /= norm;
     r.sun_distance = s.before.sun_distance + w * (s.after.sun_distance - s.before.sun_distance);
+    r.altitude = s.before.altitude + w * (s.after.altitude - s.before.altitude);
     return r;
 }
 

@@ -112,9 +112,18 @@ struct EstimatorData {
     std::array<double, 3> filter_dipole{};  // A m², body: the uplinked residual dipole whose torque the filter models
     bool filter_gravity_gradient = false;   // the filter models the gravity-gradient torque
     double filter_torque_noise = 0.0;       // N m √s: the unmodelled torques as white noise (through the inertia)
-    std::int32_t filter_reset_after = MekfConfig<double>{}.reset_after;  // samples all refused before a reset
-    double filter_watch_time = MekfConfig<double>{}.watch_time;          // s: the divergence watch's averaging (0: off)
-    double filter_watch_gate = MekfConfig<double>{}.watch_gate;          // its ratio above which the filter is lost
+    // The drag torque (MekfConfig::drag), on with filter_drag: the box as the computer knows it (the design's,
+    // uplinked), its belief of the density against its table, and that density's uncertainty.
+    bool filter_drag = false;
+    std::array<double, 3> body_size{};                                            // m: edges along body x, y, z
+    std::array<double, 3> centre_of_mass{};                                       // m: from the box's geometric centre
+    double drag_coefficient = 0.0;                                                // 1
+    double filter_drag_density_scale = MekfConfig<double>{}.drag_density_scale;   // 1: on-board density / table
+    double filter_drag_density_sigma = MekfConfig<double>{}.drag_density_sigma;   // 1: its relative 1σ
+    double filter_drag_correlation = MekfConfig<double>{}.drag_correlation_time;  // s: that error's persistence
+    std::int32_t filter_reset_after = MekfConfig<double>{}.reset_after;           // samples all refused before a reset
+    double filter_watch_time = MekfConfig<double>{}.watch_time;  // s: the divergence watch's averaging (0: off)
+    double filter_watch_gate = MekfConfig<double>{}.watch_gate;  // its ratio above which the filter is lost
     // HMC2003 set/reset (set_reset.hpp): pulse every this many samples and average the offset over this
     // many set/reset pairs. 0 (default): no pulses, the offset stays in the field — the safe default for a
     // magnetometer whose set_reset_command is not wired to mag_set_reset (its readings never flip).

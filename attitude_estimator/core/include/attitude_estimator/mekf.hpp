@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 
+#include "attitude_estimator/drag_torque.hpp"
 #include "attitude_estimator/types.hpp"
 #include "panel_response/kelly.hpp"
 
@@ -82,6 +83,18 @@ struct MekfConfig {
     // into rate noise through the inertia, Q_ωω += σ² h J⁻¹ J⁻ᵀ: an axis of small inertia (a 3U's long axis)
     // is pushed harder by the same torque. Adds to rate_noise; only with the inertia.
     T torque_noise = T(0);
+    // The aerodynamic torque (docs/filter.md, "Drag"; drag_torque.hpp): the box as the computer knows it (zero:
+    // not modelled) in the wind of its own orbit against the co-rotating air (MekfSampleInputs::air_velocity), at
+    // the density its table gives at that orbit's altitude (air_density) times drag_density_scale, its belief of
+    // the solar activity (1: the table's mean activity). Its derivative by the attitude error enters Φ_ωθ.
+    DragGeometry<T> drag{};
+    T drag_density_scale = T(1);
+    // What the density's uncertainty leaves of the modelled torque (1σ, relative: the solar cycle moves the
+    // thermosphere's density by a factor of several at 400 km, which a mean-activity table does not follow), as
+    // white torque noise of the same information through the inertia: (σ |τ_drag|)² 2 τ_c per second, τ_c =
+    // drag_correlation_time (s), the time over which that torque error stays put in body axes. 0: none.
+    T drag_density_sigma = T(0);
+    T drag_correlation_time = T(0);
     // --- innovation test and divergence reset
     T gate = T(16.27);       // chi² with 3 degrees of freedom at 0.999: a vector update beyond it is refused
     T face_gate = T(10.83);  // chi² with 1 degree of freedom at 0.999: a face update beyond it is refused
@@ -125,6 +138,9 @@ struct MekfState {
     // reference field (T) and the orbit position (m), inertial; zero: not known (that torque is left out).
     Vec3<T> torque_field{};
     Vec3<T> torque_position{};
+    // The drag model's (MekfSampleInputs::air_velocity, air_density): the wind, inertial, m/s; the table's density.
+    Vec3<T> torque_air_velocity{};
+    T torque_air_density = T(0);
     // The divergence watch (MekfConfig::watch_time): exponentially weighted sums since the start of the field's
     // innovation in inertial axes (µT), of the weights, of the squared weights times R (µT², per axis).
     std::array<T, 3> watch_sum{};
@@ -197,6 +213,8 @@ struct MekfSampleInputs {
     Vec3<T> mag_body{};           // T
     T polarity = T(1);            // set/reset sign of this field reading
     Vec3<T> position{};           // m, inertial: the on-board orbit (gravity gradient; zero: unknown)
+    Vec3<T> air_velocity{};       // m/s, inertial: the on-board orbit's velocity against the air (drag; zero: unknown)
+    T air_density = T(0);         // kg/m³: the on-board table's density at that orbit's altitude (drag; 0: unknown)
     bool mag_calibrated = false;  // mag_body comes through the in-flight calibration (mag_sigma_calibrated)
     std::uint8_t mag_axes = 7;    // the magnetometer axes to use (bit k = axis k; fault_detection.hpp)
     // Face update (only with config.estimate_scale): relative responses and the faces to use.

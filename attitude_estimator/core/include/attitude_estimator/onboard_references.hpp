@@ -39,12 +39,14 @@ struct OnboardReferenceConfig {
 // The references at one instant of the clock.
 template <class T>
 struct ReferenceKnot {
-    T t = T(0);             // s, the block's time
-    Vec3<T> sun{};          // unit vector, J2000
-    T sun_distance = T(0);  // m
-    Vec3<T> field{};        // T, J2000
-    Vec3<T> position{};     // km, TEME (the on-board orbit, for the record)
-    bool valid = false;     // SGP4 propagated without error
+    T t = T(0);              // s, the block's time
+    Vec3<T> sun{};           // unit vector, J2000
+    T sun_distance = T(0);   // m
+    Vec3<T> field{};         // T, J2000
+    Vec3<T> position{};      // km, TEME (the on-board orbit, for the record)
+    Vec3<T> air_velocity{};  // m/s, J2000: the orbit's velocity against the co-rotating air (its Earth-fixed velocity)
+    T altitude = T(0);       // m above the WGS-84 ellipsoid (ground/atmosphere_table.hpp)
+    bool valid = false;      // SGP4 propagated without error
 };
 
 // The two knots around the last sample (trivially copyable: part of the computer's state).
@@ -61,8 +63,10 @@ struct References {
     Vec3<T> sun{};
     T sun_distance = T(0);
     Vec3<T> field{};
-    Vec3<T> position{};  // km, TEME: the on-board orbit (zero when the references are the inputs)
-    bool valid = false;  // false when SGP4 failed (a decayed or unusable element set): the sample has no field
+    Vec3<T> position{};      // km, TEME: the on-board orbit (zero when the references are the inputs)
+    Vec3<T> air_velocity{};  // m/s, J2000: its velocity against the co-rotating air (zero: inputs)
+    T altitude = T(0);       // m above the ellipsoid (0: inputs)
+    bool valid = false;      // false when SGP4 failed (a decayed or unusable element set): the sample has no field
 };
 
 // The configuration from the computer's own element set (its mean elements and epoch, parsed from the

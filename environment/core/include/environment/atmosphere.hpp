@@ -1,5 +1,6 @@
 #pragma once
-// The thermosphere's density for the aerodynamic torque: an exponential model in altitude bands,
+// The thermosphere's density for the aerodynamic torque: the table the on-board computer carries too
+// (ground/atmosphere_table.hpp, one copy for both), an exponential model in altitude bands,
 //
 //   ρ(h) = ρ₀ exp(−(h − h₀) / H)        for h₀ ≤ h < h₁ (the band's base and the next one's),
 //

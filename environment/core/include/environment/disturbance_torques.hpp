@@ -24,6 +24,8 @@
 
 #include <Eigen/Core>
 
+#include "ground/atmosphere_table.hpp"
+
 namespace environment {
 
 /// The spacecraft's outer surface, mass and magnetism as the torques see them (docs/design.md, "The
@@ -63,8 +65,8 @@ Eigen::Vector3d aerodynamic_torque(const std::array<Face, 6>& faces, double drag
 Eigen::Vector3d solar_pressure_torque(const std::array<Face, 6>& faces, double specular, double diffuse,
                                       double irradiance, const Eigen::Vector3d& sun_body);
 
-inline constexpr double kSpeedOfLight = 299792458.0;       // m/s
-inline constexpr double kEarthRotationRate = 7.292115e-5;  // rad/s (WGS-84), the atmosphere co-rotates
+inline constexpr double kSpeedOfLight = 299792458.0;                                  // m/s
+inline constexpr double kEarthRotationRate = ground::atmosphere::kEarthRotationRate;  // the atmosphere co-rotates
 
 /// The four torques (N·m, body axes) at one instant.
 struct DisturbanceTorques {
