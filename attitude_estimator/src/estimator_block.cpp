@@ -253,6 +253,12 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
                 "calibration refines it (0 = no ground calibration: the field is weighed as uncalibrated)")
         .range(0.0, 1e-4)
         .applies_when("mag_calibration", {"true"});
+    t.parameter("mag_prior_field_sigma", &D::mag_prior_field_sigma, "T",
+                "mag_prior_offset_sigma > 0: the field's 1-sigma per axis in the filter while the ground "
+                "calibration applies (white-equivalent: its scale and non-orthogonality are not calibrated yet; "
+                "0 = filter_mag_sigma_calibrated)")
+        .range(0.0, 1e-4)
+        .applies_when("mag_calibration", {"true"});
     t.parameter("mag_prior_dipole", &D::mag_prior_dipole, "A.m2",
                 "mag_prior_offset_sigma > 0: the spacecraft's residual dipole, body axes (the scenario's magnetic "
                 "budget: connect the system's dipole_moment), whose field at the sensor the ground calibration "

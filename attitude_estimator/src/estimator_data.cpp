@@ -127,6 +127,7 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
     s.mag_cal.every = d.mag_calibration_every;
     s.mag_cal.min_equations = d.mag_calibration_min;
     s.mag_cal.prior_offset_sigma = static_cast<T>(d.mag_prior_offset_sigma);
+    s.mag_cal.prior_field_sigma = static_cast<T>(d.mag_prior_field_sigma);
     s.mag_cal.prior_offset = to<T>(ground_calibration_offset(d));
     // The rate comes from two single-frame attitudes at most a few samples apart.
     m.max_init_gap = static_cast<T>(3.5 * d.sample_period);

@@ -87,6 +87,7 @@ MekfConfig<T> field_recovery_config(const OnboardState<T>& s, const OnboardSetti
     if (ground_calibration_applies(s, settings)) {
         c.mag_hard_iron_sigma = settings.mag_cal.prior_offset_sigma;
         if (c.mag_sigma_calibrated > T(0)) c.mag_sigma = c.mag_sigma_calibrated;
+        if (settings.mag_cal.prior_field_sigma > T(0)) c.mag_sigma = settings.mag_cal.prior_field_sigma;
     }
     if (bias_recovering_uncalibrated(s, settings)) {
         c.mag_sigma *= settings.faults.bias_noise_factor;

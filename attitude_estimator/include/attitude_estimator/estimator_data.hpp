@@ -167,6 +167,7 @@ struct EstimatorData {
     // own field (power system off) per axis, with signs of no pattern: the residual a filter must expect.
     std::array<double, 3> mag_prior_offset_error{0.4e-6, -0.3e-6, 0.5e-6};
     double mag_prior_offset_sigma = 0.0;  // T, 1σ per axis the computer gives its ground calibration
+    double mag_prior_field_sigma = 0.0;   // T: the field's σ in the filter meanwhile (0: filter_mag_sigma_calibrated)
 
     // outputs (discrete: set at sample instants, held in between). Before the first sample: identity.
     std::array<double, 4> q_est{0.0, 0.0, 0.0, 1.0};                           // scalar-last [x, y, z, w], w >= 0

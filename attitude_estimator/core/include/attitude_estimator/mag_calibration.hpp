@@ -54,6 +54,10 @@ struct MagCalibrationConfig {
     // into the equations as a prior on c, so that the in-flight solution refines it rather than replacing it.
     Vec3<T> prior_offset{};
     T prior_offset_sigma = T(0);
+    // The field's 1σ in the filter while the ground calibration applies (T, white-equivalent; 0: the filter's
+    // mag_sigma_calibrated): the offset is the ground's, but the sensor's scale, cross-axis coupling and
+    // misalignment are not yet calibrated (an orbit without enough change of the field's size never is).
+    T prior_field_sigma = T(0);
 };
 
 template <class T>
