@@ -185,6 +185,12 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
                 "body axes (0 = not modelled)")
         .range(0.0, 1e-4)
         .applies_when("filter", {"mekf"});
+    t.parameter("filter_start_rate", &D::filter_start_rate, "rad/s",
+                "mekf: 1-sigma per axis of the body rate the spacecraft can have at the start (its design's largest "
+                "tumble): the rate differenced from the first two single-frame attitudes is fused with zero +- "
+                "this (0 = not: the difference alone, 1.4 rad/s 1-sigma at 20 Hz)")
+        .range(0.0, 10.0)
+        .applies_when("filter", {"mekf"});
     t.parameter("filter_rate_noise", &D::filter_rate_noise, "rad/s",
                 "mekf: 1-sigma unpredictable change of the body rate over 1 s (a random walk: it grows as the "
                 "square root of time; the rate random-walk density in rad/s per root second)")
@@ -276,6 +282,39 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
     t.parameter("mag_calibration_min", &D::mag_calibration_min, "",
                 "mag_calibration: equations before the first solution is applied")
         .range(10.0, 1e8)
+        .applies_when("mag_calibration", {"true"});
+    t.parameter("mag_prior_offset_sigma", &D::mag_prior_offset_sigma, "T",
+                "mag_calibration: 1-sigma per axis of the ground calibration of the spacecraft's own field at the "
+                "magnetometer (uplinked): applied from the first sample, weighed with this until the in-flight "
+                "calibration refines it (0 = no ground calibration: the field is weighed as uncalibrated)")
+        .range(0.0, 1e-4)
+        .applies_when("mag_calibration", {"true"});
+    t.parameter("mag_prior_field_sigma", &D::mag_prior_field_sigma, "T",
+                "mag_prior_offset_sigma > 0: the field's 1-sigma per axis in the filter while the ground "
+                "calibration applies (white-equivalent: its scale and non-orthogonality are not calibrated yet; "
+                "0 = filter_mag_sigma_calibrated)")
+        .range(0.0, 1e-4)
+        .applies_when("mag_calibration", {"true"});
+    t.parameter("mag_prior_dipole", &D::mag_prior_dipole, "A.m2",
+                "mag_prior_offset_sigma > 0: the spacecraft's residual dipole, body axes (the scenario's magnetic "
+                "budget: connect the system's dipole_moment), whose field at the sensor the ground calibration "
+                "measured")
+        .range(-10.0, 10.0)
+        .applies_when("mag_calibration", {"true"});
+    t.parameter("mag_prior_dipole_position", &D::mag_prior_dipole_position, "m",
+                "mag_prior_offset_sigma > 0: where the residual dipole sits, body axes (the magnetometer's "
+                "dipole_position)")
+        .range(-10.0, 10.0)
+        .applies_when("mag_calibration", {"true"});
+    t.parameter("mag_prior_sensor_position", &D::mag_prior_sensor_position, "m",
+                "mag_prior_offset_sigma > 0: where the magnetometer sits, body axes (the magnetometer's "
+                "sensor_position)")
+        .range(-10.0, 10.0)
+        .applies_when("mag_calibration", {"true"});
+    t.parameter("mag_prior_offset_error", &D::mag_prior_offset_error, "T",
+                "mag_prior_offset_sigma > 0: the ground calibration's error, body axes: it gives the dipole's field "
+                "at the sensor plus this (default 0.4, -0.3, 0.5 uT: about 1 sigma of a clean-room measurement)")
+        .range(-1e-4, 1e-4)
         .applies_when("mag_calibration", {"true"});
     t.parameter("filter_reset_after", &D::filter_reset_after, "",
                 "mekf: samples in a row whose every update fails the innovation test before the filter resets "
@@ -630,6 +669,9 @@ void SpinWorkspace::configure(double sample_period, std::int32_t window) {
         spectrum_ = std::make_unique<SpinSpectrum>(sample_period, static_cast<std::size_t>(window));
 }
 
+// 1 mm, as the magnetometer's min_source_distance: closer, a point dipole describes nothing real.
+constexpr double min_prior_dipole_distance = 1e-3;  // m
+
 void EstimatorBlock::configure() {
     auto& d = data();
     d.parsed_elements = {};
@@ -666,6 +708,19 @@ void EstimatorBlock::configure() {
         if (!problem.empty())
             throw fmu::Error("reference_source = onboard: " + problem +
                              (d.uplink_age > 0.0 ? " (the given set made uplink_age older)" : ""));
+    }
+    if (d.mag_calibration && d.mag_prior_offset_sigma > 0.0) {
+        // The point dipole's field holds away from the dipole (the magnetometer's own min_source_distance).
+        double gap2 = 0.0;
+        for (std::size_t i = 0; i < 3; ++i) {
+            const double g = d.mag_prior_sensor_position[i] - d.mag_prior_dipole_position[i];
+            gap2 += g * g;
+        }
+        if (!(std::sqrt(gap2) >= min_prior_dipole_distance))
+            throw fmu::Error("mag_prior_sensor_position is " + std::to_string(std::sqrt(gap2) * 1e3) +
+                             " mm from mag_prior_dipole_position: at least " +
+                             std::to_string(min_prior_dipole_distance * 1e3) +
+                             " mm (min_prior_dipole_distance) for a point dipole's field");
     }
     settings_ = onboard_settings_from<double>(data());
     settings_float_ = onboard_settings_from<float>(data());

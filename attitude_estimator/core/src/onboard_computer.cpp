@@ -72,9 +72,25 @@ bool bias_recovering_uncalibrated(const OnboardState<T>& s, const OnboardSetting
     return settings.faults.enabled && s.faults.bias_recovering;
 }
 
+// Before the in-flight calibration applies, a ground calibration (MagCalibrationConfig::prior_offset) already
+// takes the spacecraft's own field out of the reading from the first sample: what is left of it is the
+// ground calibration's residual, fixed in body axes like the hard iron the offset state holds until the
+// calibration applies, with the ground calibration's 1σ as that state's prior. The field is then weighed as
+// a calibrated one (its noise the currents' field and the model's, not the hard iron's several µT), so that
+// the field and the sun carry the attitude from the start (docs/filter.md, "The ground calibration").
+template <class T>
+bool ground_calibration_applies(const OnboardState<T>& s, const OnboardSettings<T>& settings) {
+    return settings.mag_calibration && mag_calibration_prior_applies(s.mag_cal, settings.mag_cal);
+}
+
 template <class T>
 MekfConfig<T> field_recovery_config(const OnboardState<T>& s, const OnboardSettings<T>& settings) {
     MekfConfig<T> c = settings.mekf;
+    if (ground_calibration_applies(s, settings)) {
+        c.mag_hard_iron_sigma = settings.mag_cal.prior_offset_sigma;
+        if (c.mag_sigma_calibrated > T(0)) c.mag_sigma = c.mag_sigma_calibrated;
+        if (settings.mag_cal.prior_field_sigma > T(0)) c.mag_sigma = settings.mag_cal.prior_field_sigma;
+    }
     if (bias_recovering_uncalibrated(s, settings)) {
         c.mag_sigma *= settings.faults.bias_noise_factor;
         c.mag_sigma_calibrated *= settings.faults.bias_noise_factor;
@@ -265,14 +281,14 @@ template <class T>
 void predict_at_sensor(const OnboardState<T>& s, const OnboardInputs<T>& in, const OnboardSettings<T>& settings, T t,
                        FaultObservation<T>& o) {
     if (settings.filter == FilterKind::mekf && s.filter.stage == 2) predict(s.filter, in, t, o);
-    if (o.predicted && settings.mag_calibration && s.mag_cal.valid) {
+    if (o.predicted && settings.mag_calibration && (s.mag_cal.valid || ground_calibration_applies(s, settings))) {
         // What the sensor sees is the calibration's model inverted: H = (I + D)⁻¹ (B + b), to first order in
         // the small D: (B + b) − D (B + b) (D is a few per cent at most: an error of its square).
         Vec3<T> v{};
         for (std::size_t k = 0; k < 3; ++k) v[k] = o.field_body[k] + s.mag_cal.offset[k];
         const Vec3<T> gv = multiply(s.mag_cal.gain, v);
         for (std::size_t k = 0; k < 3; ++k) o.field_body[k] = T(2) * v[k] - gv[k];
-        o.field_calibrated = true;
+        o.field_calibrated = s.mag_cal.valid;  // the ground calibration's offset alone: the uncalibrated bars
     }
 }
 
@@ -398,6 +414,7 @@ OnboardInputs<T> with_references(OnboardState<T>& s, const OnboardInputs<T>& giv
 template <class T>
 void onboard_start(OnboardState<T>& state, const OnboardSettings<T>& settings) noexcept {
     state = OnboardState<T>{};
+    if (settings.mag_calibration) mag_calibration_start(state.mag_cal, settings.mag_cal);
     state.rate = MeanAngularRate<T>(settings.rate);
     state.set_reset.since_pulse = -1;  // no pulse at the first sample
 }

@@ -103,6 +103,7 @@ struct EstimatorData {
     double filter_mag_sigma_eclipse =
         MekfConfig<double>{}.mag_sigma_calibrated_eclipse;                   // T: calibrated, no sun (0: the same)
     double filter_mag_hard_iron = MekfConfig<double>{}.mag_hard_iron_sigma;  // T: hard-iron prior (0: none)
+    double filter_start_rate = MekfConfig<double>{}.start_rate_sigma;    // rad/s: 1σ rate prior at the start (0: none)
     double filter_rate_noise = MekfConfig<double>{}.rate_noise;          // rad/s: 1σ rate change over 1 s (rad/s/√s)
     double filter_attitude_noise = MekfConfig<double>{}.attitude_noise;  // rad: 1σ attitude drift over 1 s (rad/√s)
     bool filter_offset = MekfConfig<double>{}.estimate_offset;           // estimate the magnetometer offset (3 states)
@@ -163,6 +164,19 @@ struct EstimatorData {
     double mag_calibration_sigma = MagCalibrationConfig<double>{}.sigma;  // T (the 12-bit steps alone: 0.035 µT rms)
     std::int32_t mag_calibration_every = MagCalibrationConfig<double>{}.every;        // samples
     std::int32_t mag_calibration_min = MagCalibrationConfig<double>{}.min_equations;  // equations
+    // The ground calibration uplinked before flight (docs/filter.md, "The ground calibration"), with
+    // mag_calibration: the spacecraft's own field at the sensor, derived from the scenario's magnetic budget
+    // (the residual dipole mag_prior_dipole at mag_prior_dipole_position, seen at mag_prior_sensor_position:
+    // the magnetometer's layout) plus the ground calibration's error mag_prior_offset_error, weighed with
+    // mag_prior_offset_sigma per axis (0: no ground calibration).
+    std::array<double, 3> mag_prior_dipole{};                           // A m², body axes
+    std::array<double, 3> mag_prior_dipole_position{0.0, 0.0, 0.0};     // m, body axes (magnetometer default)
+    std::array<double, 3> mag_prior_sensor_position{0.01, 0.01, 0.11};  // m, body axes (magnetometer default)
+    // T: what the ground measurement got wrong, about 1σ of a clean-room measurement of a small satellite's
+    // own field (power system off) per axis, with signs of no pattern: the residual a filter must expect.
+    std::array<double, 3> mag_prior_offset_error{0.4e-6, -0.3e-6, 0.5e-6};
+    double mag_prior_offset_sigma = 0.0;  // T, 1σ per axis the computer gives its ground calibration
+    double mag_prior_field_sigma = 0.0;   // T: the field's σ in the filter meanwhile (0: filter_mag_sigma_calibrated)
 
     // outputs (discrete: set at sample instants, held in between). Before the first sample: identity.
     std::array<double, 4> q_est{0.0, 0.0, 0.0, 1.0};                           // scalar-last [x, y, z, w], w >= 0
@@ -262,6 +276,11 @@ OnboardInputs<T> onboard_inputs_from(const EstimatorData& d);
 // The computer's own element set: the given one (parsed_elements, else tle_elements; orbit's
 // tle_from_elements) made uplink_age older (orbit::older_set).
 orbit::Tle onboard_element_set(const EstimatorData& d) noexcept;
+
+// The ground calibration's offset the computer starts from (MagCalibrationConfig::prior_offset, T, body axes):
+// the field of the scenario's residual dipole (mag_prior_dipole at mag_prior_dipole_position) at the sensor
+// (mag_prior_sensor_position), plus the named error mag_prior_offset_error.
+Vec3<double> ground_calibration_offset(const EstimatorData& d) noexcept;
 // The computer's clock at t = 0: clock_epoch_* plus clock_offset.
 CalendarInstant onboard_clock_epoch(const EstimatorData& d) noexcept;
 // The fault detection's settings from the parameters (fault_data.cpp) and its outputs back.

@@ -48,6 +48,16 @@ struct MagCalibrationConfig {
     // an orbit) the field's magnitude varies too little to separate scale, offset and μ.
     T max_gain_sigma = T(1e-4);
     T max_offset_sigma = T(10e-9);  // T
+    // The ground calibration uplinked before flight (docs/filter.md, "The ground calibration"): the
+    // spacecraft's own field at the sensor as measured on the ground (T, body axes) and its 1σ per axis
+    // (T; 0: no ground calibration). mag_calibration_start applies it from the first sample and enters it
+    // into the equations as a prior on c, so that the in-flight solution refines it rather than replacing it.
+    Vec3<T> prior_offset{};
+    T prior_offset_sigma = T(0);
+    // The field's 1σ in the filter while the ground calibration applies (T, white-equivalent; 0: the filter's
+    // mag_sigma_calibrated): the offset is the ground's, but the sensor's scale, cross-axis coupling and
+    // misalignment are not yet calibrated (an orbit without enough change of the field's size never is).
+    T prior_field_sigma = T(0);
 };
 
 template <class T>
@@ -61,6 +71,26 @@ struct MagCalibrationState {
     Vec3<T> offset{};                                    // b, T
 };
 
+// Starts the calibration (all equations dropped) from the ground calibration of config, if any: its offset
+// applied from the first sample (valid stays false: no in-flight solution yet) and its information
+// 1/prior_offset_sigma² on c in the normal equations.
+template <class T>
+void mag_calibration_start(MagCalibrationState<T>& s, const MagCalibrationConfig<T>& config) noexcept;
+
+// Whether the ground calibration applies (given, and no in-flight solution yet).
+template <class T>
+bool mag_calibration_prior_applies(const MagCalibrationState<T>& s, const MagCalibrationConfig<T>& config) noexcept {
+    return !s.valid && config.prior_offset_sigma > T(0);
+}
+
+// The spacecraft's residual dipole m (A m², body axes) at dipole_position seen at sensor_position (m): the
+// point dipole's field μ0/4π (3 r̂ (m·r̂) − m)/|r|³, r from the dipole to the sensor (T). How the computer
+// derives its ground calibration's hard iron from the spacecraft's magnetic budget (estimator_data.cpp);
+// zero when the two positions coincide.
+template <class T>
+Vec3<T> dipole_field_at_sensor(const Vec3<T>& moment, const Vec3<T>& dipole_position,
+                               const Vec3<T>& sensor_position) noexcept;
+
 // Offers one reading: H (T, body axes, the set/reset offset estimate taken out) and the reference field's magnitude
 // (T). Takes an equation every config.every offers, solves every config.solve_every equations once
 // config.min_equations are in, and applies the solution when it is within the config's bounds.
@@ -72,7 +102,7 @@ void mag_calibration_offer(MagCalibrationState<T>& s, const Vec3<T>& field, T re
 template <class T>
 bool mag_calibration_solve(MagCalibrationState<T>& s, const MagCalibrationConfig<T>& config) noexcept;
 
-// The corrected field (I + D) H − b (H itself while no solution is applied).
+// The corrected field (I + D) H − b (before a solution: H less the ground calibration's offset, if any).
 template <class T>
 Vec3<T> mag_calibration_apply(const MagCalibrationState<T>& s, const Vec3<T>& field) noexcept;
 
@@ -84,6 +114,8 @@ template <class T>
 void mag_calibration_reopen_offset(MagCalibrationState<T>& s, const Vec3<T>& shift) noexcept;
 
 #define ATTITUDE_ESTIMATOR_MAG_CAL_EXTERN(T)                                                                      \
+    extern template void mag_calibration_start(MagCalibrationState<T>&, const MagCalibrationConfig<T>&) noexcept; \
+    extern template Vec3<T> dipole_field_at_sensor(const Vec3<T>&, const Vec3<T>&, const Vec3<T>&) noexcept;      \
     extern template void mag_calibration_offer(MagCalibrationState<T>&, const Vec3<T>&, T,                        \
                                                const MagCalibrationConfig<T>&) noexcept;                          \
     extern template bool mag_calibration_solve(MagCalibrationState<T>&, const MagCalibrationConfig<T>&) noexcept; \

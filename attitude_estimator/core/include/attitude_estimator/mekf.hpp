@@ -65,6 +65,12 @@ struct MekfConfig {
     T init_rate_sigma = T(0.02);      // rad/s, per axis, after the two-sample rate
     T init_offset_sigma = T(3e-6);    // T, per axis
     T init_scale_sigma = T(0.05);     // 1
+    // The rate the spacecraft can have at the start, 1σ per axis (rad/s; 0: none): its design's largest tumble
+    // (after separation, before any detumbling). Two single-frame attitudes one sample apart give a rate whose
+    // variance, 2 σ₀²/Δt², is (2.9°·√2/0.05 s)² = 1.4 rad/s per axis at 20 Hz: the filter would propagate that
+    // into its attitude and hold its 3σ bound above 100° for seconds. With this prior the difference is fused
+    // with the rate known beforehand (zero ± this), per axis, at the start (docs/filter.md, "The start's rate").
+    T start_rate_sigma = T(0);
     // --- optional states (a state not estimated keeps its value and zero covariance)
     bool estimate_offset = true;
     bool estimate_scale = false;
