@@ -95,9 +95,15 @@ std::vector<double> numbers(const OnboardSettings<double>& s) {
          f.watch_gate,
          static_cast<double>(f.gravity_gradient),
          f.torque_noise,
-         f.start_rate_sigma});
+         f.start_rate_sigma,
+         f.drag.drag_coefficient,
+         f.drag_density_scale,
+         f.drag_density_sigma,
+         f.drag_correlation_time});
     put_all(f.inertia);
     put_all(f.dipole);
+    put_all(f.drag.size);
+    put_all(f.drag.centre_of_mass);
     const MagCalibrationConfig<double>& k = s.mag_cal;
     put({k.sigma, static_cast<double>(k.every), static_cast<double>(k.min_equations),
          static_cast<double>(k.solve_every), k.max_distortion, k.max_offset, k.max_gain_sigma, k.max_offset_sigma,
@@ -152,6 +158,15 @@ std::function<void(EstimatorData&)> configuration_for(const std::string& name) {
     if (name.starts_with("filter_sun_sigma_method[") || name.starts_with("filter_sun_correlation["))
         return sun_method_of_element;
     if (name.starts_with("tle_elements")) return onboard_references_from_numbers;
+    // The box's geometry reaches the filter only with its drag model on (off, the geometry stays zero), and
+    // the switch shows only with a geometry (leo_orbit's 3U).
+    if (name == "filter_drag")
+        return [](EstimatorData& d) {
+            d.body_size = {0.1, 0.1, 0.34};
+            d.drag_coefficient = 2.2;
+        };
+    for (const char* prefix : {"body_size", "centre_of_mass", "drag_coefficient"})
+        if (name.starts_with(prefix)) return [](EstimatorData& d) { d.filter_drag = true; };
     if (name.starts_with("mag_prior_"))  // the ground calibration, of leo_orbit's 0.05 A m² dipole
         return [](EstimatorData& d) {
             d.mag_calibration = true;
