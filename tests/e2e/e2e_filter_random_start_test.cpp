@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,15 +44,10 @@ TEST(E2eLeoFilterRandomStart, ConsistentWhileConvergingFromFaultsHealthyRunSix) 
     double nees_sum = 0.0, worst = 0.0;
     int rows = 0;
     for (std::size_t i = 0; i < r.time.size(); ++i) {
-        double q_true[4], q_filt[4], l[6];
-        for (int k = 0; k < 4; ++k) {
-            q_true[k] = r["env.q_true[" + std::to_string(k + 1) + "]"][i];
-            q_filt[k] = r["est.q_filt[" + std::to_string(k + 1) + "]"][i];
-        }
-        for (int k = 0; k < 6; ++k) l[k] = r["est.attitude_cov_sqrt[" + std::to_string(k + 1) + "]"][i];
-        if (!(l[0] > 0 && l[2] > 0 && l[5] > 0)) continue;  // the filter not running yet
         double angle = 0.0;
-        nees_sum += e2e::nees_per_dof(q_true, q_filt, l, &angle);
+        const std::optional<double> nees = e2e::recorded_nees_per_dof(r, i, &angle);
+        if (!nees) continue;  // the filter not running yet
+        nees_sum += *nees;
         worst = std::max(worst, angle * 180.0 / std::numbers::pi);
         ++rows;
     }

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,14 +45,9 @@ TEST(E2eLeoFilterStart, ValidWithinTenMinutesAndConsistentWhileConverging) {
     double nees_sum = 0.0, nees_late = 0.0, first_valid = NAN, first_below = NAN;
     int rows = 0, late_rows = 0;
     for (std::size_t i = 0; i < r.time.size(); ++i) {
-        double q_true[4], q_filt[4], l[6];
-        for (int k = 0; k < 4; ++k) {
-            q_true[k] = r["env.q_true[" + std::to_string(k + 1) + "]"][i];
-            q_filt[k] = r["est.q_filt[" + std::to_string(k + 1) + "]"][i];
-        }
-        for (int k = 0; k < 6; ++k) l[k] = r["est.attitude_cov_sqrt[" + std::to_string(k + 1) + "]"][i];
-        if (!(l[0] > 0 && l[2] > 0 && l[5] > 0)) continue;  // the filter not running yet
-        const double nees = e2e::nees_per_dof(q_true, q_filt, l);
+        const std::optional<double> recorded = e2e::recorded_nees_per_dof(r, i);
+        if (!recorded) continue;  // the filter not running yet
+        const double nees = *recorded;
         nees_sum += nees;
         ++rows;
         if (r.time[i] > kStop - kLastSpan) {

@@ -3,6 +3,11 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
+#include <optional>
+#include <string>
+
+#include "recorder.hpp"
 
 namespace e2e {
 
@@ -23,6 +28,19 @@ inline double nees_per_dof(const double q_true[4], const double q_filt[4], const
     const double zz1 = (d[1] - l[1] * z0) / l[2];
     const double zz2 = (d[2] - l[3] * z0 - l[4] * zz1) / l[5];
     return (z0 * z0 + zz1 * zz1 + zz2 * zz2) / 3.0;
+}
+
+// nees_per_dof at row i of a Recorder holding env.q_true[1..4], est.q_filt[1..4] and
+// est.attitude_cov_sqrt[1..6]; none while the filter is not running (a zero diagonal of its factor).
+inline std::optional<double> recorded_nees_per_dof(const Recorder& r, std::size_t i, double* angle = nullptr) {
+    double q_true[4], q_filt[4], l[6];
+    for (int k = 0; k < 4; ++k) {
+        q_true[k] = r["env.q_true[" + std::to_string(k + 1) + "]"][i];
+        q_filt[k] = r["est.q_filt[" + std::to_string(k + 1) + "]"][i];
+    }
+    for (int k = 0; k < 6; ++k) l[k] = r["est.attitude_cov_sqrt[" + std::to_string(k + 1) + "]"][i];
+    if (!(l[0] > 0 && l[2] > 0 && l[5] > 0)) return std::nullopt;
+    return nees_per_dof(q_true, q_filt, l, angle);
 }
 
 }  // namespace e2e
