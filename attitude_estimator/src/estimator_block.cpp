@@ -318,7 +318,7 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
         .applies_when("mag_calibration", {"true"});
     t.parameter("filter_reset_after", &D::filter_reset_after, "",
                 "mekf: samples in a row whose every update fails the innovation test before the filter resets "
-                "to the single-frame attitude")
+                "to the single-frame attitude (without one, in eclipse, it coasts, not valid, until one comes)")
         .range(1.0, 1e6)
         .applies_when("filter", {"mekf"});
     t.parameter("filter_watch_time", &D::filter_watch_time, "s",

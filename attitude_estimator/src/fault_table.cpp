@@ -114,8 +114,8 @@ void declare_fault_variables(fmu::Table<EstimatorData>& t) {
                 "this")
         .range(1e-7, 1e-3);
     t.parameter("detect_flip_min_field_calibrated", &D::detect_flip_min_field_calibrated, "T",
-                "detect_faults: the same once the in-flight calibration applies (its hard-iron estimate is then "
-                "in the predicted field)")
+                "detect_faults: the same (flip and strap tests) once a calibration's hard iron is in the predicted "
+                "field: the ground calibration's from the first sample, else the in-flight one's once it applies")
         .range(1e-7, 1e-3);
     t.parameter("detect_flip_fraction", &D::detect_flip_fraction, "1",
                 "detect_faults: an axis whose reading flips by less than this fraction of the predicted field "

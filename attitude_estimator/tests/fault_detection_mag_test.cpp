@@ -384,6 +384,47 @@ TYPED_TEST(EstimatorCoreMagFaults, AStrapThatWorksAgainIsNoticedAndSetResetResum
     EXPECT_EQ(excluded_axes(s), 0);
 }
 
+// The ground calibration (uplinked, before the in-flight one applies: field_calibrated false) puts the
+// spacecraft's own field into the prediction as well, so the strap test takes the calibrated bar. The field is
+// leo_orbit's at 1550 s seen with it, (3.9, −40.1, −9.5) µT: left without its largest component √(3.9² + 9.5²)
+// = 10.3 µT, under the 15 µT bar that leaves room for an unknown 7.3 µT, above the calibrated 3 µT. The same
+// failure as above (samples 100–299): with the hard iron known it is declared at sample 199 (t = 9.95 s) and
+// its end seen at sample 399 (19.95 s). Without, the strap test never runs here, and y, the one axis over
+// 15 µT, whose half difference is 0 from the pair 99–100, is taken for stuck at sample 199 and excluded.
+TYPED_TEST(EstimatorCoreMagFaults, WithTheGroundCalibrationTheStrapIsTestedInAWeakerField) {
+    using T = TypeParam;
+    Field<T> f;
+    f.b = {T(3.9e-6), T(-40.1e-6), T(-9.5e-6)};
+    const auto c = enabled<T>();
+    for (const bool known : {false, true}) {
+        FaultDetectionState<T> s;
+        for (int i = 0; i < 600; ++i) {
+            auto o = f.observation(i);
+            o.field_calibrated = false;
+            o.field_offset_known = known;
+            o.commanded_polarity = o.polarity;
+            o.mag_offset = {f.v_os, f.v_os, f.v_os};
+            if (i >= 100 && i < 300)
+                for (std::size_t k = 0; k < 3; ++k) o.mag_reading[k] = -f.s * f.b[k] + f.v_os;
+            if (s.strap_failed) o.polarity = s.strap_polarity;
+            fault_detect(s, o, c);
+            if (i == 298) {
+                EXPECT_EQ(s.strap_failed, known);
+            }
+        }
+        EXPECT_FALSE(s.strap_failed);
+        if (known) {
+            EXPECT_NEAR(s.strap_cleared_time, 19.95, 1e-3);
+            for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(s.axis_time[k], 9.95, 1e-3) << k;
+        } else {
+            EXPECT_LT(s.strap_cleared_time, T(0));
+            EXPECT_EQ(s.axis_word[0] | s.axis_word[2], 0u);
+            EXPECT_EQ(s.axis_word[1], kFaultAxisNoFlip);
+            EXPECT_NEAR(s.axis_time[1], 9.95, 1e-3);
+        }
+    }
+}
+
 // While the calibration re-learns its offset after a bias jump (onboard_computer.cpp), the filter's offset
 // state must take what is left of the jump: a field at the sensor, fixed in body axes, read at both set/reset
 // polarities (a pulse every sample). Here the spacecraft holds still at the identity attitude in a field B =

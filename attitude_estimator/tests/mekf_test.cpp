@@ -265,6 +265,60 @@ TYPED_TEST(EstimatorCoreMekf, DivergenceIsDetectedAndResetToTheSingleFrameAttitu
     EXPECT_LT(percentile(r.error, 0.95), 0.3 * M_PI / 180.0);
 }
 
+// A field fault in eclipse (a 15 µT field appears at the sensor, 150 σ of the field's noise): every field update is
+// refused, and no single-frame attitude exists without the sun. A reset would leave no filter until the sun
+// returns (stage 0: nothing to restart from); the filter instead coasts on its dynamics, not valid, and is
+// still on the truth when the sun is back, which it then takes (the field still refused): no reset.
+TYPED_TEST(EstimatorCoreMekf, ARefusedRunInEclipseCoastsUntilASingleFrameCanRestart) {
+    using T = TypeParam;
+    const Scenario sc;
+    MekfConfig<T> c;
+    c.sun_sigma = T(sc.sun_sigma);
+    c.mag_sigma = T(sc.mag_sigma);
+    c.estimate_offset = false;
+    Random rng(15);
+    const Eigen::Matrix3d a0 = rng.rotation();
+    const Eigen::Vector3d sun_ref = Eigen::Vector3d(0.3, -0.8, 0.5).normalized();
+    const Eigen::Vector3d mag_ref(-12e-6, 25e-6, 30e-6);
+    const Eigen::Vector3d jump(15e-6, 0.0, 0.0);  // from 110 s on
+    MekfState<T> s;
+    int resets = 0, refused_valid = 0, refused_samples = 0;
+    double dark_error_max = 0.0, lit_error_max = 0.0;
+    for (int k = 0; k <= 4000; ++k) {  // 200 s; eclipse from 100 s to 180 s
+        const double t = k * sc.period;
+        const Eigen::Matrix3d a = turn(sc.omega, t) * a0;
+        const bool lit = t < 100.0 || t >= 180.0;
+        const Eigen::Vector3d sun_noise(rng.gauss(), rng.gauss(), rng.gauss());
+        const Eigen::Vector3d mag_noise(rng.gauss(), rng.gauss(), rng.gauss());
+        MekfSampleInputs<T> in;
+        in.t = static_cast<T>(t);
+        in.attitude_valid = lit;
+        in.q_single = quaternion_of<T>(rng.rotation(0.01) * a);
+        in.sun_valid = lit;
+        in.sun_ref = to_vec<T>(sun_ref);
+        in.sun_body = to_vec<T>((a * sun_ref + sc.sun_sigma * sun_noise).normalized());
+        in.mag_valid = true;
+        in.mag_ref = to_vec<T>(mag_ref);
+        in.mag_body = to_vec<T>(a * mag_ref + (t >= 110.0 ? jump : Eigen::Vector3d::Zero()) + sc.mag_sigma * mag_noise);
+        const MekfSampleResult<T> r = mekf_sample(s, in, c);
+        resets += r.reset;
+        if (t < 50.0) continue;
+        ASSERT_EQ(s.stage, 2) << "t = " << t;
+        const double e = attitude_angle(matrix_of(s.q), a);
+        if (t >= 115.0 && t < 180.0) {  // the refused run (40 samples = 2 s after the jump) in the dark
+            ++refused_samples;
+            refused_valid += r.valid;
+            dark_error_max = std::max(dark_error_max, e);
+        }
+        if (t >= 185.0) lit_error_max = std::max(lit_error_max, e);
+    }
+    EXPECT_EQ(resets, 0);
+    EXPECT_EQ(refused_valid, 0) << "of " << refused_samples;
+    // Coasting 70 s on the converged rate (its error a few 1e-6 rad/s): well under a degree.
+    EXPECT_LT(dark_error_max, 0.5 * M_PI / 180.0);
+    EXPECT_LT(lit_error_max, 0.5 * M_PI / 180.0);
+}
+
 // 300 s of a slow tumble with Kelly panels 3 % brighter than their nominal normalization, each face also
 // lit by the Earth with `albedo` · max(0, n_k · d) of full sun (d a nadir fixed in the body, as for an
 // Earth-pointing craft): the panel scale the face update ends with. `albedo_known`: the face albedo given

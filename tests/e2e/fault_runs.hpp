@@ -23,11 +23,6 @@ inline Recorder run_leo_detecting(const std::vector<std::string>& settings, doub
     options.fmu_dirs = {PVATT_FMU_DIR};
     options.settings = settings;
     options.settings.push_back("est.detect_faults=true");
-    // The onsets (1500 s, first orbit) and aims were set with the field uncalibrated until the in-flight
-    // calibration: with leo_orbit's ground calibration (issue 39) the control's sunlit p95 drops to 0.22° and a y
-    // axis stuck at 1500 s leaves 1.09° (1.48° against 1.19° before), beyond 1.5 times the control, and a strap
-    // that works again goes unnoticed. Open (docs/faults.md); these runs keep the former first orbit meanwhile.
-    options.settings.push_back("est.mag_prior_offset_sigma=0");
     cosim::System system(cosim::read_system_description(PVATT_SYSTEMS_DIR "/leo_orbit.ssd"), options);
     cosim::ExecutionOptions ex;
     ex.stop_time = stop_time;

@@ -13,6 +13,12 @@ namespace {
 template <class T>
 constexpr T kFrozenSigmas = T(4);
 
+// The flip and strap tests' bar: the calibrated one once the spacecraft's own field is in the prediction.
+template <class T>
+T flip_min_field(const FaultObservation<T>& o, const FaultDetectionConfig<T>& c) {
+    return o.field_calibrated || o.field_offset_known ? c.flip_min_field_calibrated : c.flip_min_field;
+}
+
 // The strap test: with every axis read (none at a rail; an axis excluded for not flipping is still read) and a prediction, the measured half
 // difference vector h = p (r_k − r_{k−1})/2S is S B (the whole field) when the strap works, S B less one
 // component when a single axis is stuck, about nothing when the strap failed. Applied where the field left
@@ -71,7 +77,7 @@ Outcome strap_outcome(const FaultDetectionState<T>& s, const FaultObservation<T>
         const T b2 = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
         const T largest = std::max(b[0] * b[0], std::max(b[1] * b[1], b[2] * b[2]));
         const T least_two = b2 - largest;  // T²
-        const T min_field = o.field_calibrated ? c.flip_min_field_calibrated : c.flip_min_field;
+        const T min_field = flip_min_field(o, c);
         if (least_two >= min_field * min_field) {
             T h2 = T(0);
             for (std::size_t k = 0; k < 3; ++k) {
@@ -178,7 +184,7 @@ void axis_tests(FaultDetectionState<T>& s, const FaultObservation<T>& o, const F
             declare(s.axis_word[k], s.axis_time[k], kFaultAxisRail, o.t);
         Outcome flips = Outcome::not_applicable;
         const T expected = o.field_body[k];
-        const T min_field = o.field_calibrated ? c.flip_min_field_calibrated : c.flip_min_field;
+        const T min_field = flip_min_field(o, c);
         if (flip && !strap_suspect && o.predicted && !o.at_rail[k] && std::abs(expected) >= min_field) {
             const T half = o.polarity * (o.mag_reading[k] - s.last_reading[k]) / (T(2) * o.sensitivity);
             const T along = expected > T(0) ? half : -half;

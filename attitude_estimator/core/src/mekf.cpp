@@ -3,6 +3,7 @@
 #include "attitude_estimator/mekf.hpp"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 
 #include "attitude_estimator/attitude_matrix.hpp"
@@ -619,9 +620,15 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
         result.faces_accepted =
             mekf_update_faces(s, in.sun_ref, in.face_r, in.face_albedo, in.face_use, *in.response, c);
 
-    if (offered > 0) s.refused_in_row = accepted > 0 ? 0 : s.refused_in_row + 1;
+    // (Held at reset_after while a refused run waits for a single frame: it cannot overflow in a long eclipse.)
+    if (offered > 0) s.refused_in_row = accepted > 0 ? 0 : std::min<std::int32_t>(s.refused_in_row + 1, c.reset_after);
     result.lost = c.watch_time > T(0) && s.watch_ratio > c.watch_gate;
-    if (s.refused_in_row >= c.reset_after || !finite(s) || result.lost) {
+    // A reset starts over from the single-frame attitude; without one (no sun: eclipse) it would leave no filter
+    // until the sun returns, and the fault tests no prediction to judge the field by (a bias jump in eclipse
+    // was declared only after the sun's return). So a refused run waits for a single frame to restart from,
+    // the filter coasting on its dynamics meanwhile, not valid (docs/filter.md, "Tuning with the drag on board").
+    const bool refused_run = s.refused_in_row >= c.reset_after;
+    if ((refused_run && in.attitude_valid) || !finite(s) || result.lost) {
         // Diverged: back to the single-frame attitude (and a fresh rate from the next one).
         ++s.resets;
         result.reset = true;
@@ -637,7 +644,7 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
         return result;
     }
     result.bound = mekf_attitude_bound(s);
-    result.valid = result.bound < c.valid_bound;
+    result.valid = result.bound < c.valid_bound && !refused_run;
     return result;
 }
 

@@ -288,7 +288,10 @@ void predict_at_sensor(const OnboardState<T>& s, const OnboardInputs<T>& in, con
         for (std::size_t k = 0; k < 3; ++k) v[k] = o.field_body[k] + s.mag_cal.offset[k];
         const Vec3<T> gv = multiply(s.mag_cal.gain, v);
         for (std::size_t k = 0; k < 3; ++k) o.field_body[k] = T(2) * v[k] - gv[k];
-        o.field_calibrated = s.mag_cal.valid;  // the ground calibration's offset alone: the uncalibrated bars
+        // The ground calibration's offset alone: the spacecraft's field is in the prediction (the flip and strap
+        // tests' calibrated bar), its scale is not (the tests that need the in-flight calibration wait).
+        o.field_calibrated = s.mag_cal.valid;
+        o.field_offset_known = true;
     }
 }
 

@@ -101,8 +101,9 @@ struct FaultDetectionConfig {
     // uses the same two numbers on the field left without its largest component (the least any two axes
     // show): applied where that is at least flip_min_field, failing below flip_fraction of it.
     T flip_min_field = T(15e-6);  // T
-    // The same once the in-flight calibration applies: its hard-iron estimate is then in the prediction (the
-    // spacecraft's own field, 7.3 µT at the sensor in leo_orbit, is what the 15 µT bar allows for).
+    // The same once a calibration's hard iron is in the prediction (FaultObservation::field_offset_known: the
+    // ground calibration from the first sample, the in-flight one once it applies): the spacecraft's own
+    // field, 7.3 µT at the sensor in leo_orbit, is what the 15 µT bar allows for.
     T flip_min_field_calibrated = T(3e-6);  // T
     T flip_fraction = T(0.25);
     T norm_tolerance = T(12e-6);  // T: | |B| − |B_ref| |
@@ -155,9 +156,12 @@ struct FaultObservation {
     Vec3<T> sun_sigma{};
     Vec3<T> field_body{};           // T: field predicted at the sensor, in body axes
     Vec3<T> field_sigma{};          // T: 1σ of field_body per axis from the filter's attitude covariance
-    bool field_calibrated = false;  // field_body includes the calibration's hard-iron estimate (and scale)
-    Vec3<T> mag_reading{};          // V: digitized v_mag − v_mag_ref (offset and polarity still in)
-    T polarity = T(1);              // the set/reset polarity the reading was taken in
+    bool field_calibrated = false;  // field_body includes the in-flight calibration's hard iron and scale
+    // field_body includes the spacecraft's own field at the sensor: a calibration's hard-iron estimate, the
+    // in-flight one or the uplinked ground calibration's (its error 0.5 µT per axis in leo_orbit, not 7.3 µT)
+    bool field_offset_known = false;
+    Vec3<T> mag_reading{};  // V: digitized v_mag − v_mag_ref (offset and polarity still in)
+    T polarity = T(1);      // the set/reset polarity the reading was taken in
     // The polarity the computer commanded for it (differs from `polarity` once a failed strap is declared:
     // the recovery test pairs readings by the command).
     T commanded_polarity = T(1);
