@@ -326,6 +326,7 @@ void leo_orbit_3u(EstimatorData& d, bool detect, bool torques_only) {
     d.mag_prior_field_sigma = 25e-6;
     d.mag_prior_dipole = {0.0, 0.0, 0.05};
     d.filter_mag_sigma_calibrated = 14e-6;
+    d.filter_mag_sigma_eclipse = 2.5e-6;
     d.filter_sun_sigma_method = {0.094, 0.088, 0.069, 0.051};
     d.filter_sun_correlation = {51.0, 31.0, 12.0, 12.0};
     d.filter_torque_noise = 1.5e-8;
