@@ -24,17 +24,28 @@ namespace fs = std::filesystem;
 std::atomic<int> received{0};
 std::once_flag installed;
 
+// Declared before private_temp so that it outlives it: the destructor below takes it.
+std::mutex private_temp_mutex;
+
+// Removes `path` and everything in it. The main thread may be removing the extraction folders inside it at
+// the same time (a run unwinding from the first signal when the second aborts it): remove_all stops at the
+// first entry that vanished under it and leaves the rest, so it is repeated until the folder is gone (an
+// extraction under way stops at its next entry once a signal has been received: fmu_archive.cpp).
+void remove_folder(const fs::path& path) {
+    std::error_code ec;
+    for (int attempt = 0; attempt < 100 && fs::exists(path, ec); ++attempt) fs::remove_all(path, ec);
+}
+
 // The private temporary folder of use_private_temp_directory(): removed when the process exits
-// normally (a static's destructor) and by the signal thread on an abort.
+// normally (a static's destructor) and by the signal thread on an abort, one at a time.
 struct PrivateTemp {
     fs::path path;
     ~PrivateTemp() {
-        std::error_code ec;
-        if (!path.empty()) fs::remove_all(path, ec);
+        std::lock_guard lock(private_temp_mutex);
+        if (!path.empty()) remove_folder(path);
     }
 };
 PrivateTemp private_temp;
-std::mutex private_temp_mutex;
 
 const char* signal_name(int signal) {
     return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : signal == SIGHUP ? "SIGHUP" : "a signal";
@@ -63,8 +74,7 @@ void signal_loop(sigset_t set) {
                      signal_name(signal), aborted_exit_code);
         {
             std::lock_guard lock(private_temp_mutex);
-            std::error_code ec;
-            if (!private_temp.path.empty()) fs::remove_all(private_temp.path, ec);
+            if (!private_temp.path.empty()) remove_folder(private_temp.path);
         }
         std::_Exit(aborted_exit_code);
     }
