@@ -350,6 +350,33 @@ TYPED_TEST(EstimatorCoreMagFaults, AHealthyAxisWithConverterStepNoiseIsNotTakenF
     EXPECT_EQ(run(blunt).axis_word[1], kFaultAxisNoFlip);
 }
 
+// A strap that fails after sample 99 (a reset) and works again from sample 300: readings −S B + v_os whatever
+// the command in between, p S B + v_os with p the command otherwise, read in the stuck polarity while the
+// failure is declared (as onboard_computer.cpp does); `edit` adjusts each observation first. The state after
+// sample 298 (the failure's last) and after 600 samples.
+template <class T>
+struct StrapRun {
+    FaultDetectionState<T> at_298, end;
+};
+
+template <class T, class Edit>
+StrapRun<T> strap_failing_from_100_to_300(const Field<T>& f, const FaultDetectionConfig<T>& c, Edit edit) {
+    StrapRun<T> run;
+    FaultDetectionState<T>& s = run.end;
+    for (int i = 0; i < 600; ++i) {
+        auto o = f.observation(i);
+        edit(o);
+        o.commanded_polarity = o.polarity;
+        o.mag_offset = {f.v_os, f.v_os, f.v_os};
+        if (i >= 100 && i < 300)
+            for (std::size_t k = 0; k < 3; ++k) o.mag_reading[k] = -f.s * f.b[k] + f.v_os;
+        if (s.strap_failed) o.polarity = s.strap_polarity;
+        fault_detect(s, o, c);
+        if (i == 298) run.at_298 = s;
+    }
+    return run;
+}
+
 TYPED_TEST(EstimatorCoreMagFaults, AStrapThatWorksAgainIsNoticedAndSetResetResumes) {
     using T = TypeParam;
     const Field<T> f;
@@ -360,21 +387,10 @@ TYPED_TEST(EstimatorCoreMagFaults, AStrapThatWorksAgainIsNoticedAndSetResetResum
     // 99–100 shows no difference), declared at the 100th failing sample, 199 (t = 9.95 s), in the reset
     // polarity. Paired by the command, the readings flip again from the pair 299–300: the 100th passing
     // sample, 399 (t = 19.95 s), clears the failure.
-    FaultDetectionState<T> s;
-    for (int i = 0; i < 600; ++i) {
-        auto o = f.observation(i);
-        o.commanded_polarity = o.polarity;
-        o.mag_offset = {f.v_os, f.v_os, f.v_os};
-        if (i >= 100 && i < 300)
-            for (std::size_t k = 0; k < 3; ++k) o.mag_reading[k] = -f.s * f.b[k] + f.v_os;
-        // The computer reads in the stuck polarity while the failure is declared (onboard_computer.cpp).
-        if (s.strap_failed) o.polarity = s.strap_polarity;
-        fault_detect(s, o, c);
-        if (i == 298) {
-            EXPECT_TRUE(s.strap_failed);
-            EXPECT_EQ(s.strap_polarity, T(-1));
-        }
-    }
+    const StrapRun<T> run = strap_failing_from_100_to_300(f, c, [](FaultObservation<T>&) {});
+    EXPECT_TRUE(run.at_298.strap_failed);
+    EXPECT_EQ(run.at_298.strap_polarity, T(-1));
+    const FaultDetectionState<T>& s = run.end;
     EXPECT_FALSE(s.strap_failed);
     EXPECT_NEAR(s.strap_cleared_time, 19.95, 1e-3);
     for (std::size_t k = 0; k < 3; ++k) {
@@ -397,21 +413,12 @@ TYPED_TEST(EstimatorCoreMagFaults, WithTheGroundCalibrationTheStrapIsTestedInAWe
     f.b = {T(3.9e-6), T(-40.1e-6), T(-9.5e-6)};
     const auto c = enabled<T>();
     for (const bool known : {false, true}) {
-        FaultDetectionState<T> s;
-        for (int i = 0; i < 600; ++i) {
-            auto o = f.observation(i);
+        const StrapRun<T> run = strap_failing_from_100_to_300(f, c, [known](FaultObservation<T>& o) {
             o.field_calibrated = false;
             o.field_offset_known = known;
-            o.commanded_polarity = o.polarity;
-            o.mag_offset = {f.v_os, f.v_os, f.v_os};
-            if (i >= 100 && i < 300)
-                for (std::size_t k = 0; k < 3; ++k) o.mag_reading[k] = -f.s * f.b[k] + f.v_os;
-            if (s.strap_failed) o.polarity = s.strap_polarity;
-            fault_detect(s, o, c);
-            if (i == 298) {
-                EXPECT_EQ(s.strap_failed, known);
-            }
-        }
+        });
+        EXPECT_EQ(run.at_298.strap_failed, known);
+        const FaultDetectionState<T>& s = run.end;
         EXPECT_FALSE(s.strap_failed);
         if (known) {
             EXPECT_NEAR(s.strap_cleared_time, 19.95, 1e-3);
