@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -11,17 +10,10 @@
 #include "engine/execution.hpp"
 #include "engine/system.hpp"
 #include "engine/system_description.hpp"
+#include "magnetometer/spacecraft_field.hpp"
 #include "recorder.hpp"
 
 namespace {
-
-// The field of a point dipole m (A m², at the origin) at r (m): μ0/4π (3 r̂ (m · r̂) − m) / |r|³.
-void dipole_field(const double m[3], const double r[3], double b[3]) {
-    const double r2 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
-    const double rn = std::sqrt(r2);
-    const double mr = (m[0] * r[0] + m[1] * r[1] + m[2] * r[2]) / rn;
-    for (int i = 0; i < 3; ++i) b[i] = 1e-7 * (3.0 * mr * r[i] / rn - m[i]) / (r2 * rn);
-}
 
 // Median and 95th percentile of the angle between the board's measured field (est.mag_meas) and the field
 // it should read, over 60 s of leo_orbit at the estimator's 20 Hz. The sensor reads the earth's field
@@ -30,7 +22,8 @@ void dipole_field(const double m[3], const double r[3], double b[3]) {
 // out the dipole's field at the sensor as measured on the ground: the point dipole of the magnetometer's own
 // dipole_moment at dipole_position, seen at sensor_position, plus the measurement's named error
 // est.mag_prior_offset_error (docs/filter.md, "The ground calibration"). Both are computed here from the
-// scenario's parameters, not read from the computer: what is left is the truth est.mag_meas should show.
+// scenario's parameters with the truth's own dipole model (the magnetometer's), not read from the computer:
+// what is left is the truth est.mag_meas should show.
 std::pair<double, double> field_direction_error(std::vector<std::string> settings) {
     cosim::SystemOptions options;
     options.fmu_dirs = {PVATT_FMU_DIR};
@@ -48,14 +41,14 @@ std::pair<double, double> field_direction_error(std::vector<std::string> setting
     e2e::Recorder rec(system, cols);
     cosim::Execution(system, ex).run({&rec});
     const auto at = [&](const std::string& base, int i) { return rec[base + "[" + std::to_string(i + 1) + "]"][0]; };
-    double ground[3] = {0.0, 0.0, 0.0};  // what the ground calibration takes out
+    magnetometer::Vec3 ground{};  // what the ground calibration takes out
     if (rec["est.mag_prior_offset_sigma"][0] > 0.0) {
-        double m[3], r[3];
+        magnetometer::Vec3 m, r;
         for (int i = 0; i < 3; ++i) {
             m[i] = at("mag.dipole_moment", i);
             r[i] = at("mag.sensor_position", i) - at("mag.dipole_position", i);
         }
-        dipole_field(m, r, ground);
+        ground = magnetometer::dipole_field(m, r);
         for (int i = 0; i < 3; ++i) ground[i] += at("est.mag_prior_offset_error", i);
     }
     std::vector<double> errors;
