@@ -2,8 +2,8 @@
 """Where a filter is over- or under-confident: the error split along the eigenvectors of its covariance.
 
 For each row of a `cosim run` or `cosim campaign --run N` CSV in the second half of the run (the second orbit of a
-two-orbit run) with a running filter, the attitude error dtheta (q_true (x) q_filt^-1 in Shuster's order, as
-consistency_spans.py) is projected on the eigenvectors of P_theta = L L^T (thin to wide) and divided by their
+two-orbit run) with a running filter, the attitude error dtheta (q_true (x) q_filt^-1 in Shuster's order,
+consistency_spans.delta_theta) is projected on the eigenvectors of P_theta = L L^T (thin to wide) and divided by their
 sigma. A consistent filter gives a mean square of 1 along each. Printed per phase (env.irradiance > 0: sunlit):
 NEES/dof, those three mean squares, the median sigmas, and how the thinnest direction lies against the body axes,
 the rate (env.omega_body), the sun and the field in body axes (median |cos|). attitude_estimator/docs/filter.md,
@@ -13,6 +13,8 @@ import argparse
 import csv
 
 import numpy as np
+
+from consistency_spans import delta_theta  # the error's convention, shared with the consistency figures
 
 
 def read(path):
@@ -25,15 +27,6 @@ def read(path):
 
 def vectors(col, name, n):
     return np.stack([col(f"{name}[{k}]") for k in range(1, n + 1)], 1)
-
-
-def delta_theta(q_true, q_filt):
-    x1, y1, z1, w1 = q_true.T
-    x2, y2, z2, w2 = -q_filt[:, 0], -q_filt[:, 1], -q_filt[:, 2], q_filt[:, 3]
-    d = np.stack([w1 * x2 + w2 * x1 - (y1 * z2 - z1 * y2), w1 * y2 + w2 * y1 - (z1 * x2 - x1 * z2),
-                  w1 * z2 + w2 * z1 - (x1 * y2 - y1 * x2)], 1)
-    sign = np.where((w1 * w2 - (x1 * x2 + y1 * y2 + z1 * z2)) < 0, -2.0, 2.0)
-    return d * sign[:, None]
 
 
 def covariance(l):
@@ -53,7 +46,7 @@ def main():
     col = read(args.csv)
     t = col("time")
     late = t >= t[-1] / 2
-    d = delta_theta(vectors(col, "env.q_true", 4), vectors(col, "est.q_filt", 4))
+    d = np.array([delta_theta(qt, qf) for qt, qf in zip(vectors(col, "env.q_true", 4), vectors(col, "est.q_filt", 4))])
     factor = vectors(col, "est.attitude_cov_sqrt", 6)
     rate, sun, field = (vectors(col, n, 3) for n in ("env.omega_body", "env.sun_body", "env.mag_body"))
     sunlit = col("env.irradiance") > 0
