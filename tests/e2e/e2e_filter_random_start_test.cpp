@@ -35,9 +35,7 @@ TEST(E2eLeoFilterRandomStart, ConsistentWhileConvergingFromFaultsHealthyRunSix) 
     cosim::ExecutionOptions ex;
     ex.stop_time = kStop;
     ex.output_interval = 1.0;
-    std::vector<std::string> columns = e2e::vec("env.q_true", 4);
-    for (const auto& n : e2e::vec("est.q_filt", 4)) columns.push_back(n);
-    for (const auto& n : e2e::vec("est.attitude_cov_sqrt", 6)) columns.push_back(n);
+    std::vector<std::string> columns = e2e::nees_columns();
     e2e::Recorder r(system, columns);
     cosim::Execution(system, ex).run({&r});
 

@@ -34,9 +34,7 @@ TEST(E2eLeoFilterStart, ValidWithinTenMinutesAndConsistentWhileConverging) {
     cosim::ExecutionOptions ex;
     ex.stop_time = kStop;
     ex.output_interval = 1.0;
-    std::vector<std::string> columns = e2e::vec("env.q_true", 4);
-    for (const auto& n : e2e::vec("est.q_filt", 4)) columns.push_back(n);
-    for (const auto& n : e2e::vec("est.attitude_cov_sqrt", 6)) columns.push_back(n);
+    std::vector<std::string> columns = e2e::nees_columns();
     columns.push_back("est.attitude_bound");
     columns.push_back("est.filter_valid");
     e2e::Recorder r(system, columns);

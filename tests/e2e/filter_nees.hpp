@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "recorder.hpp"
 
@@ -28,6 +29,14 @@ inline double nees_per_dof(const double q_true[4], const double q_filt[4], const
     const double zz1 = (d[1] - l[1] * z0) / l[2];
     const double zz2 = (d[2] - l[3] * z0 - l[4] * zz1) / l[5];
     return (z0 * z0 + zz1 * zz1 + zz2 * zz2) / 3.0;
+}
+
+// The columns recorded_nees_per_dof reads: env.q_true[1..4], est.q_filt[1..4], est.attitude_cov_sqrt[1..6].
+inline std::vector<std::string> nees_columns() {
+    std::vector<std::string> columns = vec("env.q_true", 4);
+    for (const auto& n : vec("est.q_filt", 4)) columns.push_back(n);
+    for (const auto& n : vec("est.attitude_cov_sqrt", 6)) columns.push_back(n);
+    return columns;
 }
 
 // nees_per_dof at row i of a Recorder holding env.q_true[1..4], est.q_filt[1..4] and
