@@ -27,7 +27,7 @@ endif()
 add_executable(attitude_estimator_rates_tests tests/spin_spectrum_test.cpp tests/angular_rate_test.cpp)
 target_link_libraries(attitude_estimator_rates_tests PRIVATE attitude_estimator_rates
                       Eigen3::Eigen GTest::gtest_main)
-target_include_directories(attitude_estimator_rates_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)  # malloc_counter.hpp
+target_include_directories(attitude_estimator_rates_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests/support)  # malloc_counter.hpp, ordered_draws.hpp
 gtest_discover_tests(attitude_estimator_rates_tests DISCOVERY_TIMEOUT 60)
 
 add_test(NAME Rates.AngularRateNoHeapNoThrowSymbols

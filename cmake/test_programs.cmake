@@ -5,8 +5,9 @@
 # PVATT_TEST_PCH: <gtest/gtest.h> and Eigen (Dense, Geometry) are compiled once (host: pvatt_test_pch) and
 # every test program reuses them (REUSE_FROM). Parsing them costs a test translation unit about 1.5 s (GoogleTest)
 # and 2 s (Eigen, which half the test files include) of CPU under the sanitizers. The host is an
-# executable so that its flags (-fPIE, sanitizers, standard, optimization) are the test programs' own: GCC
-# refuses a header made with other flags, and -Winvalid-pch with -Werror makes that a build error. The
+# executable so that its flags (-fPIE, sanitizers, standard, optimization) are the test programs' own: a
+# compiler refuses a header made with other flags (clang with an error; GCC, the release build's compiler,
+# with -Winvalid-pch, which -Werror makes one). The
 # release build compiles every test without it, which keeps each file's includes honest.
 #
 # PVATT_TEST_OPTIMIZE: the optimization of the test programs' own sources (e.g. -O1 in the sanitize preset),

@@ -21,7 +21,7 @@ packages=(
   libopenmpi-dev openmpi-bin  # cosim campaign over MPI ranks (build option PVATT_MPI)
   zip unzip
   clang-format        # one format for every C++ file (scripts/format.sh --check in scripts/test.sh)
-  clang libclang-rt-14-dev   # libFuzzer with ASan and UBSan (scripts/fuzz.sh, fuzz/)
+  clang libclang-rt-14-dev   # the test build (scripts/test.sh) and libFuzzer (scripts/fuzz.sh), ASan and UBSan
   clang-tidy          # the static checks of .clang-tidy (scripts/tidy.sh)
   python3-sgp4        # orbit/ tests: the independent SGP4 (Brandon Rhodes' package) run at test time
   python3-numpy       # the Python package python/pvatt (its result columns are numpy arrays)

@@ -16,6 +16,7 @@
 #include "attitude_estimator/angular_rate.hpp"
 #include "attitude_estimator/attitude_matrix.hpp"
 #include "attitude_estimator/vec3_math.hpp"
+#include "ordered_draws.hpp"
 
 namespace attitude_estimator::test {
 namespace {
@@ -86,7 +87,7 @@ constexpr double kRatesDeg[] = {0.3, 0.94, 1.3};  // °/s, the range of 004 §4
 // A random small rotation applied to q: rotation vector with per-axis sigma (rms angle sigma √3).
 Quaternion<double> perturb(const Quaternion<double>& q, double sigma, std::mt19937_64& gen) {
     std::normal_distribution<double> n(0.0, sigma);
-    const Eigen::Vector3d e(n(gen), n(gen), n(gen));
+    const Eigen::Vector3d e = ordered_draws::vector3(n, gen);
     const Eigen::Quaterniond dq(Eigen::AngleAxisd(e.norm(), e.norm() > 0 ? e.normalized() : Eigen::Vector3d::UnitX()));
     // Compose in the Hamilton product on the raw components (the metric is convention-blind).
     const Eigen::Quaterniond qe(q.w, q.x, q.y, q.z);  // Eigen's constructor order is (w, x, y, z)

@@ -82,7 +82,7 @@ Worst run_family(Family family, int count, std::uint64_t seed) {
             }
             if (i == 1) sep_sin = v.cross(v0).norm();
             Eigen::Vector3d w = a_true * v;
-            if (noise > 0.0) w = (w + noise * Eigen::Vector3d(rng.gauss(), rng.gauss(), rng.gauss())).normalized();
+            if (noise > 0.0) w = (w + noise * rng.gauss3()).normalized();
             set.add(to_vec<T>(v), to_vec<T>(w), static_cast<T>(rng.uniform(0.1, 1.0)));
         }
         const auto q = solve_q_method(set, options);

@@ -63,7 +63,10 @@ TYPED_TEST(EstimatorCoreKnownRotation, RandomRotationsTwoToSixObservations) {
             // Keep the first pair at least 20° apart so the problem is well posed.
             while (i == 1 && v.cross(v0).norm() < std::sin(20.0 * M_PI / 180.0)) v = rng.unit();
             if (i == 0) v = v0;
-            set.add(to_vec<T>(v * rng.uniform(0.5, 2.0)), to_vec<T>(a_true * v), static_cast<T>(rng.uniform(0.1, 1.0)));
+            // The weight first, then the length: the order GCC evaluated them in when they were the call's arguments.
+            const double weight = rng.uniform(0.1, 1.0);
+            const double length = rng.uniform(0.5, 2.0);
+            set.add(to_vec<T>(v * length), to_vec<T>(a_true * v), static_cast<T>(weight));
         }
         for (int k = 0; k < 2; ++k) {
             const auto s = k == 0 ? solve_q_method(set) : solve_fast(set);

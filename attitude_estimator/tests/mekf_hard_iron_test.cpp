@@ -64,8 +64,8 @@ Outcome run(const Case& cs, const MekfConfig<T>& c, std::uint64_t seed) {
         const Eigen::Matrix3d a = Eigen::AngleAxisd(-angle, cs.omega.normalized()).toRotationMatrix() * a0;
         const double p = k % 2 == 0 ? 1.0 : -1.0;  // a set/reset pulse every sample, as leo_orbit's
         const bool calibrated = t >= cs.calibrated_from;
-        const Eigen::Vector3d sun_noise(rng.gauss(), rng.gauss(), rng.gauss());
-        const Eigen::Vector3d mag_noise(rng.gauss(), rng.gauss(), rng.gauss());
+        const Eigen::Vector3d sun_noise = rng.gauss3();
+        const Eigen::Vector3d mag_noise = rng.gauss3();
         Eigen::Vector3d field = a * mag_ref + p * cs.offset + mag_sigma * mag_noise;
         if (!calibrated) field += cs.hard_iron;
         MekfSampleInputs<T> in;
@@ -175,7 +175,7 @@ TYPED_TEST(EstimatorCoreMekfHardIron, TheStartCovarianceCarriesTheHardIronsError
     double nees_sum = 0, largest = 0;
     for (int trial = 0; trial < trials; ++trial) {
         const Eigen::Matrix3d a = rng.rotation();
-        const Eigen::Vector3d hard_iron = 10e-6 * Eigen::Vector3d(rng.gauss(), rng.gauss(), rng.gauss());
+        const Eigen::Vector3d hard_iron = 10e-6 * rng.gauss3();
         MekfState<T> s;
         for (int k = 0; k < 2; ++k) {  // two samples 0.05 s apart (the body at rest): attitude, then rate
             MekfSampleInputs<T> in;

@@ -58,8 +58,8 @@ RunStats run(const Scenario& sc, const MekfConfig<T>& config, const Eigen::Matri
         const Eigen::Matrix3d a = turn(sc.omega, t) * a0;
         const double p = (static_cast<long>(std::floor(t / sc.polarity_period)) % 2 == 0) ? 1.0 : -1.0;
         const bool lit = !(t >= sc.eclipse_from && t < sc.eclipse_to);
-        const Eigen::Vector3d sun_noise(rng.gauss(), rng.gauss(), rng.gauss());
-        const Eigen::Vector3d mag_noise(rng.gauss(), rng.gauss(), rng.gauss());
+        const Eigen::Vector3d sun_noise = rng.gauss3();
+        const Eigen::Vector3d mag_noise = rng.gauss3();
         const Eigen::Vector3d sun_body = (a * sun_ref + sc.sun_sigma * sun_noise).normalized();
         const Eigen::Vector3d mag_body = a * mag_ref + p * sc.offset + sc.mag_sigma * mag_noise;
         MekfSampleInputs<T> in;
@@ -288,8 +288,8 @@ TYPED_TEST(EstimatorCoreMekf, ARefusedRunInEclipseCoastsUntilASingleFrameCanRest
         const double t = k * sc.period;
         const Eigen::Matrix3d a = turn(sc.omega, t) * a0;
         const bool lit = t < 100.0 || t >= 180.0;
-        const Eigen::Vector3d sun_noise(rng.gauss(), rng.gauss(), rng.gauss());
-        const Eigen::Vector3d mag_noise(rng.gauss(), rng.gauss(), rng.gauss());
+        const Eigen::Vector3d sun_noise = rng.gauss3();
+        const Eigen::Vector3d mag_noise = rng.gauss3();
         MekfSampleInputs<T> in;
         in.t = static_cast<T>(t);
         in.attitude_valid = lit;
@@ -350,10 +350,10 @@ double panel_scale_after_tumble(double albedo, bool albedo_known, double face_mi
         in.q_single = quaternion_of<T>(rng.rotation(0.01) * a);
         in.sun_valid = true;
         in.sun_ref = to_vec<T>(sun_ref);
-        in.sun_body = to_vec<T>((sun + 0.01 * Eigen::Vector3d(rng.gauss(), rng.gauss(), rng.gauss())).normalized());
+        in.sun_body = to_vec<T>((sun + 0.01 * rng.gauss3()).normalized());
         in.mag_valid = true;
         in.mag_ref = to_vec<T>(mag_ref);
-        in.mag_body = to_vec<T>(a * mag_ref + 0.1e-6 * Eigen::Vector3d(rng.gauss(), rng.gauss(), rng.gauss()));
+        in.mag_body = to_vec<T>(a * mag_ref + 0.1e-6 * rng.gauss3());
         for (int f = 0; f < 6; ++f) {
             const double sign = f % 2 == 0 ? 1.0 : -1.0;
             const double earth = albedo * std::max(0.0, sign * nadir(f / 2));

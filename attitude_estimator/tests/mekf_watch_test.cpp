@@ -49,9 +49,9 @@ struct Outcome {
 template <class T>
 Outcome run(MekfState<T>& s, const MekfConfig<T>& c, const Eigen::Matrix3d& a0, double duration, std::uint64_t seed) {
     Random rng(seed);
-    Eigen::Vector3d field_error(rng.gauss(), rng.gauss(), rng.gauss());
+    Eigen::Vector3d field_error = rng.gauss3();
     field_error *= kFieldSigma;
-    Eigen::Vector3d sun_error(rng.gauss(), rng.gauss(), rng.gauss());
+    Eigen::Vector3d sun_error = rng.gauss3();
     sun_error *= 0.02;
     const double phi_field = std::exp(-kPeriod / kFieldTau), phi_sun = std::exp(-kPeriod / 50.0);
     Outcome o;

@@ -18,6 +18,7 @@
 #include "environment/time_scales.hpp"
 #include "orbit/sgp4.hpp"
 #include "orbit/tle.hpp"
+#include "ordered_draws.hpp"
 #include "test_support.hpp"
 
 namespace ae = attitude_estimator;
@@ -98,7 +99,7 @@ TYPED_TEST(OnboardModels, FieldAtDegree13IsTheEnvironmentsIgrf) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     double worst = 0.0;
     for (int k = 0; k < 300; ++k) {
-        Eigen::Vector3d r(u(rng), u(rng), u(rng));
+        Eigen::Vector3d r = ordered_draws::vector3(u, rng);
         if (k == 0) r = Eigen::Vector3d(0, 0, 1);   // north pole
         if (k == 1) r = Eigen::Vector3d(0, 0, -1);  // south pole
         r = r.normalized() * (k % 2 ? 6371.2e3 : 6948.0e3);
@@ -126,7 +127,7 @@ TEST(OnboardField, TruncationErrorFallsWithDegree) {
     std::mt19937 rng(8);
     std::normal_distribution<double> n(0.0, 1.0);
     std::vector<Eigen::Vector3d> points;
-    for (int k = 0; k < 2000; ++k) points.push_back(Eigen::Vector3d(n(rng), n(rng), n(rng)).normalized() * 6948e3);
+    for (int k = 0; k < 2000; ++k) points.push_back(ordered_draws::vector3(n, rng).normalized() * 6948e3);
     const ae::FieldModel<double> full = ae::make_field_model<double>(13);
     double previous = 1e300;
     for (int degree = 1; degree <= 12; ++degree) {

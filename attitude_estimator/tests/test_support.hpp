@@ -94,10 +94,19 @@ public:
     double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(gen_); }
     double gauss() { return std::normal_distribution<double>(0.0, 1.0)(gen_); }
     int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(gen_); }
+    // Three draws, z first: one per statement, because the order of a call's arguments is unspecified (GCC
+    // evaluates Eigen::Vector3d(gauss(), gauss(), gauss()) from the last, clang from the first) and the tests'
+    // draws must not depend on the compiler. z first keeps the draws the tests were written with (GCC's).
+    Eigen::Vector3d gauss3() {
+        const double z = gauss();
+        const double y = gauss();
+        const double x = gauss();
+        return {x, y, z};
+    }
     Eigen::Vector3d unit() {
         Eigen::Vector3d v;
         do {
-            v = Eigen::Vector3d(gauss(), gauss(), gauss());
+            v = gauss3();
         } while (v.norm() < 1e-3);
         return v.normalized();
     }

@@ -12,13 +12,14 @@
 #include "environment/constants.hpp"
 #include "environment/earth_albedo.hpp"
 #include "environment/environment.hpp"
+#include "ordered_draws.hpp"
 
 namespace environment {
 namespace {
 
 Eigen::Matrix3d random_attitude(std::mt19937& rng) {
     std::normal_distribution<double> n(0.0, 1.0);
-    Eigen::Quaterniond q(n(rng), n(rng), n(rng), n(rng));
+    Eigen::Quaterniond q = ordered_draws::quaternion(n, rng);
     q.normalize();
     return q.toRotationMatrix();
 }
@@ -36,8 +37,8 @@ Worst worst_over_geometries(const AlbedoParams& p, int degree) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     Worst w;
     for (int i = 0; i < 300; ++i) {
-        const Eigen::Vector3d where = Eigen::Vector3d(u(rng), u(rng), u(rng)).normalized();
-        const Eigen::Vector3d sun = Eigen::Vector3d(u(rng), u(rng), u(rng)).normalized();
+        const Eigen::Vector3d where = ordered_draws::vector3(u, rng).normalized();
+        const Eigen::Vector3d sun = ordered_draws::vector3(u, rng).normalized();
         const double r = kEarthRadius + 570e3;
         h.project(r * where, sun, 1361.0, c.data());
         for (int a = 0; a < 4; ++a) {

@@ -13,6 +13,7 @@
 #include "environment/atmosphere.hpp"
 #include "environment/disturbance_torques.hpp"
 #include "ground/atmosphere_table.hpp"
+#include "ordered_draws.hpp"
 
 namespace {
 
@@ -32,7 +33,7 @@ ae::DragGeometry<T> geometry_of(const env::SpacecraftBody& b) {
 
 Eigen::Vector3d random_unit(std::mt19937& rng) {
     std::normal_distribution<double> n;
-    return Eigen::Vector3d(n(rng), n(rng), n(rng)).normalized();
+    return ordered_draws::vector3(n, rng).normalized();
 }
 
 TEST(OnboardModels, FirmwaresFloatDensityIsTheTruthsWithinItsRounding) {

@@ -3,7 +3,7 @@
 // after. Every allocation of the process is seen, those of an FMU's shared library included.
 // - A plain build replaces the C allocator by counting wrappers around glibc's own functions.
 // - Under AddressSanitizer, which owns malloc, the sanitizer's allocation hook counts instead
-//   (__sanitizer_install_malloc_and_free_hooks, exported by libasan; GCC ships no header for it).
+//   (__sanitizer_install_malloc_and_free_hooks, exported by the ASan runtime; GCC ships no header for it).
 #pragma once
 
 #include <atomic>
@@ -14,7 +14,16 @@ namespace malloc_counter {
 inline std::atomic<long> allocations{0};
 }
 
+// GCC says AddressSanitizer with __SANITIZE_ADDRESS__, clang with __has_feature(address_sanitizer).
 #if defined(__SANITIZE_ADDRESS__)
+#define PVATT_MALLOC_COUNTER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define PVATT_MALLOC_COUNTER_ASAN 1
+#endif
+#endif
+
+#if defined(PVATT_MALLOC_COUNTER_ASAN)
 extern "C" int __sanitizer_install_malloc_and_free_hooks(void (*malloc_hook)(const volatile void*, std::size_t),
                                                          void (*free_hook)(const volatile void*));
 namespace malloc_counter {
