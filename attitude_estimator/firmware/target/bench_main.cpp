@@ -12,6 +12,7 @@
 #include "attitude_estimator/onboard_references.hpp"
 #include "cmsdk_uart.hpp"
 #include "estimator_board.hpp"
+#include "leo_orbit_as_bundled.hpp"
 #include "orbit/tle.hpp"
 #include "protocol/frame_codec.hpp"
 #include "stack_paint.hpp"
@@ -290,54 +291,6 @@ void bench_references(std::uint32_t ticks_per_million) {
     for (;;) {}
 }
 
-// leo_orbit's on-board computer as bundled (issue 39; the values of harness/systems/leo_orbit.ssd's `est` and
-// of the system parameters connected to it): on-board references, set/reset every sample, the filter
-// propagating the rate with the 3U's inertia, the uplinked dipole's, the gravity gradient's and the drag's
-// torques (the box, its centre of mass and drag coefficient), the noise as tuned with the drag on, the sun's
-// correlated errors per method, the in-flight calibration started from the uplinked ground calibration;
-// `detect` the fault detection (on as bundled). `torques_only`: the former case (no drag, the noise before
-// the drag's tuning, no ground calibration), kept to say what the drag and the calibration add.
-void leo_orbit_3u(EstimatorData& d, bool detect, bool torques_only) {
-    using namespace attitude_estimator;
-    d.filter = FilterKind::mekf;
-    d.reference_source = ReferenceSource::onboard;
-    d.tle_elements = {2461118.5, 14.98524078, 0.0012, 64.9, 3.1277, 90.376, 275.3137, 1.5e-4};
-    d.mag_set_reset_samples = 1;
-    d.inertia = {0.0405, 0.0, 0.0, 0.0, 0.0398, 0.0, 0.0, 0.0, 0.0072};
-    d.filter_dipole = {0.0, 0.0, 0.05};
-    d.filter_gravity_gradient = true;
-    d.detect_faults = detect;
-    if (torques_only) {
-        d.filter_torque_noise = 3e-8;
-        return;
-    }
-    d.inertia = {0.0405, 0.00015, -0.0002, 0.00015, 0.0398, 0.0001, -0.0002, 0.0001, 0.0072};
-    d.uplink_age = 86400.0;
-    d.field_degree = 8;
-    d.filter_sun_sigma = 0.5;
-    d.filter_mag_sigma = 100e-6;
-    d.filter_mag_hard_iron = 10e-6;
-    d.filter_mag_ref_sigma = 2.4e-6;
-    d.filter_attitude_noise = 1e-6;
-    d.filter_rate_noise = 5e-7;
-    d.filter_start_rate = 0.0873;
-    d.mag_calibration = true;
-    d.mag_prior_offset_sigma = 0.5e-6;
-    d.mag_prior_field_sigma = 25e-6;
-    d.mag_prior_dipole = {0.0, 0.0, 0.05};
-    d.filter_mag_sigma_calibrated = 14e-6;
-    d.filter_mag_sigma_eclipse = 2.5e-6;
-    d.filter_sun_sigma_method = {0.094, 0.088, 0.069, 0.051};
-    d.filter_sun_correlation = {51.0, 31.0, 12.0, 12.0};
-    d.filter_torque_noise = 1.5e-8;
-    d.filter_drag = true;
-    d.body_size = {0.1, 0.1, 0.34};
-    d.centre_of_mass = {0.004, -0.003, -0.012};
-    d.drag_coefficient = 2.2;
-    d.filter_drag_density_sigma = 0.0;
-    d.filter_drag_correlation = 60.0;
-}
-
 }  // namespace
 
 int main() {
@@ -387,11 +340,11 @@ int main() {
         // with the fault detection, then leo_orbit as bundled now (the drag on board, the tuned noise, the
         // ground calibration), without and with the detection (on as bundled).
         {"difference_qmethod_mekf_onboard_references_setreset_torques",
-         [](EstimatorData& d) { leo_orbit_3u(d, false, true); }},
+         [](EstimatorData& d) { firmware::leo_orbit_3u(d, false, true); }},
         {"difference_qmethod_mekf_onboard_references_setreset_torques_detect",
-         [](EstimatorData& d) { leo_orbit_3u(d, true, true); }},
-        {"leo_orbit_detect_off", [](EstimatorData& d) { leo_orbit_3u(d, false, false); }},
-        {"leo_orbit_as_bundled", [](EstimatorData& d) { leo_orbit_3u(d, true, false); }},
+         [](EstimatorData& d) { firmware::leo_orbit_3u(d, true, true); }},
+        {"leo_orbit_detect_off", [](EstimatorData& d) { firmware::leo_orbit_3u(d, false, false); }},
+        {"leo_orbit_as_bundled", [](EstimatorData& d) { firmware::leo_orbit_3u(d, true, false); }},
         {"cones_qmethod_mekf_scale_setreset",
          [](EstimatorData& d) {
              d.sun_method = SunMethod::cones;
