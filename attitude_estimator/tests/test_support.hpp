@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "attitude_estimator/types.hpp"
+#include "ordered_draws.hpp"
 
 namespace attitude_estimator::test {
 
@@ -94,14 +95,11 @@ public:
     double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(gen_); }
     double gauss() { return std::normal_distribution<double>(0.0, 1.0)(gen_); }
     int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(gen_); }
-    // Three draws, z first: one per statement, because the order of a call's arguments is unspecified (GCC
-    // evaluates Eigen::Vector3d(gauss(), gauss(), gauss()) from the last, clang from the first) and the tests'
-    // draws must not depend on the compiler. z first keeps the draws the tests were written with (GCC's).
+    // Three draws in ordered_draws' order, not inside one call's arguments (whose order GCC and clang differ
+    // on): gauss() each, a fresh distribution per draw as always.
     Eigen::Vector3d gauss3() {
-        const double z = gauss();
-        const double y = gauss();
-        const double x = gauss();
-        return {x, y, z};
+        auto draw = [this](std::mt19937_64&) { return gauss(); };
+        return ordered_draws::vector3(draw, gen_);
     }
     Eigen::Vector3d unit() {
         Eigen::Vector3d v;

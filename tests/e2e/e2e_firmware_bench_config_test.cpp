@@ -24,10 +24,7 @@ using attitude_estimator::EstimatorData;
 
 TEST(E2eFirmwareBench, TheLeoOrbitCaseIsTheBundledSystemsComputer) {
     EstimatorData bench;
-    // What the bench sets for every case (bench_main.cpp, run()): the firmware computes in float and has no
-    // spin spectrum (the seed's FFT, which leo_orbit does not run either).
-    bench.precision = attitude_estimator::Precision::single_precision;
-    bench.spin_window = 0;
+    firmware::bench_case_start(bench);
     firmware::leo_orbit_3u(bench, true, false);
     const auto bench_bytes = std::as_bytes(std::span(&bench, 1));
 
@@ -57,17 +54,7 @@ TEST(E2eFirmwareBench, TheLeoOrbitCaseIsTheBundledSystemsComputer) {
         // The FMU in the system computes in double, the firmware in float by design (the float FMU is checked
         // bit for bit against the board in Firmware.Pil and BoardVsEmulator).
         if (v.name == "precision") continue;
-        double in_bench = 0.0;
-        switch (v.type) {
-            case fmu::ValueType::Real:
-                in_bench = fmu::read_real(bench_bytes, v);
-                break;
-            case fmu::ValueType::Boolean:
-                in_bench = fmu::read_boolean(bench_bytes, v) ? 1.0 : 0.0;
-                break;
-            default:
-                in_bench = fmu::read_integer(bench_bytes, v);
-        }
+        const double in_bench = fmu::read_number(bench_bytes, v);
         const double in_system = rec[columns[i]].front();
         if (in_bench != in_system) differ << "\n  " << columns[i] << ": system " << in_system << ", bench " << in_bench;
     }

@@ -57,18 +57,8 @@ void write_value(std::span<std::byte> data, const fmu::Variable& v, double x) {
 }
 
 double read_value(std::span<const std::byte> data, const fmu::Variable& v) {
-    switch (v.type) {
-        case fmu::ValueType::Real:
-            return fmu::read_real(data, v);
-        case fmu::ValueType::Integer:
-        case fmu::ValueType::Enumeration:
-            return fmu::read_integer(data, v);
-        case fmu::ValueType::Boolean:
-            return fmu::read_boolean(data, v) ? 1.0 : 0.0;
-        case fmu::ValueType::String:
-            break;
-    }
-    throw fmu::Error(v.name + ": String variables cannot cross the link");
+    if (v.type == fmu::ValueType::String) throw fmu::Error(v.name + ": String variables cannot cross the link");
+    return fmu::read_number(data, v);
 }
 
 std::string format_count(double x) {

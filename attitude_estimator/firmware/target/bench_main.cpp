@@ -119,9 +119,7 @@ struct Case {
 void run(const Case& c, std::uint32_t ticks_per_million) {
     using namespace attitude_estimator;
     static EstimatorData d;
-    d = EstimatorData{};
-    d.precision = Precision::single_precision;
-    d.spin_window = 0;
+    firmware::bench_case_start(d);
     c.edit(d);
     for (std::size_t first = 0; first < wire::kParameterCount; first += bridge::max_values) {
         std::array<double, bridge::max_values> values{};

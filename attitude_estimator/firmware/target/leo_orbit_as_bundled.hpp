@@ -8,6 +8,14 @@
 
 namespace firmware {
 
+// What the bench sets before every case's own values: the firmware computes in float and runs no spin
+// spectrum (the seed's FFT, which leo_orbit does not run either).
+inline void bench_case_start(attitude_estimator::EstimatorData& d) {
+    d = attitude_estimator::EstimatorData{};
+    d.precision = attitude_estimator::Precision::single_precision;
+    d.spin_window = 0;
+}
+
 // leo_orbit's on-board computer as bundled (issue 39; the values of harness/systems/leo_orbit.ssd's `est` and
 // of the system parameters connected to it): on-board references, set/reset every sample, the filter
 // propagating the rate with the 3U's inertia, the uplinked dipole's, the gravity gradient's and the drag's

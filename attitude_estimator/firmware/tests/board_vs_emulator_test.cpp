@@ -27,18 +27,7 @@ std::vector<double> parameter_values(const fmu::TableBase& table, const Estimato
     std::sort(params.begin(), params.end(), [](auto* a, auto* b) { return a->value_reference < b->value_reference; });
     std::vector<double> out;
     const auto bytes = std::as_bytes(std::span(&d, 1));
-    for (const auto* v : params) {
-        switch (v->type) {
-            case fmu::ValueType::Real:
-                out.push_back(fmu::read_real(bytes, *v));
-                break;
-            case fmu::ValueType::Boolean:
-                out.push_back(fmu::read_boolean(bytes, *v) ? 1.0 : 0.0);
-                break;
-            default:
-                out.push_back(fmu::read_integer(bytes, *v));
-        }
-    }
+    for (const auto* v : params) out.push_back(fmu::read_number(bytes, *v));
     return out;
 }
 
