@@ -7,8 +7,8 @@
 # and 2 s (Eigen, which half the test files include) of CPU under the sanitizers. The host is an
 # executable so that its flags (-fPIE, sanitizers, standard, optimization) are the test programs' own: a
 # compiler refuses a header made with other flags (clang with an error; GCC, the release build's compiler,
-# with -Winvalid-pch, which -Werror makes one). The
-# release build compiles every test without it, which keeps each file's includes honest.
+# with -Winvalid-pch, which -Werror makes one). The release build compiles every test without it, which keeps
+# each file's includes honest.
 #
 # PVATT_TEST_OPTIMIZE: the optimization of the test programs' own sources (e.g. -O1 in the sanitize preset),
 # and of the Google Benchmark programs' (the test build only compiles those: a benchmark that does not

@@ -1,8 +1,8 @@
 # Fails when the static library LIB references operator new/delete or the exception machinery anywhere,
 # or the C allocator outside q_method.cpp.o (there also operator new and delete, clang's way to the same).
 # Eigen's SelfAdjointEigenSolver template code keeps its generic dynamic-size branches (blocked Householder
-# products) compiled in even for a fixed 4x4 matrix, so malloc/free are referenced from that object but never called — the runtime test
-# EstimatorCoreNoAllocation proves it by counting malloc calls.
+# products) compiled in even for a fixed 4x4 matrix, so malloc/free are referenced from that object but never
+# called — the runtime test EstimatorCoreNoAllocation proves it by counting malloc calls.
 execute_process(COMMAND ${NM} -A -u ${LIB} OUTPUT_VARIABLE undefined RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "nm failed on ${LIB}")
