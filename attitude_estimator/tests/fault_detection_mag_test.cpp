@@ -205,8 +205,8 @@ TYPED_TEST(EstimatorCoreMagFaults, ABiasJumpIsDeclaredWithItsSize) {
     // 5 µT more on x from sample 100 on. Samples 100 and 101 are spikes (5 > 3.06 µT: left out of the
     // means); from 102 on the slow mean (α = 0.05/60) is 5 (1 − (1 − α)^n) µT after n samples, past
     // 1 µT at n = ln 0.8 / ln(1 − α) = 267.7, so sample 369 fails first and the 100th failing one,
-    // sample 468 (t = 23.4 s), declares. The recent mean (α = 0.05/3) then holds 5 (1 − (1 − 1/60)^367)
-    // = 4.9895 µT.
+    // sample 468 (t = 23.4 s), declares. The recent mean (α = 0.05/1: bias_recent_window 1 s) then holds
+    // 5 (1 − (1 − 1/20)^367) = 5 (1 − 7e-9) µT (with the former 3 s, 5 (1 − (1 − 1/60)^367) = 4.9895 µT).
     FaultDetectionState<T> s;
     bool declared_now = false;
     for (int i = 0; i < 700; ++i) {
@@ -214,7 +214,7 @@ TYPED_TEST(EstimatorCoreMagFaults, ABiasJumpIsDeclaredWithItsSize) {
         if (s.bias_jump_now) {
             EXPECT_FALSE(declared_now) << "declared twice, sample " << i;
             declared_now = true;
-            EXPECT_NEAR(s.bias_jump[0], 4.9895e-6, 0.002e-6);
+            EXPECT_NEAR(s.bias_jump[0], 5.0e-6, 0.002e-6);
             EXPECT_NEAR(s.bias_jump[1], 0.0, 1e-12);
             EXPECT_NEAR(s.bias_jump[2], 0.0, 1e-12);
         }

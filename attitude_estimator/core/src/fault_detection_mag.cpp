@@ -140,7 +140,7 @@ void bias_test(FaultDetectionState<T>& s, const FaultObservation<T>& o, const Fa
     s.bias_jump_now = false;
     if (!(o.predicted && o.field_calibrated && o.field_measured && o.field_ref_norm > T(0))) return;
     const T alpha = std::min(T(1), dt / c.bias_window);
-    const T alpha_recent = std::min(T(1), T(20) * dt / c.bias_window);
+    const T alpha_recent = std::min(T(1), dt / c.bias_recent_window);
     bool jump = false;
     for (std::size_t k = 0; k < 3; ++k) {
         if ((excluded >> k & 1u) || o.at_rail[k] || (s.spike_now >> k & 1u)) continue;
@@ -155,8 +155,8 @@ void bias_test(FaultDetectionState<T>& s, const FaultObservation<T>& o, const Fa
     }
     if (!jump) return;
     // The jump: the recent means of every axis (a field has three components; those below the threshold
-    // too). The slow mean lags a step; the recent one (a twentieth of the window: 3 s) has caught up with
-    // it by the declaration, at least the confirmation time later.
+    // too). The slow mean lags a step; the recent one (bias_recent_window) has caught up with it by the
+    // declaration, at least the confirmation time later.
     s.bias_jump_now = true;
     s.bias_jump = s.bias_recent;
     s.bias_recovering = true;

@@ -81,6 +81,12 @@ struct OnboardState {
     MekfState<T> filter_held{};
     MekfState<T> filter_pending{};
     T filter_checkpoint_t = T(0);
+    // The calibration as it was 30 to 60 s ago (onboard_computer.cpp, hold_calibration): the equations taken
+    // between a bias jump and its declaration hold the jump with the old offset, and are dropped with it.
+    MagCalibrationState<T> mag_cal_held{};
+    MagCalibrationState<T> mag_cal_pending{};
+    T mag_cal_checkpoint_t = T(0);
+    std::int32_t mag_cal_copies = 0;  // copies taken since the start or the last jump (held is usable from 2)
 };
 
 template <class T>
