@@ -564,6 +564,11 @@ bool same_bits(double a, double b) {
 // last ones given.
 bool System::read_sources(TransferGroup& g, std::string& text) {
     auto& from = *components_[g.from].instance;
+    // Nothing called on the source since it was last read: the values are the last ones given (read_sources
+    // is always followed by accept() when they differ), so not read again.
+    const auto version = from.values_version();
+    if (g.given && version && g.read_at_version == version) return false;
+    g.read_at_version = version;
     bool changed = !g.given;
     switch (g.type) {
         case VariableType::real:
