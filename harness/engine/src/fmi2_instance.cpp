@@ -4,11 +4,11 @@
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <iostream>
 
 #include "engine/cosim_error.hpp"
 #include "engine/value_text.hpp"
+#include "same_bits.hpp"
 
 namespace cosim {
 
@@ -27,10 +27,6 @@ void logger(fmi2ComponentEnvironment env, fmi2String, fmi2Status status, fmi2Str
     if (n > 0) std::vsnprintf(text.data(), text.size() + 1, message, args);
     va_end(args);
     static_cast<Fmi2Instance*>(env)->record(status, std::move(text));
-}
-
-bool same_bits(double a, double b) {
-    return std::memcmp(&a, &b, sizeof a) == 0;
 }
 
 const char* status_name(fmi2Status s) {
@@ -195,9 +191,7 @@ void Fmi2Instance::set_time(double t) {
 }
 
 void Fmi2Instance::set_states(const double* x, std::size_t n) {
-    if (states_known_ && states_given_after_ == other_changes_ && states_given_.size() == n &&
-        (n == 0 || std::memcmp(states_given_.data(), x, n * sizeof(double)) == 0))
-        return;
+    if (states_known_ && states_given_after_ == other_changes_ && same_bits(states_given_, std::span(x, n))) return;
     states_known_ = false;
     ++version_;
     check(lib_->fmi2SetContinuousStates(component_, x, n), "fmi2SetContinuousStates");

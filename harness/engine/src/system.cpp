@@ -1,7 +1,6 @@
 #include "engine/system.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <set>
 
 #include "connector_elements.hpp"
@@ -13,6 +12,7 @@
 #include "engine/name_hint.hpp"
 #include "engine/ssp_archive.hpp"
 #include "engine/value_text.hpp"
+#include "same_bits.hpp"
 
 namespace cosim {
 
@@ -551,14 +551,6 @@ void System::mark_continuous_consumers() {
         }
     }
 }
-
-namespace {
-
-bool same_bits(double a, double b) {
-    return std::memcmp(&a, &b, sizeof a) == 0;
-}
-
-}  // namespace
 
 // The group's source values into g.values (and `text` for a String); true when they differ from the
 // last ones given.
