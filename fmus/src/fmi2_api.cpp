@@ -38,7 +38,7 @@ fmi2Status guarded(fmi2Component c, Call call, Body&& body) noexcept {
     if (!c || !is_live(c)) return fmi2Error;  // no instance, hence no logger to tell
     auto& self = *static_cast<Instance*>(c);
     try {
-        self.log_call(fmu::to_string(call));  // nothing built unless logAll is on
+        if (self.logs_calls()) self.log_call(fmu::to_string(call));  // nothing built unless logAll is on
         self.require(call);
         if constexpr (std::is_void_v<decltype(body(self))>) {
             body(self);

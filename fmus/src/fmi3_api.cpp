@@ -43,7 +43,7 @@ fmi3Status guarded(fmi3Instance c, Call call, Body&& body) noexcept {
     if (!c || !is_live(c)) return fmi3Error;  // no instance, hence no logger to tell
     auto& self = *static_cast<Instance3*>(c);
     try {
-        self.log_call(fmu::fmi3::to_string(call));
+        if (self.logs_calls()) self.log_call(fmu::fmi3::to_string(call));
         self.require(call);
         if constexpr (std::is_void_v<decltype(body(self))>) {
             body(self);

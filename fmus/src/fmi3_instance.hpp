@@ -34,6 +34,7 @@ public:
 
     void log(fmi3Status status, const char* category, const std::string& message) const;
     void log_call(std::string_view function) const { inner_.log_call(function); }
+    bool logs_calls() const { return inner_.logs_calls(); }
     void set_debug_logging(bool on, std::span<const fmi3String> categories) {
         inner_.set_debug_logging(on, categories);
     }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <utility>
 
 #include "fmu/description.hpp"
@@ -30,7 +31,7 @@ constexpr std::size_t category_index(std::string_view name) {
 
 // Looked up once: category_on runs on every FMI call (log_call), and the lookup compares C strings.
 constexpr std::size_t kLogAll = category_index("logAll");
-static_assert(kLogAll < std::size(log_categories));
+static_assert(kLogAll + 1 == std::size(log_categories), "Instance::logs_calls() reads the last category");
 
 std::string format_time(double t) {
     char buf[32];
@@ -49,6 +50,7 @@ Instance::Instance(std::string name, Kind kind, const fmi2CallbackFunctions& cal
       environment_(callbacks.componentEnvironment),
       category_enabled_(std::size(log_categories), logging_on),
       runner_(std::move(model)),
+      access_(access_of(runner_.table().variables())),
       tolerance_(runner_.model().info().default_experiment.tolerance) {
     runner_.set_time(runner_.model().info().default_experiment.start_time);
     start_time_ = runner_.time();
@@ -160,6 +162,21 @@ void Instance::reset() {
     mode_ = Mode::instantiated;
 }
 
+std::vector<Instance::Access> Instance::access_of(std::span<const Variable> vars) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    std::vector<Access> access(vars.size());
+    for (std::size_t i = 0; i < vars.size(); ++i) {
+        const Variable& v = vars[i];
+        access[i] = Access{.offset = v.offset,
+                           .type = v.type,
+                           .continuous_input = v.type == ValueType::Real && v.causality == Causality::input &&
+                                               v.variability == Variability::continuous,
+                           .min = v.min.value_or(-inf),
+                           .max = v.max.value_or(inf)};
+    }
+    return access;
+}
+
 const Variable& Instance::variable(fmi2ValueReference vr, ValueType type) const {
     return variable(runner_.table().variables(), vr, type);
 }
@@ -215,8 +232,13 @@ void Instance::get_real(std::span<const fmi2ValueReference> vr, fmi2Real* values
     require_arrays(vr, values);
     runner_.ensure_evaluated();
     const auto bytes = std::as_const(runner_.model()).bytes();
-    const auto& vars = runner_.table().variables();
-    for (std::size_t i = 0; i < vr.size(); ++i) values[i] = read_real(bytes, variable(vars, vr[i], ValueType::Real));
+    for (std::size_t i = 0; i < vr.size(); ++i) {
+        if (vr[i] < access_.size() && access_[vr[i]].type == ValueType::Real) [[likely]] {
+            std::memcpy(&values[i], bytes.data() + access_[vr[i]].offset, sizeof(double));
+        } else {
+            values[i] = read_real(bytes, variable(runner_.table().variables(), vr[i], ValueType::Real));  // throws
+        }
+    }
 }
 
 void Instance::get_integer(std::span<const fmi2ValueReference> vr, fmi2Integer* values) {
@@ -286,7 +308,27 @@ void Instance::set_values(std::span<const fmi2ValueReference> vr, const T* value
     if (cs_solver_) cs_solver_->invalidate();
 }
 
+bool Instance::set_continuous_inputs(std::span<const fmi2ValueReference> vr, const fmi2Real* values) {
+    if (mode_ != Mode::continuous_time && mode_ != Mode::event && mode_ != Mode::step_complete) return false;
+    if (!vr.empty() && (vr.data() == nullptr || values == nullptr)) return false;
+    for (std::size_t i = 0; i < vr.size(); ++i) {
+        if (vr[i] >= access_.size()) return false;
+        const Access& a = access_[vr[i]];
+        // The checks set_values makes, for these variables: settable (a continuous input), finite, in range.
+        if (!a.continuous_input || !std::isfinite(values[i]) || values[i] < a.min || values[i] > a.max) return false;
+    }
+    const auto bytes = runner_.model().bytes();
+    for (std::size_t i = 0; i < vr.size(); ++i) {
+        std::memcpy(bytes.data() + access_[vr[i]].offset, &values[i], sizeof(double));
+        runner_.input_value_set(vr[i]);
+    }
+    runner_.mark_changed();
+    if (cs_solver_) cs_solver_->invalidate();
+    return true;
+}
+
 void Instance::set_real(std::span<const fmi2ValueReference> vr, const fmi2Real* values) {
+    if (set_continuous_inputs(vr, values)) return;  // a host's inputs at every step
     set_values(vr, values, ValueType::Real, check_real, [&](const Variable& v, double x) {
         write_real(runner_.model().bytes(), v, x);
         if (v.causality == Causality::input)
@@ -479,7 +521,7 @@ void Instance::completed_integrator_step(fmi2Boolean* enter_event_mode, fmi2Bool
 }
 
 void Instance::set_time(double t) {
-    runner_.set_time(t);
+    runner_.set_time_from_host(t);
 }
 
 void Instance::check_count(std::size_t given, std::size_t expected, const char* what) const {

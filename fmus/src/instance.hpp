@@ -49,6 +49,8 @@ public:
     // categories only when enabled with fmi2SetDebugLogging or loggingOn.
     void log(fmi2Status status, const char* category, const std::string& message) const;
     void log_call(std::string_view function) const;  // logAll
+    // Whether log_call says anything: asked first, so that a call's name is not even looked up otherwise.
+    bool logs_calls() const { return logger_ && category_enabled_.back(); }  // logAll: the last category
     void set_debug_logging(bool on, std::span<const fmi2String> categories);
 
     // Throws fmu::Error naming the mode when `call` is not allowed now.
@@ -108,6 +110,20 @@ public:
     double time() const { return runner_.time(); }
 
 private:
+    // What the getters and setters need of a variable on their fast path, by value reference, in a few bytes
+    // (a Variable is several hundred: its names, unit and limits are for the checks' messages).
+    struct Access {
+        std::size_t offset = 0;
+        ValueType type = ValueType::Real;
+        bool continuous_input = false;  // a Real input of continuous variability: settable in every mode after
+                                        // initialization (continuous-time, event, step-complete)
+        double min = 0.0, max = 0.0;    // its limits, -inf and +inf when it has none
+    };
+    static std::vector<Access> access_of(std::span<const Variable> vars);
+    // Continuous Real inputs with finite values inside their limits, after initialization: written without the
+    // general checks (which they would pass). False, with nothing written, for anything else.
+    bool set_continuous_inputs(std::span<const fmi2ValueReference> vr, const fmi2Real* values);
+
     const Variable& variable(fmi2ValueReference vr, ValueType type) const;
     const Variable& variable(std::span<const Variable> vars, fmi2ValueReference vr, ValueType type) const;
     void check_settable(const Variable& v) const;
@@ -128,6 +144,7 @@ private:
     std::vector<bool> category_enabled_;
     Mode mode_ = Mode::instantiated;
     ModelRunner runner_;
+    std::vector<Access> access_;  // by value reference
     // Built at the exit of initialization, dropped by a reset, and built again on the first step after a
     // restore that brought a solverless instance (reset, or never initialized) back to step-complete.
     std::unique_ptr<CsSolver> cs_solver_;

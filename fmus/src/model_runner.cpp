@@ -1,7 +1,9 @@
 #include "fmu/model_runner.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include "fmu/errors.hpp"
 #include "fmu/value_access.hpp"
@@ -23,6 +25,13 @@ void ModelRunner::set_time(double t) {
     if (!input_slopes_.empty()) apply_input_slopes();
 }
 
+void ModelRunner::set_time_from_host(double t) {
+    // The same bits: the outputs and derivatives computed at this time (and these states and inputs) still hold.
+    // In initialization mode every read re-runs initialize(), so the mark is kept there.
+    if (!initializing_ && std::bit_cast<std::uint64_t>(t) == std::bit_cast<std::uint64_t>(time_)) return;
+    set_time(t);
+}
+
 std::optional<SpanReached> ModelRunner::advance_between_events(double t_stop, double relative_tolerance) {
     if (initializing_) return std::nullopt;
     ensure_configured();
@@ -40,7 +49,7 @@ void ModelRunner::set_input_slope(std::size_t variable, double slope) {
     input_slopes_.push_back({variable, time_, read_real(model_->bytes(), v), slope});
 }
 
-void ModelRunner::input_value_set(std::size_t variable) {
+void ModelRunner::rebase_input_slope(std::size_t variable) {
     for (auto& s : input_slopes_) {
         if (s.variable != variable) continue;
         s.base_time = time_;
@@ -112,8 +121,16 @@ void ModelRunner::set_states(std::span<const double> x) {
     for (std::size_t i = 0; i < states.size(); ++i) {
         if (!std::isfinite(x[i])) throw Error("state " + vars[states[i]].name + " set to a non-finite value");
     }
-    for (std::size_t i = 0; i < states.size(); ++i) write_real(model_->bytes(), vars[states[i]], x[i]);
-    mark_changed();
+    // A host sets the states it set last at each instant it stops at (after checking its indicators
+    // there): the same bits leave the outputs current, as an evaluation of them would give the same bits.
+    bool changed = false;
+    for (std::size_t i = 0; i < states.size(); ++i) {
+        const Variable& v = vars[states[i]];
+        if (std::bit_cast<std::uint64_t>(read_real(model_->bytes(), v)) == std::bit_cast<std::uint64_t>(x[i])) continue;
+        write_real(model_->bytes(), v, x[i]);
+        changed = true;
+    }
+    if (changed) mark_changed();
 }
 
 void ModelRunner::get_derivatives(std::span<double> dx) {

@@ -1,6 +1,7 @@
 // The runner and the Co-Simulation solver on blocks with closed-form answers.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 #include "fmu/cs_solver.hpp"
@@ -69,6 +70,59 @@ TEST(RuntimeSolver, InitializeRunsOnReadsDuringInitialization) {
     run.enter_initialization();
     run.runner.ensure_evaluated();
     EXPECT_DOUBLE_EQ(run.data().h, 2.5);  // the calculated start follows the parameter
+}
+
+// A host that sets again the time and states it set last (a Model Exchange host stops at the instant it
+// just checked its indicators at) gets the outputs already computed there: evaluating again would give the
+// same bits. Any other time or state, or the block's own trial times (set_time), evaluates again.
+struct CountedData {
+    double x = 0.0, der_x = 0.0, y = 0.0;
+};
+class Counted : public fmu::Block<Counted, CountedData> {
+public:
+    static void declare(fmu::Table<CountedData>& t) {
+        t.state("x", &CountedData::x, &CountedData::der_x, "1", "A state");
+        t.output("y", &CountedData::y, "1", "x plus time").depends_on({"x"});
+    }
+    static fmu::ModelInfo describe() {
+        fmu::ModelInfo info;
+        info.model_identifier = "counted";
+        info.model_name = "counted";
+        info.description = "Counts its evaluations";
+        return info;
+    }
+    void evaluate(double t) override {
+        ++evaluations;
+        data().der_x = -data().x;
+        data().y = data().x + t;
+    }
+    int evaluations = 0;
+};
+
+TEST(RuntimeSolver, TheSameTimeAndStatesAgainKeepTheOutputs) {
+    fmu::ModelRunner runner{std::make_unique<Counted>()};
+    auto& block = static_cast<Counted&>(runner.model());
+    const std::array<double, 1> x{2.0};
+    runner.set_time_from_host(1.0);
+    runner.set_states(x);
+    runner.ensure_evaluated();
+    ASSERT_EQ(block.evaluations, 1);
+    runner.set_time_from_host(1.0);
+    runner.set_states(x);
+    runner.ensure_evaluated();
+    EXPECT_EQ(block.evaluations, 1);
+    EXPECT_EQ(block.data().y, 3.0);
+
+    runner.set_states(std::array<double, 1>{-0.0});  // another state, if only in its sign bit
+    runner.ensure_evaluated();
+    EXPECT_EQ(block.evaluations, 2);
+    runner.set_time_from_host(1.5);
+    runner.ensure_evaluated();
+    EXPECT_EQ(block.evaluations, 3);
+    EXPECT_EQ(block.data().y, 1.5);
+    runner.set_time(1.5);  // the block's own step between events marks every trial time, repeated or not
+    runner.ensure_evaluated();
+    EXPECT_EQ(block.evaluations, 4);
 }
 
 }  // namespace

@@ -83,11 +83,25 @@ bool ground_calibration_applies(const OnboardState<T>& s, const OnboardSettings<
     return settings.mag_calibration && mag_calibration_prior_applies(s.mag_cal, settings.mag_cal);
 }
 
+// The prior of the body-fixed field the filter's offset state holds while it takes the field uncalibrated
+// (MekfConfig::mag_hard_iron_sigma): the ground calibration's 1σ while it applies, the jump's size while the
+// calibration re-learns its offset after one, the configured one otherwise.
+template <class T>
+T hard_iron_sigma(const OnboardState<T>& s, const OnboardSettings<T>& settings) {
+    T sigma = settings.mekf.mag_hard_iron_sigma;
+    if (ground_calibration_applies(s, settings)) sigma = settings.mag_cal.prior_offset_sigma;
+    if (bias_recovering_uncalibrated(s, settings)) {
+        const T jump = std::sqrt(squared_norm(s.faults.bias_jump));
+        if (jump > T(0)) sigma = jump;
+    }
+    return sigma;
+}
+
 template <class T>
 MekfConfig<T> field_recovery_config(const OnboardState<T>& s, const OnboardSettings<T>& settings) {
     MekfConfig<T> c = settings.mekf;
+    c.mag_hard_iron_sigma = hard_iron_sigma(s, settings);
     if (ground_calibration_applies(s, settings)) {
-        c.mag_hard_iron_sigma = settings.mag_cal.prior_offset_sigma;
         if (c.mag_sigma_calibrated > T(0)) c.mag_sigma = c.mag_sigma_calibrated;
         if (settings.mag_cal.prior_field_sigma > T(0)) c.mag_sigma = settings.mag_cal.prior_field_sigma;
     }
@@ -95,8 +109,6 @@ MekfConfig<T> field_recovery_config(const OnboardState<T>& s, const OnboardSetti
         c.mag_sigma *= settings.faults.bias_noise_factor;
         c.mag_sigma_calibrated *= settings.faults.bias_noise_factor;
         c.mag_sigma_calibrated_eclipse *= settings.faults.bias_noise_factor;
-        const T jump = std::sqrt(squared_norm(s.faults.bias_jump));
-        if (jump > T(0)) c.mag_hard_iron_sigma = jump;
         // The field still comes through the calibration's scale and non-orthogonality (kept by the reopening):
         // its noise is the calibrated one, the offset's residual being the state's (leo_orbit: 9.5 µT, not the
         // uncalibrated 100 µT that would leave the attitude to the sun alone).
@@ -110,7 +122,7 @@ MekfConfig<T> field_recovery_config(const OnboardState<T>& s, const OnboardSetti
 template <class T>
 bool holds_body_fixed_field(const OnboardState<T>& s, const OnboardSettings<T>& settings) {
     return settings.filter == FilterKind::mekf && s.filter.stage == 2 && settings.mekf.estimate_offset &&
-           s.filter.mag_calibrated == 0 && field_recovery_config(s, settings).mag_hard_iron_sigma > T(0);
+           s.filter.mag_calibrated == 0 && hard_iron_sigma(s, settings) > T(0);
 }
 
 template <class T>

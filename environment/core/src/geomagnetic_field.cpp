@@ -9,6 +9,26 @@
 
 namespace environment {
 
+namespace {
+// The 2025.0 field and its change to 2030.0 laid out as Gauss coefficients once at load time: each evaluation
+// then interpolates the same sums (k.at_2025 + f (k.at_2030 - k.at_2025)) without walking the table.
+struct IgrfTable {
+    GaussCoefficients at_2025, change;
+};
+// Built on first use: the table it reads is defined in another file (no order of initialization to rely on).
+const IgrfTable& igrf_table() {
+    static const IgrfTable table = [] {
+        IgrfTable t;
+        for (const ground::IgrfCoefficient& k : ground::kIgrf14Coefficients) {
+            (k.is_h ? t.at_2025.h : t.at_2025.g)[k.n][k.m] = k.at_2025;
+            (k.is_h ? t.change.h : t.change.g)[k.n][k.m] = k.at_2030 - k.at_2025;
+        }
+        return t;
+    }();
+    return table;
+}
+}  // namespace
+
 GaussCoefficients igrf_coefficients(double year) {
     if (!(year >= ground::kIgrfFirstYear && year <= ground::kIgrfLastYear)) {
         throw std::domain_error("IGRF-14: date " + std::to_string(year) +
@@ -16,13 +36,12 @@ GaussCoefficients igrf_coefficients(double year) {
     }
     // IGRF: main field at 2025.0 plus the constant predictive secular variation (2030 column = 2025 + 5 SV).
     const double f = (year - ground::kIgrfFirstYear) / (ground::kIgrfLastYear - ground::kIgrfFirstYear);
+    const IgrfTable& t = igrf_table();
     GaussCoefficients c;
-    for (const ground::IgrfCoefficient& k : ground::kIgrf14Coefficients) {
-        const double v = k.at_2025 + f * (k.at_2030 - k.at_2025);
-        if (k.is_h) {
-            c.h[k.n][k.m] = v;
-        } else {
-            c.g[k.n][k.m] = v;
+    for (int n = 1; n <= ground::kIgrfMaxDegree; ++n) {
+        for (int m = 0; m <= n; ++m) {
+            c.g[n][m] = t.at_2025.g[n][m] + f * t.change.g[n][m];
+            c.h[n][m] = t.at_2025.h[n][m] + f * t.change.h[n][m];
         }
     }
     return c;

@@ -21,7 +21,12 @@ public:
     const TableBase& table() const { return model_->table(); }
 
     double time() const { return time_; }
+    // Always marks the outputs stale: the block's own step between events (advance_between_events) writes its
+    // states itself and calls this for each trial time, which may repeat.
     void set_time(double t);
+    // The host's fmi2SetTime: the time the runner already has, bit for bit, changes nothing (a Model Exchange
+    // host sets again the instant it just checked its indicators at); anything else is set_time(t).
+    void set_time_from_host(double t);
 
     // Any change of time, states, inputs or parameters makes the outputs stale; they are
     // recomputed on the next read. In initialization mode a read first re-runs initialize().
@@ -53,6 +58,7 @@ public:
     std::size_t state_count() const { return table().states().size(); }
     std::size_t indicator_count() const { return indicator_count_; }
     void get_states(std::span<double> x) const;
+    // Marks the outputs stale only when a state differs, bit for bit, from the one the block holds.
     void set_states(std::span<const double> x);
     void get_derivatives(std::span<double> dx);
     void get_nominals(std::span<double> nominal) const;
@@ -84,7 +90,9 @@ public:
     // host may set values and derivatives in either order). The host gives slopes for one step:
     // clear_input_slopes() after it.
     void set_input_slope(std::size_t variable, double slope);
-    void input_value_set(std::size_t variable);
+    void input_value_set(std::size_t variable) {
+        if (!input_slopes_.empty()) rebase_input_slope(variable);  // a Model Exchange host gives none
+    }
     void clear_input_slopes() { input_slopes_.clear(); }
 
 private:
@@ -102,6 +110,7 @@ private:
     };
     std::vector<InputSlope> input_slopes_;  // few (a block's Real inputs), searched linearly
     void apply_input_slopes();
+    void rebase_input_slope(std::size_t variable);
     void set_initializing(bool on) {
         initializing_ = on;
         mark_changed();

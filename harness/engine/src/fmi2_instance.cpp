@@ -8,6 +8,7 @@
 
 #include "engine/cosim_error.hpp"
 #include "engine/value_text.hpp"
+#include "same_bits.hpp"
 
 namespace cosim {
 
@@ -94,18 +95,22 @@ void Fmi2Instance::check(fmi2Status status, const char* function) {
 
 void Fmi2Instance::setup_experiment(double start_time, std::optional<double> stop_time,
                                     std::optional<double> tolerance) {
+    changed();
     check(lib_->fmi2SetupExperiment(component_, tolerance ? fmi2True : fmi2False, tolerance.value_or(0.0), start_time,
                                     stop_time ? fmi2True : fmi2False, stop_time.value_or(0.0)),
           "fmi2SetupExperiment");
 }
 
 void Fmi2Instance::enter_initialization_mode() {
+    changed();
     check(lib_->fmi2EnterInitializationMode(component_), "fmi2EnterInitializationMode");
 }
 void Fmi2Instance::exit_initialization_mode() {
+    changed();
     check(lib_->fmi2ExitInitializationMode(component_), "fmi2ExitInitializationMode");
 }
 void Fmi2Instance::terminate() {
+    changed();
     check(lib_->fmi2Terminate(component_), "fmi2Terminate");
 }
 
@@ -116,10 +121,12 @@ double Fmi2Instance::get_real(fmi2ValueReference vr) {
 }
 
 void Fmi2Instance::do_step(double t, double h) {
+    changed();
     check(lib_->fmi2DoStep(component_, t, h, fmi2True), "fmi2DoStep");
 }
 
 void Fmi2Instance::set_real_input_derivatives(std::span<const fmi2ValueReference> vr, std::span<const double> dx) {
+    changed();
     if (first_order_.size() < vr.size()) first_order_.resize(vr.size(), 1);
     check(lib_->fmi2SetRealInputDerivatives(component_, vr.data(), vr.size(), first_order_.data(), dx.data()),
           "fmi2SetRealInputDerivatives");
@@ -130,10 +137,12 @@ void Fmi2Instance::get_reals(std::span<const fmi2ValueReference> vr, std::span<d
 }
 
 void Fmi2Instance::set_reals(std::span<const fmi2ValueReference> vr, std::span<const double> x) {
+    changed();
     check(lib_->fmi2SetReal(component_, vr.data(), vr.size(), x.data()), "fmi2SetReal");
 }
 
 void Fmi2Instance::set_real(fmi2ValueReference vr, double x) {
+    changed();
     check(lib_->fmi2SetReal(component_, &vr, 1, &x), "fmi2SetReal");
 }
 
@@ -144,6 +153,7 @@ fmi2Integer Fmi2Instance::get_integer(fmi2ValueReference vr) {
 }
 
 void Fmi2Instance::set_integer(fmi2ValueReference vr, fmi2Integer x) {
+    changed();
     check(lib_->fmi2SetInteger(component_, &vr, 1, &x), "fmi2SetInteger");
 }
 
@@ -154,6 +164,7 @@ bool Fmi2Instance::get_boolean(fmi2ValueReference vr) {
 }
 
 void Fmi2Instance::set_boolean(fmi2ValueReference vr, bool x) {
+    changed();
     const fmi2Boolean b = x ? fmi2True : fmi2False;
     check(lib_->fmi2SetBoolean(component_, &vr, 1, &b), "fmi2SetBoolean");
 }
@@ -165,16 +176,28 @@ std::string Fmi2Instance::get_string(fmi2ValueReference vr) {
 }
 
 void Fmi2Instance::set_string(fmi2ValueReference vr, const std::string& x) {
+    changed();
     const fmi2String s = x.c_str();
     check(lib_->fmi2SetString(component_, &vr, 1, &s), "fmi2SetString");
 }
 
 void Fmi2Instance::set_time(double t) {
+    if (time_given_ && time_given_after_ == other_changes_ && same_bits(*time_given_, t)) return;
+    time_given_.reset();  // unknown if the call fails
+    ++version_;
     check(lib_->fmi2SetTime(component_, t), "fmi2SetTime");
+    time_given_ = t;
+    time_given_after_ = other_changes_;
 }
 
 void Fmi2Instance::set_states(const double* x, std::size_t n) {
+    if (states_known_ && states_given_after_ == other_changes_ && same_bits(states_given_, std::span(x, n))) return;
+    states_known_ = false;
+    ++version_;
     check(lib_->fmi2SetContinuousStates(component_, x, n), "fmi2SetContinuousStates");
+    states_given_.assign(x, x + n);
+    states_known_ = true;
+    states_given_after_ = other_changes_;
 }
 
 void Fmi2Instance::get_states(double* x, std::size_t n) {
@@ -194,20 +217,24 @@ void Fmi2Instance::get_event_indicators(double* z, std::size_t n) {
 }
 
 void Fmi2Instance::enter_event_mode() {
+    changed();
     check(lib_->fmi2EnterEventMode(component_), "fmi2EnterEventMode");
 }
 
 fmi2EventInfo Fmi2Instance::new_discrete_states() {
+    changed();
     fmi2EventInfo info{};
     check(lib_->fmi2NewDiscreteStates(component_, &info), "fmi2NewDiscreteStates");
     return info;
 }
 
 void Fmi2Instance::enter_continuous_time_mode() {
+    changed();
     check(lib_->fmi2EnterContinuousTimeMode(component_), "fmi2EnterContinuousTimeMode");
 }
 
 bool Fmi2Instance::completed_integrator_step(bool* terminate) {
+    changed();
     fmi2Boolean enter = fmi2False, stop = fmi2False;
     check(lib_->fmi2CompletedIntegratorStep(component_, fmi2True, &enter, &stop), "fmi2CompletedIntegratorStep");
     if (terminate) *terminate = stop != fmi2False;

@@ -1,7 +1,6 @@
 #include "engine/system.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <set>
 
 #include "connector_elements.hpp"
@@ -13,6 +12,7 @@
 #include "engine/name_hint.hpp"
 #include "engine/ssp_archive.hpp"
 #include "engine/value_text.hpp"
+#include "same_bits.hpp"
 
 namespace cosim {
 
@@ -552,18 +552,15 @@ void System::mark_continuous_consumers() {
     }
 }
 
-namespace {
-
-bool same_bits(double a, double b) {
-    return std::memcmp(&a, &b, sizeof a) == 0;
-}
-
-}  // namespace
-
 // The group's source values into g.values (and `text` for a String); true when they differ from the
 // last ones given.
 bool System::read_sources(TransferGroup& g, std::string& text) {
     auto& from = *components_[g.from].instance;
+    // Nothing called on the source since it was last read: the values are the last ones given (read_sources
+    // is always followed by accept() when they differ), so not read again.
+    const auto version = from.values_version();
+    if (g.given && version && g.read_at_version == version) return false;
+    g.read_at_version = version;
     bool changed = !g.given;
     switch (g.type) {
         case VariableType::real:

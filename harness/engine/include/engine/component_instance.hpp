@@ -3,6 +3,7 @@
 // Execution see only this interface, so swapping a block for hardware changes nothing else.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <span>
@@ -62,6 +63,11 @@ public:
     virtual void set_reals(std::span<const fmi2ValueReference> vr, std::span<const double> x) {
         for (std::size_t i = 0; i < vr.size(); ++i) set_real(vr[i], x[i]);
     }
+
+    // A count that moves with every call that may change what the component's getters return (a set, a time or
+    // states that differ from the last ones given, an event, a step): equal counts, equal values. A master may
+    // keep what it read while the count stays. std::nullopt: the component cannot tell (read every time).
+    virtual std::optional<std::uint64_t> values_version() const { return std::nullopt; }
 
     // Co-Simulation.
     virtual void do_step(double t, double h) = 0;

@@ -3,6 +3,7 @@
 // addressed by name or by value reference. The FMI function names appear only here and in the loader.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -57,12 +58,22 @@ public:
     // Returns true when the FMU asks for a step event.
     bool completed_integrator_step(bool* terminate) override;
 
+    // FMI 2.0: outputs are functions of the time, states, inputs, parameters and discrete states, which only
+    // the calls that count here change (each setter, event and step; getters do not).
+    std::optional<std::uint64_t> values_version() const override { return version_; }
+
     // Messages the FMU logged (status and text), newest last; the master prints warnings and errors.
     const std::vector<std::pair<fmi2Status, std::string>>& messages() const { return messages_; }
     void record(fmi2Status status, std::string message);
 
 private:
     void check(fmi2Status status, const char* function);
+    // A call that may change values: a new version, and the time and states last given are no longer known
+    // to be the FMU's (an event may move its states).
+    void changed() {
+        ++version_;
+        ++other_changes_;
+    }
 
     fmi_loader::Fmu& fmu_;
     const fmi_loader::Fmi2Library& lib_;
@@ -72,6 +83,16 @@ private:
     std::vector<fmi2Integer> first_order_;  // the orders argument of fmi2SetRealInputDerivatives: all 1
     std::vector<std::pair<fmi2Status, std::string>> messages_;
     std::size_t unreported_errors_ = 0;  // Error/Fatal messages held for the exception of the failing call
+    std::uint64_t version_ = 0;          // values_version()
+    std::uint64_t other_changes_ = 0;    // calls other than fmi2SetTime and fmi2SetContinuousStates
+    // The time and states last given, and other_changes_ then: the same bits again, with nothing else
+    // called in between, are not given again (a Model Exchange master sets both at the instant where its
+    // integrator just checked the event indicators).
+    std::optional<double> time_given_;
+    std::uint64_t time_given_after_ = 0;
+    std::vector<double> states_given_;
+    bool states_known_ = false;
+    std::uint64_t states_given_after_ = 0;
 };
 
 }  // namespace cosim

@@ -3,10 +3,12 @@
 // loops) and put in an order in which values can flow in one pass.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -76,6 +78,8 @@ struct TransferGroup {
     std::vector<double> values, last;  // Reals (and Integer/Boolean as exact doubles)
     std::string last_string;
     bool given = false;  // a value was transferred at least once
+    // The source's values_version() when it was last read: while it stays, its values are `last`.
+    std::optional<std::uint64_t> read_at_version;
     // Co-Simulation targets: the values at the last communication point, the start of the next step.
     std::vector<double> step_start;
     std::string step_start_string;
