@@ -53,7 +53,7 @@ inline void leo_orbit_3u(attitude_estimator::EstimatorData& d, bool detect, bool
     d.filter_start_rate = 0.0873;
     d.mag_calibration = true;
     d.mag_prior_offset_sigma = 0.5e-6;
-    d.mag_prior_field_sigma = 25e-6;
+    d.mag_prior_field_sigma = 8e-6;
     d.mag_prior_dipole = {0.0, 0.0, 0.05};
     // The strings' field taken out (the magnetometer's default layout, connected from the system's parameters).
     d.mag_string_field = true;
