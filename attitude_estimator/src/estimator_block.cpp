@@ -307,15 +307,40 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
         .range(-10.0, 10.0)
         .applies_when("mag_calibration", {"true"});
     t.parameter("mag_prior_sensor_position", &D::mag_prior_sensor_position, "m",
-                "mag_prior_offset_sigma > 0: where the magnetometer sits, body axes (the magnetometer's "
-                "sensor_position)")
-        .range(-10.0, 10.0)
-        .applies_when("mag_calibration", {"true"});
+                "mag_prior_offset_sigma > 0 or mag_string_field: where the magnetometer sits, body axes (the "
+                "magnetometer's sensor_position)")
+        .range(-10.0, 10.0);
     t.parameter("mag_prior_offset_error", &D::mag_prior_offset_error, "T",
                 "mag_prior_offset_sigma > 0: the ground calibration's error, body axes: it gives the dipole's field "
                 "at the sensor plus this (default 0.4, -0.3, 0.5 uT: about 1 sigma of a clean-room measurement)")
         .range(-1e-4, 1e-4)
         .applies_when("mag_calibration", {"true"});
+    t.parameter("mag_string_field", &D::mag_string_field, "",
+                "Take the field of the panels' string currents out of the magnetometer's reading before the "
+                "calibration, the fault tests and the filter: each face's measured current (i_face) times its "
+                "string loop's field per ampere at mag_prior_sensor_position (mag_string_loop_*, uplinked), "
+                "times 1 + mag_string_field_error (docs/filter.md)");
+    t.parameter("mag_string_loop_center", &D::mag_string_loop_center, "m",
+                "mag_string_field: each face's string loop (faces +x, -x, +y, -y, +z, -z, 3 numbers each), body "
+                "axes: its centre (the magnetometer's string_loop_center)")
+        .range(-10.0, 10.0)
+        .applies_when("mag_string_field", {"true"});
+    t.parameter("mag_string_loop_side_a", &D::mag_string_loop_side_a, "m",
+                "mag_string_field: each loop's first side, along which the current runs first (the "
+                "magnetometer's string_loop_side_a)")
+        .range(-10.0, 10.0)
+        .applies_when("mag_string_field", {"true"});
+    t.parameter("mag_string_loop_side_b", &D::mag_string_loop_side_b, "m",
+                "mag_string_field: each loop's second side: a positive current's moment is I (side_a x side_b); "
+                "zero sides: no loop (the magnetometer's string_loop_side_b)")
+        .range(-10.0, 10.0)
+        .applies_when("mag_string_field", {"true"});
+    t.parameter("mag_string_field_error", &D::mag_string_field_error, "1",
+                "mag_string_field: the relative error of the strings' field per ampere the computer is given (the "
+                "loops' geometry as built against as drawn): it uses the loops' field times 1 + this (default "
+                "0.05)")
+        .range(-0.5, 0.5)
+        .applies_when("mag_string_field", {"true"});
     t.parameter("filter_reset_after", &D::filter_reset_after, "",
                 "mekf: samples in a row whose every update fails the innovation test before the filter resets "
                 "to the single-frame attitude (without one, in eclipse, it coasts, not valid, until one comes)")
@@ -671,6 +696,8 @@ void SpinWorkspace::configure(double sample_period, std::int32_t window) {
 
 // 1 mm, as the magnetometer's min_source_distance: closer, a point dipole describes nothing real.
 constexpr double min_prior_dipole_distance = 1e-3;  // m
+// The same for a string loop's wires and the sensor (mag_string_field).
+constexpr double min_string_wire_distance = 1e-3;  // m
 
 void EstimatorBlock::configure() {
     auto& d = data();
@@ -721,6 +748,18 @@ void EstimatorBlock::configure() {
                              " mm from mag_prior_dipole_position: at least " +
                              std::to_string(min_prior_dipole_distance * 1e3) +
                              " mm (min_prior_dipole_distance) for a point dipole's field");
+    }
+    if (d.mag_string_field) {
+        // The thin-wire field holds away from the wires (the magnetometer's own min_source_distance).
+        static constexpr const char* faces[kStringFaces] = {"+x", "-x", "+y", "-y", "+z", "-z"};
+        for (std::size_t f = 0; f < kStringFaces; ++f) {
+            const double gap = string_loop_wire_distance(string_loop(d, f), d.mag_prior_sensor_position);
+            if (!(gap >= min_string_wire_distance))
+                throw fmu::Error(std::string("mag_string_field: the string loop of face ") + faces[f] + " passes " +
+                                 std::to_string(gap * 1e3) + " mm from mag_prior_sensor_position: at least " +
+                                 std::to_string(min_string_wire_distance * 1e3) +
+                                 " mm (min_string_wire_distance) for a thin wire's field");
+        }
     }
     settings_ = onboard_settings_from<double>(data());
     settings_float_ = onboard_settings_from<float>(data());

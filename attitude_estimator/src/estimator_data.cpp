@@ -137,6 +137,8 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
     s.mag_cal.prior_offset_sigma = static_cast<T>(d.mag_prior_offset_sigma);
     s.mag_cal.prior_field_sigma = static_cast<T>(d.mag_prior_field_sigma);
     s.mag_cal.prior_offset = to<T>(ground_calibration_offset(d));
+    const auto strings = string_field_per_ampere(d);
+    for (std::size_t f = 0; f < kStringFaces; ++f) s.string_field_per_amp[f] = to<T>(strings[f]);
     // The rate comes from two single-frame attitudes at most a few samples apart.
     m.max_init_gap = static_cast<T>(3.5 * d.sample_period);
 
@@ -165,6 +167,27 @@ Vec3<double> ground_calibration_offset(const EstimatorData& d) noexcept {
 orbit::Tle onboard_element_set(const EstimatorData& d) noexcept {
     const orbit::Tle given = orbit::tle_from_elements(d.parsed_elements[0] > 0.0 ? d.parsed_elements : d.tle_elements);
     return d.uplink_age == 0.0 ? given : orbit::older_set(given, d.uplink_age);
+}
+
+StringLoop string_loop(const EstimatorData& d, std::size_t face) noexcept {
+    StringLoop l;
+    for (std::size_t i = 0; i < 3; ++i) {
+        l.center[i] = d.mag_string_loop_center[3 * face + i];
+        l.side_a[i] = d.mag_string_loop_side_a[3 * face + i];
+        l.side_b[i] = d.mag_string_loop_side_b[3 * face + i];
+    }
+    return l;
+}
+
+std::array<Vec3<double>, kStringFaces> string_field_per_ampere(const EstimatorData& d) noexcept {
+    std::array<Vec3<double>, kStringFaces> k{};
+    if (!d.mag_string_field) return k;
+    const double gain = 1.0 + d.mag_string_field_error;
+    for (std::size_t f = 0; f < kStringFaces; ++f) {
+        const Vec3<double> b = string_loop_field_per_ampere(string_loop(d, f), d.mag_prior_sensor_position);
+        for (std::size_t i = 0; i < 3; ++i) k[f][i] = gain * b[i];
+    }
+    return k;
 }
 
 CalendarInstant onboard_clock_epoch(const EstimatorData& d) noexcept {

@@ -18,6 +18,7 @@
 #include "fmu/testing/block_driver.hpp"
 #include "fmu/testing/changed_value.hpp"
 #include "fmu/value_access.hpp"
+#include "magnetometer/spacecraft_field.hpp"
 #include "orbit/tle.hpp"
 
 namespace attitude_estimator {
@@ -128,6 +129,7 @@ std::vector<double> numbers(const OnboardSettings<double>& s) {
          d.face_stuck_tolerance});
     put({d.frozen_min_field, d.frozen_tolerance, d.spike_sigma, d.spike_gate, d.spike_window,
          static_cast<double>(d.spike_count), d.bias_window, d.bias_threshold, d.bias_noise_factor});
+    for (const auto& k : s.string_field_per_amp) put_all(k);
     return out;
 }
 
@@ -172,6 +174,17 @@ std::function<void(EstimatorData&)> configuration_for(const std::string& name) {
             d.mag_calibration = true;
             d.mag_prior_offset_sigma = 0.5e-6;
             d.mag_prior_dipole = {0.0, 0.0, 0.05};
+        };
+    if (name.starts_with("mag_string_"))  // the strings' field of the magnetometer's default layout
+        return [name](EstimatorData& d) {
+            const magnetometer::SpacecraftLayout layout = magnetometer::default_layout();
+            for (std::size_t f = 0; f < 6; ++f)
+                for (std::size_t i = 0; i < 3; ++i) {
+                    d.mag_string_loop_center[3 * f + i] = layout.string_loop[f].center[i];
+                    d.mag_string_loop_side_a[3 * f + i] = layout.string_loop[f].side_a[i];
+                    d.mag_string_loop_side_b[3 * f + i] = layout.string_loop[f].side_b[i];
+                }
+            d.mag_string_field = name != "mag_string_field";
         };
     if (name == "reference_source")  // from the inputs to the computer's own models: it has an element set
         return [](EstimatorData& d) {

@@ -60,8 +60,10 @@ def main():
     # This sensor reads the earth's field alone, without the spacecraft's own (the FMU adds the residual
     # dipole's 7.3 uT at the sensor). The scenario's dipole_moment feeds the truth's magnetic torque and the
     # computer's uplinked ground calibration, which would take out 7.3 uT that is not there (12 deg off):
-    # the spacecraft flown here has no residual dipole.
+    # the spacecraft flown here has no residual dipole. Nor does it read the cell strings' field, which the
+    # computer would otherwise take out of its reading (est.mag_string_field; about 1 uT in sunlight).
     system.set("dipole_moment", [0.0, 0.0, 0.0])
+    system.set("est.mag_string_field", False)
     sensor = Magnetometer()
     system.replace("mag", sensor, sample_period=0.05, current_inputs=not args.once)
     r = system.run(stop_time=args.stop_time, output_interval=0.05, outputs=["est.mag_field", "env.mag_body"])

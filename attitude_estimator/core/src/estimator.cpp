@@ -70,6 +70,10 @@ SampleResult<T> estimate_sample(const SampleInputs<T>& in, const EstimatorConfig
     FieldMeasurement<T> mag =
         field_vector_from_set_reset(v_digital, v_ref_digital, config.mag_sensitivity, in.mag_polarity, in.mag_offset,
                                     rail_low, rail_high, config.mag_rail_margin, config.min_field);
+    // The spacecraft's own field the computer knows (the strings' currents) goes before the calibration, which
+    // sees the reading as the sensor's axes take it (a field at the sensor, through its scale and coupling).
+    if (!mag.at_rail)
+        for (std::size_t k = 0; k < 3; ++k) mag.field[k] -= in.mag_known_field[k];
     r.mag_field_uncalibrated = mag.field;
     calibrate_field(in, config.min_field, mag);
     r.mag_reading_usable = !mag.at_rail && std::isfinite(v_ref_digital);

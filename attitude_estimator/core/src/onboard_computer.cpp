@@ -406,6 +406,23 @@ OnboardInputs<T> with_face_scales(const OnboardInputs<T>& in, const FaultDetecti
 template <class T>
 constexpr T kShadowMarginKm = T(100);
 
+// The field of the panels' string currents at the sensor from the measured face currents (OnboardSettings::
+// string_field_per_amp): Σ K_f i_f over the digitized currents as they are read, not rescaled for a declared
+// partial shadow (the string carries what the cells give). A face excluded by the fault detection counts as
+// carrying nothing: its reading is not trusted, and an open string carries nothing indeed.
+template <class T>
+Vec3<T> string_field(const OnboardInputs<T>& in, const OnboardSettings<T>& settings, const EstimatorConfig<T>& nominal,
+                     std::uint8_t faces_out) {
+    Vec3<T> b{};
+    for (std::size_t k = 0; k < 6; ++k) {
+        if (faces_out >> k & 1u) continue;
+        const T i = convert(nominal.face_adc[k], in.i_face[k]).value;
+        if (!std::isfinite(i)) continue;
+        for (std::size_t j = 0; j < 3; ++j) b[j] += settings.string_field_per_amp[k][j] * i;
+    }
+    return b;
+}
+
 // An excluded axis is read at the filter's prediction of it when there is one, else at its null (so that its
 // rail does not take the other two with it; its component is not used by the filter). The prediction, not
 // the null, because the calibration's correction (I + D) H mixes the axes: with the null, the cross terms
@@ -419,10 +436,11 @@ void stand_in_for_excluded_axes(const OnboardState<T>& s, const OnboardInputs<T>
     const T sensitivity = settings.estimator.mag_sensitivity;
     for (std::size_t k = 0; k < 3; ++k) {
         if (!(axes_out >> k & 1u)) continue;
-        // The reading model: v − v_ref = p S H + v_os (field_vector.hpp), with the offset the sample applies.
-        used.v_mag[k] = o.predicted
-                            ? in.v_mag_ref + used.mag_polarity * sensitivity * o.field_body[k] + used.mag_offset[k]
-                            : in.v_mag_ref;
+        // The reading model: v − v_ref = p S H + v_os (field_vector.hpp), with the offset the sample applies; H
+        // holds the strings' field the sample takes out again (the prediction is of the field without it).
+        const T h = o.field_body[k] + used.mag_known_field[k];
+        used.v_mag[k] =
+            o.predicted ? in.v_mag_ref + used.mag_polarity * sensitivity * h + used.mag_offset[k] : in.v_mag_ref;
     }
 }
 
@@ -496,6 +514,7 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
     const bool strap_failed = detecting && s.faults.strap_failed;
     const T reading_polarity = strap_failed ? s.faults.strap_polarity : s.set_reset.polarity;
     const Vec3<T> offset = strap_failed ? s.faults.strap_offset : applied_offset(s.set_reset, settings.set_reset);
+    const std::uint8_t faces_out = detecting ? excluded_faces(s.faults) : std::uint8_t{0};
     const SampleInputs<T> sample_in{.i_sh = scaled_in.i_sh,
                                     .i_face = scaled_in.i_face,
                                     .v_mag = in.v_mag,
@@ -505,10 +524,10 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
                                     .mag_polarity = reading_polarity,
                                     .mag_offset = offset,
                                     .mag_gain = s.mag_cal.gain,
-                                    .mag_cal_offset = s.mag_cal.offset};
+                                    .mag_cal_offset = s.mag_cal.offset,
+                                    .mag_known_field = string_field(in, settings, nominal, faces_out)};
     // Excluded faces read nothing; an excluded axis reads its null, so that its rail does not take the
     // other two with it (its component is not used below).
-    const std::uint8_t faces_out = detecting ? excluded_faces(s.faults) : std::uint8_t{0};
     const std::uint8_t axes_out = detecting ? excluded_axes(s.faults) : std::uint8_t{0};
     SampleInputs<T> used_in = sample_in;
     for (std::size_t k = 0; k < 6; ++k)

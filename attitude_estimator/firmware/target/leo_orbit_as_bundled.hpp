@@ -53,9 +53,17 @@ inline void leo_orbit_3u(attitude_estimator::EstimatorData& d, bool detect, bool
     d.filter_start_rate = 0.0873;
     d.mag_calibration = true;
     d.mag_prior_offset_sigma = 0.5e-6;
-    d.mag_prior_field_sigma = 25e-6;
+    d.mag_prior_field_sigma = 8e-6;
     d.mag_prior_dipole = {0.0, 0.0, 0.05};
-    d.filter_mag_sigma_calibrated = 14e-6;
+    // The strings' field taken out (the magnetometer's default layout, connected from the system's parameters).
+    d.mag_string_field = true;
+    d.mag_string_loop_center = {0.05, 0.0,   0.0, -0.05, 0.0, 0.0,  0.0, 0.05, 0.0,
+                                0.0,  -0.05, 0.0, 0.0,   0.0, 0.17, 0.0, 0.0,  -0.17};
+    d.mag_string_loop_side_a = {0.0, 0.0, 0.3, 0.0,  0.0, 0.3, 0.0,  0.0, 0.3,
+                                0.0, 0.0, 0.3, 0.08, 0.0, 0.0, 0.08, 0.0, 0.0};
+    d.mag_string_loop_side_b = {0.0,    -0.005, 0.0, 0.0, 0.005, 0.0, 0.005, 0.0,    0.0,
+                                -0.005, 0.0,    0.0, 0.0, 0.005, 0.0, 0.0,   -0.005, 0.0};
+    d.filter_mag_sigma_calibrated = 1.5e-6;
     d.filter_mag_sigma_eclipse = 2.5e-6;
     d.filter_sun_sigma_method = {0.094, 0.088, 0.069, 0.051};
     d.filter_sun_correlation = {51.0, 31.0, 12.0, 12.0};

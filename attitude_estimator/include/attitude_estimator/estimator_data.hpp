@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "attitude_estimator/onboard_computer.hpp"
+#include "attitude_estimator/string_field.hpp"
 #include "fmu/fixed_string.hpp"  // a plain fixed-capacity string (the TLE lines; not sent to the firmware)
 #include "orbit/tle.hpp"         // the Tle struct (its parser is called by the block only)
 
@@ -177,6 +178,15 @@ struct EstimatorData {
     std::array<double, 3> mag_prior_offset_error{0.4e-6, -0.3e-6, 0.5e-6};
     double mag_prior_offset_sigma = 0.0;  // T, 1σ per axis the computer gives its ground calibration
     double mag_prior_field_sigma = 0.0;   // T: the field's σ in the filter meanwhile (0: filter_mag_sigma_calibrated)
+    // The panels' string currents' field at the sensor, taken out of the field with mag_string_field (docs/filter.md,
+    // "The strings' field"): each face's string a loop (string_field.hpp; 3 numbers per face, +x, −x, +y, −y, +z,
+    // −z; zero sides: no loop) seen from mag_prior_sensor_position, its field per ampere times (1 +
+    // mag_string_field_error), the uplinked knowledge's named error; the core gets the six per-ampere fields.
+    bool mag_string_field = false;
+    std::array<double, 18> mag_string_loop_center{};  // m, body axes
+    std::array<double, 18> mag_string_loop_side_a{};  // m
+    std::array<double, 18> mag_string_loop_side_b{};  // m
+    double mag_string_field_error = 0.05;             // 1: the per-ampere fields the computer is given, relative
 
     // outputs (discrete: set at sample instants, held in between). Before the first sample: identity.
     std::array<double, 4> q_est{0.0, 0.0, 0.0, 1.0};                           // scalar-last [x, y, z, w], w >= 0
@@ -281,6 +291,12 @@ orbit::Tle onboard_element_set(const EstimatorData& d) noexcept;
 // the field of the scenario's residual dipole (mag_prior_dipole at mag_prior_dipole_position) at the sensor
 // (mag_prior_sensor_position), plus the named error mag_prior_offset_error.
 Vec3<double> ground_calibration_offset(const EstimatorData& d) noexcept;
+// Face k's string loop (0: +x … 5: −z) as the parameters give it (mag_string_loop_*).
+StringLoop string_loop(const EstimatorData& d, std::size_t face) noexcept;
+// The field per ampere of each face's string at the sensor the computer is given (OnboardSettings::
+// string_field_per_amp, T/A, body axes): the loop's field at mag_prior_sensor_position times (1 +
+// mag_string_field_error); all zero without mag_string_field.
+std::array<Vec3<double>, kStringFaces> string_field_per_ampere(const EstimatorData& d) noexcept;
 // The computer's clock at t = 0: clock_epoch_* plus clock_offset.
 CalendarInstant onboard_clock_epoch(const EstimatorData& d) noexcept;
 // The fault detection's settings from the parameters (fault_data.cpp) and its outputs back.

@@ -65,6 +65,9 @@ struct SampleInputs {
     // mag_cal_offset (T). Identity and zero (default): none.
     Matrix3RowMajor<T> mag_gain{1, 0, 0, 0, 1, 0, 0, 0, 1};
     Vec3<T> mag_cal_offset{};
+    // A field at the sensor the computer knows from its own measurements (the panels' string currents': T, body
+    // axes), taken out of the reading before the calibration: mag_field_uncalibrated is the reading less this.
+    Vec3<T> mag_known_field{};
 };
 
 template <class T>

@@ -45,6 +45,10 @@ struct OnboardSettings {
     // Fault detection, isolation and recovery (fault_detection.hpp; off by default). Its predictive tests
     // need the filter; its bus test needs both i_sh and i_face wired.
     FaultDetectionConfig<T> faults{};
+    // The field of each face's string current at the magnetometer per ampere (T/A, body axes; faces +x, −x, +y,
+    // −y, +z, −z), uplinked: the field of the measured face currents, Σ K_f i_face[f], is taken out of the
+    // reading before the calibration, the fault tests and the filter (SampleInputs::mag_known_field). Zero: none.
+    std::array<Vec3<T>, 6> string_field_per_amp{};
 };
 
 template <class T>
