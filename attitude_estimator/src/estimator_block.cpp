@@ -295,6 +295,17 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
                 "0 = filter_mag_sigma_calibrated)")
         .range(0.0, 1e-4)
         .applies_when("mag_calibration", {"true"});
+    t.parameter("mag_prior_field_fluctuation", &D::mag_prior_field_fluctuation, "T",
+                "mag_prior_offset_sigma > 0: instead of mag_prior_field_sigma (above 0), the field's error as it "
+                "turns through the uncalibrated sensor, 1-sigma per axis correlated over one radian of the tumble "
+                "(1/|rate|, at most mag_prior_field_correlation), weighed as white noise sigma sqrt(2 tau / step)")
+        .range(0.0, 1e-5)
+        .applies_when("mag_calibration", {"true"});
+    t.parameter("mag_prior_field_correlation", &D::mag_prior_field_correlation, "s",
+                "mag_prior_field_fluctuation > 0: the longest correlation of that error (a slow tumble: the orbit's "
+                "own turn of the field)")
+        .range(1.0, 3600.0)
+        .applies_when("mag_calibration", {"true"});
     t.parameter("mag_prior_dipole", &D::mag_prior_dipole, "A.m2",
                 "mag_prior_offset_sigma > 0: the spacecraft's residual dipole, body axes (the scenario's magnetic "
                 "budget: connect the system's dipole_moment), whose field at the sensor the ground calibration "

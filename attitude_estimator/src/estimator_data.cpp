@@ -136,6 +136,8 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
     s.mag_cal.min_equations = d.mag_calibration_min;
     s.mag_cal.prior_offset_sigma = static_cast<T>(d.mag_prior_offset_sigma);
     s.mag_cal.prior_field_sigma = static_cast<T>(d.mag_prior_field_sigma);
+    s.mag_cal.prior_field_fluctuation = static_cast<T>(d.mag_prior_field_fluctuation);
+    s.mag_cal.prior_field_correlation = static_cast<T>(d.mag_prior_field_correlation);
     s.mag_cal.prior_offset = to<T>(ground_calibration_offset(d));
     const auto strings = string_field_per_ampere(d);
     for (std::size_t f = 0; f < kStringFaces; ++f) s.string_field_per_amp[f] = to<T>(strings[f]);

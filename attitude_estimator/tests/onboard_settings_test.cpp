@@ -108,7 +108,7 @@ std::vector<double> numbers(const OnboardSettings<double>& s) {
     const MagCalibrationConfig<double>& k = s.mag_cal;
     put({k.sigma, static_cast<double>(k.every), static_cast<double>(k.min_equations),
          static_cast<double>(k.solve_every), k.max_distortion, k.max_offset, k.max_gain_sigma, k.max_offset_sigma,
-         k.prior_offset_sigma, k.prior_field_sigma});
+         k.prior_offset_sigma, k.prior_field_sigma, k.prior_field_fluctuation, k.prior_field_correlation});
     put_all(k.prior_offset);
     const OnboardReferenceConfig<double>& r = s.references;
     put({r.period, r.tle_minutes_at_midnight, static_cast<double>(r.field.degree), r.clock.midnight_days,

@@ -460,6 +460,16 @@ void keep_direction_only(const MekfState<T>& s, V3<T>& y, Eigen::Matrix<T, 3, kM
     r(j, j) = T(1);
 }
 
+// MekfConfig::mag_turn_fluctuation as white noise over one step: τ = 1/|ω̂| capped at mag_turn_correlation.
+template <class T>
+T turning_field_sigma(const MekfState<T>& s, T step, const MekfConfig<T>& c) {
+    const T rate = std::sqrt(s.omega[0] * s.omega[0] + s.omega[1] * s.omega[1] + s.omega[2] * s.omega[2]);
+    T tau = c.mag_turn_correlation;
+    if (rate * tau > T(1)) tau = T(1) / rate;
+    const T ratio = T(2) * tau / step;
+    return ratio > T(1) ? c.mag_turn_fluctuation * std::sqrt(ratio) : c.mag_turn_fluctuation;
+}
+
 }  // namespace
 
 template <class T>
@@ -544,8 +554,9 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
         s.torque_air_velocity = in.air_velocity;
         s.torque_air_density = in.air_density;
     }
+    const T step = s.stage == 2 ? in.t - s.t_last : T(0);
     if (s.stage == 2) {
-        mekf_propagate(s, in.t - s.t_last, c);
+        mekf_propagate(s, step, c);
     } else {
         // Initialisation from two single-frame attitudes: the first gives the attitude, the difference to the
         // second (close enough not to alias) the rate.
@@ -609,6 +620,8 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
         if (in.mag_calibrated && c.mag_sigma_calibrated > T(0)) mag_config.mag_sigma = c.mag_sigma_calibrated;
         if (in.mag_calibrated && !in.sun_valid && c.mag_sigma_calibrated_eclipse > T(0))
             mag_config.mag_sigma = c.mag_sigma_calibrated_eclipse;
+        if (!in.mag_calibrated && c.mag_turn_fluctuation > T(0) && step > T(0))
+            mag_config.mag_sigma = turning_field_sigma(s, step, c);
         const T polarity = holds_hard_iron(s, c) ? T(1) : in.polarity;
         // The watch needs the three axes (an excluded axis leaves no field to turn into inertial axes).
         if (c.watch_time > T(0) && in.mag_axes == 7) watch_field(s, in, polarity, mag_config);

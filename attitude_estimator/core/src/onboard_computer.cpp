@@ -104,6 +104,8 @@ MekfConfig<T> field_recovery_config(const OnboardState<T>& s, const OnboardSetti
     if (ground_calibration_applies(s, settings)) {
         if (c.mag_sigma_calibrated > T(0)) c.mag_sigma = c.mag_sigma_calibrated;
         if (settings.mag_cal.prior_field_sigma > T(0)) c.mag_sigma = settings.mag_cal.prior_field_sigma;
+        c.mag_turn_fluctuation = settings.mag_cal.prior_field_fluctuation;
+        c.mag_turn_correlation = settings.mag_cal.prior_field_correlation;
     }
     if (bias_recovering_uncalibrated(s, settings)) {
         c.mag_sigma *= settings.faults.bias_noise_factor;

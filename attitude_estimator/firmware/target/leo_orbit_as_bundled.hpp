@@ -54,6 +54,8 @@ inline void leo_orbit_3u(attitude_estimator::EstimatorData& d, bool detect, bool
     d.mag_calibration = true;
     d.mag_prior_offset_sigma = 0.5e-6;
     d.mag_prior_field_sigma = 8e-6;
+    d.mag_prior_field_fluctuation = 100e-9;
+    d.mag_prior_field_correlation = 200.0;
     d.mag_prior_dipole = {0.0, 0.0, 0.05};
     // The strings' field taken out (the magnetometer's default layout, connected from the system's parameters).
     d.mag_string_field = true;

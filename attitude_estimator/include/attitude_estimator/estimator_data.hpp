@@ -178,6 +178,10 @@ struct EstimatorData {
     std::array<double, 3> mag_prior_offset_error{0.4e-6, -0.3e-6, 0.5e-6};
     double mag_prior_offset_sigma = 0.0;  // T, 1σ per axis the computer gives its ground calibration
     double mag_prior_field_sigma = 0.0;   // T: the field's σ in the filter meanwhile (0: filter_mag_sigma_calibrated)
+    // Or (above 0) that σ from the field's turn through the uncalibrated sensor: 1σ per axis (T) correlated over one
+    // radian of the tumble, at most the correlation (s) (docs/filter.md, "The field before the calibration").
+    double mag_prior_field_fluctuation = 0.0;
+    double mag_prior_field_correlation = 300.0;
     // The panels' string currents' field at the sensor, taken out of the field with mag_string_field (docs/filter.md,
     // "The strings' field"): each face's string a loop (string_field.hpp; 3 numbers per face, +x, −x, +y, −y, +z,
     // −z; zero sides: no loop) seen from mag_prior_sensor_position, its field per ampere times (1 +

@@ -58,6 +58,10 @@ struct MagCalibrationConfig {
     // mag_sigma_calibrated): the offset is the ground's, but the sensor's scale, cross-axis coupling and
     // misalignment are not yet calibrated (an orbit without enough change of the field's size never is).
     T prior_field_sigma = T(0);
+    // Meanwhile, instead (above 0): the field's error as it turns through the uncalibrated sensor, 1σ per axis
+    // correlated over one radian of the tumble, at most prior_field_correlation (s): MekfConfig::mag_turn_*.
+    T prior_field_fluctuation = T(0);
+    T prior_field_correlation = T(0);
 };
 
 template <class T>

@@ -53,6 +53,13 @@ struct MekfConfig {
     // tumble, which the calibration cannot take out; in eclipse those currents are zero. One σ for both leaves
     // the filter overconfident in sunlight and underconfident in eclipse (docs/filter.md, "Per phase").
     T mag_sigma_calibrated_eclipse = T(0);
+    // The uncalibrated field's error as what it is before the in-flight calibration: the sensor's scale, coupling
+    // and misalignment acting on a field that turns in body axes, 1σ mag_turn_fluctuation (T) per axis correlated
+    // over about one radian of that turn, τ = 1/|ω̂| but at most mag_turn_correlation (s; the orbit's own turn of
+    // the field sets it for a slow tumble). Weighed as the white noise of the same information, σ √(2τ/Δt), Δt
+    // the sample's step (as the sun's correlated error). 0: mag_sigma as set. Only while !mag_calibrated.
+    T mag_turn_fluctuation = T(0);
+    T mag_turn_correlation = T(0);
     // The spacecraft's own field at the sensor before the in-flight calibration applies (the uplinked prior
     // of its hard iron, 1σ per axis, T; 0: not modelled). Fixed in body axes, it is no white noise: weighed
     // as one, thousands of readings pin the attitude to a field that is several µT off (NEES/dof 4 over the
