@@ -460,14 +460,21 @@ void keep_direction_only(const MekfState<T>& s, V3<T>& y, Eigen::Matrix<T, 3, kM
     r(j, j) = T(1);
 }
 
-// MekfConfig::mag_turn_fluctuation as white noise over one step: τ = 1/|ω̂| capped at mag_turn_correlation.
+// An error of 1σ `sigma` correlated over `tau` carries, taken every `dt`, the information of white noise of
+// σ √(2τ/dt) (MekfConfig::sun_correlation_time); no less than σ itself, and σ where dt is not known (0).
+template <class T>
+T white_equivalent_sigma(T sigma, T tau, T dt) {
+    const T ratio = dt > T(0) ? T(2) * tau / dt : T(1);
+    return ratio > T(1) ? sigma * std::sqrt(ratio) : sigma;
+}
+
+// MekfConfig::mag_turn_fluctuation over one step: τ = 1/|ω̂| capped at mag_turn_correlation.
 template <class T>
 T turning_field_sigma(const MekfState<T>& s, T step, const MekfConfig<T>& c) {
-    const T rate = std::sqrt(s.omega[0] * s.omega[0] + s.omega[1] * s.omega[1] + s.omega[2] * s.omega[2]);
+    const T rate = std::sqrt(squared_norm(s.omega));
     T tau = c.mag_turn_correlation;
     if (rate * tau > T(1)) tau = T(1) / rate;
-    const T ratio = T(2) * tau / step;
-    return ratio > T(1) ? c.mag_turn_fluctuation * std::sqrt(ratio) : c.mag_turn_fluctuation;
+    return white_equivalent_sigma(c.mag_turn_fluctuation, tau, step);
 }
 
 }  // namespace
@@ -600,11 +607,9 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
     if (in.sun_valid) {
         // A correlated sun error enters as the white noise of the same information (MekfConfig).
         MekfConfig<T> sun_config = c;
-        if (c.sun_correlation_time > T(0)) {
-            const T dt = s.has_sun ? in.t - s.t_sun : T(0);
-            const T ratio = dt > T(0) ? T(2) * c.sun_correlation_time / dt : T(1);
-            if (ratio > T(1)) sun_config.sun_sigma *= std::sqrt(ratio);
-        }
+        if (c.sun_correlation_time > T(0))
+            sun_config.sun_sigma =
+                white_equivalent_sigma(c.sun_sigma, c.sun_correlation_time, s.has_sun ? in.t - s.t_sun : T(0));
         s.t_sun = in.t;
         s.has_sun = 1;
         result.sun = mekf_update_sun(s, in.sun_ref, in.sun_body, sun_config);
