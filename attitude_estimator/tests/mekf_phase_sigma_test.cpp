@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "attitude_estimator/mekf.hpp"
+#include "mekf_variances.hpp"
 #include "test_support.hpp"
 
 namespace attitude_estimator::test {
@@ -47,12 +48,11 @@ std::array<double, 3> after_one_field(const MekfConfig<T>& c, bool sun) {
     in.sun_ref = {T(0), T(0), T(1)};  // along the field: adds nothing about x and y's difference below
     in.sun_body = in.sun_ref;
     mekf_sample(s, in, c);
-    return {static_cast<double>(s.p[0]), static_cast<double>(s.p[kMekfStates + 1]),
-            static_cast<double>(s.p[2 * kMekfStates + 2])};
+    return attitude_variances(s);
 }
 
 double closed_form(double sigma) {
-    return 1.0 / (1.0 / (kStartSigma * kStartSigma) + kField * kField / (sigma * sigma));
+    return variance_after_one_field(kStartSigma, kField, sigma);
 }
 
 TYPED_TEST(EstimatorCoreMekfPhaseSigma, EclipseFieldWeighedWithItsOwnSigma) {

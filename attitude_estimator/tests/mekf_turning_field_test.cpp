@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "attitude_estimator/mekf.hpp"
+#include "mekf_variances.hpp"
 #include "test_support.hpp"
 
 namespace attitude_estimator::test {
@@ -51,12 +52,11 @@ std::array<double, 3> after_one_step(const MekfConfig<T>& c, double rate, bool c
     in.mag_ref = {T(0), T(0), T(kField)};
     in.mag_body = in.mag_ref;  // turned about z: still along z
     mekf_sample(s, in, c);
-    return {static_cast<double>(s.p[0]), static_cast<double>(s.p[kMekfStates + 1]),
-            static_cast<double>(s.p[2 * kMekfStates + 2])};
+    return attitude_variances(s);
 }
 
 double closed_form(double sigma) {
-    return 1.0 / (1.0 / (kStartSigma * kStartSigma) + kField * kField / (sigma * sigma));
+    return variance_after_one_field(kStartSigma, kField, sigma);
 }
 
 TYPED_TEST(EstimatorCoreMekfTurningField, ATumbleSetsTheCorrelationAndTheSigma) {
