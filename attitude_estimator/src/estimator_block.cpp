@@ -166,6 +166,10 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
                 "counts as white noise of sigma^2 max(1, 2 tau / dt); 0 = white")
         .range(0.0, 1e5)
         .applies_when("filter", {"mekf"});
+    t.parameter("filter_sun_turn", &D::filter_sun_turn, "",
+                "mekf: the sun vector's error correlated over one radian of the tumble, tau = 1/|rate| (the "
+                "filter's rate), at most filter_sun_correlation (false: tau = filter_sun_correlation)")
+        .applies_when("filter", {"mekf"});
     t.parameter("filter_mag_ref_sigma", &D::filter_mag_ref_sigma, "T",
                 "mekf: 1-sigma error per axis of the reference field model (adds to filter_mag_sigma in quadrature)")
         .range(0.0, 1e-4)

@@ -104,6 +104,7 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
     m.sun_sigma = static_cast<T>(d.filter_sun_sigma_method[method] > 0.0 ? d.filter_sun_sigma_method[method]
                                                                          : d.filter_sun_sigma);
     m.sun_correlation_time = static_cast<T>(d.filter_sun_correlation[method]);
+    m.sun_turn_correlation = d.filter_sun_turn;
     m.mag_ref_sigma = static_cast<T>(d.filter_mag_ref_sigma);
     m.mag_sigma_calibrated = static_cast<T>(d.filter_mag_sigma_calibrated);
     m.mag_sigma_calibrated_eclipse = static_cast<T>(d.filter_mag_sigma_eclipse);

@@ -13,16 +13,26 @@ import csv
 import numpy as np
 
 
-def correlation_time(x, dt_row):
+def normalized_autocorrelation(x, unbiased=False):
+    """The autocorrelation of x less its mean at lags 0..n-1, 1 at lag 0 (None for a constant or short x);
+    unbiased: each lag's sum divided by its number of products."""
     x = x - x.mean()
     n = len(x)
     if n < 3 or not np.any(x):
-        return 0.0
+        return None
     f = np.fft.rfft(x, 2 * n)
     acf = np.fft.irfft(f * np.conj(f))[:n]
-    acf /= acf[0]
+    if unbiased:
+        acf = acf / np.arange(n, 0, -1)
+    return acf / acf[0]
+
+
+def correlation_time(x, dt_row):
+    acf = normalized_autocorrelation(x)
+    if acf is None:
+        return 0.0
     below = np.nonzero(acf < np.exp(-1.0))[0]
-    return float(below[0]) * dt_row if len(below) else float(n) * dt_row
+    return float(below[0]) * dt_row if len(below) else float(len(x)) * dt_row
 
 
 def main():

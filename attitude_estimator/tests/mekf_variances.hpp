@@ -1,6 +1,7 @@
 // What the field-update tests of the filter read and compare: the attitude covariance's diagonal, and its closed
 // form after one field update from an isotropic start σ₀² I with the field along z (x and y:
-// 1 / (1/σ₀² + |B|²/σ²); z keeps σ₀²). Used by mekf_phase_sigma_test.cpp and mekf_turning_field_test.cpp.
+// 1 / (1/σ₀² + |B|²/σ²); z keeps σ₀²). Used by mekf_phase_sigma_test.cpp, mekf_turning_field_test.cpp and
+// mekf_sun_turn_test.cpp (a unit sun for |B|).
 #pragma once
 
 #include <array>

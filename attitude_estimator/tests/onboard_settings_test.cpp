@@ -77,6 +77,7 @@ std::vector<double> numbers(const OnboardSettings<double>& s) {
          f.mag_sigma,
          f.face_sigma,
          f.sun_correlation_time,
+         static_cast<double>(f.sun_turn_correlation),
          f.mag_ref_sigma,
          f.mag_sigma_calibrated,
          f.mag_sigma_calibrated_eclipse,

@@ -468,13 +468,18 @@ T white_equivalent_sigma(T sigma, T tau, T dt) {
     return ratio > T(1) ? sigma * std::sqrt(ratio) : sigma;
 }
 
-// MekfConfig::mag_turn_fluctuation over one step: τ = 1/|ω̂| capped at mag_turn_correlation.
+// An error that follows the faces as the body turns stays put for about one radian of the tumble: τ = 1/|ω̂|,
+// at most `longest` (MekfConfig::mag_turn_correlation, sun_turn_correlation).
+template <class T>
+T turn_correlation_time(const MekfState<T>& s, T longest) {
+    const T rate = std::sqrt(squared_norm(s.omega));
+    return rate * longest > T(1) ? T(1) / rate : longest;
+}
+
+// MekfConfig::mag_turn_fluctuation over one step.
 template <class T>
 T turning_field_sigma(const MekfState<T>& s, T step, const MekfConfig<T>& c) {
-    const T rate = std::sqrt(squared_norm(s.omega));
-    T tau = c.mag_turn_correlation;
-    if (rate * tau > T(1)) tau = T(1) / rate;
-    return white_equivalent_sigma(c.mag_turn_fluctuation, tau, step);
+    return white_equivalent_sigma(c.mag_turn_fluctuation, turn_correlation_time(s, c.mag_turn_correlation), step);
 }
 
 }  // namespace
@@ -607,9 +612,11 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
     if (in.sun_valid) {
         // A correlated sun error enters as the white noise of the same information (MekfConfig).
         MekfConfig<T> sun_config = c;
-        if (c.sun_correlation_time > T(0))
-            sun_config.sun_sigma =
-                white_equivalent_sigma(c.sun_sigma, c.sun_correlation_time, s.has_sun ? in.t - s.t_sun : T(0));
+        if (c.sun_correlation_time > T(0)) {
+            const T tau =
+                c.sun_turn_correlation ? turn_correlation_time(s, c.sun_correlation_time) : c.sun_correlation_time;
+            sun_config.sun_sigma = white_equivalent_sigma(c.sun_sigma, tau, s.has_sun ? in.t - s.t_sun : T(0));
+        }
         s.t_sun = in.t;
         s.has_sun = 1;
         result.sun = mekf_update_sun(s, in.sun_ref, in.sun_body, sun_config);

@@ -68,7 +68,8 @@ inline void leo_orbit_3u(attitude_estimator::EstimatorData& d, bool detect, bool
     d.filter_mag_sigma_calibrated = 1.5e-6;
     d.filter_mag_sigma_eclipse = 2.5e-6;
     d.filter_sun_sigma_method = {0.094, 0.088, 0.069, 0.051};
-    d.filter_sun_correlation = {51.0, 31.0, 12.0, 12.0};
+    d.filter_sun_correlation = {200.0, 31.0, 12.0, 12.0};
+    d.filter_sun_turn = true;
     d.filter_torque_noise = 1.5e-8;
     d.filter_drag = true;
     d.body_size = {0.1, 0.1, 0.34};

@@ -99,6 +99,7 @@ struct EstimatorData {
     // (rad; 0: filter_sun_sigma) and the error's correlation time (s; 0: white). docs/filter.md.
     std::array<double, 4> filter_sun_sigma_method{};
     std::array<double, 4> filter_sun_correlation{};
+    bool filter_sun_turn = false;                                      // MekfConfig::sun_turn_correlation
     double filter_mag_ref_sigma = MekfConfig<double>{}.mag_ref_sigma;  // T: 1σ per axis of the reference field's error
     double filter_mag_sigma_calibrated = MekfConfig<double>{}.mag_sigma_calibrated;  // T: once calibrated (0: the same)
     double filter_mag_sigma_eclipse =
