@@ -17,10 +17,10 @@ template <class T>
 class EstimatorCoreMekfSunTurn : public ::testing::Test {};
 TYPED_TEST_SUITE(EstimatorCoreMekfSunTurn, Scalars, ScalarName);
 
-constexpr double kStartSigma = 0.5;     // rad, per axis
-constexpr double kStep = 0.05;          // s, one 20 Hz sample
-constexpr double kSunSigma = 0.094;     // rad: the difference method's, leo_orbit.ssd
-constexpr double kLongest = 200.0;      // s
+constexpr double kStartSigma = 0.5;  // rad, per axis
+constexpr double kStep = 0.05;       // s, one 20 Hz sample
+constexpr double kSunSigma = 0.094;  // rad: the difference method's, leo_orbit.ssd
+constexpr double kLongest = 200.0;   // s
 
 template <class T>
 MekfConfig<T> config(bool turn) {
