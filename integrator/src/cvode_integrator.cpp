@@ -137,8 +137,24 @@ CvodeIntegrator::Stop CvodeIntegrator::advance(double t_out, double t_stop, doub
     t_out = std::min(t_out, t_stop);
     check(CVodeSetStopTime(mem, t_stop), "CVodeSetStopTime");
     sunrealtype t_reached = t;
-    const int flag = CVode(mem, t_out, h.y.get(), &t_reached, CV_NORMAL);
+    int flag = CVode(mem, t_out, h.y.get(), &t_reached, CV_NORMAL);
     if (h.failure) std::rethrow_exception(std::exchange(h.failure, nullptr));
+    // A kink of the right-hand side that no indicator marks (a diode starting to conduct into a stiff bus) can
+    // make CVODE's error test or Newton iteration fail repeatedly at one step: its history (order, step size,
+    // Jacobian) belongs to the other side of the kink. On such a failure CVODE leaves y at its last successful
+    // step (t_reached); starting afresh there, at order 1 with a new Jacobian, goes through. Only while each
+    // restart makes progress, and at most kMaxFailureRestarts times in a row: a failure that persists is reported.
+    for (int tries = 0;
+         (flag == CV_ERR_FAILURE || flag == CV_CONV_FAILURE) && tries < kMaxFailureRestarts && t_reached > t_failure_;
+         ++tries) {
+        t_failure_ = t_reached;
+        ++failure_restarts_;
+        steps_before_restart_ = steps();
+        rhs_before_restart_ = rhs_evaluations();
+        check(CVodeReInit(mem, t_reached, h.y.get()), "CVodeReInit");
+        flag = CVode(mem, t_out, h.y.get(), &t_reached, CV_NORMAL);
+        if (h.failure) std::rethrow_exception(std::exchange(h.failure, nullptr));
+    }
     check(flag, "integration", h.message);
     t = flag == CV_TSTOP_RETURN ? t_stop : t_reached;
     std::copy_n(N_VGetArrayPointer(h.y.get()), h.n, x.begin());

@@ -188,7 +188,10 @@ void print_statistics(const RunStatistics& s, std::ostream& out) {
         << (s.terminated_early ? ", stopped early at a component's request" : "") << "\n";
     out << "integrator steps " << s.integrator_steps << ", right-hand sides " << s.rhs_evaluations << ", time events "
         << s.time_events << ", state events " << s.state_events << ", step events " << s.step_events
-        << ", communication points " << s.communication_points << ", integrator restarts " << s.restarts << "\n";
+        << ", communication points " << s.communication_points << ", integrator restarts " << s.restarts
+        << (s.failure_restarts > 0 ? ", restarts after repeated step failures " + std::to_string(s.failure_restarts)
+                                   : "")
+        << "\n";
     if (s.realtime_max_behind != 0.0 || s.late_realtime_points)
         out << "real-time: " << s.late_realtime_points << " output points late by more than "
             << s.realtime_tolerance * 1e3 << " ms; at most " << s.realtime_max_behind * 1e3

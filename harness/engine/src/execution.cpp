@@ -394,6 +394,7 @@ struct Execution::Impl {
         if (cvode) {
             stats.integrator_steps = cvode->steps();
             stats.rhs_evaluations = cvode->rhs_evaluations();
+            stats.failure_restarts = cvode->failure_restarts();
         }
         for (const auto& c : system.components()) {
             ComponentStatistics cs_stats{c.name, c.rhs_evaluations, 0, 0, c.instance->link_statistics()};

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <span>
 #include <stdexcept>
@@ -49,6 +50,10 @@ public:
     // Totals over the whole life of the integrator (CVODE itself counts from the last restart).
     long steps() const;
     long rhs_evaluations() const;
+    // Restarts at the last successful step after CVODE's error test or Newton iteration failed repeatedly (advance).
+    long failure_restarts() const { return failure_restarts_; }
+    // Restarts in a row without progress before such a failure is reported.
+    static constexpr int kMaxFailureRestarts = 3;
 
     struct Handles;  // public only so the C callbacks can name it
 
@@ -56,6 +61,8 @@ private:
     std::unique_ptr<Handles> h_;
     std::vector<int> root_info_;
     long steps_before_restart_ = 0, rhs_before_restart_ = 0;
+    long failure_restarts_ = 0;
+    double t_failure_ = -std::numeric_limits<double>::infinity();  // where the last failure restart started
 };
 
 }  // namespace integrator

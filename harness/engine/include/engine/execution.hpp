@@ -58,6 +58,7 @@ struct RunStatistics {
     long integrator_steps = 0;
     long rhs_evaluations = 0;
     long restarts = 0;  // CVODE restarts (after initialization and after events that changed something continuous)
+    long failure_restarts = 0;  // CVODE restarted where its steps failed repeatedly (CvodeIntegrator::advance)
     long time_events = 0, state_events = 0, step_events = 0, communication_points = 0;
     long late_realtime_points = 0;  // output points reached more than the tolerance after their wall time (--realtime)
     double realtime_max_behind = 0.0;  // s: the most any output point was behind its wall time (--realtime)
