@@ -125,9 +125,13 @@ void CvodeIntegrator::set_max_step(double h) {
 }
 
 void CvodeIntegrator::restart(double t, std::span<const double> x) {
+    std::copy_n(x.begin(), h_->n, N_VGetArrayPointer(h_->y.get()));
+    restart_from_y(t);
+}
+
+void CvodeIntegrator::restart_from_y(double t) {
     steps_before_restart_ = steps();
     rhs_before_restart_ = rhs_evaluations();
-    std::copy_n(x.begin(), h_->n, N_VGetArrayPointer(h_->y.get()));
     check(CVodeReInit(h_->mem.get(), t, h_->y.get()), "CVodeReInit");
 }
 
@@ -149,9 +153,7 @@ CvodeIntegrator::Stop CvodeIntegrator::advance(double t_out, double t_stop, doub
          ++tries) {
         t_failure_ = t_reached;
         ++failure_restarts_;
-        steps_before_restart_ = steps();
-        rhs_before_restart_ = rhs_evaluations();
-        check(CVodeReInit(mem, t_reached, h.y.get()), "CVodeReInit");
+        restart_from_y(t_reached);
         flag = CVode(mem, t_out, h.y.get(), &t_reached, CV_NORMAL);
         if (h.failure) std::rethrow_exception(std::exchange(h.failure, nullptr));
     }

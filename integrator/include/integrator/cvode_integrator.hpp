@@ -58,6 +58,9 @@ public:
     struct Handles;  // public only so the C callbacks can name it
 
 private:
+    // restart() from the state CVODE holds (its y): the totals kept across the restart.
+    void restart_from_y(double t);
+
     std::unique_ptr<Handles> h_;
     std::vector<int> root_info_;
     long steps_before_restart_ = 0, rhs_before_restart_ = 0;
