@@ -304,6 +304,31 @@ Metric read_detection(const Context& cx, const toml::table& t, const std::string
     return m;
 }
 
+// "component.variable OP number", blanks around OP: a metric's condition (the samples a split such as sunlit
+// or eclipse keeps) or its after_first (the output point `after` counts from).
+struct Comparison {
+    std::string column, op;
+    double value = 0.0;
+};
+
+Comparison read_comparison(const Context& cx, const toml::node& n, const std::string& where) {
+    const std::string text = string(cx, n, where);
+    std::istringstream in(text);
+    std::string column, op, value, rest;
+    in >> column >> op >> value >> rest;
+    static const std::set<std::string> ops = {"<", "<=", ">", ">=", "==", "!="};
+    double x = 0.0;
+    const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), x);
+    if (column.empty() || !ops.contains(op) || value.empty() || ec != std::errc() ||
+        end != value.data() + value.size() || !rest.empty() || !std::isfinite(x))
+        cx.fail(n, where +
+                       " must be \"component.variable OP number\" with OP one of < <= > >= == != "
+                       "(e.g. \"env.irradiance > 0\"), got '" +
+                       text + "'");
+    check_target(cx, n, column, where);
+    return {column, op, x};
+}
+
 Metric read_metric(const Context& cx, const toml::table& t, std::size_t index) {
     const std::string where = "metric " + std::to_string(index + 1);
     Metric m;
@@ -313,8 +338,8 @@ Metric read_metric(const Context& cx, const toml::table& t, std::size_t index) {
     const std::string kind = string(cx, required(cx, t, "kind", where), where + ": 'kind'");
     if (kind == "detection") return read_detection(cx, t, where, std::move(m));
     only_keys(cx, t, where,
-              {"name", "kind", "a", "b", "column", "covariance", "valid", "when", "after", "condition", "stats",
-               "figure_stat"});
+              {"name", "kind", "a", "b", "column", "covariance", "valid", "when", "after", "after_first", "condition",
+               "stats", "figure_stat"});
     if (kind == "quaternion_angle" || kind == "vector_angle") {
         m.kind = kind == "quaternion_angle" ? MetricKind::quaternion_angle : MetricKind::vector_angle;
         m.a = string(cx, required(cx, t, "a", where), where + ": 'a'");
@@ -357,24 +382,16 @@ Metric read_metric(const Context& cx, const toml::table& t, std::size_t index) {
     }
     if (const auto* a = t.get("after")) m.after = number(cx, *a, where + ": 'after'");
     if (const auto* c = t.get("condition")) {
-        // "component.variable OP number", blanks around OP: the samples a split (sunlit, eclipse) keeps.
-        const std::string text = string(cx, *c, where + ": 'condition'");
-        std::istringstream in(text);
-        std::string column, op, value, rest;
-        in >> column >> op >> value >> rest;
-        static const std::set<std::string> ops = {"<", "<=", ">", ">=", "==", "!="};
-        double x = 0.0;
-        const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), x);
-        if (column.empty() || !ops.contains(op) || value.empty() || ec != std::errc() ||
-            end != value.data() + value.size() || !rest.empty() || !std::isfinite(x))
-            cx.fail(*c, where +
-                            ": 'condition' must be \"component.variable OP number\" with OP one of < <= > >= == != "
-                            "(e.g. \"env.irradiance > 0\"), got '" +
-                            text + "'");
-        check_target(cx, *c, column, where + ": 'condition'");
-        m.condition_column = column;
-        m.condition_op = op;
-        m.condition_value = x;
+        const Comparison x = read_comparison(cx, *c, where + ": 'condition'");
+        m.condition_column = x.column;
+        m.condition_op = x.op;
+        m.condition_value = x.value;
+    }
+    if (const auto* c = t.get("after_first")) {
+        const Comparison x = read_comparison(cx, *c, where + ": 'after_first'");
+        m.start_column = x.column;
+        m.start_op = x.op;
+        m.start_value = x.value;
     }
     if (const auto* s = t.get("stats")) {
         const auto* arr = s->as_array();

@@ -80,6 +80,12 @@ struct Metric {
     // "env.irradiance == 0": eclipse); empty column = always. Ops: <, <=, >, >=, ==, !=.
     std::string condition_column, condition_op;
     double condition_value = 0.0;
+    // `after` counted from the first output point where `start_column start_op start_value` holds rather
+    // than from 0 (after_first = "env.irradiance > 0": from the first sunlight; issue 39's 10 minutes for a
+    // run that starts in eclipse, where the filter has no second vector); empty column = from 0. A run where
+    // it never holds samples nothing.
+    std::string start_column, start_op;
+    double start_value = 0.0;
     std::vector<std::string> stats;  // mean, rms, min, max, final, count, pNN, per_dof, chi2_99
     std::string figure_stat;         // the per-run value plotted against the drawn quantities
     // detection: the fault words (each a column, or the prefix of a [1..n] group), the declaration times

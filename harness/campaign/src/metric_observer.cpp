@@ -113,7 +113,8 @@ MetricObserver::MetricObserver(const std::vector<Metric>& metrics, const cosim::
                 what);
     }
     for (const auto& m : metrics) {
-        Tracked t{&m, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+        Tracked t{};
+        t.metric = &m;
         const int n = m.kind == MetricKind::quaternion_angle ? 4 : 3;
         if (m.kind == MetricKind::detection) {
             std::vector<std::string> names;
@@ -163,6 +164,7 @@ MetricObserver::MetricObserver(const std::vector<Metric>& metrics, const cosim::
         if (!m.valid.empty()) t.valid = resolve(system, m.valid, m.name);
         if (!m.when.empty()) t.when = resolve(system, m.when, m.name);
         if (!m.condition_column.empty()) t.condition = resolve(system, m.condition_column, m.name);
+        if (!m.start_column.empty()) t.start = resolve(system, m.start_column, m.name);
         tracked_.push_back(std::move(t));
     }
 }
@@ -219,7 +221,10 @@ void MetricObserver::sample(double t, cosim::System& system) {
             changed = !k.last_when || w != *k.last_when;
             k.last_when = w;
         }
-        if (!changed || t < m.after) continue;
+        // after_first: `after` counts from the first output point where it held (none yet: no sample).
+        if (k.start && !k.started && holds(read(system, *k.start), m.start_op, m.start_value)) k.started = t;
+        if (k.start && !k.started) continue;
+        if (!changed || t < m.after + k.started.value_or(0.0)) continue;
         if (k.valid && read(system, *k.valid) == 0.0) continue;
         if (k.condition && !holds(read(system, *k.condition), m.condition_op, m.condition_value)) continue;
         double value = 0.0;

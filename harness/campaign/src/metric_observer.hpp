@@ -36,10 +36,11 @@ private:
         const fmi_loader::ScalarVariable* variable;
     };
     struct Tracked {
-        const Metric* metric;
+        const Metric* metric = nullptr;
         std::vector<Column> a, b;
-        std::optional<Column> valid, when, condition;
+        std::optional<Column> valid, when, condition, start;
         std::optional<double> last_when;
+        std::optional<double> started;  // when `start` (the metric's after_first) first held
         std::vector<double> values;
         // detection: the words and times of every element, what the case expects (each a column whose
         // value is an element of a group, or fixed elements), read at the first output point.

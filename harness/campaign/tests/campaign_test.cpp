@@ -142,6 +142,67 @@ TEST(Campaign, ReplayIsBitIdenticalAndItsCsvGivesTheSameMetrics) {
     std::filesystem::remove_all(dir);
 }
 
+// A metric's after_first (issue 39: the 10 minutes counted from the first sunlight for a run that starts in
+// eclipse): `after` counts from the first output point where it held. Checked against the replay's CSV: the
+// first row where est.samples >= 3, its time plus 2 s, and the rows from there; a run where it never holds
+// samples nothing.
+TEST(Campaign, AfterFirstCountsFromWhereItsConditionFirstHeld) {
+    const auto dir = fresh_dir("after_first");
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "spec.toml")
+        << "system = \"" << CAMPAIGN_TEST_SPECS
+        << "/../../../systems/leo_orbit.ssd\"\nstop_time = 8.0\noutput_interval = 0.5\n"
+           "runs = 1\nseed = 3\n[set]\n\"est.sample_period\" = 1.0\n"
+           "[[metric]]\nname = \"later\"\nkind = \"column\"\ncolumn = \"est.samples\"\n"
+           "after = 2.0\nafter_first = \"est.samples >= 3\"\nstats = [\"min\", \"count\"]\n"
+           "[[metric]]\nname = \"from_zero\"\nkind = \"column\"\ncolumn = \"est.samples\"\n"
+           "after = 2.0\nstats = [\"min\", \"count\"]\n"
+           "[[metric]]\nname = \"never\"\nkind = \"column\"\ncolumn = \"est.samples\"\n"
+           "after_first = \"env.irradiance < 0\"\nstats = [\"count\"]\n";
+    CampaignOptions o;
+    o.spec = dir / "spec.toml";
+    o.output = dir / "out";
+    o.fmu_dirs = {PVATT_FMU_DIR};
+    o.progress = false;
+    o.figures = false;
+    std::ostringstream out;
+    ASSERT_EQ(run_campaign(o, out), 0);
+    o.replay = 0;
+    ASSERT_EQ(run_campaign(o, out), 0);
+    const auto table = lines_of(dir / "out" / "run_0.row.csv");
+    ASSERT_EQ(table.size(), 2u);
+    const auto header = split_csv_line(table[0]);
+    const auto row = split_csv_line(table[1]);
+    auto cell = [&](const std::string& n) {
+        return std::stod(row.at(std::find(header.begin(), header.end(), n) - header.begin()));
+    };
+    const auto csv = cosim::read_csv(dir / "out" / "run_0.csv");
+    const auto time = csv.columns.at(*csv.find("time"));
+    const auto samples = csv.columns.at(*csv.find("est.samples"));
+    std::size_t first = 0;
+    while (first < csv.rows() && samples[first] < 3.0) ++first;
+    ASSERT_LT(first, csv.rows());
+    ASSERT_GT(time[first], 0.0);  // it first holds later than the start: the two metrics differ
+    double min_later = INFINITY, min_zero = INFINITY, count_later = 0.0, count_zero = 0.0;
+    for (std::size_t r = 0; r < csv.rows(); ++r) {
+        if (time[r] >= time[first] + 2.0) {
+            min_later = std::min(min_later, samples[r]);
+            ++count_later;
+        }
+        if (time[r] >= 2.0) {
+            min_zero = std::min(min_zero, samples[r]);
+            ++count_zero;
+        }
+    }
+    EXPECT_EQ(cell("later.min"), min_later);
+    EXPECT_EQ(cell("later.count"), count_later);
+    EXPECT_EQ(cell("from_zero.min"), min_zero);
+    EXPECT_EQ(cell("from_zero.count"), count_zero);
+    EXPECT_LT(count_later, count_zero);
+    EXPECT_EQ(cell("never.count"), 0.0);
+    std::filesystem::remove_all(dir);
+}
+
 TEST(Campaign, AFailingRunIsRecordedAndTheCampaignGoesOn) {
     const auto dir = fresh_dir("failing");
     std::ostringstream out;

@@ -173,6 +173,26 @@ b = "est.q_filt"
             << bad;
 }
 
+// after_first (issue 39): the same grammar as a condition, on a metric that is not a detection.
+TEST(Spec, AMetricsAfterFirstIsAColumnAComparisonAndANumber) {
+    const std::string metric = R"(
+[[metric]]
+name = "b"
+kind = "column"
+column = "est.attitude_bound"
+after = 600.0
+)";
+    const auto spec = parse_spec(head + metric + "after_first = \"env.irradiance > 0\"\n", "/specs/test.toml");
+    ASSERT_EQ(spec.metrics.size(), 1u);
+    EXPECT_EQ(spec.metrics[0].start_column, "env.irradiance");
+    EXPECT_EQ(spec.metrics[0].start_op, ">");
+    EXPECT_EQ(spec.metrics[0].start_value, 0.0);
+    EXPECT_EQ(spec.metrics[0].after, 600.0);
+    for (const char* bad : {"env.irradiance > sunny", "env.irradiance", "irradiance > 0"})
+        EXPECT_NE(error_of(head + metric + "after_first = \"" + bad + "\"\n").find("'after_first'"), std::string::npos)
+            << bad;
+}
+
 // Issue 39: the filter's consistency as a metric, by its covariance factor; its keys checked like the others'.
 TEST(Spec, ANormalizedErrorMetricNamesTheTruthTheEstimateAndTheCovarianceFactor) {
     const std::string metric = R"(
