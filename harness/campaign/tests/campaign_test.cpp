@@ -526,6 +526,8 @@ TEST(Campaign, DrawsOnSystemParameters) {
     EXPECT_NE(refused.find("'epoch_mnth' is no system parameter of leo_orbit.ssd (did you mean 'epoch_month'?)"),
               std::string::npos)
         << refused;
+    std::filesystem::remove_all(fresh_dir("sysparam_spec"));
+    std::filesystem::remove_all(fresh_dir("sysparam_typo_spec"));
 }
 
 // A campaign over a system that declares its measures (seed_spin: the sun vector and the single-frame
