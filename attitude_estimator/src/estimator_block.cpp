@@ -371,6 +371,11 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
                 "resets to the single-frame attitude (counted in filter_resets)")
         .range(1.0, 1e6)
         .applies_when("filter", {"mekf"});
+    t.parameter("filter_hold_field_axis", &D::filter_hold_field_axis, "",
+                "mekf: from each start, hold the attitude's variance about the field's direction at no less than "
+                "what the sun alone has told of it until 3 sigma of that is within the validity bound (the field's "
+                "own turn cannot tell that axis from a rate error; docs/filter.md). false: off")
+        .applies_when("filter", {"mekf"});
 
     t.output("q_est", &D::q_est, "1", "Estimated attitude quaternion, scalar-last [x, y, z, w], w >= 0")
         .discrete()
@@ -827,6 +832,8 @@ void check_onboard_state(const OnboardState<T>& s, const std::string& name) {
     const T watch[] = {f.watch_sum[0], f.watch_sum[1], f.watch_sum[2], f.watch_weight,
                        f.watch_noise,  f.watch_spread, f.watch_ratio,  f.t_watch};
     for (const T x : watch) fmu::require_finite(static_cast<double>(x), name + ".filter.watch");
+    for (const T x : f.sun_information) fmu::require_finite(static_cast<double>(x), name + ".filter.sun_information");
+    fmu::require_range(f.field_axis_seen, 0, 1, name + ".filter.field_axis_seen");
     const T last[] = {s.last_q.x, s.last_q.y, s.last_q.z, s.last_q.w, s.last_t, s.step_turn};
     for (const T x : last) fmu::require_finite(static_cast<double>(x), name + ".last_q/last_t/step_turn");
     fmu::require_bool(s.has_last, name + ".has_last");

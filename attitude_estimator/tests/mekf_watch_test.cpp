@@ -49,32 +49,25 @@ struct Outcome {
 template <class T>
 Outcome run(MekfState<T>& s, const MekfConfig<T>& c, const Eigen::Matrix3d& a0, double duration, std::uint64_t seed) {
     Random rng(seed);
-    Eigen::Vector3d field_error = rng.gauss3();
-    field_error *= kFieldSigma;
-    Eigen::Vector3d sun_error = rng.gauss3();
-    sun_error *= 0.02;
-    const double phi_field = std::exp(-kPeriod / kFieldTau), phi_sun = std::exp(-kPeriod / 50.0);
+    GaussMarkov3 field_error(kFieldSigma, kFieldTau, kPeriod, rng);
+    GaussMarkov3 sun_error(0.02, 50.0, kPeriod, rng);
     Outcome o;
     int late = 0;
     const int n = static_cast<int>(duration / kPeriod);
     for (int k = 0; k <= n; ++k) {
         const double t = k * kPeriod;
         const Eigen::Matrix3d a = turn(kOmega, t) * a0;
-        for (int i = 0; i < 3; ++i) {
-            field_error(i) =
-                phi_field * field_error(i) + std::sqrt(1 - phi_field * phi_field) * kFieldSigma * rng.gauss();
-            sun_error(i) = phi_sun * sun_error(i) + std::sqrt(1 - phi_sun * phi_sun) * 0.02 * rng.gauss();
-        }
+        const Eigen::Vector3d field_noise = field_error.step(rng), sun_noise = sun_error.step(rng);
         MekfSampleInputs<T> in;
         in.t = static_cast<T>(t);
         in.attitude_valid = true;
         in.q_single = quaternion_of<T>(rng.rotation(0.01) * a);
         in.sun_valid = true;
         in.sun_ref = to_vec<T>(kSunRef);
-        in.sun_body = to_vec<T>((a * kSunRef + sun_error).normalized());
+        in.sun_body = to_vec<T>((a * kSunRef + sun_noise).normalized());
         in.mag_valid = true;
         in.mag_ref = to_vec<T>(kFieldRef);
-        in.mag_body = to_vec<T>(a * kFieldRef + field_error);
+        in.mag_body = to_vec<T>(a * kFieldRef + field_noise);
         const MekfSampleResult<T> r = mekf_sample(s, in, c);
         o.resets += r.reset;
         if (k > 2 * n / 3 && s.stage == 2) {

@@ -116,4 +116,22 @@ private:
     std::mt19937_64 gen_;
 };
 
+// A sensor error that persists: per axis a stationary first-order Gauss–Markov process of 1σ `sigma`,
+// correlated over `tau` (s), sampled every `dt` (s); it starts from its stationary distribution.
+class GaussMarkov3 {
+public:
+    GaussMarkov3(double sigma, double tau, double dt, Random& rng)
+        : sigma_(sigma), phi_(std::exp(-dt / tau)), value_(sigma * rng.gauss3()) {}
+    // The next sample; axis i draws before axis i + 1.
+    const Eigen::Vector3d& step(Random& rng) {
+        for (int i = 0; i < 3; ++i) value_(i) = phi_ * value_(i) + std::sqrt(1 - phi_ * phi_) * sigma_ * rng.gauss();
+        return value_;
+    }
+
+private:
+    double sigma_;
+    double phi_;
+    Eigen::Vector3d value_;
+};
+
 }  // namespace attitude_estimator::test

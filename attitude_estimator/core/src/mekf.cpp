@@ -321,6 +321,44 @@ void watch_field(MekfState<T>& s, const MekfSampleInputs<T>& in, T polarity, con
     s.watch_ratio = expected > T(0) ? mean.squaredNorm() / expected : T(0);
 }
 
+// MekfConfig::hold_field_axis: one sun direction's information (inertial axes) added to the sum.
+template <class T>
+void add_sun_information(MekfState<T>& s, const Vec3<T>& sun_ref, T sigma) {
+    const V3<T> u = v3(sun_ref).normalized();
+    if (!u.allFinite() || !(sigma > T(0))) return;
+    const T w = T(1) / (sigma * sigma);
+    const Mat3<T> m = w * (Mat3<T>::Identity() - u * u.transpose());
+    const T add[6] = {m(0, 0), m(0, 1), m(0, 2), m(1, 1), m(1, 2), m(2, 2)};
+    for (std::size_t k = 0; k < 6; ++k) s.sun_information[k] += add[k];
+}
+
+// MekfConfig::hold_field_axis: the attitude variance about the field's direction held at no less than what the
+// sun alone has told of it, until that is within the validity bound.
+template <class T>
+void hold_field_axis(MekfState<T>& s, const Vec3<T>& field_ref, const MekfConfig<T>& c) {
+    if (!c.hold_field_axis || s.field_axis_seen) return;
+    const V3<T> u = v3(field_ref).normalized();
+    if (!u.allFinite()) return;
+    const auto& a = s.sun_information;
+    Mat3<T> m;
+    m << a[0], a[1], a[2], a[1], a[3], a[4], a[2], a[4], a[5];
+    const T information = u.dot(m * u);
+    // A sun along the field tells nothing about the turn about it: at most a half turn's variance.
+    const T most = T(3.14159265358979) * T(3.14159265358979);
+    const T held = information * most > T(1) ? T(1) / information : most;
+    if (T(9) * held < c.valid_bound * c.valid_bound) {
+        s.field_axis_seen = 1;
+        return;
+    }
+    const V3<T> axis = matrix_of(s.q) * u;
+    // The attitude block in place (a rank-one addition to it alone): no copy of the whole P per sample.
+    Eigen::Map<MatN<T>> p(s.p.data());
+    auto block = p.template block<3, 3>(kMekfAttitude, kMekfAttitude);
+    const T now = axis.dot(block * axis);
+    if (now >= held) return;
+    block += (held - now) * axis * axis.transpose();
+}
+
 }  // namespace
 
 template <class T>
@@ -597,6 +635,14 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
                 }
                 store_p<T>(s, p);
                 add_offset_to_start(s, in, c);
+                s.sun_information = {};
+                s.field_axis_seen = 0;
+                // The single-frame attitude's own: one sun of σ_s turns it about axes across the sun only, so about
+                // the field by σ_s / sin θ, θ the sun's angle from it (Shuster and Oh's covariance, the sun's part).
+                if (c.hold_field_axis && in.sun_valid) {
+                    add_sun_information(s, in.sun_ref, c.sun_sigma);
+                    hold_field_axis(s, in.mag_ref, c);
+                }
             } else {
                 s.stage = 1;
                 s.q_first = in.q_single;
@@ -620,6 +666,7 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
         s.t_sun = in.t;
         s.has_sun = 1;
         result.sun = mekf_update_sun(s, in.sun_ref, in.sun_body, sun_config);
+        if (c.hold_field_axis && result.sun.accepted) add_sun_information(s, in.sun_ref, sun_config.sun_sigma);
         ++offered;
         accepted += result.sun.accepted;
     }
@@ -644,6 +691,7 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
     if (c.estimate_scale && in.sun_valid && in.response != nullptr && in.face_use != 0)
         result.faces_accepted =
             mekf_update_faces(s, in.sun_ref, in.face_r, in.face_albedo, in.face_use, *in.response, c);
+    if (squared_norm(in.mag_ref) > T(0)) hold_field_axis(s, in.mag_ref, c);
 
     // (Held at reset_after while a refused run waits for a single frame: it cannot overflow in a long eclipse.)
     if (offered > 0) s.refused_in_row = accepted > 0 ? 0 : std::min<std::int32_t>(s.refused_in_row + 1, c.reset_after);

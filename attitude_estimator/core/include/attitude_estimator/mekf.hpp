@@ -128,6 +128,16 @@ struct MekfConfig {
     // 4 µT error); it then resets to the single-frame attitude like a refused run of reset_after samples.
     T watch_time = T(0);
     T watch_gate = T(16);
+    // The attitude about the field held uncertain until the sun has seen it (docs/filter.md, "The axis about the
+    // field"). Before the sun has fixed the turn about the field, only the field's own slow turn in inertial axes
+    // could, and that needs the rate across it, which the filter learns from that same field: the pair (a turn e
+    // about the field, a rate error e dB/dt across it) predicts the same field, and a filter linearized at its
+    // estimate counts it as information (robustness runs with the sun within 25 deg of the field's line: valid
+    // and 24-55 deg off for minutes). With this on, from the start the filter sums the sun's own information in
+    // inertial axes, Σ (I - s sᵀ)/σ_s² (σ_s each update's as weighted, the start's sun_sigma: the single-frame
+    // attitude's own), and holds its attitude variance about the field's direction at no less than the inverse of
+    // that sum along it, until 3 σ of it is below valid_bound (then off until a reset).
+    bool hold_field_axis = false;
     T valid_bound = T(0.17453293);  // rad: filter_valid while the 3σ attitude bound is below this (10°)
     // Two single-frame attitudes further apart than this cannot give the initial rate (it could alias).
     T max_init_gap = T(0.5);  // s
@@ -168,6 +178,10 @@ struct MekfState {
     T watch_spread = T(0);  // weighted sum of the filter's own expected squared field error (attitude, offset)
     T t_watch = T(0);       // time of the last field the watch took
     T watch_ratio = T(0);   // the last watch statistic: squared average over its expected size (1: consistent)
+    // MekfConfig::hold_field_axis: the sun's information since the start, inertial axes (rad⁻²; xx, xy, xz, yy, yz,
+    // zz), and 1 once it has fixed the turn about the field (the hold is off from then until a reset).
+    std::array<T, 6> sun_information{};
+    std::int32_t field_axis_seen = 0;
 };
 
 // The outcome of one measurement update.
