@@ -666,7 +666,8 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
         s.t_sun = in.t;
         s.has_sun = 1;
         result.sun = mekf_update_sun(s, in.sun_ref, in.sun_body, sun_config);
-        if (c.hold_field_axis && result.sun.accepted) add_sun_information(s, in.sun_ref, sun_config.sun_sigma);
+        if (c.hold_field_axis && !s.field_axis_seen && result.sun.accepted)
+            add_sun_information(s, in.sun_ref, sun_config.sun_sigma);
         ++offered;
         accepted += result.sun.accepted;
     }

@@ -179,7 +179,8 @@ struct MekfState {
     T t_watch = T(0);       // time of the last field the watch took
     T watch_ratio = T(0);   // the last watch statistic: squared average over its expected size (1: consistent)
     // MekfConfig::hold_field_axis: the sun's information since the start, inertial axes (rad⁻²; xx, xy, xz, yy, yz,
-    // zz), and 1 once it has fixed the turn about the field (the hold is off from then until a reset).
+    // zz), summed until it has fixed the turn about the field; then field_axis_seen is 1 and the hold off until a
+    // reset (the sum stops: it cannot grow over a mission).
     std::array<T, 6> sun_information{};
     std::int32_t field_axis_seen = 0;
 };
