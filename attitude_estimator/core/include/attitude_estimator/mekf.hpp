@@ -133,7 +133,7 @@ struct MekfConfig {
     // could, and that needs the rate across it, which the filter learns from that same field: the pair (a turn e
     // about the field, a rate error e dB/dt across it) predicts the same field, and a filter linearized at its
     // estimate counts it as information (robustness runs with the sun within 25 deg of the field's line: valid
-    // and 24-55 deg off for minutes). With this on, from the start the filter sums the sun's own information in
+    // and 24-63 deg off for minutes). With this on, from the start the filter sums the sun's own information in
     // inertial axes, Σ (I - s sᵀ)/σ_s² (σ_s each update's as weighted, the start's sun_sigma: the single-frame
     // attitude's own), and holds its attitude variance about the field's direction at no less than the inverse of
     // that sum along it, until 3 σ of it is below valid_bound (then off until a reset).
