@@ -28,10 +28,6 @@ constexpr double kPeriod = 0.05;                          // s
 constexpr double kSunSigma = 0.02, kSunTau = 50.0;        // rad, s
 constexpr double kFieldSigma = 0.2e-6, kFieldTau = 60.0;  // T, s
 
-Eigen::Matrix3d turn(const Eigen::Vector3d& omega, double t) {
-    return Eigen::AngleAxisd(-omega.norm() * t, omega.normalized()).toRotationMatrix();
-}
-
 // The inertial field at t: `angle` from the sun, circling it so that it turns by 0.1 deg/s.
 Eigen::Vector3d field_ref(double angle, double t) {
     const Eigen::Vector3d across = kSunRef.cross(Eigen::Vector3d(0.0, 0.0, 1.0)).normalized();

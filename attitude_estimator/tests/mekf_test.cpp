@@ -16,13 +16,6 @@ template <class T>
 class EstimatorCoreMekf : public ::testing::Test {};
 TYPED_TEST_SUITE(EstimatorCoreMekf, Scalars, ScalarName);
 
-// exp(−[ω×] t): the body frame turned by ω t.
-Eigen::Matrix3d turn(const Eigen::Vector3d& omega, double t) {
-    const double n = omega.norm();
-    if (n == 0.0) return Eigen::Matrix3d::Identity();
-    return Eigen::AngleAxisd(-n * t, omega / n).toRotationMatrix();
-}
-
 // A scenario: truth attitude at each sample, references, and noisy measurements.
 struct Scenario {
     Eigen::Vector3d omega{0.02, -0.012, 0.016};   // rad/s, body (LEO-like tumble, 1.6 deg/s)

@@ -17,10 +17,6 @@ template <class T>
 class EstimatorCoreMekfWatch : public ::testing::Test {};
 TYPED_TEST_SUITE(EstimatorCoreMekfWatch, Scalars, ScalarName);
 
-Eigen::Matrix3d turn(const Eigen::Vector3d& omega, double t) {
-    return Eigen::AngleAxisd(-omega.norm() * t, omega.normalized()).toRotationMatrix();
-}
-
 const Eigen::Vector3d kOmega = 0.0506 * Eigen::Vector3d(0.6, -0.3, 0.74).normalized();  // rad/s: 2.9 deg/s
 const Eigen::Vector3d kSunRef = Eigen::Vector3d(0.3, -0.8, 0.5).normalized();
 const Eigen::Vector3d kFieldRef(-12e-6, 25e-6, 30e-6);  // T

@@ -116,6 +116,13 @@ private:
     std::mt19937_64 gen_;
 };
 
+// exp(−[ω×] t): the body frame of a constant-rate tumble ω turned over t (Eigen's AngleAxis, not the core's).
+inline Eigen::Matrix3d turn(const Eigen::Vector3d& omega, double t) {
+    const double n = omega.norm();
+    if (n == 0.0) return Eigen::Matrix3d::Identity();
+    return Eigen::AngleAxisd(-n * t, omega / n).toRotationMatrix();
+}
+
 // A sensor error that persists: per axis a stationary first-order Gauss–Markov process of 1σ `sigma`,
 // correlated over `tau` (s), sampled every `dt` (s); it starts from its stationary distribution.
 class GaussMarkov3 {

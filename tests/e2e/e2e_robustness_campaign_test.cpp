@@ -31,19 +31,15 @@ namespace {
 constexpr double kStop = 1800.0;  // s
 constexpr double kFrom = 600.0;   // s: the metrics judge from 10 minutes on
 
-// runs: the campaign drawn to that many runs (0: the spec's); the draws of the first runs do not change with it.
-std::map<std::string, double> run_shortened(long index, double stop = kStop, double from = kFrom, long runs = 0) {
-    campaign::CampaignSpec spec = campaign::read_spec(PVATT_SYSTEMS_DIR "/../campaigns/robustness.toml");
-    spec.stop_time = stop;
-    if (runs > 0) spec.runs = runs;
-    for (auto& m : spec.metrics)
-        if (m.after > from) m.after = from;
-    const campaign::CampaignSetup setup = campaign::prepare(spec, {PVATT_FMU_DIR}, {});
+// One run of `spec` with the --set `settings`: its metric cells by column name. Numbers only: a detection metric
+// also gives text cells (the words declared), which read as NaN here.
+std::map<std::string, double> run_spec(const campaign::CampaignSpec& spec, long index,
+                                       const std::vector<std::string>& settings) {
+    const campaign::CampaignSetup setup = campaign::prepare(spec, {PVATT_FMU_DIR}, settings);
     const campaign::RunResult r = campaign::run_one(setup, index);
     EXPECT_EQ(r.status, "ok") << r.message;
     const std::vector<std::string> names = campaign::metric_columns(spec);
     std::map<std::string, double> cells;
-    // Numbers only: a detection metric also gives text cells (the words declared), which read as NaN here.
     for (std::size_t i = 0; i < names.size() && i < r.metric_cells.size(); ++i) {
         const std::string& text = r.metric_cells[i];
         char* end = nullptr;
@@ -51,6 +47,16 @@ std::map<std::string, double> run_shortened(long index, double stop = kStop, dou
         cells[names[i]] = !text.empty() && end == text.c_str() + text.size() ? value : std::nan("");
     }
     return cells;
+}
+
+// runs: the campaign drawn to that many runs (0: the spec's); the draws of the first runs do not change with it.
+std::map<std::string, double> run_shortened(long index, double stop = kStop, double from = kFrom, long runs = 0) {
+    campaign::CampaignSpec spec = campaign::read_spec(PVATT_SYSTEMS_DIR "/../campaigns/robustness.toml");
+    spec.stop_time = stop;
+    if (runs > 0) spec.runs = runs;
+    for (auto& m : spec.metrics)
+        if (m.after > from) m.after = from;
+    return run_spec(spec, index, {});
 }
 
 void expect_consistent_while_converging(long index, const char* what) {
@@ -138,13 +144,7 @@ std::map<std::string, double> sun_near_the_field(const std::vector<std::string>&
     nees.covariance = "est.attitude_cov_sqrt";
     nees.stats = {"per_dof", "chi2_99"};
     spec.metrics = {error, nees};
-    const campaign::CampaignSetup setup = campaign::prepare(spec, {PVATT_FMU_DIR}, settings);
-    const campaign::RunResult r = campaign::run_one(setup, 35);
-    EXPECT_EQ(r.status, "ok") << r.message;
-    const std::vector<std::string> names = campaign::metric_columns(spec);
-    std::map<std::string, double> cells;
-    for (std::size_t i = 0; i < names.size() && i < r.metric_cells.size(); ++i)
-        cells[names[i]] = std::strtod(r.metric_cells[i].c_str(), nullptr);
+    std::map<std::string, double> cells = run_spec(spec, 35, settings);
     std::printf(
         "seed 40 run 35 (the sun 7 deg from the field), to 900 s%s: while valid (%.0f rows) largest error %.2f deg, "
         "NEES/dof %.2f, chi2(3) 99 %% coverage %.1f %%\n",
