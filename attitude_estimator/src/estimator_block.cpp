@@ -371,6 +371,11 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
                 "resets to the single-frame attitude (counted in filter_resets)")
         .range(1.0, 1e6)
         .applies_when("filter", {"mekf"});
+    t.parameter("filter_watch_sun", &D::filter_watch_sun, "",
+                "mekf: the divergence watch also on the sun's innovation in inertial axes (with filter_watch_time "
+                "and filter_watch_gate): it sees an error about the field, which the field's own watch cannot; "
+                "docs/filter.md). false: the field's watch alone")
+        .applies_when("filter", {"mekf"});
     t.parameter("filter_hold_field_axis", &D::filter_hold_field_axis, "",
                 "mekf: from each start, hold the attitude's variance about the field's direction at no less than "
                 "what the sun alone has told of it until 3 sigma of that is within the validity bound (the field's "
@@ -829,8 +834,10 @@ void check_onboard_state(const OnboardState<T>& s, const std::string& name) {
                                 f.t_first,   f.t_last};
     for (const T x : filter_scalars) fmu::require_finite(static_cast<double>(x), name + ".filter");
     for (const T x : f.p) fmu::require_finite(static_cast<double>(x), name + ".filter.p");
-    const T watch[] = {f.watch_sum[0], f.watch_sum[1], f.watch_sum[2], f.watch_weight,
-                       f.watch_noise,  f.watch_spread, f.watch_ratio,  f.t_watch};
+    const MekfWatch<T>& w = f.watch;
+    const MekfSunWatch<T>& sw = f.sun_watch;
+    const T watch[] = {w.sum[0], w.sum[1], w.sum[2], w.weight, w.noise,     w.spread,
+                       w.ratio,  w.t,      sw.ratio, sw.t,     sw.valid_for};
     for (const T x : watch) fmu::require_finite(static_cast<double>(x), name + ".filter.watch");
     for (const T x : f.sun_information) fmu::require_finite(static_cast<double>(x), name + ".filter.sun_information");
     fmu::require_range(f.field_axis_seen, 0, 1, name + ".filter.field_axis_seen");

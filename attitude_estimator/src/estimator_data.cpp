@@ -131,6 +131,7 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
     m.reset_after = d.filter_reset_after;
     m.watch_time = static_cast<T>(d.filter_watch_time);
     m.watch_gate = static_cast<T>(d.filter_watch_gate);
+    m.watch_sun = d.filter_watch_sun;
     m.hold_field_axis = d.filter_hold_field_axis;
     s.mag_calibration = d.mag_calibration;
     s.mag_cal.sigma = static_cast<T>(d.mag_calibration_sigma);

@@ -111,6 +111,7 @@ FaultObservation<T> lit(const panel_response::Response<T>& law, T t, double c = 
     o.sample_period = T(kPeriod);
     o.response = &law;
     o.predicted = true;
+    o.prediction_valid = true;
     o.field_calibrated = true;
     o.sun_body = {T(c), T(0.8 * s), T(0.6 * s)};
     o.face_r = {T(c), T(0), T(0.8 * s), T(0), T(0.6 * s), T(0)};

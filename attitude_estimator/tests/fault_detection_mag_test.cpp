@@ -35,6 +35,7 @@ struct Field {
         o.t = T(i * kPeriod);
         o.sample_period = T(kPeriod);
         o.predicted = true;
+        o.prediction_valid = true;
         o.field_calibrated = true;
         o.sun_body = {T(1), T(0), T(0)};
         o.field_body = b;

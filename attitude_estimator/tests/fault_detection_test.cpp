@@ -234,6 +234,7 @@ struct Field {
         o.t = T(i * kPeriod);
         o.sample_period = T(kPeriod);
         o.predicted = true;
+        o.prediction_valid = true;
         o.sun_body = {T(1), T(0), T(0)};
         o.field_body = b;
         o.polarity = i % 2 == 0 ? T(1) : T(-1);
@@ -403,6 +404,32 @@ TYPED_TEST(EstimatorCoreFaults, AnAxisAtARailIsDeclaredAndAWrongNormIsSeen) {
     });
     EXPECT_EQ(n.norm_word, 1u);
     EXPECT_EQ(excluded_axes(n), 0);
+}
+
+// The face tests judge the readings against the filter's prediction only while the filter calls itself valid
+// (FaultObservation::prediction_valid). A filter lost from its start predicts the sun at the opposite corner,
+// (−0.8, −0.48, −0.36), while the faces read the true sun at (0.8, 0.48, 0.36): +x reads 0.8 where nothing is
+// predicted, above the excess bar 0 + 0.6. Called valid, that wrong prediction declares the healthy +x face in
+// the confirmation time (5 s); not valid, 20 s of it declare nothing, and the healthy faces stay in use.
+TYPED_TEST(EstimatorCoreFaults, TheFaceTestsWaitForAValidFilter) {
+    using T = TypeParam;
+    const Scene<T> scene;
+    const auto lost = [&](bool valid) {
+        return [&scene, valid](T t) {
+            auto o = scene.observation(t);
+            for (auto& v : o.sun_body) v = -v;
+            o.prediction_valid = valid;
+            return o;
+        };
+    };
+    FaultDetectionState<T> believed;
+    const T declared = run_faces(believed, 400, 0.0, lost(true), 0);
+    EXPECT_NEAR(double(declared), enabled<T>().confirm_time - kPeriod, 1e-4);
+    EXPECT_EQ(believed.face_word[0] & kFaultFaceExcess, kFaultFaceExcess);
+    FaultDetectionState<T> waited;
+    EXPECT_LT(run_faces(waited, 400, 0.0, lost(false), 0), T(0));
+    EXPECT_EQ(excluded_faces(waited), 0);
+    for (std::size_t k = 0; k < 6; ++k) EXPECT_EQ(waited.face_word[k], 0u) << "face " << k;
 }
 
 TYPED_TEST(EstimatorCoreFaults, NothingIsTestedWhenDisabledOrWithoutAPrediction) {

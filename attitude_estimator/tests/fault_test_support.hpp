@@ -31,6 +31,7 @@ FaultObservation<T> face_observation(const panel_response::Response<T>& response
     o.sample_period = T(kPeriod);
     o.response = &response;
     o.predicted = true;
+    o.prediction_valid = true;
     o.sun_body = sun;
     o.face_r = r;
     for (std::size_t k = 0; k < 6; ++k) o.i_face[k] = r[k] * i_norm;

@@ -95,6 +95,7 @@ std::vector<double> numbers(const OnboardSettings<double>& s) {
          f.max_init_gap,
          f.watch_time,
          f.watch_gate,
+         static_cast<double>(f.watch_sun),
          static_cast<double>(f.hold_field_axis),
          static_cast<double>(f.gravity_gradient),
          f.torque_noise,

@@ -94,7 +94,7 @@ void face_tests(FaultDetectionState<T>& s, const FaultObservation<T>& o, const F
     for (std::size_t k = 0; k < 6; ++k) {
         if (excluded >> k & 1u) continue;
         Outcome deficit = Outcome::not_applicable, excess = Outcome::not_applicable, stuck = Outcome::not_applicable;
-        if (o.predicted && o.response != nullptr) {
+        if (o.prediction_valid && o.response != nullptr) {
             // No other face well lit to tell the irradiance (one face toward the sun): full sun where the
             // on-board orbit says so (clear of the shadow by the penumbra's width and more).
             const T others = irradiance_without(r, predicted, excluded, k, c.others_min_predicted);

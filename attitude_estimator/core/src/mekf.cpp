@@ -294,31 +294,58 @@ void add_offset_to_start(MekfState<T>& s, const MekfSampleInputs<T>& in, const M
 // (Cauchy–Schwarz: the errors of successive samples are correlated, at most fully). The ratio of the two is
 // ~1 when the filter is consistent (docs/filter.md, "The watch").
 template <class T>
+void watch_take(MekfWatch<T>& w, const V3<T>& z, T r, T spread, T t, T watch_time) {
+    if (!z.allFinite()) return;
+    const T dt = t - w.t;  // since the previous vector, or the start (mekf_start)
+    w.t = t;
+    if (!(dt > T(0))) return;
+    const T alpha = dt < watch_time ? dt / watch_time : T(1);
+    const T keep = T(1) - alpha;
+    for (int i = 0; i < 3; ++i) w.sum[static_cast<std::size_t>(i)] = keep * w.sum[i] + alpha * z(i);
+    w.weight = keep * w.weight + alpha;
+    w.noise = keep * keep * w.noise + alpha * alpha * r;
+    w.spread = keep * w.spread + alpha * spread;
+    const T expected = w.noise / (w.weight * w.weight) + w.spread / w.weight;
+    const V3<T> mean = v3(w.sum) / w.weight;
+    w.ratio = expected > T(0) ? mean.squaredNorm() / expected : T(0);
+}
+
+template <class T>
 void watch_field(MekfState<T>& s, const MekfSampleInputs<T>& in, T polarity, const MekfConfig<T>& c) noexcept {
     const T micro = T(1e6);
     const Mat3<T> a = matrix_of(s.q);
     const V3<T> field = a * (micro * v3(in.mag_ref));
     const V3<T> y = micro * (v3(in.mag_body) - polarity * v3(s.mag_offset)) - field;
-    if (!y.allFinite()) return;
-    const V3<T> z = a.transpose() * y;
-    const T dt = in.t - s.t_watch;  // since the previous field, or the start (mekf_start)
-    s.t_watch = in.t;
-    if (!(dt > T(0))) return;
-    const T alpha = dt < c.watch_time ? dt / c.watch_time : T(1);
-    const T keep = T(1) - alpha;
     const T sigma = micro * c.mag_sigma, ref_sigma = micro * c.mag_ref_sigma;
-    const T r = T(3) * (sigma * sigma + ref_sigma * ref_sigma);
     const Mat3<T> p_att = view_p(s).template block<3, 3>(kMekfAttitude, kMekfAttitude);
     const T p_off = view_p(s).template block<3, 3>(kMekfOffset, kMekfOffset).trace() * micro * micro;
     const T spread = field.squaredNorm() * p_att.trace() - field.dot(p_att * field) + p_off;
-    for (int i = 0; i < 3; ++i) s.watch_sum[static_cast<std::size_t>(i)] = keep * s.watch_sum[i] + alpha * z(i);
-    s.watch_weight = keep * s.watch_weight + alpha;
-    s.watch_noise = keep * keep * s.watch_noise + alpha * alpha * r;
-    s.watch_spread = keep * s.watch_spread + alpha * spread;
-    const T w = s.watch_weight;
-    const T expected = s.watch_noise / (w * w) + s.watch_spread / w;
-    const V3<T> mean = v3(s.watch_sum) / w;
-    s.watch_ratio = expected > T(0) ? mean.squaredNorm() / expected : T(0);
+    watch_take(s.watch, V3<T>(a.transpose() * y), T(3) * (sigma * sigma + ref_sigma * ref_sigma), spread, in.t,
+               c.watch_time);
+}
+
+// MekfConfig::watch_sun: the sun's squared innovation |y|², y = s_meas − Â s_ref (unit vectors), over its size
+// for a consistent filter, E|y|² ≤ 3 σ_s² + tr P_θθ − s_bᵀ P_θθ s_b, averaged with the watch's exponential
+// weights over watch_time from 0 at the start (as if consistent before it: one sample, or a few, cannot reach the
+// gate; a persistent ratio N > gate reaches it after watch_time ln(N / (N − gate))). σ_s is the sun's own error at
+// its correlated size, not as weighted: each sample's error is that large, however it averages (the Earth's
+// light, its largest part, comes from the nadir, which in inertial axes turns only with the orbit). It watches
+// from each start until the filter has been valid for watch_time: what it is for is a rate about the field learnt
+// wrong at the start, which nothing else sees; later, a sun that disagrees is a sensor's fault (the fault tests'),
+// and a restart from a single-frame attitude built on that sun would be worse than the filter.
+template <class T>
+void watch_sun(MekfState<T>& s, const MekfSampleInputs<T>& in, const MekfConfig<T>& c) noexcept {
+    MekfSunWatch<T>& w = s.sun_watch;
+    if (w.valid_for >= c.watch_time) return;
+    const V3<T> sun = matrix_of(s.q) * v3(in.sun_ref).normalized();
+    const T y2 = (v3(in.sun_body).normalized() - sun).squaredNorm();
+    const Mat3<T> p_att = view_p(s).template block<3, 3>(kMekfAttitude, kMekfAttitude);
+    const T expected = T(3) * c.sun_sigma * c.sun_sigma + p_att.trace() - sun.dot(p_att * sun);
+    const T dt = in.t - w.t;
+    if (!std::isfinite(y2) || !(expected > T(0)) || !(dt > T(0))) return;
+    w.t = in.t;
+    const T alpha = dt < c.watch_time ? dt / c.watch_time : T(1);
+    w.ratio = (T(1) - alpha) * w.ratio + alpha * y2 / expected;
 }
 
 // MekfConfig::hold_field_axis: one sun direction's information (inertial axes) added to the sum.
@@ -368,9 +395,10 @@ void mekf_start(MekfState<T>& s, const Quaternion<T>& q, const Vec3<T>& omega, T
     s.t_last = t;
     s.stage = 2;
     s.refused_in_row = 0;
-    s.watch_sum = {};
-    s.watch_weight = s.watch_noise = s.watch_spread = s.watch_ratio = T(0);
-    s.t_watch = t;
+    s.watch = MekfWatch<T>{};
+    s.watch.t = t;
+    s.sun_watch = MekfSunWatch<T>{};
+    s.sun_watch.t = t;
     MatN<T> p = MatN<T>::Zero();
     const T sa = c.init_attitude_sigma, sw = c.init_rate_sigma;
     for (int i = 0; i < 3; ++i) {
@@ -665,6 +693,7 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
         }
         s.t_sun = in.t;
         s.has_sun = 1;
+        if (c.watch_time > T(0) && c.watch_sun) watch_sun(s, in, c);
         result.sun = mekf_update_sun(s, in.sun_ref, in.sun_body, sun_config);
         if (c.hold_field_axis && !s.field_axis_seen && result.sun.accepted)
             add_sun_information(s, in.sun_ref, sun_config.sun_sigma);
@@ -696,7 +725,8 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
 
     // (Held at reset_after while a refused run waits for a single frame: it cannot overflow in a long eclipse.)
     if (offered > 0) s.refused_in_row = accepted > 0 ? 0 : std::min<std::int32_t>(s.refused_in_row + 1, c.reset_after);
-    result.lost = c.watch_time > T(0) && s.watch_ratio > c.watch_gate;
+    result.lost =
+        c.watch_time > T(0) && (s.watch.ratio > c.watch_gate || (c.watch_sun && s.sun_watch.ratio > c.watch_gate));
     // A reset starts over from the single-frame attitude; without one (no sun: eclipse) it would leave no filter
     // until the sun returns, and the fault tests no prediction to judge the field by (a bias jump in eclipse
     // was declared only after the sun's return). So a refused run waits for a single frame to restart from,
@@ -719,6 +749,7 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
     }
     result.bound = mekf_attitude_bound(s);
     result.valid = result.bound < c.valid_bound && !refused_run;
+    if (result.valid && step > T(0) && s.sun_watch.valid_for < c.watch_time) s.sun_watch.valid_for += step;
     return result;
 }
 

@@ -329,7 +329,12 @@ void predict(const MekfState<T>& m, const OnboardInputs<T>& in, T t, FaultObserv
 template <class T>
 void predict_at_sensor(const OnboardState<T>& s, const OnboardInputs<T>& in, const OnboardSettings<T>& settings, T t,
                        FaultObservation<T>& o) {
-    if (settings.filter == FilterKind::mekf && s.filter.stage == 2) predict(s.filter, in, t, o);
+    if (settings.filter == FilterKind::mekf && s.filter.stage == 2) {
+        predict(s.filter, in, t, o);
+        // As mekf_sample's result.valid for the filter's last sample (mekf.cpp).
+        o.prediction_valid = o.predicted && mekf_attitude_bound(s.filter) < settings.mekf.valid_bound &&
+                             s.filter.refused_in_row < settings.mekf.reset_after;
+    }
     if (o.predicted && settings.mag_calibration && (s.mag_cal.valid || ground_calibration_applies(s, settings))) {
         // What the sensor sees is the calibration's model inverted: H = (I + D)⁻¹ (B + b), to first order in
         // the small D: (B + b) − D (B + b) (D is a few per cent at most: an error of its square).
@@ -534,6 +539,13 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
     SampleInputs<T> used_in = sample_in;
     for (std::size_t k = 0; k < 6; ++k)
         if (faces_out >> k & 1u) used_in.i_face[k] = T(0);
+    // The per-axis current of an axis with an excluded face, formed from its two faces as used (the excluded one
+    // at 0): the panels form i_sh from the face channels (ssr_plant: i_sh[k] = i_face[2k] − i_face[2k+1]), so a
+    // faulty channel (a Hall channel stuck or offset) is in it too. Where the excluded face is dark, as the sun is
+    // used only then (below), that is the axis' current. Kept as read, a Hall channel stuck at 0.64 A left the
+    // difference method's sun 42-49 deg off whenever the face was dark (faults.toml's run 105).
+    for (std::size_t axis = 0; axis < 3; ++axis)
+        if (faces_out >> (2 * axis) & 3u) used_in.i_sh[axis] = used_in.i_face[2 * axis] - used_in.i_face[2 * axis + 1];
     if (axes_out != 0) stand_in_for_excluded_axes(s, in, settings, t, axes_out, used_in);
     out.sample = estimate_sample(used_in, config, s.sun);
     bool filter_mag_valid = out.sample.mag_valid;

@@ -127,6 +127,7 @@ struct EstimatorData {
     std::int32_t filter_reset_after = MekfConfig<double>{}.reset_after;           // samples all refused before a reset
     double filter_watch_time = MekfConfig<double>{}.watch_time;          // s: the divergence watch's averaging (0: off)
     double filter_watch_gate = MekfConfig<double>{}.watch_gate;          // its ratio above which the filter is lost
+    bool filter_watch_sun = MekfConfig<double>{}.watch_sun;              // MekfConfig::watch_sun
     bool filter_hold_field_axis = MekfConfig<double>{}.hold_field_axis;  // MekfConfig::hold_field_axis
     // HMC2003 set/reset (set_reset.hpp): pulse every this many samples and average the offset over this
     // many set/reset pairs. 0 (default): no pulses, the offset stays in the field — the safe default for a

@@ -159,6 +159,13 @@ struct FaultObservation {
     // 1σ of each component of sun_body from the filter's attitude covariance (0: exact). The face tests compare
     // with the response the prediction gives within kFacePredictionSigmas of it (fault_detection_faces.cpp).
     Vec3<T> sun_sigma{};
+    // The filter calls its attitude valid (running, its 3σ bound below MekfConfig::valid_bound): the face tests
+    // (deficit, ratio, excess, stuck) judge a reading against the prediction only then. The band above assumes
+    // the covariance is honest, and a filter lost from its start can be further off than its covariance allows
+    // while that is still wide: robustness seed 42's run 23 started 86° off with about 12° allowed, and its
+    // healthy faces were declared one after another until none was left to restart the filter from
+    // (docs/faults.md, "A lost start: the face tests wait for a valid filter").
+    bool prediction_valid = false;
     Vec3<T> field_body{};           // T: field predicted at the sensor, in body axes
     Vec3<T> field_sigma{};          // T: 1σ of field_body per axis from the filter's attitude covariance
     bool field_calibrated = false;  // field_body includes the in-flight calibration's hard iron and scale
