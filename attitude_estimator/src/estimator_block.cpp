@@ -372,9 +372,10 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
         .range(1.0, 1e6)
         .applies_when("filter", {"mekf"});
     t.parameter("filter_watch_sun", &D::filter_watch_sun, "",
-                "mekf: the divergence watch also on the sun's innovation in inertial axes (with filter_watch_time "
-                "and filter_watch_gate): it sees an error about the field, which the field's own watch cannot; "
-                "docs/filter.md). false: the field's watch alone")
+                "mekf: the divergence watch also on the sun: its squared innovation over what its own sigma and the "
+                "covariance allow, averaged over filter_watch_time from each start until the filter has been valid "
+                "that long; above filter_watch_gate the filter restarts (it sees a turn about the field, which the "
+                "field's watch cannot; docs/filter.md). false: the field's watch alone")
         .applies_when("filter", {"mekf"});
     t.parameter("filter_hold_field_axis", &D::filter_hold_field_axis, "",
                 "mekf: from each start, hold the attitude's variance about the field's direction at no less than "
