@@ -621,6 +621,21 @@ T mekf_attitude_bound(const MekfState<T>& s) noexcept {
     return T(3) * std::sqrt(trace > T(0) ? trace : T(0));
 }
 
+namespace {
+
+// mekf_valid with the bound already at hand (mekf_sample reports it too).
+template <class T>
+bool valid_at(T bound, const MekfState<T>& s, const MekfConfig<T>& c) {
+    return s.stage == 2 && bound < c.valid_bound && s.refused_in_row < c.reset_after;
+}
+
+}  // namespace
+
+template <class T>
+bool mekf_valid(const MekfState<T>& s, const MekfConfig<T>& c) noexcept {
+    return valid_at(mekf_attitude_bound(s), s, c);
+}
+
 template <class T>
 MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, const MekfConfig<T>& c) noexcept {
     MekfSampleResult<T> result;
@@ -748,7 +763,7 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
         return result;
     }
     result.bound = mekf_attitude_bound(s);
-    result.valid = result.bound < c.valid_bound && !refused_run;
+    result.valid = valid_at(result.bound, s, c);
     if (result.valid && step > T(0) && s.sun_watch.valid_for < c.watch_time) s.sun_watch.valid_for += step;
     return result;
 }
@@ -763,6 +778,7 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
     template int mekf_update_faces(MekfState<T>&, const Vec3<T>&, const std::array<T, 6>&, const std::array<T, 6>&,  \
                                    std::uint8_t, const panel_response::Response<T>&, const MekfConfig<T>&) noexcept; \
     template T mekf_attitude_bound(const MekfState<T>&) noexcept;                                                    \
+    template bool mekf_valid(const MekfState<T>&, const MekfConfig<T>&) noexcept;                                    \
     template MekfSampleResult<T> mekf_sample(MekfState<T>&, const MekfSampleInputs<T>&, const MekfConfig<T>&) noexcept;
 ATTITUDE_ESTIMATOR_MEKF_INSTANTIATE(float)
 ATTITUDE_ESTIMATOR_MEKF_INSTANTIATE(double)

@@ -331,9 +331,8 @@ void predict_at_sensor(const OnboardState<T>& s, const OnboardInputs<T>& in, con
                        FaultObservation<T>& o) {
     if (settings.filter == FilterKind::mekf && s.filter.stage == 2) {
         predict(s.filter, in, t, o);
-        // As mekf_sample's result.valid for the filter's last sample (mekf.cpp).
-        o.prediction_valid = o.predicted && mekf_attitude_bound(s.filter) < settings.mekf.valid_bound &&
-                             s.filter.refused_in_row < settings.mekf.reset_after;
+        // (field_recovery_config, the filter's configuration per sample, leaves valid_bound and reset_after.)
+        o.prediction_valid = o.predicted && mekf_valid(s.filter, settings.mekf);
     }
     if (o.predicted && settings.mag_calibration && (s.mag_cal.valid || ground_calibration_applies(s, settings))) {
         // What the sensor sees is the calibration's model inverted: H = (I + D)⁻¹ (B + b), to first order in

@@ -131,11 +131,10 @@ struct MekfConfig {
     // A watch on the sun too (docs/filter.md, "The watch on the sun"): the sun's squared innovation over its size
     // for a consistent filter (the sun's own error at its correlated σ and the filter's covariance), averaged over
     // watch_time from each start until the filter has been valid for watch_time; above watch_gate the filter is
-    // lost and resets. The field's watch cannot see an error about the
-    // field itself, and the sun, weighted as the white noise of its correlated error (σ a few rad per sample at
-    // 20 Hz), is never refused by the innovation test: a filter that has learnt a wrong rate about the field from
-    // its start keeps the field and turns away from the sun (robustness seed 42's run 23: valid while 90-165 deg
-    // off, 3σ below 10 deg).
+    // lost and resets. The field's watch cannot see an error about the field itself, and the sun, weighted as the
+    // white noise of its correlated error (σ a few rad per sample at 20 Hz), is never refused by the innovation
+    // test: a filter that has learnt a wrong rate about the field from its start keeps the field and turns away
+    // from the sun (robustness seed 42's run 23: valid while 90-165 deg off, 3σ below 10 deg).
     bool watch_sun = false;
     // The attitude about the field held uncertain until the sun has seen it (docs/filter.md, "The axis about the
     // field"). Before the sun has fixed the turn about the field, only the field's own slow turn in inertial axes
@@ -152,7 +151,6 @@ struct MekfConfig {
     T max_init_gap = T(0.5);  // s
 };
 
-// Everything the filter remembers between samples (trivially copyable, no pointers).
 // One vector's divergence watch (MekfConfig::watch_time, mekf.cpp): exponentially weighted sums since the start
 // of its innovation in inertial axes, of the weights, of the squared weights times R (per axis), and of the
 // weights times the filter's own expected squared error of that vector.
@@ -175,6 +173,7 @@ struct MekfSunWatch {
     T valid_for = T(0);  // s valid since the start; the watch stops at watch_time
 };
 
+// Everything the filter remembers between samples (trivially copyable, no pointers).
 template <class T>
 struct MekfState {
     Quaternion<T> q{};                             // attitude estimate, scalar-last, A(q) maps inertial to body
@@ -255,6 +254,11 @@ int mekf_update_faces(MekfState<T>& s, const Vec3<T>& sun_ref, const std::array<
 template <class T>
 T mekf_attitude_bound(const MekfState<T>& s) noexcept;
 
+// The filter calls its attitude valid (MekfSampleResult::valid of its last sample): running, its 3σ bound below
+// config.valid_bound, and no refused run of reset_after samples waiting for a single frame to restart from.
+template <class T>
+bool mekf_valid(const MekfState<T>& s, const MekfConfig<T>& config) noexcept;
+
 // --- one whole sample, as the block runs it
 
 template <class T>
@@ -314,6 +318,7 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
                                           const std::array<T, 6>&, std::uint8_t, const panel_response::Response<T>&, \
                                           const MekfConfig<T>&) noexcept;                                            \
     extern template T mekf_attitude_bound(const MekfState<T>&) noexcept;                                             \
+    extern template bool mekf_valid(const MekfState<T>&, const MekfConfig<T>&) noexcept;                             \
     extern template MekfSampleResult<T> mekf_sample(MekfState<T>&, const MekfSampleInputs<T>&,                       \
                                                     const MekfConfig<T>&) noexcept;
 ATTITUDE_ESTIMATOR_MEKF_EXTERN(float)
