@@ -42,6 +42,7 @@ FaultDetectionConfig<T> fault_settings_from(const EstimatorData& d) {
                               .face_stuck_change = static_cast<T>(d.detect_face_stuck_change),
                               .face_stuck_tolerance = static_cast<T>(d.detect_face_stuck_tolerance),
                               .face_excess = static_cast<T>(d.detect_face_excess),
+                              .face_direct_min = static_cast<T>(d.detect_face_direct_min),
                               .others_min_irradiance = static_cast<T>(d.detect_irradiance_min),
                               .others_min_predicted = T(0.3),
                               .bus_tolerance = static_cast<T>(d.detect_bus_tolerance),

@@ -85,7 +85,8 @@ void declare_fault_variables(fmu::Table<EstimatorData>& t) {
         .range(0.0, 1.0);
     t.parameter("detect_face_scale_min", &D::detect_face_scale_min, "1",
                 "detect_faults: a confirmed deficit whose mean measured/expected ratio is at least this is a lower "
-                "scale (shadow, degradation): the face is read divided by it (fault_face_scale), not excluded")
+                "scale (shadow, degradation): the face is read divided by it (fault_face_scale), not excluded; a face "
+                "whose scales together fall below it is excluded")
         .range(0.0, 1.0);
     t.parameter("detect_face_dark_max", &D::detect_face_dark_max, "1",
                 "detect_faults: a face reading more than this fraction of full sun while the on-board orbit puts "
@@ -102,6 +103,11 @@ void declare_fault_variables(fmu::Table<EstimatorData>& t) {
                 "detect_faults: a face reading this far above its predicted relative response fails (albedo "
                 "adds up to about 0.4 on a face toward nadir)")
         .range(0.01, 10.0);
+    t.parameter("detect_face_direct_min", &D::detect_face_direct_min, "1",
+                "detect_faults: a face reading more than this has the sun itself on it (albedo adds up to about "
+                "0.4), so its opposite face is dark: an excluded face is known dark without the filter's "
+                "prediction (after a reset, the sun from the faces left)")
+        .range(0.3, 1.0);
     t.parameter("detect_irradiance_min", &D::detect_irradiance_min, "1",
                 "detect_faults: faces are tested while the other faces show at least this fraction of the sun "
                 "predicted on them (not in eclipse or deep penumbra)")

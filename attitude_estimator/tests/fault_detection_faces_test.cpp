@@ -4,6 +4,7 @@
 #include "attitude_estimator/fault_detection.hpp"
 #include "attitude_estimator/onboard_computer.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "fault_test_support.hpp"
@@ -160,6 +161,39 @@ TYPED_TEST(EstimatorCoreFaceFaults, AHalfShadowedFaceIsGivenItsScaleAndKeptThenA
         fault_detect(s, o, c);
     }
     EXPECT_EQ(s.face_word[0], kFaultFaceScale | kFaultFaceDeficit);
+    EXPECT_EQ(excluded_faces(s), 1);
+    for (std::size_t k = 1; k < 6; ++k) EXPECT_EQ(s.face_word[k], 0u) << "face " << k;
+}
+
+TYPED_TEST(EstimatorCoreFaceFaults, AShadowThatDeepensIsScaledAgainUntilItsScalesMultiplyBelowTheBar) {
+    using T = TypeParam;
+    const auto law = panel_response::cosine<T>();
+    const auto c = enabled<T>();
+    FaultDetectionState<T> s;
+    // +x, lit at 0.8 of full sun, reads under a shadow over `shadowed` of it (1 − shadowed) × 0.8, for 20 s
+    // from t0: each step is a deficit confirmed in 4.95 s.
+    const auto shadow = [&](double t0, double shadowed) {
+        for (int i = 0; i < 400; ++i) {
+            auto o = lit(law, T(t0 + i * kPeriod));
+            set_face(o, 0, T((1.0 - shadowed) * 0.8));
+            fault_detect(s, o, c);
+        }
+    };
+    // Half: 0.4 < 0.8 − 0.3, ratio 0.5: scale 0.5, kept.
+    shadow(0.0, 0.5);
+    EXPECT_EQ(s.face_word[0], kFaultFaceScale);
+    EXPECT_NEAR(s.face_scale[0], 0.5, 1e-5);
+    // Three quarters: reads 0.2, compensated 0.4 < 0.5 fails again with a ratio of 0.4 / 0.8 = 0.5: the scale
+    // becomes 0.5 × 0.5 = 0.25 ≥ 0.2, still kept.
+    shadow(20.0, 0.75);
+    EXPECT_EQ(s.face_word[0], kFaultFaceScale);
+    EXPECT_NEAR(s.face_scale[0], 0.25, 1e-5);
+    EXPECT_EQ(excluded_faces(s), 0);
+    // Nine tenths: reads 0.08, compensated 0.32 fails with a ratio of 0.4, itself above the 0.2 bar, but the
+    // face would then be read as 0.25 × 0.4 = 0.1 of its light, below it: a dead face, excluded.
+    shadow(40.0, 0.9);
+    EXPECT_EQ(s.face_word[0], kFaultFaceScale | kFaultFaceDeficit);
+    EXPECT_NEAR(s.face_time[0], 4.95, 0.051);  // the face's first declaration
     EXPECT_EQ(excluded_faces(s), 1);
     for (std::size_t k = 1; k < 6; ++k) EXPECT_EQ(s.face_word[k], 0u) << "face " << k;
 }
@@ -425,6 +459,88 @@ TYPED_TEST(EstimatorCoreFaceFaults, TheComputerReadsAScaledFaceDividedByItsScale
     EXPECT_EQ(rb.fault_face_scale[0], T(0.5));
     // Without it the x component is off by far more.
     EXPECT_GT(std::abs(rc.sample.sun_meas[0] - ra.sample.sun_meas[0]), T(0.05));
+}
+
+TYPED_TEST(EstimatorCoreFaceFaults, WithoutAPredictionAnExcludedFaceIsDarkWhereItsOppositeHasTheSun) {
+    using T = TypeParam;
+    OnboardSettings<T> settings;
+    settings.faults.enabled = true;
+    // Cosine faces at 0.84754 A of full sun, i_sh[k] = i_face[2k] − i_face[2k+1]; the sun at (sx, 0.48, 0.36) in
+    // body axes (the identity attitude); −x reads `minus_x` extra (the Earth's light) on top of its cosine.
+    const auto inputs = [](double sx, double minus_x) {
+        OnboardInputs<T> in;
+        in.sun_ref = {T(sx), T(0.48), T(0.36)};
+        in.mag_ref = {T(2e-5), T(0), T(0)};
+        in.i_face = {T(std::max(sx, 0.0) * 0.84754),
+                     T((std::max(-sx, 0.0) + minus_x) * 0.84754),
+                     T(0.48 * 0.84754),
+                     T(0),
+                     T(0.36 * 0.84754),
+                     T(0)};
+        for (std::size_t k = 0; k < 3; ++k) in.i_sh[k] = in.i_face[2 * k] - in.i_face[2 * k + 1];
+        return in;
+    };
+    // A computer that has excluded +x (an open string, say) and has no filter running: no prediction, as after a
+    // reset. One without the exclusion gives the reference sun.
+    const auto sun_of = [&](const OnboardInputs<T>& in, bool excluded) {
+        OnboardState<T> s;
+        onboard_start(s, settings);
+        if (excluded) s.faults.face_word[0] = kFaultFaceDeficit;
+        return onboard_sample(s, in, settings, T(0)).sample;
+    };
+    // The sun on −x's side: −x reads 0.8 of full sun, more than albedo can give (0.5), so +x is dark and its 0 is
+    // right: the five faces left give the sun the six do.
+    const auto behind = inputs(-0.8, 0.0);
+    const auto all = sun_of(behind, false), five = sun_of(behind, true);
+    ASSERT_TRUE(all.sun_valid);
+    ASSERT_TRUE(five.sun_valid);
+    for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(five.sun_meas[i], all.sun_meas[i], 1e-6) << i;
+    EXPECT_NEAR(five.sun_meas[0], T(-0.8), 2e-3);
+    // The sun on +x's side: −x dark, +x may be lit: no sun. Nor with −x lit by the Earth alone (0.4 of full sun).
+    EXPECT_TRUE(sun_of(inputs(0.8, 0.0), false).sun_valid);
+    EXPECT_FALSE(sun_of(inputs(0.8, 0.0), true).sun_valid);
+    EXPECT_FALSE(sun_of(inputs(0.8, 0.4), true).sun_valid);
+    // Nor with −x in the sun but barely (cos β 0.1 with 0.35 of albedo: 0.45, below 0.5): +x is dark then too, but
+    // that reading cannot tell it from albedo alone.
+    EXPECT_FALSE(sun_of(inputs(-0.1, 0.35), true).sun_valid);
+}
+
+TYPED_TEST(EstimatorCoreFaceFaults, AnExcludedFacesStringFieldIsTheLesserOfItsReadingAndThePredictedLight) {
+    using T = TypeParam;
+    OnboardSettings<T> settings;
+    settings.faults.enabled = true;
+    settings.filter = FilterKind::mekf;
+    // +x's string loop gives 2 µT per ampere along x at the sensor; the others nothing.
+    settings.string_field_per_amp[0] = {T(2e-6), T(0), T(0)};
+    const T norm = settings.estimator.sun.i_face_norm[0];  // A at full sun (the cosine law, the default)
+    // The sun at (0.8, 0.48, 0.36) in inertial and (the identity attitude) body axes: +x has 0.8 of full sun on it.
+    // The magnetometer reads a zero field: what the sample's field holds is minus the strings' field it takes out.
+    const auto field_x = [&](double plus_x_reads, bool excluded, bool running) {
+        OnboardInputs<T> in;
+        in.sun_ref = {T(0.8), T(0.48), T(0.36)};
+        in.mag_ref = {T(2e-5), T(0), T(0)};
+        in.v_mag = {in.v_mag_ref, in.v_mag_ref, in.v_mag_ref};
+        in.i_face = {T(plus_x_reads * norm), T(0), T(0.48 * norm), T(0), T(0.36 * norm), T(0)};
+        for (std::size_t k = 0; k < 3; ++k) in.i_sh[k] = in.i_face[2 * k] - in.i_face[2 * k + 1];
+        OnboardState<T> s;
+        onboard_start(s, settings);
+        if (excluded) s.faults.face_word[0] = kFaultFaceDeficit;
+        if (running) {  // the filter at the identity attitude, at rest, as of t = 0: it predicts the sun as above
+            s.filter.stage = 2;
+            s.filter.q = {T(0), T(0), T(0), T(1)};
+        }
+        return onboard_sample(s, in, settings, T(0)).sample.mag_field_uncalibrated[0];
+    };
+    // To a step of the face converters (12 bits over 1.2 A: 0.29 mA) where a reading counts; the prediction exact.
+    const double per_amp = 2e-6, tol = per_amp * 0.3e-3;
+    // Kept, +x's reading is its string's current: 0.8 of full sun.
+    EXPECT_NEAR(field_x(0.8, false, true), -per_amp * 0.8 * norm, tol);
+    // Excluded, reading a shadowed 0.3 (below the 0.8 predicted): the reading, which a shadow leaves true.
+    EXPECT_NEAR(field_x(0.3, true, true), -per_amp * 0.3 * norm, tol);
+    // Excluded, reading 1.1 (a Hall offset of 0.3 of full sun on top of the 0.8 predicted): the prediction.
+    EXPECT_NEAR(field_x(1.1, true, true), -per_amp * 0.8 * norm, tol);
+    // Excluded without a prediction (the filter not running): nothing counted.
+    EXPECT_NEAR(field_x(0.3, true, false), 0.0, tol);
 }
 
 }  // namespace

@@ -129,7 +129,7 @@ std::vector<double> numbers(const OnboardSettings<double>& s) {
          d.norm_tolerance, d.flip_min_field_calibrated});
     // The panel tests (ratio, scale, dark, stuck) and the magnetometer's frozen, spike and bias tests.
     put({d.face_ratio_min_response, d.face_ratio, d.face_scale_min, d.face_dark_max, d.face_stuck_change,
-         d.face_stuck_tolerance});
+         d.face_stuck_tolerance, d.face_direct_min});
     put({d.frozen_min_field, d.frozen_tolerance, d.spike_sigma, d.spike_gate, d.spike_window,
          static_cast<double>(d.spike_count), d.bias_window, d.bias_threshold, d.bias_noise_factor});
     for (const auto& k : s.string_field_per_amp) put_all(k);

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -112,6 +113,44 @@ TEST(E2eLeoPanelFaults, AfterAStuckHallChannelIsExcludedTheSunIsFormedWithoutIt)
     EXPECT_GT(cells.at("sun_error.count"), 200.0);
     EXPECT_LT(cells.at("sun_error.p50"), 10.0);
     EXPECT_LT(cells.at("sun_error.p95"), 20.0);
+}
+
+// faults.toml's run 149: an appendage on +x (a 0.33 m plate at its top end) from 4433 s, whose shadow moves with the
+// sun. Scaled 0.30 at 4763 s and, 9 s later, 0.26 again: +x would read 0.079 of its light, below the 0.2 bar, so it is
+// excluded (it had been kept, reading 12 times its light when the appendage left it). Excluded, its string's field is
+// counted from the lesser of its reading and the predicted light (counted as nothing, it left 0.4 µT following the
+// sun on +x in the field, and the sunlit p95 went from 0.39 deg to 0.75 deg). Against the paired control (run 144,
+// the same scene without the fault), issue 39's 1.5 times, over the campaign's sunlit span after the fault (4600 s
+// to the eclipse at 7577 s). About 2 s a run in the release build.
+TEST(E2eLeoPanelFaults, AnAppendagesShadowScaledTwiceExcludesItsFaceAndTheFieldKeepsItsString) {
+    campaign::CampaignSpec spec = campaign::read_spec(PVATT_SYSTEMS_DIR "/../campaigns/faults.toml");
+    spec.stop_time = 7577.0;
+    campaign::Metric word;
+    word.name = "plus_x";
+    word.kind = campaign::MetricKind::column;
+    word.a = "est.fault_face[1]";
+    word.stats = {"final"};
+    campaign::Metric scale = word;
+    scale.name = "plus_x_scale";
+    scale.a = "est.fault_face_scale[1]";
+    std::vector<campaign::Metric> metrics;
+    for (const auto& m : spec.metrics)
+        if (m.name == "error_sunlit") metrics.push_back(m);
+    ASSERT_EQ(metrics.size(), 1u);
+    metrics.push_back(word);
+    metrics.push_back(scale);
+    spec.metrics = metrics;
+    const std::map<std::string, double> fault = e2e::run_spec(spec, 149, {});
+    const std::map<std::string, double> control = e2e::run_spec(spec, 144, {});
+    std::printf(
+        "faults.toml run 149 (appendage on +x): +x word %.0f, scale %.3f; sunlit p95 after the fault %.3f deg, "
+        "control (run 144) %.3f deg\n",
+        fault.at("plus_x.final"), fault.at("plus_x_scale.final"), fault.at("error_sunlit.p95"),
+        control.at("error_sunlit.p95"));
+    EXPECT_EQ(fault.at("plus_x.final"), 9.0);  // scaled (8), then excluded (1)
+    EXPECT_EQ(control.at("plus_x.final"), 0.0);
+    EXPECT_GT(fault.at("error_sunlit.count"), 1000.0);
+    EXPECT_LE(fault.at("error_sunlit.p95"), 1.5 * control.at("error_sunlit.p95"));
 }
 
 }  // namespace

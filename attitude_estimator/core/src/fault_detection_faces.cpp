@@ -38,12 +38,16 @@ T irradiance_without(const std::array<T, 6>& measured, const std::array<T, 6>& p
 }  // namespace
 
 // A confirmed deficit: a dead face (open string, switch stuck off, Hall channel at 0) is excluded; one that
-// read a steady fraction of the light while failing (shadow, degradation) gets that fraction as its scale.
+// read a steady fraction of the light while failing (shadow, degradation) gets that fraction as its scale. The
+// failing samples were read compensated by the scale declared before (a shadow that deepens), so the face
+// now reads the product of the two: below face_scale_min that is a dead face too, however many steps it took
+// (faults.toml runs 149 and 261: an appendage's shadow, whose fraction moves with the sun, scaled 0.30 and 9 s
+// later 0.26 again, read 12 times its light whenever the appendage left the face in full sun).
 template <class T>
 void declare_deficit(FaultDetectionState<T>& s, std::size_t k, const FaultDetectionConfig<T>& c, T t) {
     const T n = s.deficit_ratio_count[k];
     const T ratio = n > T(0) ? s.deficit_ratio_sum[k] / n : T(0);
-    if (ratio >= c.face_scale_min && ratio < T(1)) {
+    if (s.face_scale[k] * ratio >= c.face_scale_min && ratio < T(1)) {
         s.face_scale[k] *= ratio;
         declare(s.face_word[k], s.face_time[k], kFaultFaceScale, t);
     } else {

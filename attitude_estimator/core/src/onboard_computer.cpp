@@ -414,19 +414,48 @@ constexpr T kShadowMarginKm = T(100);
 
 // The field of the panels' string currents at the sensor from the measured face currents (OnboardSettings::
 // string_field_per_amp): Σ K_f i_f over the digitized currents as they are read, not rescaled for a declared
-// partial shadow (the string carries what the cells give). A face excluded by the fault detection counts as
-// carrying nothing: its reading is not trusted, and an open string carries nothing indeed.
+// partial shadow (the string carries what the cells give). A face excluded by the fault detection counts with
+// `excluded_current` (excluded_face_currents) in place of its reading.
 template <class T>
 Vec3<T> string_field(const OnboardInputs<T>& in, const OnboardSettings<T>& settings, const EstimatorConfig<T>& nominal,
-                     std::uint8_t faces_out) {
+                     std::uint8_t faces_out, const std::array<T, 6>& excluded_current) {
     Vec3<T> b{};
     for (std::size_t k = 0; k < 6; ++k) {
-        if (faces_out >> k & 1u) continue;
-        const T i = convert(nominal.face_adc[k], in.i_face[k]).value;
+        const T i = (faces_out >> k & 1u) ? excluded_current[k] : convert(nominal.face_adc[k], in.i_face[k]).value;
         if (!std::isfinite(i)) continue;
         for (std::size_t j = 0; j < 3; ++j) b[j] += settings.string_field_per_amp[k][j] * i;
     }
     return b;
+}
+
+// The current an excluded face's string carries, for its field at the sensor: the lesser of its reading and the
+// direct sun the filter predicts on it (none in the umbra). Neither alone can be trusted: the reading is wrong for
+// a Hall channel stuck or offset and for a switch stuck off (it reads 0 while the string feeds the bus), the
+// prediction for an open string (it carries nothing) and a shadow (less). The lesser is right for an open string,
+// a shadow and a channel reading above the light; below it (a switch stuck off, a channel stuck low) it leaves
+// part out. Counted as 0, as before 2026-12-06 (third session), an appendage's shadow on +x left its string's
+// field (a few 100 nT, following the sun on the face) in the field weighed at 1.5 µT: faults.toml's appendage
+// runs 1.97 times the control's sunlit p95 (median; 13 of 20 above 1.5). Without a prediction (before the
+// start, after a reset): 0.
+template <class T>
+std::array<T, 6> excluded_face_currents(const OnboardState<T>& s, const OnboardInputs<T>& in,
+                                        const OnboardSettings<T>& settings, const EstimatorConfig<T>& nominal, T t,
+                                        std::uint8_t faces_out, bool umbra) {
+    std::array<T, 6> current{};
+    if (faces_out == 0) return current;
+    FaultObservation<T> o;
+    predict_at_sensor(s, in, settings, t, o);
+    if (!o.predicted) return current;
+    for (std::size_t k = 0; k < 6; ++k) {
+        if (!(faces_out >> k & 1u)) continue;
+        const T cos_beta = (k % 2 == 0 ? T(1) : T(-1)) * o.sun_body[k / 2];
+        const T light =
+            umbra ? T(0)
+                  : nominal.sun.i_face_norm[k] * panel_response::response_from_cos(nominal.sun.response, cos_beta);
+        const T read = convert(nominal.face_adc[k], in.i_face[k]).value;
+        current[k] = std::isfinite(read) ? std::min(read, light) : T(0);
+    }
+    return current;
 }
 
 // An excluded axis is read at the filter's prediction of it when there is one, else at its null (so that its
@@ -521,17 +550,22 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
     const T reading_polarity = strap_failed ? s.faults.strap_polarity : s.set_reset.polarity;
     const Vec3<T> offset = strap_failed ? s.faults.strap_offset : applied_offset(s.set_reset, settings.set_reset);
     const std::uint8_t faces_out = detecting ? excluded_faces(s.faults) : std::uint8_t{0};
-    const SampleInputs<T> sample_in{.i_sh = scaled_in.i_sh,
-                                    .i_face = scaled_in.i_face,
-                                    .v_mag = in.v_mag,
-                                    .v_mag_ref = in.v_mag_ref,
-                                    .sun_ref = in.sun_ref,
-                                    .mag_ref = in.mag_ref,
-                                    .mag_polarity = reading_polarity,
-                                    .mag_offset = offset,
-                                    .mag_gain = s.mag_cal.gain,
-                                    .mag_cal_offset = s.mag_cal.offset,
-                                    .mag_known_field = string_field(in, settings, nominal, faces_out)};
+    // Panel faults: the umbra 100 km inside the Earth's shadow cylinder by the on-board orbit (kShadowMarginKm).
+    const T shadow_depth = shadow_depth_km(out.references.position, in.sun_ref);
+    const bool umbra = shadow_depth > kShadowMarginKm<T>;
+    const SampleInputs<T> sample_in{
+        .i_sh = scaled_in.i_sh,
+        .i_face = scaled_in.i_face,
+        .v_mag = in.v_mag,
+        .v_mag_ref = in.v_mag_ref,
+        .sun_ref = in.sun_ref,
+        .mag_ref = in.mag_ref,
+        .mag_polarity = reading_polarity,
+        .mag_offset = offset,
+        .mag_gain = s.mag_cal.gain,
+        .mag_cal_offset = s.mag_cal.offset,
+        .mag_known_field = string_field(in, settings, nominal, faces_out,
+                                        excluded_face_currents(s, in, settings, nominal, t, faces_out, umbra))};
     // Excluded faces read nothing; an excluded axis reads its null, so that its rail does not take the
     // other two with it (its component is not used below).
     const std::uint8_t axes_out = detecting ? excluded_axes(s.faults) : std::uint8_t{0};
@@ -551,9 +585,8 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
     if (detecting) {
         FaultObservation<T> o = observe(s, in, settings, nominal, t, reading_polarity, out.sample, axes_out);
         o.mag_offset = offset;
-        const T depth = shadow_depth_km(out.references.position, in.sun_ref);
-        o.umbra = depth > kShadowMarginKm<T>;
-        o.near_shadow = depth > -kShadowMarginKm<T>;
+        o.umbra = umbra;
+        o.near_shadow = shadow_depth > -kShadowMarginKm<T>;
         // A position only from the computer's own orbit (zero when the references are inputs).
         o.clear_of_shadow = out.references.valid && squared_norm(out.references.position) > T(0) && !o.near_shadow;
         const bool was_recovering = s.faults.bias_recovering;
@@ -567,12 +600,21 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
             if (o.predicted && rewound.predicted)
                 for (std::size_t k = 0; k < 3; ++k) s.faults.bias_jump[k] += o.field_body[k] - rewound.field_body[k];
         }
-        // An excluded face that may be lit (predicted within 3° of its horizon or facing the sun, or no
-        // prediction) leaves the sun vector without its light: no sun this sample. Dark, it changes nothing.
+        // An excluded face that may be lit (predicted within 3° of its horizon or facing the sun) leaves the sun
+        // vector without its light: no sun this sample. Dark, it changes nothing. Without a prediction (before the
+        // start, after a reset) it is dark where its opposite face, kept, has the sun itself on it: otherwise a
+        // reset after an exclusion would leave no sun to restart from, ever.
         bool face_may_be_lit = false;
         for (std::size_t k = 0; k < 6; ++k) {
+            if (!(faces_out >> k & 1u)) continue;
+            const std::size_t opposite = k ^ 1u;
+            // The opposite face's current as digitized, its declared scale taken out (with_face_scales).
+            const T opposite_current = convert(nominal.face_adc[opposite], sample_in.i_face[opposite]).value;
+            const bool opposite_direct =
+                !(faces_out >> opposite & 1u) &&
+                opposite_current > settings.faults.face_direct_min * nominal.sun.i_face_norm[opposite];
             const T toward = (k % 2 == 0 ? T(1) : T(-1)) * o.sun_body[k / 2];
-            if ((faces_out >> k & 1u) && (!o.predicted || toward > T(-0.05))) face_may_be_lit = true;
+            if (o.predicted ? toward > T(-0.05) : !opposite_direct) face_may_be_lit = true;
         }
         if (face_may_be_lit && out.sample.sun_valid) {
             out.sample.sun_valid = false;

@@ -238,6 +238,7 @@ struct EstimatorData {
     double detect_face_min_response = 0.4;           // 1: face tests where the predicted response is at least this
     double detect_face_deficit = 0.3;                // 1: a face reading this far below the prediction fails
     double detect_face_excess = 0.6;                 // 1: ... this far above it (albedo adds up to ~0.4)
+    double detect_face_direct_min = 0.5;             // 1: a face reading more has the sun itself on it
     double detect_irradiance_min = 0.5;              // 1: face tests while the other faces show this much sun
     double detect_bus_tolerance = 0.02;              // A: |i_sh[k] − (i_face[2k] − i_face[2k+1])|
     double detect_flip_min_field_calibrated = 3e-6;  // T: the same once the calibration's hard iron is in

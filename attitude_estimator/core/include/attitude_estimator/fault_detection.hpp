@@ -80,6 +80,8 @@ struct FaultDetectionConfig {
     // A confirmed deficit whose mean measured-to-expected ratio over its failing samples (those expected at
     // others_min_predicted or more) is at least face_scale_min is a lower scale (a shadow over part of the face,
     // degraded cells), not a dead face: declared kFaultFaceScale with that ratio, and the face read divided by it.
+    // A face already scaled is failing on its compensated reading: its scale is then the product, and a product
+    // below face_scale_min is a dead face (excluded) however many steps it took.
     T face_scale_min = T(0.2);
     // In the predicted umbra no face is lit (no sun, and the Earth below is dark): a face reading more than this
     // (relative to full sun) fails the dark test.
@@ -91,6 +93,11 @@ struct FaultDetectionConfig {
     T face_stuck_change = T(0.15);
     T face_stuck_tolerance = T(0.003);
     T face_excess = T(0.6);  // fail above (predicted + this): albedo adds at most ~0.4 on a nadir face
+    // A face reading more than this (relative to full sun) has the sun itself on it: albedo adds at most ~0.4 on
+    // a face toward nadir. Its opposite face is then dark (cos β at most about −0.1), which tells an excluded face
+    // dark without a prediction: after a reset the sun is formed from the faces left, and the filter can restart
+    // (onboard_computer.cpp).
+    T face_direct_min = T(0.5);
     T others_min_irradiance = T(0.5);
     T others_min_predicted = T(0.3);
     T bus_tolerance = T(0.02);  // A: |i_sh[k] − (i_face[2k] − i_face[2k+1])|
