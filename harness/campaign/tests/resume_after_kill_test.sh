@@ -7,7 +7,9 @@ set -euo pipefail
 cosim=$1 spec=$2 fmu_dir=$3 work=$4
 source "$(dirname "$0")/drop_wall_time.sh"
 rm -rf "$work"
-mkdir -p "$work"
+mkdir -p "$work/tmp"
+# Its own temporary directory, where each cosim makes its private folder (cosim_<host>_<pid>_XXXXXX).
+export TMPDIR="$work/tmp"
 args=(campaign "$spec" --fmu-dir "$fmu_dir" --runs 10 --stop-time 20 --no-figures)
 "$cosim" "${args[@]}" --output "$work/whole" > /dev/null
 
@@ -24,9 +26,14 @@ before=$(($(wc -l < "$work/killed/results.csv") - 1))
 echo "killed with $before rows written"
 [ "$before" -lt 10 ] || { echo "the campaign finished before the kill: nothing was tested"; exit 1; }
 cp "$work/killed/results.csv" "$work/before_resume.csv"
+# SIGKILL leaves the killed process's private folder (its extracted FMUs); the next cosim on this host sweeps it.
+compgen -G "$TMPDIR/cosim_*_${pid}_*" > /dev/null || { echo "the killed campaign left no private folder"; exit 1; }
 
 "$cosim" "${args[@]}" --output "$work/killed" --resume | tee "$work/resume.log"
 grep -q "resuming: $before runs" "$work/resume.log" || { echo "resume did not keep the $before finished runs"; exit 1; }
+if compgen -G "$TMPDIR/cosim_*_${pid}_*" > /dev/null; then echo "the killed campaign's private folder is left"; exit 1; fi
+left=$(find "$TMPDIR" -mindepth 1 -maxdepth 1 | wc -l)
+[ "$left" -eq 0 ] || { echo "$left entries left in the temporary directory:"; ls "$TMPDIR"; exit 1; }
 diff <(drop_wall_time "$work/whole/results.csv") <(drop_wall_time "$work/killed/results.csv")
 # The finished rows are kept byte for byte (their wall times too: they were not run again).
 while IFS= read -r row; do

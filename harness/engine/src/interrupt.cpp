@@ -80,6 +80,41 @@ void signal_loop(sigset_t set) {
     }
 }
 
+// The private folder's name: cosim_<host>_<pid>_XXXXXX. The host, so that a temporary directory shared between
+// machines is never swept for another machine's processes; its characters outside [A-Za-z0-9.-] become '-'.
+std::string private_temp_prefix() {
+    char host[256] = {};
+    if (::gethostname(host, sizeof host - 1) != 0) host[0] = '\0';
+    std::string name;
+    for (const char* c = host; *c != '\0'; ++c) {
+        const bool plain =
+            (*c >= 'a' && *c <= 'z') || (*c >= 'A' && *c <= 'Z') || (*c >= '0' && *c <= '9') || *c == '.' || *c == '-';
+        name.push_back(plain ? *c : '-');
+    }
+    return "cosim_" + name + "_";
+}
+
+// A process killed with SIGKILL (an out-of-memory kill, a batch system's time limit) cannot remove its private
+// folder: each such kill left its FMUs' extraction folders behind, 16 MB for leo_orbit, per MPI rank. A new
+// process removes the folders of this host whose process is gone (kill(pid, 0) says ESRCH), its own user's only
+// (the folders are 0700). A process id taken again by another process keeps its folder until that one ends.
+void sweep_stale_private_temps(const fs::path& temp, const std::string& prefix) {
+    std::error_code ec;
+    for (fs::directory_iterator it(temp, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name.compare(0, prefix.size(), prefix) != 0) continue;
+        const std::size_t digits_end = name.find('_', prefix.size());
+        if (digits_end == std::string::npos || digits_end == prefix.size() || digits_end - prefix.size() > 9) continue;
+        const std::string digits = name.substr(prefix.size(), digits_end - prefix.size());
+        if (digits.find_first_not_of("0123456789") != std::string::npos) continue;
+        const pid_t pid = static_cast<pid_t>(std::stol(digits));
+        if (pid <= 0 || pid == ::getpid() || ::kill(pid, 0) == 0 || errno != ESRCH) continue;
+        std::error_code status_ec;
+        if (!fs::is_directory(it->symlink_status(status_ec)) || status_ec) continue;  // never follow a link
+        remove_folder(it->path());
+    }
+}
+
 }  // namespace
 
 Interrupted::Interrupted(int signal)
@@ -96,7 +131,12 @@ void install_interrupt_handlers() {
 void use_private_temp_directory() {
     std::lock_guard lock(private_temp_mutex);
     if (!private_temp.path.empty()) return;
-    std::string pattern = (fs::temp_directory_path() / "cosim_XXXXXX").string();
+    std::error_code ec;
+    const fs::path temp = fs::temp_directory_path(ec);
+    if (ec) return;  // no temporary directory: the extraction folders go where they did
+    const std::string prefix = private_temp_prefix();
+    sweep_stale_private_temps(temp, prefix);
+    std::string pattern = (temp / (prefix + std::to_string(::getpid()) + "_XXXXXX")).string();
     if (::mkdtemp(pattern.data()) == nullptr) return;  // no private folder: the extraction folders go where they did
     private_temp.path = pattern;
     ::setenv("TMPDIR", pattern.c_str(), 1);

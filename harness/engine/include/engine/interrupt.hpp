@@ -33,6 +33,8 @@ inline constexpr std::chrono::milliseconds wait_slice{50};
 void install_interrupt_handlers();
 // Makes a private folder below the temporary directory the process's TMPDIR (so every extraction
 // directory, the master's and the FMUs', lives below it); it is removed at exit and on a second signal.
+// Named cosim_<host>_<pid>_XXXXXX: first it removes the folders of this host and user whose process is gone
+// (killed with SIGKILL, which no process can clean up after).
 void use_private_temp_directory();
 int interrupt_signal() noexcept;  // 0 until a signal arrived
 void throw_if_interrupted();
