@@ -84,7 +84,7 @@ void face_tests(FaultDetectionState<T>& s, const FaultObservation<T>& o, const F
     std::array<T, 6> predicted{}, lower{}, upper{};
     if (o.predicted && o.response != nullptr) {
         for (std::size_t k = 0; k < 6; ++k) {
-            const T cos_beta = (k % 2 == 0 ? T(1) : T(-1)) * o.sun_body[k / 2];
+            const T cos_beta = face_cos(o.sun_body, k);
             const T margin = kFacePredictionSigmas<T> * o.sun_sigma[k / 2];
             predicted[k] = panel_response::response_from_cos(*o.response, cos_beta);
             lower[k] = panel_response::response_from_cos(*o.response, cos_beta - margin);

@@ -448,7 +448,7 @@ std::array<T, 6> excluded_face_currents(const OnboardState<T>& s, const OnboardI
     if (!o.predicted) return current;
     for (std::size_t k = 0; k < 6; ++k) {
         if (!(faces_out >> k & 1u)) continue;
-        const T cos_beta = (k % 2 == 0 ? T(1) : T(-1)) * o.sun_body[k / 2];
+        const T cos_beta = face_cos(o.sun_body, k);
         const T light =
             umbra ? T(0)
                   : nominal.sun.i_face_norm[k] * panel_response::response_from_cos(nominal.sun.response, cos_beta);
@@ -613,7 +613,7 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
             const bool opposite_direct =
                 !(faces_out >> opposite & 1u) &&
                 opposite_current > settings.faults.face_direct_min * nominal.sun.i_face_norm[opposite];
-            const T toward = (k % 2 == 0 ? T(1) : T(-1)) * o.sun_body[k / 2];
+            const T toward = face_cos(o.sun_body, k);
             if (o.predicted ? toward > T(-0.05) : !opposite_direct) face_may_be_lit = true;
         }
         if (face_may_be_lit && out.sample.sun_valid) {

@@ -61,6 +61,12 @@ inline constexpr std::uint32_t kFaultAxisSpiking = 8u;
 // offset takes the jump and re-learns it (FaultDetectionState::bias_jump_now, bias_jump).
 inline constexpr std::uint32_t kFaultAxisBias = 16u;
 
+// cos β of face k (+x, −x, +y, −y, +z, −z: the order of every per-face array) for a unit sun direction in body axes.
+template <class T>
+constexpr T face_cos(const Vec3<T>& sun_body, std::size_t k) noexcept {
+    return (k % 2 == 0 ? T(1) : T(-1)) * sun_body[k / 2];
+}
+
 template <class T>
 struct FaultDetectionConfig {
     bool enabled = false;
