@@ -174,6 +174,19 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
                 "mekf: 1-sigma error per axis of the reference field model (adds to filter_mag_sigma in quadrature)")
         .range(0.0, 1e-4)
         .applies_when("filter", {"mekf"});
+    t.parameter("filter_mag_ref_rms", &D::filter_mag_ref_rms, "T",
+                "mekf: rms per axis of the reference field's error along the orbit, correlated over "
+                "filter_mag_ref_correlation; 0 = with the on-board references, what the on-board model's field_degree "
+                "leaves of IGRF-14 at the on-board orbit's semi-major axis (the degrees above it, by their spectrum; "
+                "docs/filter.md)")
+        .range(0.0, 1e-4)
+        .applies_when("filter", {"mekf"});
+    t.parameter("filter_mag_ref_correlation", &D::filter_mag_ref_correlation, "s",
+                "mekf: correlation time of the reference field's error along the orbit; each field update weighs "
+                "it as rms^2 (2 tau / dt) T / (T + tau), T the filter's memory (its attitude variance over the rate "
+                "the process noise adds to it), in quadrature with filter_mag_ref_sigma; 0 = not modelled")
+        .range(0.0, 1e5)
+        .applies_when("filter", {"mekf"});
     t.parameter("filter_mag_sigma_calibrated", &D::filter_mag_sigma_calibrated, "T",
                 "mekf: filter_mag_sigma once the in-flight magnetometer calibration applies (0 = filter_mag_sigma)")
         .range(0.0, 1e-4)
@@ -832,9 +845,10 @@ void check_onboard_state(const OnboardState<T>& s, const std::string& name) {
     const T filter_scalars[] = {f.q.x,       f.q.y,           f.q.z,           f.q.w,           f.q_first.x,
                                 f.q_first.y, f.q_first.z,     f.q_first.w,     f.omega[0],      f.omega[1],
                                 f.omega[2],  f.mag_offset[0], f.mag_offset[1], f.mag_offset[2], f.panel_scale,
-                                f.t_first,   f.t_last};
+                                f.t_first,   f.t_last,        f.memory};
     for (const T x : filter_scalars) fmu::require_finite(static_cast<double>(x), name + ".filter");
     for (const T x : f.p) fmu::require_finite(static_cast<double>(x), name + ".filter.p");
+    if (f.memory < T(0)) throw fmu::Error("restored FMU state: " + name + ".filter.memory is negative");
     const MekfWatch<T>& w = f.watch;
     const MekfSunWatch<T>& sw = f.sun_watch;
     const T watch[] = {w.sum[0], w.sum[1], w.sum[2], w.weight, w.noise,     w.spread,

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cmath>
 #include <random>
 
@@ -13,9 +14,12 @@
 #include "attitude_estimator/onboard_computer.hpp"
 #include "attitude_estimator/onboard_field.hpp"
 #include "attitude_estimator/onboard_sun.hpp"
+#include "attitude_estimator/reference_error.hpp"
 #include "environment/earth_rotation.hpp"
 #include "environment/geomagnetic_field.hpp"
 #include "environment/time_scales.hpp"
+#include "orbit/element_age.hpp"
+#include "orbit/orbit_classes.hpp"
 #include "orbit/sgp4.hpp"
 #include "orbit/tle.hpp"
 #include "ordered_draws.hpp"
@@ -147,6 +151,36 @@ TEST(OnboardField, TruncationErrorFallsWithDegree) {
     }
 }
 
+// The ground's number for the degrees a model leaves out (omitted_field_rms) against the synthesis it stands for:
+// the rms per axis of the whole model minus the degree-8 one over 4000 points drawn uniformly on the sphere, at the
+// robustness campaign's lowest and highest altitudes (420 and 650 km; Monte Carlo error about 2 %), and against
+// the spectrum summed independently from ground/data/IGRF14.SHC's 2025.0 column (Python, the formula of the
+// header: 40.4 and 27.8 nT per axis).
+TEST(OnboardField, OmittedDegreesRmsIsTheSynthesisOverTheSphere) {
+    std::mt19937 rng(13);
+    std::normal_distribution<double> n(0.0, 1.0);
+    const ae::FieldModel<double> full = ae::make_field_model<double>(13), eight = ae::make_field_model<double>(8);
+    const struct { double altitude, spectrum; } cases[] = {{420e3, 40.4e-9}, {650e3, 27.8e-9}};
+    for (const auto& c : cases) {
+        const double radius = 6371.2e3 + c.altitude;
+        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+        const int count = 4000;
+        for (int k = 0; k < count; ++k) {
+            const Eigen::Vector3d r = ordered_draws::vector3(n, rng).normalized() * radius;
+            const Eigen::Vector3d d = eig(ae::field_ecef(full, ae::test::to_vec<double>(r), 2025.0)) -
+                                      eig(ae::field_ecef(eight, ae::test::to_vec<double>(r), 2025.0));
+            sum += d.cwiseProduct(d);
+        }
+        const double synthesis = std::sqrt(sum.sum() / (3.0 * count));
+        const double rms = ae::omitted_field_rms(8, radius, 2025.0);
+        EXPECT_NEAR(rms, synthesis, 0.05 * synthesis) << c.altitude;
+        EXPECT_NEAR(rms, c.spectrum, 0.05e-9) << c.altitude;
+    }
+    // Nothing is omitted from the whole model, and more is omitted from a lower degree.
+    EXPECT_EQ(ae::omitted_field_rms(13, 6948e3, 2026.0), 0.0);
+    EXPECT_GT(ae::omitted_field_rms(6, 6948e3, 2026.0), ae::omitted_field_rms(8, 6948e3, 2026.0));
+}
+
 // The on-board element sets of the leo_orbit study (attitude_estimator/study/older_tle.py from the truth's
 // set, 24 h and 72 h older) propagated by SGP4 to the two orbits after the truth's epoch: the position
 // error the age makes (TEME, both). Printed for docs/onboard_references.md; bounded by the along-track
@@ -185,5 +219,59 @@ TEST(OnboardOrbit, OlderElementSetsMissTheTruthByTheirAge) {
         EXPECT_GT(worst, previous);
         EXPECT_LT(worst, 50.0);
         previous = worst;
+    }
+}
+
+// The ground's figure for the reference's error along the computer's orbit (reference_error.hpp) against what the
+// aged set does: the truth's set (circular, B* 1.5e-4, at the bundled epoch) and the computer's made 24 h older
+// (orbit::older_set, as the block derives it), both by SGP4 over the first period; their distance against the
+// set's own drag displacement, and the degree-8 model's field at the two positions against the position part.
+// Each comes from another computation (two sets, two positions, the model evaluated there), not from the
+// function's difference along one orbit.
+TEST(OnboardOrbit, TheReferenceErrorIsWhatTheAgedSetMakesOfTheField) {
+    const double epoch = 2461119.5;  // 2026-03-20 0 h UTC, leo_orbit's
+    const ae::CalendarInstant clock{};
+    const ae::OnboardClock<double> c = ae::make_onboard_clock<double>(clock);
+    const ae::FieldModel<double> model = ae::make_field_model<double>(8);
+    for (const double altitude : {420.0, 570.0}) {
+        const orbit::Tle truth = orbit::circular_orbit_set(epoch, altitude, 51.6, 10.0, 30.0, 1.5e-4);
+        const orbit::Tle onboard = orbit::older_set(truth, 86400.0);
+        const ae::ReferenceFieldError e =
+            ae::reference_field_error(model, clock, onboard.mean_elements<double>(), onboard.epoch_jd_utc);
+        orbit::Sgp4<double> a, b;
+        ASSERT_EQ(a.initialize(truth.mean_elements<double>()), orbit::Sgp4Status::ok);
+        ASSERT_EQ(b.initialize(onboard.mean_elements<double>()), orbit::Sgp4Status::ok);
+        const double period = 2.0 * kPi * std::sqrt(std::pow(b.semi_major_axis_km(), 3) / 398600.4418);
+        double distance = 0.0, field = 0.0;
+        const int n = 200;
+        for (int k = 0; k < n; ++k) {
+            const double t = period * k / n;
+            orbit::OrbitState<double> x, y;
+            ASSERT_EQ(a.propagate(t / 60.0, x), orbit::Sgp4Status::ok);
+            ASSERT_EQ(b.propagate(1440.0 + t / 60.0, y), orbit::Sgp4Status::ok);
+            distance += 1e6 * (x.position_km - y.position_km).squaredNorm();
+            // TEME to Earth-fixed by GMST, the same turn for both: the difference is the positions'.
+            const double g = ae::gmst_at(c, t);
+            const Eigen::Matrix3d r3 = Eigen::AngleAxisd(-g, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+            const Eigen::Vector3d bx =
+                eig(ae::field_ecef(model, ae::test::to_vec<double>(1e3 * r3 * x.position_km), 2026.2));
+            const Eigen::Vector3d by =
+                eig(ae::field_ecef(model, ae::test::to_vec<double>(1e3 * r3 * y.position_km), 2026.2));
+            field += (bx - by).squaredNorm();
+        }
+        distance = std::sqrt(distance / n);
+        field = std::sqrt(field / (3.0 * n));
+        std::printf(
+            "%.0f km: aged set off by %.0f m (drag displacement %.0f m); field %.1f nT per axis (estimate "
+            "%.1f nT); truncation %.1f nT; in all %.1f nT\n",
+            altitude, distance, e.drag_displacement, field * 1e9, e.position * 1e9, e.truncation * 1e9, e.rms * 1e9);
+        EXPECT_NEAR(e.drag_displacement, distance, 0.05 * distance) << altitude;
+        EXPECT_NEAR(e.position, field, 0.1 * field) << altitude;
+        EXPECT_NEAR(e.truncation, ae::omitted_field_rms(8, 1e3 * b.semi_major_axis_km(), 2026.2), 1e-11);
+        EXPECT_NEAR(e.rms, std::hypot(e.truncation, e.position), 1e-15);
+        // The firmware's float model: the same figure (its field evaluations round at pT, the error is nT).
+        const ae::ReferenceFieldError f = ae::reference_field_error(
+            ae::make_field_model<float>(8), clock, onboard.mean_elements<double>(), onboard.epoch_jd_utc);
+        EXPECT_NEAR(f.rms, e.rms, 0.01 * e.rms);
     }
 }

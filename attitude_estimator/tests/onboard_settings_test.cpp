@@ -79,6 +79,8 @@ std::vector<double> numbers(const OnboardSettings<double>& s) {
          f.sun_correlation_time,
          static_cast<double>(f.sun_turn_correlation),
          f.mag_ref_sigma,
+         f.mag_ref_rms,
+         f.mag_ref_correlation,
          f.mag_sigma_calibrated,
          f.mag_sigma_calibrated_eclipse,
          f.mag_hard_iron_sigma,

@@ -156,16 +156,18 @@ TEST(E2eRobustnessCampaign, ASunNearTheFieldsLineIsNotValidBeforeTheSunHasToldTh
 // sun's watch it was valid from 345 s while 90-165 deg off; the face tests, judging the faces against that
 // prediction, declared three healthy faces, and once the field's watch reset it (419 s) the faces left gave no sun
 // to restart from: lost for good. As bundled the sun's watch restarts it at about 300 s, nothing is declared, and it
-// is valid from 463 s. Measured (1 s rows, 2026-12-06): over the whole run, while valid (11,238 rows), the largest
-// error 2.04 deg (in the first orbit), NEES/dof 0.63, coverage 100 %; the second orbit meets the four aims (NEES/dof
-// 0.65 sunlit, 0.72 eclipse, coverage 100 % both, p95 0.28 / 0.18 deg). To 1200 s without the sun's watch: while valid 150 deg, NEES/dof 8496, coverage 0 % (74
-// rows), three faces declared. The test takes about 4 s in the release build, 36 s in CI's test build.
+// is valid from 460 s. Measured (1 s rows, 2026-12-06, the reference's error derived for the orbit and weighed for
+// the filter's memory): over the whole run, while valid (11,241 rows), the largest error 3.89 deg, in the first valid
+// second (460 s, its 3-sigma bound 9.99 deg; 2.04 deg with the former 2.4 uT white equivalent), NEES/dof 0.74,
+// coverage 99.3 %; the second orbit meets the four aims (NEES/dof 0.72 sunlit, 1.10 eclipse, coverage 100 / 96.3 %,
+// p95 0.29 / 0.22 deg). To 1200 s without the sun's watch: while valid 109 deg, NEES/dof 3536, coverage 0 %, four
+// faces declared. The test takes about 4 s in the release build, 36 s in CI's test build.
 TEST(E2eRobustnessCampaign, AFilterLostAboutTheFieldIsFoundByTheSunsWatchBeforeAnyFaceIsJudged) {
     const campaign::CampaignSpec spec = campaign::read_spec(PVATT_SYSTEMS_DIR "/../campaigns/robustness.toml");
     const std::map<std::string, double> watched = while_valid(42, 23, spec.stop_time.value(), {});
     EXPECT_EQ(watched.at("declarations.declared"), 0.0);
     EXPECT_EQ(watched.at("filter_resets.final"), 1.0);
-    EXPECT_LT(watched.at("error_valid.max"), 3.0);
+    EXPECT_LT(watched.at("error_valid.max"), 5.0);  // deg: within the first valid bound, not the 90-165 deg lost
     EXPECT_GE(watched.at("nees_valid.chi2_99"), 95.0);
     std::printf("  its second orbit: NEES/dof %.2f / %.2f, coverage %.1f / %.1f %%, p95 %.2f / %.2f deg\n",
                 watched.at("nees_sunlit.per_dof"), watched.at("nees_eclipse.per_dof"),

@@ -430,6 +430,7 @@ void mekf_propagate(MekfState<T>& s, T dt, const MekfConfig<T>& c) noexcept {
     const T h = dt / static_cast<T>(n);
     const T qa = c.attitude_noise * c.attitude_noise, qw = c.rate_noise * c.rate_noise;
     MatN<T> p = map_p(s);
+    const T attitude_before = p.template block<3, 3>(kMekfAttitude, kMekfAttitude).trace();
     MatN<T> q = MatN<T>::Zero();
     for (int i = 0; i < 3; ++i) {
         q(kMekfAttitude + i, kMekfAttitude + i) = qa * h + qw * h * h * h / T(3);
@@ -479,6 +480,8 @@ void mekf_propagate(MekfState<T>& s, T dt, const MekfConfig<T>& c) noexcept {
         w = w_next;
     }
     for (int i = 0; i < 3; ++i) s.omega[i] = w(i);
+    const T added = p.template block<3, 3>(kMekfAttitude, kMekfAttitude).trace() - attitude_before;
+    s.memory = added > T(0) && dt > T(0) ? attitude_before * dt / added : T(0);
     store_p<T>(s, p);
     s.t_last += dt;
 }
@@ -540,6 +543,18 @@ template <class T>
 T turn_correlation_time(const MekfState<T>& s, T longest) {
     const T rate = std::sqrt(squared_norm(s.omega));
     return rate * longest > T(1) ? T(1) / rate : longest;
+}
+
+// The reference field's σ for one field update `step` after the last (MekfConfig::mag_ref_rms): its correlated
+// error weighted for the filter's memory, in quadrature with mag_ref_sigma.
+template <class T>
+T reference_field_sigma(const MekfState<T>& s, T step, const MekfConfig<T>& c) {
+    if (!(c.mag_ref_rms > T(0) && c.mag_ref_correlation > T(0))) return c.mag_ref_sigma;
+    const T tau = c.mag_ref_correlation;
+    T share = step > T(0) ? T(2) * tau / step : T(1);
+    if (s.memory > T(0)) share *= s.memory / (s.memory + tau);
+    share = std::max(share, T(1));
+    return std::sqrt(c.mag_ref_sigma * c.mag_ref_sigma + c.mag_ref_rms * c.mag_ref_rms * share);
 }
 
 // MekfConfig::mag_turn_fluctuation over one step.
@@ -726,6 +741,7 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
             mag_config.mag_sigma = c.mag_sigma_calibrated_eclipse;
         if (!in.mag_calibrated && c.mag_turn_fluctuation > T(0) && step > T(0))
             mag_config.mag_sigma = turning_field_sigma(s, step, c);
+        mag_config.mag_ref_sigma = reference_field_sigma(s, step, c);
         const T polarity = holds_hard_iron(s, c) ? T(1) : in.polarity;
         // The watch needs the three axes (an excluded axis leaves no field to turn into inertial axes).
         if (c.watch_time > T(0) && in.mag_axes == 7) watch_field(s, in, polarity, mag_config);

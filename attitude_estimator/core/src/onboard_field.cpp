@@ -29,6 +29,20 @@ FieldModel<T> make_field_model(std::int32_t degree) noexcept {
     return model;
 }
 
+double omitted_field_rms(std::int32_t degree, double radius, double year) noexcept {
+    // From the coefficients themselves, not a model of degree 13: a 6 kB temporary the firmware's stack should
+    // not carry.
+    const double dt = year - ground::kIgrfFirstYear, ratio = kReferenceRadius / radius;
+    const double span = ground::kIgrfLastYear - ground::kIgrfFirstYear;
+    double mean_square = 0.0;  // nT²
+    for (const ground::IgrfCoefficient& k : ground::kIgrf14Coefficients) {
+        if (k.n <= degree) continue;
+        const double value = k.at_2025 + (k.at_2030 - k.at_2025) / span * dt;
+        mean_square += (k.n + 1) * std::pow(ratio, 2 * k.n + 4) * value * value;
+    }
+    return 1e-9 * std::sqrt(mean_square / 3.0);
+}
+
 template <class T>
 Vec3<T> field_ecef(const FieldModel<T>& model, const Vec3<T>& r_ecef, T year) noexcept {
     const int degree = model.degree;

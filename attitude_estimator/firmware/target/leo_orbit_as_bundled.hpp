@@ -47,7 +47,8 @@ inline void leo_orbit_3u(attitude_estimator::EstimatorData& d, bool detect, bool
     d.filter_sun_sigma = 0.5;
     d.filter_mag_sigma = 100e-6;
     d.filter_mag_hard_iron = 10e-6;
-    d.filter_mag_ref_sigma = 2.4e-6;
+    d.filter_mag_ref_sigma = 0.0;
+    d.filter_mag_ref_correlation = 150.0;  // the reference's error derived for this orbit (reference_error.hpp)
     d.filter_attitude_noise = 1e-6;
     d.filter_rate_noise = 5e-7;
     d.filter_start_rate = 0.0873;

@@ -101,6 +101,12 @@ struct EstimatorData {
     std::array<double, 4> filter_sun_correlation{};
     bool filter_sun_turn = false;                                      // MekfConfig::sun_turn_correlation
     double filter_mag_ref_sigma = MekfConfig<double>{}.mag_ref_sigma;  // T: 1σ per axis of the reference field's error
+    // MekfConfig::mag_ref_rms and mag_ref_correlation: the reference's error along the orbit, rms per axis (T; 0:
+    // with the on-board references, what the on-board field model's degree leaves of IGRF-14 at the on-board
+    // orbit's semi-major axis, omitted_field_rms, as the ground computes it for the uplink) and its correlation
+    // time (s; 0: not modelled, filter_mag_ref_sigma alone).
+    double filter_mag_ref_rms = 0.0;
+    double filter_mag_ref_correlation = 0.0;
     double filter_mag_sigma_calibrated = MekfConfig<double>{}.mag_sigma_calibrated;  // T: once calibrated (0: the same)
     double filter_mag_sigma_eclipse =
         MekfConfig<double>{}.mag_sigma_calibrated_eclipse;                   // T: calibrated, no sun (0: the same)

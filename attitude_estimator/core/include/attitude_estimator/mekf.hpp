@@ -50,6 +50,16 @@ struct MekfConfig {
     // 1σ per axis of the reference field model (the on-board model against the real field), T: adds in
     // quadrature to mag_sigma.
     T mag_ref_sigma = T(0);
+    // The reference field's error as what it is along an orbit (docs/filter.md, "The reference's error by the
+    // orbit"): rms mag_ref_rms per axis (T), correlated over mag_ref_correlation (s; 0: not modelled). Weighted as
+    // white noise of the same information, σ² 2τ/Δt, a correlated error is right only for a filter whose memory
+    // is long against τ. For any memory T the error of an exponentially weighted average of a first-order
+    // Gauss–Markov error is σ² τ/(T + τ), and white noise of variance R per Δt leaves R Δt/(2T); each field update
+    // therefore weighs it as σ² (2τ/Δt) T/(T + τ), never below σ², T the filter's own memory (MekfState::memory).
+    // With a short memory (a strong process noise) the white equivalent alone overstates the error the
+    // estimate keeps, and the covariance turns cautious. Adds in quadrature to mag_ref_sigma.
+    T mag_ref_rms = T(0);
+    T mag_ref_correlation = T(0);
     // mag_sigma once the field comes calibrated in flight (MekfSampleInputs::mag_calibrated; 0: mag_sigma):
     // an uncalibrated HMC2003 carries its 0.3 % cross-axis coupling (0.1 µT), a calibrated one little more
     // than its 12-bit steps (0.12 µT / √12).
@@ -209,6 +219,10 @@ struct MekfState {
     // reset (the sum stops: it cannot grow over a mission).
     std::array<T, 6> sun_information{};
     std::int32_t field_axis_seen = 0;
+    // s: the filter's memory, its attitude variance (tr P_θθ) over the rate the last propagation added to it
+    // (what the process noise forgets per second); 0 while not known or not forgetting (MekfConfig::mag_ref_rms
+    // then counts as white noise of the same information).
+    T memory = T(0);
 };
 
 // The outcome of one measurement update.

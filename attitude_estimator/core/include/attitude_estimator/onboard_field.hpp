@@ -31,6 +31,15 @@ FieldModel<T> make_field_model(std::int32_t degree) noexcept;
 template <class T>
 Vec3<T> field_ecef(const FieldModel<T>& model, const Vec3<T>& r_ecef, T year) noexcept;
 
+// What a model of `degree` leaves out of IGRF-14 (the degrees above it, to 13), as the rms per axis over a sphere
+// of radius `radius` (m, geocentric) at a decimal year, T. From the Lowes–Mauersberger spectrum (Lowes 1966):
+// the mean of |B_n|² over the sphere of radius r is R_n = (n + 1) (a/r)^(2n+4) Σ_m (g_n^m² + h_n^m²), a the
+// reference radius, and the degrees are orthogonal over the sphere, so the omitted field's mean square is
+// their sum; a third of it per axis. Each degree falls as (a/r)^(n+2): from 420 to 650 km the omitted
+// degrees above 8 fall from 40 to 28 nT per axis. The ground's number for the reference field's error along
+// an orbit (MekfConfig::mag_ref_rms), not evaluated in flight.
+double omitted_field_rms(std::int32_t degree, double radius, double year) noexcept;
+
 extern template FieldModel<float> make_field_model(std::int32_t) noexcept;
 extern template FieldModel<double> make_field_model(std::int32_t) noexcept;
 extern template Vec3<float> field_ecef(const FieldModel<float>&, const Vec3<float>&, float) noexcept;
