@@ -93,6 +93,28 @@ TYPED_TEST(EstimatorCoreMekfReferenceError, AMemoryShorterThanOneSampleKeepsItsO
     EXPECT_NEAR(one.p[0], across_field(before, r), tol<T>(1e-3, 1e-9) * across_field(before, r));
 }
 
+// A part of the field known only within a range (MekfSampleInputs::mag_unknown_sigma: an excluded face's string)
+// is weighed the same way, correlated over a radian of the tumble at most the reference's τ (here the rate is 0:
+// τ itself), in quadrature with the reference's error.
+TYPED_TEST(EstimatorCoreMekfReferenceError, AFieldKnownOnlyWithinARangeIsWeighedForTheMemoryToo) {
+    using T = TypeParam;
+    const double qa = kStartSigma * kStartSigma / 100.0, unknown = 200e-9;
+    const MekfConfig<T> c = config<T>(std::sqrt(qa), kTau);
+    MekfState<T> s;
+    mekf_start(s, Quaternion<T>{T(0), T(0), T(0), T(1)}, Vec3<T>{}, T(10), c);
+    MekfSampleInputs<T> in;
+    in.t = T(10 + kStep);
+    in.mag_valid = true;
+    in.mag_ref = {T(0), T(0), T(kField)};
+    in.mag_body = in.mag_ref;
+    in.mag_unknown_sigma = T(unknown);
+    mekf_sample(s, in, c);
+    const double share = (2.0 * kTau / kStep) * 100.0 / (100.0 + kTau);
+    const double r = kMagSigma * kMagSigma + (kRms * kRms + unknown * unknown) * share;
+    const double before = kStartSigma * kStartSigma + qa * kStep;
+    EXPECT_NEAR(attitude_variances(s)[0], across_field(before, r), tol<T>(1e-3, 1e-9) * across_field(before, r));
+}
+
 TYPED_TEST(EstimatorCoreMekfReferenceError, WithoutACorrelationTheRmsIsNotUsed) {
     using T = TypeParam;
     MekfConfig<T> c = config<T>(0.0, 0.0);

@@ -545,16 +545,27 @@ T turn_correlation_time(const MekfState<T>& s, T longest) {
     return rate * longest > T(1) ? T(1) / rate : longest;
 }
 
-// The reference field's σ for one field update `step` after the last (MekfConfig::mag_ref_rms): its correlated
-// error weighted for the filter's memory, in quadrature with mag_ref_sigma.
+// The variance one update `step` after the last gives an error of rms σ correlated over τ, for the filter's memory
+// T (MekfConfig::mag_ref_rms): σ² (2τ/step) T/(T + τ), never below σ²; the white equivalent where T is not known.
 template <class T>
-T reference_field_sigma(const MekfState<T>& s, T step, const MekfConfig<T>& c) {
-    if (!(c.mag_ref_rms > T(0) && c.mag_ref_correlation > T(0))) return c.mag_ref_sigma;
-    const T tau = c.mag_ref_correlation;
+T memory_weighted_variance(const MekfState<T>& s, T sigma, T tau, T step) {
     T share = step > T(0) ? T(2) * tau / step : T(1);
     if (s.memory > T(0)) share *= s.memory / (s.memory + tau);
-    share = std::max(share, T(1));
-    return std::sqrt(c.mag_ref_sigma * c.mag_ref_sigma + c.mag_ref_rms * c.mag_ref_rms * share);
+    return sigma * sigma * std::max(share, T(1));
+}
+
+// The reference field's σ for one field update `step` after the last (MekfConfig::mag_ref_rms), in quadrature with
+// mag_ref_sigma, and a part of the field known only within a range (MekfSampleInputs::mag_unknown_sigma).
+template <class T>
+T reference_field_sigma(const MekfState<T>& s, T step, T unknown, const MekfConfig<T>& c) {
+    T variance = c.mag_ref_sigma * c.mag_ref_sigma;
+    if (c.mag_ref_rms > T(0) && c.mag_ref_correlation > T(0))
+        variance += memory_weighted_variance(s, c.mag_ref_rms, c.mag_ref_correlation, step);
+    if (unknown > T(0)) {
+        const T longest = c.mag_ref_correlation > T(0) ? c.mag_ref_correlation : T(0);
+        variance += memory_weighted_variance(s, unknown, turn_correlation_time(s, longest), step);
+    }
+    return std::sqrt(variance);
 }
 
 // MekfConfig::mag_turn_fluctuation over one step.
@@ -741,7 +752,7 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
             mag_config.mag_sigma = c.mag_sigma_calibrated_eclipse;
         if (!in.mag_calibrated && c.mag_turn_fluctuation > T(0) && step > T(0))
             mag_config.mag_sigma = turning_field_sigma(s, step, c);
-        mag_config.mag_ref_sigma = reference_field_sigma(s, step, c);
+        mag_config.mag_ref_sigma = reference_field_sigma(s, step, in.mag_unknown_sigma, c);
         const T polarity = holds_hard_iron(s, c) ? T(1) : in.polarity;
         // The watch needs the three axes (an excluded axis leaves no field to turn into inertial axes).
         if (c.watch_time > T(0) && in.mag_axes == 7) watch_field(s, in, polarity, mag_config);

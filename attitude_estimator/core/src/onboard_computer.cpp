@@ -130,8 +130,9 @@ bool holds_body_fixed_field(const OnboardState<T>& s, const OnboardSettings<T>& 
 template <class T>
 void update_filter(OnboardState<T>& s, const OnboardInputs<T>& in, const OnboardSettings<T>& settings, T t,
                    const SampleResult<T>& r, const EstimatorConfig<T>& nominal, T polarity, bool mag_valid,
-                   std::uint8_t mag_axes, OnboardOutputs<T>& out) {
+                   std::uint8_t mag_axes, T mag_unknown_sigma, OnboardOutputs<T>& out) {
     MekfSampleInputs<T> f;
+    f.mag_unknown_sigma = mag_unknown_sigma;
     f.t = t;
     f.attitude_valid = r.valid;
     f.q_single = r.q;
@@ -436,16 +437,24 @@ Vec3<T> string_field(const OnboardInputs<T>& in, const OnboardSettings<T>& setti
 // part out. Counted as 0, as before 2026-12-06 (third session), an appendage's shadow on +x left its string's
 // field (a few 100 nT, following the sun on the face) in the field weighed at 1.5 µT: faults.toml's appendage
 // runs 1.97 times the control's sunlit p95 (median; 13 of 20 above 1.5). Without a prediction (before the
-// start, after a reset): 0.
+// start, after a reset): 0. What the string carries is known only between the two: `unknown` is their difference
+// (A), whose field the filter weighs as an error (string_field_unknown_sigma; docs/faults.md, "An excluded face's
+// unknown string field").
 template <class T>
-std::array<T, 6> excluded_face_currents(const OnboardState<T>& s, const OnboardInputs<T>& in,
-                                        const OnboardSettings<T>& settings, const EstimatorConfig<T>& nominal, T t,
-                                        std::uint8_t faces_out, bool umbra) {
+struct ExcludedFaceCurrents {
     std::array<T, 6> current{};
-    if (faces_out == 0) return current;
+    std::array<T, 6> unknown{};
+};
+
+template <class T>
+ExcludedFaceCurrents<T> excluded_face_currents(const OnboardState<T>& s, const OnboardInputs<T>& in,
+                                               const OnboardSettings<T>& settings, const EstimatorConfig<T>& nominal,
+                                               T t, std::uint8_t faces_out, bool umbra) {
+    ExcludedFaceCurrents<T> e;
+    if (faces_out == 0) return e;
     FaultObservation<T> o;
     predict_at_sensor(s, in, settings, t, o);
-    if (!o.predicted) return current;
+    if (!o.predicted) return e;
     for (std::size_t k = 0; k < 6; ++k) {
         if (!(faces_out >> k & 1u)) continue;
         const T cos_beta = face_cos(o.sun_body, k);
@@ -453,9 +462,21 @@ std::array<T, 6> excluded_face_currents(const OnboardState<T>& s, const OnboardI
             umbra ? T(0)
                   : nominal.sun.i_face_norm[k] * panel_response::response_from_cos(nominal.sun.response, cos_beta);
         const T read = convert(nominal.face_adc[k], in.i_face[k]).value;
-        current[k] = std::isfinite(read) ? std::min(read, light) : T(0);
+        e.current[k] = std::isfinite(read) ? std::min(read, light) : T(0);
+        e.unknown[k] = std::isfinite(read) ? std::abs(read - light) : light;
     }
-    return current;
+    return e;
+}
+
+// The field of the excluded faces' strings left unknown (ExcludedFaceCurrents::unknown), as 1σ per axis for the
+// filter: the strings' field Σ K_k u_k with the error anywhere between none and all of it, its mean square |v|²/3
+// put on each axis.
+template <class T>
+T string_field_unknown_sigma(const OnboardSettings<T>& settings, const std::array<T, 6>& unknown) {
+    Vec3<T> v{};
+    for (std::size_t k = 0; k < 6; ++k)
+        for (std::size_t j = 0; j < 3; ++j) v[j] += settings.string_field_per_amp[k][j] * unknown[k];
+    return std::sqrt(squared_norm(v) / T(3));
 }
 
 // An excluded axis is read at the filter's prediction of it when there is one, else at its null (so that its
@@ -553,6 +574,7 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
     // Panel faults: the umbra 100 km inside the Earth's shadow cylinder by the on-board orbit (kShadowMarginKm).
     const T shadow_depth = shadow_depth_km(out.references.position, in.sun_ref);
     const bool umbra = shadow_depth > kShadowMarginKm<T>;
+    const ExcludedFaceCurrents<T> excluded = excluded_face_currents(s, in, settings, nominal, t, faces_out, umbra);
     const SampleInputs<T> sample_in{
         .i_sh = scaled_in.i_sh,
         .i_face = scaled_in.i_face,
@@ -564,8 +586,7 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
         .mag_offset = offset,
         .mag_gain = s.mag_cal.gain,
         .mag_cal_offset = s.mag_cal.offset,
-        .mag_known_field = string_field(in, settings, nominal, faces_out,
-                                        excluded_face_currents(s, in, settings, nominal, t, faces_out, umbra))};
+        .mag_known_field = string_field(in, settings, nominal, faces_out, excluded.current)};
     // Excluded faces read nothing; an excluded axis reads its null, so that its rail does not take the
     // other two with it (its component is not used below).
     const std::uint8_t axes_out = detecting ? excluded_axes(s.faults) : std::uint8_t{0};
@@ -674,7 +695,8 @@ OnboardOutputs<T> onboard_sample(OnboardState<T>& s, const OnboardInputs<T>& giv
     update_rates(s, settings, t, out.sample, out);
     if (settings.filter == FilterKind::mekf)
         update_filter(s, scaled_in, settings, t, out.sample, nominal, reading_polarity, filter_mag_valid,
-                      static_cast<std::uint8_t>(~axes_out & 7u), out);
+                      static_cast<std::uint8_t>(~axes_out & 7u), string_field_unknown_sigma(settings, excluded.unknown),
+                      out);
     if (settings.filter == FilterKind::mekf && detecting) hold_filter(s, t);
     if (detecting && settings.mag_calibration) hold_calibration(s, t);
     return out;

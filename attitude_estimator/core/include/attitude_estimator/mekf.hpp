@@ -296,6 +296,10 @@ struct MekfSampleInputs {
     T air_density = T(0);         // kg/m³: the on-board table's density at that orbit's altitude (drag; 0: unknown)
     bool mag_calibrated = false;  // mag_body comes through the in-flight calibration (mag_sigma_calibrated)
     std::uint8_t mag_axes = 7;    // the magnetometer axes to use (bit k = axis k; fault_detection.hpp)
+    // T per axis: a part of the field known only within a range (an excluded face's string field, between its
+    // reading and its predicted light: onboard_computer.cpp), correlated over a radian of the tumble (1/|ω̂|, at
+    // most mag_ref_correlation) and weighed as the reference's error is, for the filter's memory. 0: none.
+    T mag_unknown_sigma = T(0);
     // Face update (only with config.estimate_scale): relative responses and the faces to use.
     std::array<T, 6> face_r{};
     std::array<T, 6> face_albedo{};  // relative albedo on each face (cones' fit), taken out of face_r's model
