@@ -473,6 +473,7 @@ ExcludedFaceCurrents<T> excluded_face_currents(const OnboardState<T>& s, const O
 // put on each axis.
 template <class T>
 T string_field_unknown_sigma(const OnboardSettings<T>& settings, const std::array<T, 6>& unknown) {
+    if (unknown == std::array<T, 6>{}) return T(0);  // no face excluded: the usual sample pays nothing
     Vec3<T> v{};
     for (std::size_t k = 0; k < 6; ++k)
         for (std::size_t j = 0; j < 3; ++j) v[j] += settings.string_field_per_amp[k][j] * unknown[k];
