@@ -187,6 +187,10 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
                 "the process noise adds to it), in quadrature with filter_mag_ref_sigma; 0 = not modelled")
         .range(0.0, 1e5)
         .applies_when("filter", {"mekf"});
+    t.calculated_parameter("filter_mag_ref_rms_used", &D::filter_mag_ref_rms_used, "T",
+                           "mekf: the reference field's error rms per axis the filter weighs: filter_mag_ref_rms, or "
+                           "what the ground derives for the on-board orbit when it is 0 (0 without "
+                           "filter_mag_ref_correlation)");
     t.parameter("filter_mag_sigma_calibrated", &D::filter_mag_sigma_calibrated, "T",
                 "mekf: filter_mag_sigma once the in-flight magnetometer calibration applies (0 = filter_mag_sigma)")
         .range(0.0, 1e-4)
@@ -802,6 +806,7 @@ void EstimatorBlock::configure() {
     }
     settings_ = onboard_settings_from<double>(data());
     settings_float_ = onboard_settings_from<float>(data());
+    d.filter_mag_ref_rms_used = settings_.mekf.mag_ref_correlation > 0.0 ? settings_.mekf.mag_ref_rms : 0.0;
     spin_.configure(d.sample_period, d.spin_window);
 }
 

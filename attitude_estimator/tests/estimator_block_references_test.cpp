@@ -177,6 +177,31 @@ TEST(EstimatorFmuReferences, UplinkAgeIsTheStudyScriptsOlderSet) {
     EXPECT_GT(fresh_worst, 2e-9);
 }
 
+// filter_mag_ref_rms_used: what the block derives for the computer's own orbit and reports (leo_orbit's set made
+// 24 h older, degree 8): 31.6 nT per axis, the figure of the degree-8 spectrum at 570 km (31.3 nT, summed apart from
+// ground/data/IGRF14.SHC) and the aged set's field error measured against the truth's set (4.7 nT) in quadrature
+// (OnboardOrbit.TheReferenceErrorIsWhatTheAgedSetMakesOfTheField); a given rms is reported as given, and without a
+// correlation time nothing is derived.
+TEST(EstimatorFmuReferences, TheReferencesErrorDerivedForTheOrbitIsReported) {
+    const auto used = [](double rms, double correlation) {
+        Simulation sim;
+        sim.data().reference_source = ReferenceSource::onboard;
+        sim.data().tle_elements = {2461119.5, 14.98524078, 0.0012, 64.9, 0.0, 90.0, 270.0, 1.5e-4};
+        sim.data().uplink_age = 86400.0;
+        sim.data().sample_period = 1.0;
+        sim.data().filter = FilterKind::mekf;
+        sim.data().filter_mag_ref_rms = rms;
+        sim.data().filter_mag_ref_correlation = correlation;
+        sim.start(0.0);
+        return sim.data().filter_mag_ref_rms_used;
+    };
+    const double derived = used(0.0, 150.0);
+    std::printf("leo_orbit's computer: the reference's error %.2f nT per axis\n", derived * 1e9);
+    EXPECT_NEAR(derived, std::hypot(31.3e-9, 4.7e-9), 0.4e-9);
+    EXPECT_EQ(used(50e-9, 150.0), 50e-9);
+    EXPECT_EQ(used(0.0, 0.0), 0.0);
+}
+
 // clock_offset: the computer's clock reads clock_epoch_* plus it.
 TEST(EstimatorFmuReferences, ClockOffsetMovesTheClock) {
     Simulation offset, later;
