@@ -43,7 +43,7 @@ struct OneStep {
 };
 
 template <class T>
-OneStep after_one_step(const MekfConfig<T>& c) {
+OneStep after_one_step(const MekfConfig<T>& c, double unknown = 0.0) {
     MekfState<T> s;
     mekf_start(s, Quaternion<T>{T(0), T(0), T(0), T(1)}, Vec3<T>{}, T(10), c);
     MekfSampleInputs<T> in;
@@ -51,6 +51,7 @@ OneStep after_one_step(const MekfConfig<T>& c) {
     in.mag_valid = true;
     in.mag_ref = {T(0), T(0), T(kField)};
     in.mag_body = in.mag_ref;
+    in.mag_unknown_sigma = T(unknown);
     mekf_sample(s, in, c);
     return {static_cast<double>(s.memory), attitude_variances(s)};
 }
@@ -99,20 +100,11 @@ TYPED_TEST(EstimatorCoreMekfReferenceError, AMemoryShorterThanOneSampleKeepsItsO
 TYPED_TEST(EstimatorCoreMekfReferenceError, AFieldKnownOnlyWithinARangeIsWeighedForTheMemoryToo) {
     using T = TypeParam;
     const double qa = kStartSigma * kStartSigma / 100.0, unknown = 200e-9;
-    const MekfConfig<T> c = config<T>(std::sqrt(qa), kTau);
-    MekfState<T> s;
-    mekf_start(s, Quaternion<T>{T(0), T(0), T(0), T(1)}, Vec3<T>{}, T(10), c);
-    MekfSampleInputs<T> in;
-    in.t = T(10 + kStep);
-    in.mag_valid = true;
-    in.mag_ref = {T(0), T(0), T(kField)};
-    in.mag_body = in.mag_ref;
-    in.mag_unknown_sigma = T(unknown);
-    mekf_sample(s, in, c);
+    const OneStep one = after_one_step(config<T>(std::sqrt(qa), kTau), unknown);
     const double share = (2.0 * kTau / kStep) * 100.0 / (100.0 + kTau);
     const double r = kMagSigma * kMagSigma + (kRms * kRms + unknown * unknown) * share;
     const double before = kStartSigma * kStartSigma + qa * kStep;
-    EXPECT_NEAR(attitude_variances(s)[0], across_field(before, r), tol<T>(1e-3, 1e-9) * across_field(before, r));
+    EXPECT_NEAR(one.p[0], across_field(before, r), tol<T>(1e-3, 1e-9) * across_field(before, r));
 }
 
 TYPED_TEST(EstimatorCoreMekfReferenceError, WithoutACorrelationTheRmsIsNotUsed) {

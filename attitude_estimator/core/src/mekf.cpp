@@ -545,25 +545,29 @@ T turn_correlation_time(const MekfState<T>& s, T longest) {
     return rate * longest > T(1) ? T(1) / rate : longest;
 }
 
-// The variance one update `step` after the last gives an error of rms σ correlated over τ, for the filter's memory
-// T (MekfConfig::mag_ref_rms): σ² (2τ/step) T/(T + τ), never below σ²; the white equivalent where T is not known.
+// What a filter whose memory is T keeps of an error correlated over τ: the information of one correlated over
+// τ T/(T + τ) kept by a long memory (an exponentially weighted average over T of a first-order Gauss–Markov error
+// has variance σ² τ/(T + τ); MekfConfig::mag_ref_rms). τ where T is not known (0).
 template <class T>
-T memory_weighted_variance(const MekfState<T>& s, T sigma, T tau, T step) {
-    T share = step > T(0) ? T(2) * tau / step : T(1);
-    if (s.memory > T(0)) share *= s.memory / (s.memory + tau);
-    return sigma * sigma * std::max(share, T(1));
+T remembered_correlation_time(const MekfState<T>& s, T tau) {
+    return s.memory > T(0) ? tau * s.memory / (s.memory + tau) : tau;
 }
 
 // The reference field's σ for one field update `step` after the last (MekfConfig::mag_ref_rms), in quadrature with
-// mag_ref_sigma, and a part of the field known only within a range (MekfSampleInputs::mag_unknown_sigma).
+// mag_ref_sigma, and a part of the field known only within a range (MekfSampleInputs::mag_unknown_sigma): each the
+// white equivalent of its correlation as the filter's memory keeps it, σ² (2τ/step) T/(T + τ), never below σ².
 template <class T>
 T reference_field_sigma(const MekfState<T>& s, T step, T unknown, const MekfConfig<T>& c) {
     T variance = c.mag_ref_sigma * c.mag_ref_sigma;
-    if (c.mag_ref_rms > T(0) && c.mag_ref_correlation > T(0))
-        variance += memory_weighted_variance(s, c.mag_ref_rms, c.mag_ref_correlation, step);
+    if (c.mag_ref_rms > T(0) && c.mag_ref_correlation > T(0)) {
+        const T tau = remembered_correlation_time(s, c.mag_ref_correlation);
+        const T sigma = white_equivalent_sigma(c.mag_ref_rms, tau, step);
+        variance += sigma * sigma;
+    }
     if (unknown > T(0)) {
-        const T longest = c.mag_ref_correlation > T(0) ? c.mag_ref_correlation : T(0);
-        variance += memory_weighted_variance(s, unknown, turn_correlation_time(s, longest), step);
+        const T tau = remembered_correlation_time(s, turn_correlation_time(s, c.mag_ref_correlation));
+        const T sigma = white_equivalent_sigma(unknown, tau, step);
+        variance += sigma * sigma;
     }
     return std::sqrt(variance);
 }
