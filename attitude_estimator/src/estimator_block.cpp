@@ -191,6 +191,17 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
                            "mekf: the reference field's error rms per axis the filter weighs: filter_mag_ref_rms, or "
                            "what the ground derives for the on-board orbit when it is 0 (0 without "
                            "filter_mag_ref_correlation)");
+    t.parameter("filter_mag_ref_tilt", &D::filter_mag_ref_tilt, "rad",
+                "mekf: the reference field's error along the orbit read as one rotation (rms per axis), a bias of "
+                "the attitude no measurement of the field removes, added to the covariance the filter reports and "
+                "judges its validity by; 0 = with the on-board references and filter_mag_ref_correlation, what the "
+                "ground derives for the on-board orbit (the truncation's and the aged set's lag's least-squares "
+                "turn over one period; docs/filter.md)")
+        .range(0.0, 0.1)
+        .applies_when("filter", {"mekf"});
+    t.calculated_parameter("filter_mag_ref_tilt_used", &D::filter_mag_ref_tilt_used, "rad",
+                           "mekf: the reference's tilt the filter adds to its covariance: filter_mag_ref_tilt, or what "
+                           "the ground derives when it is 0");
     t.parameter("filter_mag_sigma_calibrated", &D::filter_mag_sigma_calibrated, "T",
                 "mekf: filter_mag_sigma once the in-flight magnetometer calibration applies (0 = filter_mag_sigma)")
         .range(0.0, 1e-4)
@@ -807,6 +818,7 @@ void EstimatorBlock::configure() {
     settings_ = onboard_settings_from<double>(data());
     settings_float_ = onboard_settings_from<float>(data());
     d.filter_mag_ref_rms_used = settings_.mekf.mag_ref_correlation > 0.0 ? settings_.mekf.mag_ref_rms : 0.0;
+    d.filter_mag_ref_tilt_used = settings_.mekf.mag_ref_tilt;
     spin_.configure(d.sample_period, d.spin_window);
 }
 

@@ -70,7 +70,8 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
     // With its own references the cones' Earth is seen from the computer's own orbit: SGP4's mean semi-major
     // axis of its element set over its 6371 km sphere (no separate altitude to keep in step with the set).
     double orbit_radius = kEarthMeanRadius + d.orbit_altitude;
-    double derived_ref = 0.0;  // T: the reference's error along the on-board orbit (reference_error.hpp)
+    double derived_ref = 0.0;   // T: the reference's error along the on-board orbit (reference_error.hpp)
+    double derived_tilt = 0.0;  // rad: its position part read as one turn (ReferenceFieldError::turn)
     if (d.reference_source == ReferenceSource::onboard) {
         // The status was checked in the block's configure(); the firmware's board checks the epoch.
         const orbit::Tle tle = onboard_element_set(d);
@@ -79,10 +80,13 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
         orbit::Sgp4<double> sgp4;
         if (sgp4.initialize(tle.mean_elements<double>()) == orbit::Sgp4Status::ok)
             orbit_radius = sgp4.semi_major_axis_km() * 1e3;
-        if (d.filter_mag_ref_correlation > 0.0 && !(d.filter_mag_ref_rms > 0.0))
-            derived_ref = reference_field_error(s.references.field, onboard_clock_epoch(d), tle.mean_elements<double>(),
-                                                tle.epoch_jd_utc)
-                              .rms;
+        // The ground derives what is not given (both from one pass along the orbit).
+        if (d.filter_mag_ref_correlation > 0.0 && !(d.filter_mag_ref_rms > 0.0 && d.filter_mag_ref_tilt > 0.0)) {
+            const ReferenceFieldError e = reference_field_error(s.references.field, onboard_clock_epoch(d),
+                                                                tle.mean_elements<double>(), tle.epoch_jd_utc);
+            derived_ref = e.rms;
+            derived_tilt = e.turn;
+        }
     }
     c.sun.cone_earth_sin_radius = static_cast<T>(kEarthMeanRadius / orbit_radius);
     c.sun.cone_fit_tolerance = static_cast<T>(d.cone_fit_tolerance);
@@ -114,6 +118,7 @@ OnboardSettings<T> onboard_settings_from(const EstimatorData& d) {
     m.mag_ref_sigma = static_cast<T>(d.filter_mag_ref_sigma);
     m.mag_ref_rms = static_cast<T>(d.filter_mag_ref_rms > 0.0 ? d.filter_mag_ref_rms : derived_ref);
     m.mag_ref_correlation = static_cast<T>(d.filter_mag_ref_correlation);
+    m.mag_ref_tilt = static_cast<T>(d.filter_mag_ref_tilt > 0.0 ? d.filter_mag_ref_tilt : derived_tilt);
     m.mag_sigma_calibrated = static_cast<T>(d.filter_mag_sigma_calibrated);
     m.mag_sigma_calibrated_eclipse = static_cast<T>(d.filter_mag_sigma_eclipse);
     m.mag_hard_iron_sigma = static_cast<T>(d.filter_mag_hard_iron);

@@ -177,6 +177,15 @@ TEST(EstimatorFmuReferences, UplinkAgeIsTheStudyScriptsOlderSet) {
     EXPECT_GT(fresh_worst, 2e-9);
 }
 
+// leo_orbit's computer: its set (the truth's made 24 h older on board) and the filter, 1 s samples.
+void leo_orbit_computer(Simulation& sim) {
+    sim.data().reference_source = ReferenceSource::onboard;
+    sim.data().tle_elements = {2461119.5, 14.98524078, 0.0012, 64.9, 0.0, 90.0, 270.0, 1.5e-4};
+    sim.data().uplink_age = 86400.0;
+    sim.data().sample_period = 1.0;
+    sim.data().filter = FilterKind::mekf;
+}
+
 // filter_mag_ref_rms_used: what the block derives for the computer's own orbit and reports (leo_orbit's set made
 // 24 h older, degree 8): 31.6 nT per axis, the figure of the degree-8 spectrum at 570 km (31.3 nT, summed apart from
 // ground/data/IGRF14.SHC) and the aged set's field error measured against the truth's set (4.7 nT) in quadrature
@@ -185,11 +194,7 @@ TEST(EstimatorFmuReferences, UplinkAgeIsTheStudyScriptsOlderSet) {
 TEST(EstimatorFmuReferences, TheReferencesErrorDerivedForTheOrbitIsReported) {
     const auto used = [](double rms, double correlation) {
         Simulation sim;
-        sim.data().reference_source = ReferenceSource::onboard;
-        sim.data().tle_elements = {2461119.5, 14.98524078, 0.0012, 64.9, 0.0, 90.0, 270.0, 1.5e-4};
-        sim.data().uplink_age = 86400.0;
-        sim.data().sample_period = 1.0;
-        sim.data().filter = FilterKind::mekf;
+        leo_orbit_computer(sim);
         sim.data().filter_mag_ref_rms = rms;
         sim.data().filter_mag_ref_correlation = correlation;
         sim.start(0.0);
@@ -200,6 +205,25 @@ TEST(EstimatorFmuReferences, TheReferencesErrorDerivedForTheOrbitIsReported) {
     EXPECT_NEAR(derived, std::hypot(31.3e-9, 4.7e-9), 0.4e-9);
     EXPECT_EQ(used(50e-9, 150.0), 50e-9);
     EXPECT_EQ(used(0.0, 0.0), 0.0);
+}
+
+// filter_mag_ref_tilt_used: the aged set's lag read as one turn of the field about the orbit's normal, derived
+// with the rms for the same computer. Geometry gives it apart (OnboardOrbit.TheReferenceErrorReadAsOneTurnIsThe
+// LagsTurnAboutTheOrbitsNormal): a near-dipole field turns twice per orbit as fast as the position, so the turn is
+// about 2 δs / r, 2 × 861 m / 6948 km = 0.0142° for this set 24 h old. A given tilt is reported as given.
+TEST(EstimatorFmuReferences, TheReferencesTiltDerivedForTheOrbitIsReported) {
+    const auto used = [](double tilt) {
+        Simulation sim;
+        leo_orbit_computer(sim);
+        sim.data().filter_mag_ref_correlation = 150.0;
+        sim.data().filter_mag_ref_tilt = tilt;
+        sim.start(0.0);
+        return sim.data().filter_mag_ref_tilt_used;
+    };
+    const double derived = used(0.0), deg = M_PI / 180.0;
+    std::printf("leo_orbit's computer: the reference's tilt %.4f deg\n", derived / deg);
+    EXPECT_NEAR(derived, 2.0 * 861.0 / 6948e3, 0.25 * 2.0 * 861.0 / 6948e3);
+    EXPECT_EQ(used(1e-3), 1e-3);
 }
 
 // clock_offset: the computer's clock reads clock_epoch_* plus it.

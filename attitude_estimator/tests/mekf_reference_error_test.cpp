@@ -117,5 +117,60 @@ TYPED_TEST(EstimatorCoreMekfReferenceError, WithoutACorrelationTheRmsIsNotUsed) 
     EXPECT_NEAR(one.p[0], across_field(before, r), tol<T>(1e-3, 1e-9) * across_field(before, r));
 }
 
+// The reference's tilt (MekfConfig::mag_ref_tilt: the lag's turn of the field about the orbit's normal, a bias no
+// memory averages) is considered, not estimated: the weights and so P are the filter's own, and what it reports
+// and judges its validity by adds tilt² along the normal, r × v of the on-board orbit (v the wind plus the air's
+// turn with the Earth), turned into the body. Here the orbit lies in the inertial x–y plane (normal +z) and the
+// body is turned 90° about x, so the normal lies along a body axis across z; without an orbit, tilt²/3 per axis.
+// A valid bound between the bounds with and without it tells them apart.
+TYPED_TEST(EstimatorCoreMekfReferenceError, TheTiltIsConsideredAboutTheOrbitsNormalNotInTheWeights) {
+    using T = TypeParam;
+    const double tilt = 0.004, r = 6.9e6, speed = 7.6e3, earth = 7.292115e-5;  // rad, m, m/s, rad/s
+    MekfConfig<T> plain = config<T>(0.0, kTau);
+    MekfConfig<T> with_tilt = plain;
+    with_tilt.mag_ref_tilt = T(tilt);
+    const double half = std::sqrt(0.5);
+    const Quaternion<T> q{T(half), T(0), T(0), T(half)};  // 90° about x
+    const auto sample = [&](const MekfConfig<T>& c, MekfState<T>& s, bool orbit) {
+        mekf_start(s, q, Vec3<T>{}, T(10), c);
+        MekfSampleInputs<T> in;
+        in.t = T(10 + kStep);
+        in.mag_valid = true;
+        in.mag_ref = {T(0), T(0), T(kField)};
+        in.mag_body = to_vec<T>(matrix_of(q) * Eigen::Vector3d(0.0, 0.0, kField));
+        if (orbit) {
+            in.position = {T(r), T(0), T(0)};
+            in.air_velocity = {T(0), T(speed - earth * r), T(0)};  // the air turns with the Earth
+            in.air_density = T(1e-12);
+        }
+        return mekf_sample(s, in, c);
+    };
+    MekfState<T> a, b, c;
+    const MekfSampleResult<T> without = sample(plain, a, true), with = sample(with_tilt, b, true);
+    sample(with_tilt, c, false);
+    const std::array<double, 3> pa = attitude_variances(a), pb = attitude_variances(b);
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(pa[i], pb[i]) << i;
+    const double trace = pa[0] + pa[1] + pa[2];
+    EXPECT_NEAR(static_cast<double>(without.bound), 3.0 * std::sqrt(trace), tol<T>(1e-6, 1e-12));
+    EXPECT_NEAR(static_cast<double>(with.bound), 3.0 * std::sqrt(trace + tilt * tilt), tol<T>(1e-6, 1e-12));
+    const Eigen::Vector3d normal = matrix_of(q) * Eigen::Vector3d::UnitZ();  // the orbit's normal in the body
+    const Matrix3RowMajor<T> reported = mekf_attitude_covariance(b, with_tilt);
+    const Matrix3RowMajor<T> own = mekf_attitude_covariance(b, plain);
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            const double added = static_cast<double>(reported[3 * i + j] - own[3 * i + j]);
+            EXPECT_NEAR(added, tilt * tilt * normal(i) * normal(j), tol<T>(1e-4, 1e-9) * tilt * tilt) << i << j;
+        }
+    const Matrix3RowMajor<T> no_orbit = mekf_attitude_covariance(c, with_tilt);
+    for (int i = 0; i < 3; ++i)
+        EXPECT_NEAR(static_cast<double>(no_orbit[4 * i] - own[4 * i]), tilt * tilt / 3.0,
+                    tol<T>(1e-4, 1e-9) * tilt * tilt)
+            << i;
+    // Valid below a bound halfway between: without the tilt, not with it.
+    plain.valid_bound = with_tilt.valid_bound = T(0.5 * (without.bound + with.bound));
+    EXPECT_TRUE(mekf_valid(a, plain));
+    EXPECT_FALSE(mekf_valid(b, with_tilt));
+}
+
 }  // namespace
 }  // namespace attitude_estimator::test

@@ -7,6 +7,8 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <Eigen/SVD>
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -222,6 +224,28 @@ TEST(OnboardOrbit, OlderElementSetsMissTheTruthByTheirAge) {
     }
 }
 
+// The truth's set (circular, 51.6°, B* 1.5e-4, at leo_orbit's epoch 2026-03-20 0 h UTC) at an altitude and the
+// computer's made 24 h older (orbit::older_set, as the block derives it), both ready for SGP4, with the ground's
+// figure for the older one (reference_error.hpp, the degree-8 model, the clock at the epoch) and its period.
+struct AgedSets {
+    ae::CalendarInstant clock{};
+    ae::OnboardClock<double> c = ae::make_onboard_clock<double>(clock);
+    ae::FieldModel<double> model = ae::make_field_model<double>(8);
+    orbit::Tle truth, onboard;
+    ae::ReferenceFieldError e;
+    orbit::Sgp4<double> a, b;  // the truth's, the computer's
+    double period = 0.0;       // s
+    bool ok = false;
+    explicit AgedSets(double altitude)
+        : truth(orbit::circular_orbit_set(2461119.5, altitude, 51.6, 10.0, 30.0, 1.5e-4)),
+          onboard(orbit::older_set(truth, 86400.0)),
+          e(ae::reference_field_error(model, clock, onboard.mean_elements<double>(), onboard.epoch_jd_utc)) {
+        ok = a.initialize(truth.mean_elements<double>()) == orbit::Sgp4Status::ok &&
+             b.initialize(onboard.mean_elements<double>()) == orbit::Sgp4Status::ok;
+        period = 2.0 * kPi * std::sqrt(std::pow(b.semi_major_axis_km(), 3) / 398600.4418);
+    }
+};
+
 // The ground's figure for the reference's error along the computer's orbit (reference_error.hpp) against what the
 // aged set does: the truth's set (circular, B* 1.5e-4, at the bundled epoch) and the computer's made 24 h older
 // (orbit::older_set, as the block derives it), both by SGP4 over the first period; their distance against the
@@ -229,19 +253,10 @@ TEST(OnboardOrbit, OlderElementSetsMissTheTruthByTheirAge) {
 // Each comes from another computation (two sets, two positions, the model evaluated there), not from the
 // function's difference along one orbit.
 TEST(OnboardOrbit, TheReferenceErrorIsWhatTheAgedSetMakesOfTheField) {
-    const double epoch = 2461119.5;  // 2026-03-20 0 h UTC, leo_orbit's
-    const ae::CalendarInstant clock{};
-    const ae::OnboardClock<double> c = ae::make_onboard_clock<double>(clock);
-    const ae::FieldModel<double> model = ae::make_field_model<double>(8);
     for (const double altitude : {420.0, 570.0}) {
-        const orbit::Tle truth = orbit::circular_orbit_set(epoch, altitude, 51.6, 10.0, 30.0, 1.5e-4);
-        const orbit::Tle onboard = orbit::older_set(truth, 86400.0);
-        const ae::ReferenceFieldError e =
-            ae::reference_field_error(model, clock, onboard.mean_elements<double>(), onboard.epoch_jd_utc);
-        orbit::Sgp4<double> a, b;
-        ASSERT_EQ(a.initialize(truth.mean_elements<double>()), orbit::Sgp4Status::ok);
-        ASSERT_EQ(b.initialize(onboard.mean_elements<double>()), orbit::Sgp4Status::ok);
-        const double period = 2.0 * kPi * std::sqrt(std::pow(b.semi_major_axis_km(), 3) / 398600.4418);
+        AgedSets sets(altitude);
+        ASSERT_TRUE(sets.ok) << altitude;
+        const auto& [clock, c, model, truth, onboard, e, a, b, period, ok] = sets;
         double distance = 0.0, field = 0.0;
         const int n = 200;
         for (int k = 0; k < n; ++k) {
@@ -273,5 +288,71 @@ TEST(OnboardOrbit, TheReferenceErrorIsWhatTheAgedSetMakesOfTheField) {
         const ae::ReferenceFieldError f = ae::reference_field_error(
             ae::make_field_model<float>(8), clock, onboard.mean_elements<double>(), onboard.epoch_jd_utc);
         EXPECT_NEAR(f.rms, e.rms, 0.01 * e.rms);
+        EXPECT_NEAR(f.turn, e.turn, 0.02 * e.turn);
+    }
+}
+
+// The position part read as one turn over the period (ReferenceFieldError::turn, MekfConfig::mag_ref_tilt)
+// against the rotation fitted apart: over 300 points of the period, in TEME axes, by an SVD of the stacked system
+// B_k × θ = e_k (not its normal equations), with the truth's set against the computer's 24 h-older one (not the
+// set with and without its B*). It is also what geometry says: the along-track lag δs turns the field pattern
+// about the orbit's normal, and a near-dipole field turns about twice per orbit as fast as the position does, so
+// θ ≈ 2 δs / r along the normal. The truncation's own turn (the truth's field, environment/, IGRF-14 to degree 13,
+// against the degree-8 model) is printed for the first two orbits: it is as large, but another turn each orbit
+// as the Earth turns under the track, which a filter's memory averages (docs/filter.md, "The reference's tilt").
+TEST(OnboardOrbit, TheReferenceErrorReadAsOneTurnIsTheLagsTurnAboutTheOrbitsNormal) {
+    for (const double altitude : {420.0, 570.0}) {
+        AgedSets sets(altitude);
+        ASSERT_TRUE(sets.ok) << altitude;
+        const auto& [clock, c, model, truth, onboard, e, a, b, period, ok] = sets;
+        const int n = 300;
+        Eigen::Vector3d truncation_turn[2], position_turn = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::Zero();
+        double lag = 0.0, radius = 0.0;
+        for (int orbit_index = 0; orbit_index < 2; ++orbit_index) {
+            Eigen::MatrixXd turns(3 * n, 3);
+            Eigen::VectorXd truncation(3 * n), position(3 * n);
+            for (int k = 0; k < n; ++k) {
+                const double t = period * (orbit_index + static_cast<double>(k) / n);
+                orbit::OrbitState<double> x, y;
+                ASSERT_EQ(a.propagate(t / 60.0, x), orbit::Sgp4Status::ok);
+                ASSERT_EQ(b.propagate(1440.0 + t / 60.0, y), orbit::Sgp4Status::ok);
+                const Eigen::Matrix3d to_ecef =
+                    Eigen::AngleAxisd(-ae::gmst_at(c, t), Eigen::Vector3d::UnitZ()).toRotationMatrix();
+                const auto field = [&](const Eigen::Vector3d& r_km) {
+                    return Eigen::Vector3d(
+                        to_ecef.transpose() *
+                        eig(ae::field_ecef(model, ae::test::to_vec<double>(1e3 * to_ecef * r_km), 2026.2)));
+                };
+                const Eigen::Vector3d on_board = field(y.position_km);
+                const Eigen::Vector3d full =
+                    to_ecef.transpose() *
+                    env::spherical_harmonic_field(env::igrf_coefficients(2026.2), 13, 1e3 * to_ecef * y.position_km);
+                Eigen::Matrix3d cross;
+                cross << 0.0, -on_board(2), on_board(1), on_board(2), 0.0, -on_board(0), -on_board(1), on_board(0), 0.0;
+                turns.block<3, 3>(3 * k, 0) = cross;
+                truncation.segment<3>(3 * k) = full - on_board;
+                position.segment<3>(3 * k) = field(x.position_km) - on_board;
+                if (orbit_index == 0) {
+                    normal += y.position_km.cross(y.velocity_km_s).normalized();
+                    lag += (x.position_km - y.position_km).norm() * 1e3 / n;
+                    radius += y.position_km.norm() * 1e3 / n;
+                }
+            }
+            const Eigen::JacobiSVD<Eigen::MatrixXd> svd(turns, Eigen::ComputeThinU | Eigen::ComputeThinV);
+            truncation_turn[orbit_index] = svd.solve(truncation);
+            if (orbit_index == 0) position_turn = svd.solve(position);
+        }
+        normal.normalize();
+        const double along_normal = std::abs(position_turn.normalized().dot(normal));
+        const double between =
+            std::acos(std::clamp(truncation_turn[0].normalized().dot(truncation_turn[1].normalized()), -1.0, 1.0));
+        std::printf(
+            "%.0f km: the lag's turn %.4f deg (fitted apart %.4f, %.2f of it along the orbit's normal; 2 lag / r "
+            "%.4f deg); the truncation's turn %.4f deg, next orbit %.4f deg, %.0f deg apart\n",
+            altitude, e.turn / kDeg, position_turn.norm() / kDeg, along_normal, 2.0 * lag / radius / kDeg,
+            truncation_turn[0].norm() / kDeg, truncation_turn[1].norm() / kDeg, between / kDeg);
+        EXPECT_NEAR(e.turn, position_turn.norm(), 0.1 * e.turn) << altitude;
+        EXPECT_GT(along_normal, 0.9) << altitude;
+        EXPECT_NEAR(position_turn.norm(), 2.0 * lag / radius, 0.25 * 2.0 * lag / radius) << altitude;
     }
 }

@@ -81,6 +81,7 @@ std::vector<double> numbers(const OnboardSettings<double>& s) {
          f.mag_ref_sigma,
          f.mag_ref_rms,
          f.mag_ref_correlation,
+         f.mag_ref_tilt,
          f.mag_sigma_calibrated,
          f.mag_sigma_calibrated_eclipse,
          f.mag_hard_iron_sigma,

@@ -8,6 +8,7 @@
 
 #include "attitude_estimator/attitude_matrix.hpp"
 #include "attitude_estimator/vec3_math.hpp"
+#include "ground/atmosphere_table.hpp"
 
 namespace attitude_estimator {
 
@@ -651,6 +652,40 @@ T mekf_attitude_bound(const MekfState<T>& s) noexcept {
     return T(3) * std::sqrt(trace > T(0) ? trace : T(0));
 }
 
+template <class T>
+T mekf_attitude_bound(const MekfState<T>& s, const MekfConfig<T>& c) noexcept {
+    const T trace = s.p[0] + s.p[kMekfStates + 1] + s.p[2 * kMekfStates + 2] + c.mag_ref_tilt * c.mag_ref_tilt;
+    return T(3) * std::sqrt(trace > T(0) ? trace : T(0));
+}
+
+namespace {
+
+// MekfConfig::mag_ref_tilt's variance in body axes: tilt² along the on-board orbit's normal r × v (v the wind plus
+// the air's own motion with the Earth, ω_E ẑ × r), tilt²/3 per axis without an orbit.
+template <class T>
+Mat3<T> considered_tilt(const MekfState<T>& s, const MekfConfig<T>& c) {
+    const T variance = c.mag_ref_tilt * c.mag_ref_tilt;
+    if (!(variance > T(0))) return Mat3<T>::Zero();
+    const V3<T> r = v3(s.torque_position);
+    const T omega_earth = static_cast<T>(ground::atmosphere::kEarthRotationRate);
+    const V3<T> v = v3(s.torque_air_velocity) + omega_earth * V3<T>(-r(1), r(0), T(0));
+    const V3<T> normal = r.cross(v);
+    if (!(normal.squaredNorm() > T(0))) return variance / T(3) * Mat3<T>::Identity();
+    const V3<T> body = matrix_of(s.q) * normal.normalized();
+    return variance * body * body.transpose();
+}
+
+}  // namespace
+
+template <class T>
+Matrix3RowMajor<T> mekf_attitude_covariance(const MekfState<T>& s, const MekfConfig<T>& c) noexcept {
+    const Mat3<T> p = view_p(s).template block<3, 3>(kMekfAttitude, kMekfAttitude) + considered_tilt(s, c);
+    Matrix3RowMajor<T> out{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) out[static_cast<std::size_t>(3 * i + j)] = T(0.5) * (p(i, j) + p(j, i));
+    return out;
+}
+
 namespace {
 
 // mekf_valid with the bound already at hand (mekf_sample reports it too).
@@ -663,7 +698,7 @@ bool valid_at(T bound, const MekfState<T>& s, const MekfConfig<T>& c) {
 
 template <class T>
 bool mekf_valid(const MekfState<T>& s, const MekfConfig<T>& c) noexcept {
-    return valid_at(mekf_attitude_bound(s), s, c);
+    return valid_at(mekf_attitude_bound(s, c), s, c);
 }
 
 template <class T>
@@ -793,7 +828,7 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
         s.t_first = in.t;
         return result;
     }
-    result.bound = mekf_attitude_bound(s);
+    result.bound = mekf_attitude_bound(s, c);
     result.valid = valid_at(result.bound, s, c);
     if (result.valid && step > T(0) && s.sun_watch.valid_for < c.watch_time) s.sun_watch.valid_for += step;
     return result;
@@ -809,6 +844,8 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
     template int mekf_update_faces(MekfState<T>&, const Vec3<T>&, const std::array<T, 6>&, const std::array<T, 6>&,  \
                                    std::uint8_t, const panel_response::Response<T>&, const MekfConfig<T>&) noexcept; \
     template T mekf_attitude_bound(const MekfState<T>&) noexcept;                                                    \
+    template T mekf_attitude_bound(const MekfState<T>&, const MekfConfig<T>&) noexcept;                              \
+    template Matrix3RowMajor<T> mekf_attitude_covariance(const MekfState<T>&, const MekfConfig<T>&) noexcept;        \
     template bool mekf_valid(const MekfState<T>&, const MekfConfig<T>&) noexcept;                                    \
     template MekfSampleResult<T> mekf_sample(MekfState<T>&, const MekfSampleInputs<T>&, const MekfConfig<T>&) noexcept;
 ATTITUDE_ESTIMATOR_MEKF_INSTANTIATE(float)

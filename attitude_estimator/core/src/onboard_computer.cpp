@@ -36,17 +36,18 @@ T attitude_p(const MekfState<T>& m, std::size_t i, std::size_t j) {
     return m.p[kMekfStates * (kMekfAttitude + i) + kMekfAttitude + j];
 }
 
-// The lower Cholesky factor of P_θθ (zeros where a pivot is not positive).
+// The lower Cholesky factor of the attitude's covariance as the filter reports it (mekf_attitude_covariance: P_θθ
+// and the reference's tilt; zeros where a pivot is not positive).
 template <class T>
-Matrix3RowMajor<T> attitude_covariance_sqrt(const MekfState<T>& m) {
+Matrix3RowMajor<T> attitude_covariance_sqrt(const Matrix3RowMajor<T>& p) {
     Matrix3RowMajor<T> l{};
     for (std::size_t j = 0; j < 3; ++j) {
-        T d = attitude_p(m, j, j);
+        T d = p[3 * j + j];
         for (std::size_t k = 0; k < j; ++k) d -= l[3 * j + k] * l[3 * j + k];
         if (!(d > T(0))) return Matrix3RowMajor<T>{};
         l[3 * j + j] = std::sqrt(d);
         for (std::size_t i = j + 1; i < 3; ++i) {
-            T s = attitude_p(m, i, j);
+            T s = p[3 * i + j];
             for (std::size_t k = 0; k < j; ++k) s -= l[3 * i + k] * l[3 * j + k];
             l[3 * i + j] = s / l[3 * j + j];
         }
@@ -179,7 +180,7 @@ void update_filter(OnboardState<T>& s, const OnboardInputs<T>& in, const Onboard
     for (std::size_t k = 0; k < 3; ++k) out.mag_offset_filt[k] = m.mag_offset[k] * settings.estimator.mag_sensitivity;
     out.panel_scale_filt = m.panel_scale;
     out.attitude_bound = running ? result.bound : T(0);
-    if (running) out.attitude_cov_sqrt = attitude_covariance_sqrt(m);
+    if (running) out.attitude_cov_sqrt = attitude_covariance_sqrt(mekf_attitude_covariance(m, settings.mekf));
     out.filter_valid = running && result.valid;
     out.filter_resets = m.resets;
 }

@@ -2,12 +2,46 @@
 
 #include <cmath>
 
+#include <Eigen/Dense>
+
 namespace attitude_estimator {
 
 namespace {
 constexpr int kSamples = 72;         // points over one period
 constexpr double kMu = 398600.4418;  // km³/s²: the period from the semi-major axis (its length only)
 constexpr double kPi = 3.14159265358979323846;
+
+// Earth-fixed → TEME axes by GMST (the turn is fitted in inertial axes, where the dynamics hold the spacecraft's
+// angular momentum).
+Eigen::Vector3d inertial(const Eigen::Vector3d& v, double gmst) {
+    const double c = std::cos(gmst), s = std::sin(gmst);
+    return {c * v(0) - s * v(1), s * v(0) + c * v(1), v(2)};
+}
+
+template <class T>
+Eigen::Vector3d to_eigen(const Vec3<T>& v) {
+    return {static_cast<double>(v[0]), static_cast<double>(v[1]), static_cast<double>(v[2])};
+}
+
+// The least-squares fit of one rotation θ to field errors e_k seen against fields B_k, e_k ≈ B_k × θ: its normal
+// equations, accumulated.
+struct TurnFit {
+    Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+    void add(const Eigen::Vector3d& field, const Eigen::Vector3d& error) {
+        Eigen::Matrix3d cross;
+        cross << 0.0, -field(2), field(1), field(2), 0.0, -field(0), -field(1), field(0), 0.0;
+        normal += cross.transpose() * cross;
+        rhs += cross.transpose() * error;
+    }
+    // The fitted rotation's angle (rad); 0 when the fields do not fix it.
+    double angle() const {
+        const Eigen::LDLT<Eigen::Matrix3d> ldlt(normal);
+        if (ldlt.info() != Eigen::Success || !(normal.trace() > 0.0)) return 0.0;
+        const Eigen::Vector3d theta = ldlt.solve(rhs);
+        return theta.allFinite() ? theta.norm() : 0.0;
+    }
+};
 
 // TEME (km) → Earth-fixed (m) by GMST, in the model's type.
 template <class T>
@@ -32,6 +66,7 @@ ReferenceFieldError reference_field_error(const FieldModel<T>& model, const Cale
     const double a_km = dragged.semi_major_axis_km();
     const double period = 2.0 * kPi * std::sqrt(a_km * a_km * a_km / kMu);
     double displacement = 0.0, field = 0.0;  // m², T²
+    TurnFit turn;
     for (int k = 0; k < kSamples; ++k) {
         const double t = period * k / kSamples;
         const double minutes = minutes_at_midnight + seconds_of_epoch_day(clock, t) / 60.0;
@@ -52,12 +87,14 @@ ReferenceFieldError reference_field_error(const FieldModel<T>& model, const Cale
             const double db = static_cast<double>(b[i]) - static_cast<double>(b0[i]);
             field += db * db;
         }
+        turn.add(inertial(to_eigen(b), gmst), inertial(to_eigen(b) - to_eigen(b0), gmst));
     }
     ReferenceFieldError e;
     e.truncation = omitted_field_rms(model.degree, 1e3 * a_km, decimal_year_at(clock, 0.0));
     e.position = std::sqrt(field / (3.0 * kSamples));
     e.drag_displacement = std::sqrt(displacement / kSamples);
     e.rms = std::sqrt(e.truncation * e.truncation + e.position * e.position);
+    e.turn = turn.angle();
     return e;
 }
 

@@ -107,7 +107,9 @@ struct EstimatorData {
     // time (s; 0: not modelled, filter_mag_ref_sigma alone).
     double filter_mag_ref_rms = 0.0;
     double filter_mag_ref_correlation = 0.0;
-    double filter_mag_ref_rms_used = 0.0;  // calculated at configure: the rms the filter weighs (derived or given)
+    double filter_mag_ref_rms_used = 0.0;   // calculated at configure: the rms the filter weighs (derived or given)
+    double filter_mag_ref_tilt = 0.0;       // rad per axis; 0: derived with the rms (MekfConfig::mag_ref_tilt)
+    double filter_mag_ref_tilt_used = 0.0;  // calculated at configure: the tilt the filter considers
     double filter_mag_sigma_calibrated = MekfConfig<double>{}.mag_sigma_calibrated;  // T: once calibrated (0: the same)
     double filter_mag_sigma_eclipse =
         MekfConfig<double>{}.mag_sigma_calibrated_eclipse;                   // T: calibrated, no sun (0: the same)

@@ -60,6 +60,16 @@ struct MekfConfig {
     // estimate keeps, and the covariance turns cautious. Adds in quadrature to mag_ref_sigma.
     T mag_ref_rms = T(0);
     T mag_ref_correlation = T(0);
+    // The reference's tilt (rad; reference_error.hpp): the on-board orbit lags the true one along the track (the
+    // aged set misses the drag over its age), and the field the computer expects is the true pattern turned
+    // about the orbit's normal, by about twice the lag's angle (a near-dipole field turns twice per orbit). The
+    // same turn at every sample: a bias of the attitude about the normal that no memory averages (the filter
+    // keeps the direction of a fast tumble's angular momentum for hours) and the sun (degrees) cannot tell. It is
+    // considered, not estimated: the filter's weights and covariance are its own, what it reports and judges its
+    // validity by (mekf_attitude_covariance, the bound) adds tilt² along the normal, from the on-board orbit
+    // (MekfSampleInputs::position, air_velocity; isotropic, tilt²/3 per axis, while it has none; docs/filter.md,
+    // "The reference's tilt"). 0: none.
+    T mag_ref_tilt = T(0);
     // mag_sigma once the field comes calibrated in flight (MekfSampleInputs::mag_calibrated; 0: mag_sigma):
     // an uncalibrated HMC2003 carries its 0.3 % cross-axis coupling (0.1 µT), a calibrated one little more
     // than its 12-bit steps (0.12 µT / √12).
@@ -267,6 +277,13 @@ int mekf_update_faces(MekfState<T>& s, const Vec3<T>& sun_ref, const std::array<
 // worth of χ²₁ terms, so this bound holds with probability ≥ 99.7 % whatever the covariance's shape.
 template <class T>
 T mekf_attitude_bound(const MekfState<T>& s) noexcept;
+// The same with MekfConfig::mag_ref_tilt considered: 3 √(tr P_θθ + tilt²).
+template <class T>
+T mekf_attitude_bound(const MekfState<T>& s, const MekfConfig<T>& c) noexcept;
+// The attitude's covariance as the filter reports it (rad², body axes): P_θθ and the considered tilt
+// (MekfConfig::mag_ref_tilt).
+template <class T>
+Matrix3RowMajor<T> mekf_attitude_covariance(const MekfState<T>& s, const MekfConfig<T>& c) noexcept;
 
 // The filter calls its attitude valid (MekfSampleResult::valid of its last sample): running, its 3σ bound below
 // config.valid_bound, and no refused run of reset_after samples waiting for a single frame to restart from.
@@ -336,6 +353,8 @@ MekfSampleResult<T> mekf_sample(MekfState<T>& s, const MekfSampleInputs<T>& in, 
                                           const std::array<T, 6>&, std::uint8_t, const panel_response::Response<T>&, \
                                           const MekfConfig<T>&) noexcept;                                            \
     extern template T mekf_attitude_bound(const MekfState<T>&) noexcept;                                             \
+    extern template T mekf_attitude_bound(const MekfState<T>&, const MekfConfig<T>&) noexcept;                       \
+    extern template Matrix3RowMajor<T> mekf_attitude_covariance(const MekfState<T>&, const MekfConfig<T>&) noexcept; \
     extern template bool mekf_valid(const MekfState<T>&, const MekfConfig<T>&) noexcept;                             \
     extern template MekfSampleResult<T> mekf_sample(MekfState<T>&, const MekfSampleInputs<T>&,                       \
                                                     const MekfConfig<T>&) noexcept;

@@ -10,7 +10,7 @@
 //   at the two positions, the rms of their difference per axis over one period from the clock's start.
 // Configure time, in double but for the model's own evaluations (the caller's model, in its float type): no
 // temporary larger than two SGP4 states, so the firmware's stack carries it; 2 × 72 SGP4 propagations and
-// 2 × 72 field evaluations.
+// 2 × 72 field evaluations, and the turn's 3 × 3 normal equations.
 #pragma once
 
 #include <cstdint>
@@ -26,6 +26,13 @@ struct ReferenceFieldError {
     double position = 0.0;           // T per axis
     double drag_displacement = 0.0;  // m, rms over the period
     double rms = 0.0;                // T per axis, both in quadrature
+    // The position part read as one turn (rad): the least-squares rotation that explains it against the on-board
+    // field in inertial axes over the period. The lag turns the field pattern about the orbit's normal by about
+    // twice its angle, 2 δs/r (0.062° at 420 km, 0.014° at 570 km after 24 h), and does so at every sample: what
+    // the filter considers as MekfConfig::mag_ref_tilt. (The truncation's own least-squares turn over one
+    // period, as large at 420 km, is another turn each orbit as the Earth turns under the track and averages over
+    // a filter's memory: it is left to mag_ref_rms.)
+    double turn = 0.0;
 };
 
 // All zero when SGP4 cannot propagate the set over the period from the clock's start (the caller has checked
