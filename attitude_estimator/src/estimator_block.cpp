@@ -192,11 +192,12 @@ void EstimatorBlock::declare(fmu::Table<EstimatorData>& t) {
                            "what the ground derives for the on-board orbit when it is 0 (0 without "
                            "filter_mag_ref_correlation)");
     t.parameter("filter_mag_ref_tilt", &D::filter_mag_ref_tilt, "rad",
-                "mekf: the reference field's error along the orbit read as one rotation (rms per axis), a bias of "
-                "the attitude no measurement of the field removes, added to the covariance the filter reports and "
-                "judges its validity by; 0 = with the on-board references and filter_mag_ref_correlation, what the "
-                "ground derives for the on-board orbit (the truncation's and the aged set's lag's least-squares "
-                "turn over one period; docs/filter.md)")
+                "mekf: the turn of the reference field about the orbit's normal that the on-board set's along-track "
+                "lag makes (about twice the lag's angle), a bias of the attitude no measurement of the field removes, "
+                "considered along the on-board orbit's normal in the covariance the filter reports and judges its "
+                "validity by, not in its weights; 0 = with the on-board references and filter_mag_ref_correlation, "
+                "what the ground derives for the on-board orbit (the lag's least-squares turn over one period; "
+                "docs/filter.md, the section on the reference's tilt)")
         .range(0.0, 0.1)
         .applies_when("filter", {"mekf"});
     t.calculated_parameter("filter_mag_ref_tilt_used", &D::filter_mag_ref_tilt_used, "rad",

@@ -256,7 +256,13 @@ TEST(OnboardOrbit, TheReferenceErrorIsWhatTheAgedSetMakesOfTheField) {
     for (const double altitude : {420.0, 570.0}) {
         AgedSets sets(altitude);
         ASSERT_TRUE(sets.ok) << altitude;
-        const auto& [clock, c, model, truth, onboard, e, a, b, period, ok] = sets;
+        const ae::CalendarInstant& clock = sets.clock;
+        const ae::OnboardClock<double>& c = sets.c;
+        const ae::FieldModel<double>& model = sets.model;
+        const orbit::Tle& onboard = sets.onboard;
+        const ae::ReferenceFieldError& e = sets.e;
+        orbit::Sgp4<double>&a = sets.a, &b = sets.b;
+        const double period = sets.period;
         double distance = 0.0, field = 0.0;
         const int n = 200;
         for (int k = 0; k < n; ++k) {
@@ -304,7 +310,11 @@ TEST(OnboardOrbit, TheReferenceErrorReadAsOneTurnIsTheLagsTurnAboutTheOrbitsNorm
     for (const double altitude : {420.0, 570.0}) {
         AgedSets sets(altitude);
         ASSERT_TRUE(sets.ok) << altitude;
-        const auto& [clock, c, model, truth, onboard, e, a, b, period, ok] = sets;
+        const ae::OnboardClock<double>& c = sets.c;
+        const ae::FieldModel<double>& model = sets.model;
+        const ae::ReferenceFieldError& e = sets.e;
+        orbit::Sgp4<double>&a = sets.a, &b = sets.b;
+        const double period = sets.period;
         const int n = 300;
         Eigen::Vector3d truncation_turn[2], position_turn = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::Zero();
         double lag = 0.0, radius = 0.0;

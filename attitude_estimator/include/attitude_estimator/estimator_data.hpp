@@ -108,7 +108,7 @@ struct EstimatorData {
     double filter_mag_ref_rms = 0.0;
     double filter_mag_ref_correlation = 0.0;
     double filter_mag_ref_rms_used = 0.0;   // calculated at configure: the rms the filter weighs (derived or given)
-    double filter_mag_ref_tilt = 0.0;       // rad per axis; 0: derived with the rms (MekfConfig::mag_ref_tilt)
+    double filter_mag_ref_tilt = 0.0;       // rad, about the orbit's normal; 0: derived (MekfConfig::mag_ref_tilt)
     double filter_mag_ref_tilt_used = 0.0;  // calculated at configure: the tilt the filter considers
     double filter_mag_sigma_calibrated = MekfConfig<double>{}.mag_sigma_calibrated;  // T: once calibrated (0: the same)
     double filter_mag_sigma_eclipse =
