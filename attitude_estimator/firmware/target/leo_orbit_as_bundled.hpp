@@ -66,8 +66,8 @@ inline void leo_orbit_3u(attitude_estimator::EstimatorData& d, bool detect, bool
                                 0.0, 0.0, 0.3, 0.08, 0.0, 0.0, 0.08, 0.0, 0.0};
     d.mag_string_loop_side_b = {0.0,    -0.005, 0.0, 0.0, 0.005, 0.0, 0.005, 0.0,    0.0,
                                 -0.005, 0.0,    0.0, 0.0, 0.005, 0.0, 0.0,   -0.005, 0.0};
-    d.filter_mag_sigma_calibrated = 1.5e-6;
-    d.filter_mag_sigma_eclipse = 1.0e-6;
+    d.filter_mag_sigma_calibrated = 1.1e-6;
+    d.filter_mag_sigma_eclipse = 0.75e-6;
     d.filter_sun_sigma_method = {0.094, 0.088, 0.069, 0.051};
     d.filter_sun_correlation = {200.0, 31.0, 12.0, 12.0};
     d.filter_sun_turn = true;
