@@ -609,6 +609,16 @@ MekfUpdate<T> mekf_update_field(MekfState<T>& s, const Vec3<T>& field_ref, const
     return linear_update<T, 3>(s, y, h, r, c.gate);
 }
 
+namespace {
+
+// tr P_θθ, read in place.
+template <class T>
+T attitude_trace(const MekfState<T>& s) {
+    return s.p[0] + s.p[kMekfStates + 1] + s.p[2 * kMekfStates + 2];
+}
+
+}  // namespace
+
 template <class T>
 int mekf_update_faces(MekfState<T>& s, const Vec3<T>& sun_ref, const std::array<T, 6>& r,
                       const std::array<T, 6>& albedo, std::uint8_t use, const panel_response::Response<T>& response,
@@ -636,8 +646,7 @@ int mekf_update_faces(MekfState<T>& s, const Vec3<T>& sun_ref, const std::array<
         // Only the scale is updated: the attitude enters through the prediction but its column is left out,
         // so that the albedo on a face and the angular law's model error (which the scale cannot absorb)
         // do not pull the attitude. The slope still counts in the innovation's variance.
-        const T attitude_variance = (gain * slope * normal.cross(sun)).squaredNorm() *
-                                    (s.p[0] + s.p[kMekfStates + 1] + s.p[2 * kMekfStates + 2]) / T(3);
+        const T attitude_variance = (gain * slope * normal.cross(sun)).squaredNorm() * attitude_trace(s) / T(3);
         h(0, kMekfScale) = nominal;
         Eigen::Matrix<T, 1, 1> rr;
         rr(0, 0) = c.face_sigma * c.face_sigma + attitude_variance;
@@ -648,13 +657,13 @@ int mekf_update_faces(MekfState<T>& s, const Vec3<T>& sun_ref, const std::array<
 
 template <class T>
 T mekf_attitude_bound(const MekfState<T>& s) noexcept {
-    const T trace = s.p[0] + s.p[kMekfStates + 1] + s.p[2 * kMekfStates + 2];
+    const T trace = attitude_trace(s);
     return T(3) * std::sqrt(trace > T(0) ? trace : T(0));
 }
 
 template <class T>
 T mekf_attitude_bound(const MekfState<T>& s, const MekfConfig<T>& c) noexcept {
-    const T trace = s.p[0] + s.p[kMekfStates + 1] + s.p[2 * kMekfStates + 2] + c.mag_ref_tilt * c.mag_ref_tilt;
+    const T trace = attitude_trace(s) + c.mag_ref_tilt * c.mag_ref_tilt;
     return T(3) * std::sqrt(trace > T(0) ? trace : T(0));
 }
 
