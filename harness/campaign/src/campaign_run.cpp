@@ -6,6 +6,7 @@
 #include <limits>
 #include <memory>
 
+#include "aims.hpp"
 #include "analysis/couplings.hpp"
 #include "analysis/run_measures.hpp"
 #include "campaign_error.hpp"
@@ -190,6 +191,7 @@ CampaignSetup prepare(CampaignSpec spec, const std::vector<std::filesystem::path
         spec.measure_report = s.description.measures->report;
         spec.measures_converged_after = s.description.measures->converged_after;
     }
+    check_aim_columns(spec);
     s.spec = std::move(spec);
     return s;
 }

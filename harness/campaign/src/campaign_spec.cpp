@@ -14,6 +14,7 @@
 #include "campaign_error.hpp"
 #include "engine/setting.hpp"
 #include "engine/value_text.hpp"
+#include "metric_observer.hpp"
 #include "statistics.hpp"
 
 namespace campaign {
@@ -562,6 +563,36 @@ std::filesystem::path relative_to(const std::filesystem::path& base, const std::
     return (path.is_absolute() ? path : base / path).lexically_normal();
 }
 
+// [[aim]]: column, and one of below, at_least, within; skip_empty.
+Aim read_aim(const Context& cx, const toml::table& t, std::size_t index) {
+    const std::string where = "aim " + std::to_string(index + 1);
+    only_keys(cx, t, where, {"column", "below", "at_least", "within", "skip_empty"});
+    Aim a;
+    a.column = string(cx, required(cx, t, "column", where), where + ": 'column'");
+    const int bounds = t.contains("below") + t.contains("at_least") + t.contains("within");
+    if (bounds != 1) cx.fail(t, where + ": give exactly one of 'below', 'at_least' and 'within'");
+    if (const auto* n = t.get("below")) {
+        a.kind = AimKind::below;
+        a.high = number(cx, *n, where + ": 'below'");
+    } else if (const auto* n = t.get("at_least")) {
+        a.kind = AimKind::at_least;
+        a.low = number(cx, *n, where + ": 'at_least'");
+    } else {
+        const auto* w = t.get("within");
+        const auto* arr = w->as_array();
+        if (!arr || arr->size() != 2) cx.fail(*w, where + ": 'within' must be [low, high]");
+        a.kind = AimKind::within;
+        a.low = number(cx, *arr->get(0), where + ": 'within'");
+        a.high = number(cx, *arr->get(1), where + ": 'within'");
+        if (a.low > a.high) cx.fail(*w, where + ": 'within' must be [low, high] with low <= high");
+    }
+    if (const auto* n = t.get("skip_empty")) {
+        if (!n->is_boolean()) cx.fail(*n, where + ": 'skip_empty' must be true or false");
+        a.skip_empty = *n->value<bool>();
+    }
+    return a;
+}
+
 }  // namespace
 
 std::string observable_column(const Observable& o, const std::vector<std::string>& values) {
@@ -587,7 +618,7 @@ CampaignSpec parse_spec(const std::string& text, const std::filesystem::path& fi
     }
     only_keys(cx, root, "campaign",
               {"system", "stop_time", "output_interval", "tolerance", "runs", "seed", "paired", "fmu_dirs", "output",
-               "parameters", "set", "draw", "metric", "case"});
+               "parameters", "set", "draw", "metric", "case", "aim"});
     CampaignSpec spec;
     spec.file = file;
     const auto base = file.parent_path();
@@ -675,6 +706,18 @@ CampaignSpec parse_spec(const std::string& text, const std::filesystem::path& fi
     }
     for (const auto& m : spec.metrics)
         if (!names.insert(m.name).second) cx.fail("two metrics named '" + m.name + "'");
+    if (const auto* n = root.get("aim")) {
+        const auto* arr = n->as_array();
+        if (!arr || !arr->is_array_of_tables()) cx.fail(*n, "aims are written [[aim]]");
+        for (std::size_t i = 0; i < arr->size(); ++i) spec.aims.push_back(read_aim(cx, *arr->get(i)->as_table(), i));
+    }
+    // A metric's column is known now; a measure.* column only once prepare() has read the system's measures.
+    const auto columns = metric_columns(spec);
+    for (std::size_t i = 0; i < spec.aims.size(); ++i)
+        if (!spec.aims[i].column.starts_with("measure.") &&
+            std::find(columns.begin(), columns.end(), spec.aims[i].column) == columns.end())
+            cx.fail(*root.get("aim")->as_array()->get(i), "aim " + std::to_string(i + 1) + ": '" + spec.aims[i].column +
+                                                              "' is not a metric's column (name.stat)");
     return spec;
 }
 

@@ -134,6 +134,16 @@ struct Case {
     Observable observable;  // detection metrics also count from it (README.md of this folder)
 };
 
+// What every run should reach ([[aim]]: aims.hpp judges them): a column of the results table (a metric's
+// name.stat, or a measure.* column) below a bound, at least a bound, or within a range.
+enum class AimKind { below, at_least, within };
+struct Aim {
+    std::string column;
+    AimKind kind = AimKind::below;
+    double low = 0.0, high = 0.0;  // below: value < high; at_least: value >= low; within: low <= value <= high
+    bool skip_empty = false;       // a run with no value (no sample) is not judged by it, rather than missing it
+};
+
 struct CampaignSpec {
     std::filesystem::path file;
     std::filesystem::path system;     // .ssd, resolved against the spec's folder
@@ -152,6 +162,7 @@ struct CampaignSpec {
     std::vector<Draw> draws;
     std::vector<Metric> metrics;
     std::vector<Case> cases;  // empty: every run alike
+    std::vector<Aim> aims;
     // What the system declares it reached (<ex:Measures>, analysis/run_measures.hpp), set by prepare():
     // each run records it and its table and summary get the measure columns (analysis::measure_columns).
     bool measures = false;

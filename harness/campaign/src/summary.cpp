@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "aims.hpp"
 #include "analysis/run_measures.hpp"
 #include "campaign_error.hpp"
 #include "draws.hpp"
@@ -503,6 +504,7 @@ void write_summary(const std::filesystem::path& file, const CampaignSetup& setup
             metrics_table([&](const std::vector<std::string>& row) { return row[k] == c.name; });
         }
     }
+    write_aims(md, spec, judge_aims(spec, table));
     write_detection(md, spec, table);
     write_paired(md, spec, table);
     if (failed > 0) {

@@ -24,6 +24,7 @@
 #include "engine/system.hpp"
 #include "engine/value_text.hpp"
 #include "results_table.hpp"
+#include "spec_texts.hpp"
 
 using namespace campaign;
 
@@ -356,14 +357,7 @@ TEST(Campaign, ValuesOfTheWrongTypeAreRefusedBeforeAnyRun) {
 TEST(Campaign, SummaryPerGridValueAndRunsWithoutAValidSample) {
     const auto dir = fresh_dir("per_grid");
     std::filesystem::create_directories(dir);
-    std::ifstream in(std::string(CAMPAIGN_TEST_SPECS) + "/leo_short.toml");
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string spec = text.str();
-    const std::string relative = "\"../../../systems/leo_orbit.ssd\"";
-    spec.replace(spec.find(relative), relative.size(),
-                 "\"" + std::string(CAMPAIGN_TEST_SPECS) + "/../../../systems/leo_orbit.ssd\"");
-    spec += R"(
+    std::string spec = campaign_test::leo_short_text() + R"(
 [[metric]]
 name = "never"
 kind = "quaternion_angle"

@@ -5,6 +5,7 @@
 #include "campaign_error.hpp"
 #include "campaign_spec.hpp"
 #include "draws.hpp"
+#include "spec_texts.hpp"
 
 using campaign::CampaignError;
 using campaign::draw_run;
@@ -72,14 +73,7 @@ min = 100
 max = 200
 )";
 
-std::string error_of(const std::string& text) {
-    try {
-        parse_spec(text, "/specs/test.toml");
-    } catch (const CampaignError& e) {
-        return e.what();
-    }
-    return "";
-}
+using campaign_test::error_of;
 
 }  // namespace
 

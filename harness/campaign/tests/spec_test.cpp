@@ -5,6 +5,7 @@
 
 #include "campaign_error.hpp"
 #include "campaign_spec.hpp"
+#include "spec_texts.hpp"
 
 using campaign::CampaignError;
 using campaign::parse_spec;
@@ -13,14 +14,7 @@ namespace {
 
 const std::string head = "system = \"sys.ssd\"\nruns = 4\nseed = 1\n";
 
-std::string error_of(const std::string& text) {
-    try {
-        parse_spec(text, "/specs/test.toml");
-    } catch (const CampaignError& e) {
-        return e.what();
-    }
-    return "";
-}
+using campaign_test::error_of;
 
 }  // namespace
 

@@ -1,0 +1,129 @@
+#include "aims.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "campaign_error.hpp"
+#include "engine/value_text.hpp"
+#include "metric_observer.hpp"
+#include "results_table.hpp"
+
+namespace campaign {
+
+namespace {
+
+// At most this many run numbers are listed per aim (the rest are in results.csv).
+constexpr std::size_t listed_runs = 40;
+
+std::string run_list(const std::vector<std::string>& runs) {
+    std::string out;
+    for (std::size_t i = 0; i < runs.size() && i < listed_runs; ++i) out += (i ? ", " : "") + runs[i];
+    if (runs.size() > listed_runs) out += " and " + std::to_string(runs.size() - listed_runs) + " more";
+    return out;
+}
+
+}  // namespace
+
+std::string aim_text(const Aim& aim) {
+    const auto n = [](double x) { return cosim::format_real(x); };
+    switch (aim.kind) {
+        case AimKind::below:
+            return aim.column + " < " + n(aim.high);
+        case AimKind::at_least:
+            return aim.column + " >= " + n(aim.low);
+        case AimKind::within:
+            return aim.column + " in [" + n(aim.low) + ", " + n(aim.high) + "]";
+    }
+    return aim.column;
+}
+
+bool meets(const Aim& aim, double value) {
+    switch (aim.kind) {
+        case AimKind::below:
+            return value < aim.high;
+        case AimKind::at_least:
+            return value >= aim.low;
+        case AimKind::within:
+            return value >= aim.low && value <= aim.high;
+    }
+    return false;
+}
+
+void check_aim_columns(const CampaignSpec& spec) {
+    const auto columns = metric_columns(spec);
+    for (std::size_t i = 0; i < spec.aims.size(); ++i)
+        if (std::find(columns.begin(), columns.end(), spec.aims[i].column) == columns.end())
+            throw CampaignError(spec.file.string() + ": aim " + std::to_string(i + 1) + ": '" + spec.aims[i].column +
+                                "' is not a column of the results table (a metric's name.stat" +
+                                (spec.measures ? " or a measure.* column)" : ")"));
+}
+
+AimsReport judge_aims(const CampaignSpec& spec, const ResultRows& table) {
+    AimsReport r;
+    r.per_aim.resize(spec.aims.size());
+    if (spec.aims.empty()) return r;
+    const std::size_t status = table.header.size() - 2;
+    std::vector<std::size_t> columns;
+    for (const auto& aim : spec.aims) columns.push_back(table.column(aim.column));
+    for (const auto& row : table.rows) {
+        if (row[status] != "ok" && row[status] != "stopped") {
+            ++r.failed;
+            continue;
+        }
+        ++r.finished;
+        bool all = true;
+        for (std::size_t i = 0; i < spec.aims.size(); ++i) {
+            const auto value = number_in(row[columns[i]]);
+            AimTally& t = r.per_aim[i];
+            if (!value && spec.aims[i].skip_empty) {
+                ++t.not_judged;
+            } else if (value && meets(spec.aims[i], *value)) {
+                ++t.met;
+            } else {
+                ++t.missed;
+                t.missing_runs.push_back(row[run_column]);
+                all = false;
+            }
+        }
+        if (all)
+            ++r.every;
+        else
+            r.missing_any.push_back(row[run_column]);
+    }
+    return r;
+}
+
+void write_aims(std::ostream& md, const CampaignSpec& spec, const AimsReport& report) {
+    if (spec.aims.empty()) return;
+    md << "\n## Aims\n\nEach finished run judged by each of the spec's aims (" << report.finished << " finished runs";
+    if (report.failed > 0) md << "; " << report.failed << " failed, not judged";
+    md << "). A run with no value misses an aim, except one marked skip_empty (not judged: the metric sampled "
+          "nothing, as a run without an eclipse).\n\n| aim | met | missed | not judged | runs that miss |\n"
+          "|---|---|---|---|---|\n";
+    for (std::size_t i = 0; i < spec.aims.size(); ++i) {
+        const AimTally& t = report.per_aim[i];
+        md << "| " << aim_text(spec.aims[i]) << " | " << t.met << " | " << t.missed << " | " << t.not_judged << " | "
+           << (t.missing_runs.empty() ? std::string("–") : run_list(t.missing_runs)) << " |\n";
+    }
+    md << "\n**Every aim: " << report.every << " of " << report.finished << " finished runs.**";
+    if (!report.missing_any.empty()) md << " Runs that miss one or more: " << run_list(report.missing_any) << ".";
+    md << "\n";
+}
+
+void print_aims(const CampaignSpec& spec, const AimsReport& report, std::ostream& out) {
+    if (spec.aims.empty()) return;
+    out << "aims, per run (" << report.finished << " finished runs"
+        << (report.failed > 0 ? ", " + std::to_string(report.failed) + " failed, not judged" : std::string()) << "):\n";
+    for (std::size_t i = 0; i < spec.aims.size(); ++i) {
+        const AimTally& t = report.per_aim[i];
+        out << "  " << aim_text(spec.aims[i]) << ": " << t.met << " met, " << t.missed << " missed";
+        if (!t.missing_runs.empty())
+            out << (t.missing_runs.size() == 1 ? " (run " : " (runs ") << run_list(t.missing_runs) << ")";
+        if (t.not_judged > 0) out << ", " << t.not_judged << " not judged (no value)";
+        out << "\n";
+    }
+    out << "  every aim: " << report.every << " of " << report.finished << " runs\n";
+}
+
+}  // namespace campaign

@@ -1,0 +1,198 @@
+// A campaign's aims ([[aim]], aims.hpp): what the reader accepts and refuses, how a table's runs are judged
+// (counts worked out by hand for a table written here), and a whole campaign that says them.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "aims.hpp"
+#include "campaign_command.hpp"
+#include "campaign_error.hpp"
+#include "campaign_spec.hpp"
+#include "spec_texts.hpp"
+#include "summary.hpp"
+
+using namespace campaign;
+
+namespace {
+
+const std::string head = R"(system = "sys.ssd"
+runs = 4
+seed = 1
+[[metric]]
+name = "err"
+kind = "quaternion_angle"
+a = "env.q_true"
+b = "est.q_est"
+[[metric]]
+name = "bound"
+kind = "column"
+column = "est.attitude_bound"
+stats = ["max"]
+)";
+
+using campaign_test::error_of;
+
+}  // namespace
+
+TEST(Aims, ReadsEachKind) {
+    const auto spec = parse_spec(head + R"(
+[[aim]]
+column = "err.p95"
+below = 1.0
+[[aim]]
+column = "err.mean"
+within = [0.5, 1.5]
+skip_empty = true
+[[aim]]
+column = "bound.max"
+at_least = 2
+[[aim]]
+column = "measure.filter.converged.sunlit.p95"
+below = 1
+)",
+                                 "/specs/test.toml");
+    ASSERT_EQ(spec.aims.size(), 4u);
+    EXPECT_EQ(spec.aims[0].kind, AimKind::below);
+    EXPECT_EQ(spec.aims[0].high, 1.0);
+    EXPECT_FALSE(spec.aims[0].skip_empty);
+    EXPECT_EQ(spec.aims[1].kind, AimKind::within);
+    EXPECT_EQ(spec.aims[1].low, 0.5);
+    EXPECT_EQ(spec.aims[1].high, 1.5);
+    EXPECT_TRUE(spec.aims[1].skip_empty);
+    EXPECT_EQ(spec.aims[2].kind, AimKind::at_least);
+    EXPECT_EQ(spec.aims[2].low, 2.0);
+    EXPECT_EQ(aim_text(spec.aims[0]), "err.p95 < 1");
+    EXPECT_EQ(aim_text(spec.aims[1]), "err.mean in [0.5, 1.5]");
+    EXPECT_EQ(aim_text(spec.aims[2]), "bound.max >= 2");
+}
+
+TEST(Aims, MistakesAreRefusedWithTheirPlace) {
+    EXPECT_NE(error_of(head + "[[aim]]\ncolumn = \"err.p99\"\nbelow = 1\n").find("aim 1: 'err.p99' is not a metric's"),
+              std::string::npos);
+    EXPECT_NE(error_of(head + "[[aim]]\ncolumn = \"err.p95\"\nbelow = 1\nat_least = 0\n").find("exactly one of"),
+              std::string::npos);
+    EXPECT_NE(error_of(head + "[[aim]]\ncolumn = \"err.p95\"\n").find("exactly one of"), std::string::npos);
+    EXPECT_NE(error_of(head + "[[aim]]\ncolumn = \"err.p95\"\nwithin = [2, 1]\n").find("low <= high"),
+              std::string::npos);
+    EXPECT_NE(error_of(head + "[[aim]]\ncolumn = \"err.p95\"\nwithin = [1]\n").find("[low, high]"), std::string::npos);
+    EXPECT_NE(error_of(head + "[[aim]]\ncolumn = \"err.p95\"\nbelow = \"1\"\n").find("'below' must be a number"),
+              std::string::npos);
+    EXPECT_NE(error_of(head + "[[aim]]\ncolumn = \"err.p95\"\nbelow = 1\nskip_empty = 1\n").find("true or false"),
+              std::string::npos);
+    EXPECT_NE(error_of(head + "[[aim]]\ncolumn = \"err.p95\"\nbelow = 1\nabove = 0\n").find("unknown key 'above'"),
+              std::string::npos);
+    EXPECT_NE(error_of("aim = 3\n" + head).find("aims are written [[aim]]"), std::string::npos);
+    // A line number names the entry at fault.
+    EXPECT_NE(error_of(head + "[[aim]]\ncolumn = \"err.p95\"\nwithin = [2, 1]\n").find("test.toml:16:"),
+              std::string::npos);
+}
+
+TEST(Aims, EachRunJudgedByEachAim) {
+    auto spec = parse_spec(head + R"(
+[[aim]]
+column = "err.p95"
+below = 1.0
+[[aim]]
+column = "err.mean"
+within = [0.5, 1.5]
+skip_empty = true
+[[aim]]
+column = "bound.max"
+at_least = 2
+)",
+                           "/specs/test.toml");
+    ResultRows table;
+    table.header = {"run", "err.mean", "err.p95", "bound.max", "wall_time", "status", "message"};
+    table.rows = {
+        {"0", "0.5", "0.99", "2", "1", "ok", ""},        // meets all three (each bound included where it says so)
+        {"1", "nan", "1", "3", "1", "ok", ""},           // p95 at the bound: misses; mean not judged
+        {"2", "", "", "", "1", "failed", "boom"},        // not judged at all
+        {"3", "1.6", "nan", "1.5", "1", "stopped", ""},  // misses all three: no p95 counts as a miss
+        {"4", "1.5", "0.2", "7", "1", "ok", ""},         // meets all three
+    };
+    const AimsReport r = judge_aims(spec, table);
+    EXPECT_EQ(r.finished, 4);
+    EXPECT_EQ(r.failed, 1);
+    ASSERT_EQ(r.per_aim.size(), 3u);
+    EXPECT_EQ(r.per_aim[0].met, 2);
+    EXPECT_EQ(r.per_aim[0].missed, 2);
+    EXPECT_EQ(r.per_aim[0].missing_runs, (std::vector<std::string>{"1", "3"}));
+    EXPECT_EQ(r.per_aim[1].met, 2);
+    EXPECT_EQ(r.per_aim[1].missed, 1);
+    EXPECT_EQ(r.per_aim[1].not_judged, 1);
+    EXPECT_EQ(r.per_aim[2].met, 3);
+    EXPECT_EQ(r.per_aim[2].missing_runs, (std::vector<std::string>{"3"}));
+    EXPECT_EQ(r.every, 2);
+    EXPECT_EQ(r.missing_any, (std::vector<std::string>{"1", "3"}));
+
+    std::ostringstream md, out;
+    write_aims(md, spec, r);
+    print_aims(spec, r, out);
+    EXPECT_NE(md.str().find("| err.p95 < 1 | 2 | 2 | 0 | 1, 3 |"), std::string::npos) << md.str();
+    EXPECT_NE(md.str().find("**Every aim: 2 of 4 finished runs.**"), std::string::npos) << md.str();
+    EXPECT_NE(out.str().find("err.mean in [0.5, 1.5]: 2 met, 1 missed (run 3), 1 not judged (no value)"),
+              std::string::npos)
+        << out.str();
+    EXPECT_NE(out.str().find("every aim: 2 of 4 runs"), std::string::npos) << out.str();
+}
+
+// A whole campaign of two short runs with two aims no run can miss or meet: a state of charge is never negative.
+TEST(Aims, ACampaignSaysThemAtItsEndAndInItsSummary) {
+    const auto dir = std::filesystem::temp_directory_path() / ("campaign_aims_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::string spec = campaign_test::leo_short_text() + R"(
+[[aim]]
+column = "soc.min"
+at_least = 0
+[[aim]]
+column = "soc.min"
+below = 0
+)";
+    std::ofstream(dir / "aims.toml") << spec;
+    CampaignOptions o;
+    o.spec = dir / "aims.toml";
+    o.output = dir / "out";
+    o.fmu_dirs = {PVATT_FMU_DIR};
+    o.progress = false;
+    o.figures = false;
+    o.runs = 2;
+    o.stop_time = 4.0;
+    std::ostringstream out;
+    ASSERT_EQ(run_campaign(o, out), 0);
+    EXPECT_NE(out.str().find("soc.min >= 0: 2 met, 0 missed\n"), std::string::npos) << out.str();
+    EXPECT_NE(out.str().find("soc.min < 0: 0 met, 2 missed (runs 0, 1)"), std::string::npos) << out.str();
+    EXPECT_NE(out.str().find("every aim: 0 of 2 runs"), std::string::npos) << out.str();
+    std::ifstream summary(dir / "out" / "summary.md");
+    std::stringstream s;
+    s << summary.rdbuf();
+    EXPECT_NE(s.str().find("## Aims"), std::string::npos) << s.str();
+    EXPECT_NE(s.str().find("**Every aim: 0 of 2 finished runs.**"), std::string::npos) << s.str();
+    // A measure column is checked once the system's measures are known: one it does not declare is refused.
+    std::ofstream(dir / "bad.toml") << spec << "[[aim]]\ncolumn = \"measure.filter.nothing\"\nbelow = 1\n";
+    o.spec = dir / "bad.toml";
+    o.output = dir / "bad";
+    try {
+        run_campaign(o, out);
+        ADD_FAILURE() << "an aim on a column the table does not have ran";
+    } catch (const CampaignError& e) {
+        EXPECT_NE(std::string(e.what()).find("aim 3: 'measure.filter.nothing' is not a column"), std::string::npos)
+            << e.what();
+    }
+    std::filesystem::remove_all(dir);
+}
+
+// The bundled robustness campaign carries issue 39's aims.
+TEST(Aims, TheRobustnessCampaignCarriesIssue39sAims) {
+    const auto spec = read_spec(std::filesystem::path(CAMPAIGN_TEST_SPECS) / "../../../campaigns/robustness.toml");
+    ASSERT_EQ(spec.aims.size(), 8u);
+    EXPECT_EQ(aim_text(spec.aims[0]), "error_sunlit.p95 < 1");
+    EXPECT_EQ(aim_text(spec.aims[2]), "nees_sunlit.per_dof in [0.5, 1.5]");
+    EXPECT_EQ(aim_text(spec.aims[4]), "nees_sunlit.chi2_99 >= 95");
+    EXPECT_TRUE(spec.aims[1].skip_empty);
+    EXPECT_FALSE(spec.aims[0].skip_empty);
+}

@@ -1,0 +1,36 @@
+// What the campaign's tests share about specs: the error a spec text is refused with, and the quick LEO spec
+// (specs/leo_short.toml) as text with its system's path made absolute, to extend and write elsewhere.
+#pragma once
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "campaign_error.hpp"
+#include "campaign_spec.hpp"
+
+namespace campaign_test {
+
+// What parse_spec refuses the text with ("" when it reads it), the spec named /specs/test.toml.
+inline std::string error_of(const std::string& text) {
+    try {
+        campaign::parse_spec(text, "/specs/test.toml");
+    } catch (const campaign::CampaignError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+// specs/leo_short.toml with its system's path absolute (CAMPAIGN_TEST_SPECS): the text can go anywhere.
+inline std::string leo_short_text() {
+    std::ifstream in(std::string(CAMPAIGN_TEST_SPECS) + "/leo_short.toml");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string spec = text.str();
+    const std::string relative = "\"../../../systems/leo_orbit.ssd\"";
+    spec.replace(spec.find(relative), relative.size(),
+                 "\"" + std::string(CAMPAIGN_TEST_SPECS) + "/../../../systems/leo_orbit.ssd\"");
+    return spec;
+}
+
+}  // namespace campaign_test
