@@ -5,11 +5,11 @@ The README shows what `cosim run harness/systems/leo_orbit.ssd` prints at its en
 the line "prints the integrator's statistics and then:". This runs that command from the clone and checks the
 block line by line against its output:
 - every README line is an output line with the same words (numbers aside), in the same order;
-- every number agrees within a tolerance: the README gives three significant digits of one compiler's run, and
-  the test build (clang with sanitizers) differs from the release build (GCC) in the last bits, which a
-  tumbling orbit carries into the third digit. Angles, NEES/dof and coverage within 3 % relative or 0.02 absolute,
-  sample counts within 3 %, times (s) within 10 s. A stale figure (a changed filter, a re-tuned parameter) moves
-  them further.
+- every number agrees: times (s) exactly, angles, NEES/dof and coverage within 1 % or 0.005, sample counts within
+  1 %. The release build (GCC) and the test build (clang with sanitizers) print the same text here (measured
+  2026-12-06); the margin is for another machine's libm, whose last bits a tumbling orbit could carry into the
+  third digit. A stale figure moves further: the first run of this test found the block's last line one 10 s row
+  late (280 s for 270 s) and its bound 88.6° for 89.3°.
 Usage: check_run_output.py CLONE COSIM
 """
 import pathlib
@@ -52,10 +52,10 @@ def kind(line, match):
 
 def agrees(kind_, shown, got):
     if kind_ == "time":
-        return abs(shown - got) <= 10.0
+        return shown == got
     if kind_ == "count":
-        return abs(shown - got) <= 0.03 * max(abs(shown), 1.0)
-    return abs(shown - got) <= max(0.02, 0.03 * abs(shown))
+        return abs(shown - got) <= 0.01 * abs(shown)
+    return abs(shown - got) <= max(0.005, 0.01 * abs(shown))
 
 
 def main():
