@@ -569,6 +569,8 @@ Aim read_aim(const Context& cx, const toml::table& t, std::size_t index) {
     only_keys(cx, t, where, {"column", "below", "at_least", "within", "skip_empty"});
     Aim a;
     a.column = string(cx, required(cx, t, "column", where), where + ": 'column'");
+    if (a.column.ends_with(".which"))
+        cx.fail(t, where + ": '" + a.column + "' holds text (the declarations in order), not a number to judge");
     const int bounds = t.contains("below") + t.contains("at_least") + t.contains("within");
     if (bounds != 1) cx.fail(t, where + ": give exactly one of 'below', 'at_least' and 'within'");
     if (const auto* n = t.get("below")) {

@@ -85,6 +85,11 @@ TEST(Aims, MistakesAreRefusedWithTheirPlace) {
               std::string::npos);
     EXPECT_NE(error_of(head + "[[aim]]\ncolumn = \"err.p95\"\nbelow = 1\nabove = 0\n").find("unknown key 'above'"),
               std::string::npos);
+    EXPECT_NE(
+        error_of(head + "[[metric]]\nname = \"d\"\nkind = \"detection\"\nwords = [\"est.fault_face\"]\nperiod = 60\n"
+                        "[[aim]]\ncolumn = \"d.which\"\nbelow = 1\n")
+            .find("holds text"),
+        std::string::npos);
     EXPECT_NE(error_of("aim = 3\n" + head).find("aims are written [[aim]]"), std::string::npos);
     // A line number names the entry at fault.
     EXPECT_NE(error_of(head + "[[aim]]\ncolumn = \"err.p95\"\nwithin = [2, 1]\n").find("test.toml:16:"),
