@@ -94,7 +94,43 @@ AimsReport judge_aims(const CampaignSpec& spec, const ResultRows& table) {
     return r;
 }
 
-void write_aims(std::ostream& md, const CampaignSpec& spec, const AimsReport& report) {
+std::vector<AimsByValue> judge_aims_by_category(const CampaignSpec& spec, const ResultRows& table) {
+    std::vector<AimsByValue> out;
+    if (spec.aims.empty()) return out;
+    // The kinds of scene a spec names: an orbit draw's class, a choice or grid of text, a case (not a date's
+    // text, nor a number).
+    std::vector<std::string> columns;
+    for (const auto& d : spec.draws) {
+        if (d.kind == DrawKind::orbit) columns.push_back(d.target + ".class");
+        if ((d.kind == DrawKind::choice || d.kind == DrawKind::grid) && !d.values.empty() &&
+            std::none_of(d.values.begin(), d.values.end(), [](const SpecValue& v) { return v.numeric; }))
+            columns.push_back(d.target);
+    }
+    if (!spec.cases.empty()) columns.push_back("case");
+    const std::size_t status = table.header.size() - 2;
+    for (const auto& name : columns) {
+        if (std::find(table.header.begin(), table.header.end(), name) == table.header.end()) continue;
+        const std::size_t c = table.column(name);
+        std::vector<std::string> values;
+        for (const auto& row : table.rows)
+            if ((row[status] == "ok" || row[status] == "stopped") &&
+                std::find(values.begin(), values.end(), row[c]) == values.end())
+                values.push_back(row[c]);
+        if (values.size() < 2 || values.size() > max_category_values) continue;
+        AimsByValue by{name, {}};
+        for (const auto& v : values) {
+            ResultRows part{table.header, {}};
+            for (const auto& row : table.rows)
+                if (row[c] == v) part.rows.push_back(row);
+            by.values.emplace_back(v, judge_aims(spec, part));
+        }
+        out.push_back(std::move(by));
+    }
+    return out;
+}
+
+void write_aims(std::ostream& md, const CampaignSpec& spec, const AimsReport& report,
+                const std::vector<AimsByValue>& by_category) {
     if (spec.aims.empty()) return;
     md << "\n## Aims\n\nEach finished run judged by each of the spec's aims (" << report.finished << " finished runs";
     if (report.failed > 0) md << "; " << report.failed << " failed, not judged";
@@ -109,9 +145,25 @@ void write_aims(std::ostream& md, const CampaignSpec& spec, const AimsReport& re
     md << "\n**Every aim: " << report.every << " of " << report.finished << " finished runs.**";
     if (!report.missing_any.empty()) md << " Runs that miss one or more: " << run_list(report.missing_any) << ".";
     md << "\n";
+    for (const auto& by : by_category) {
+        md << "\n### Aims by " << by.column
+           << "\n\nPer value: the runs, those that meet every aim, and per aim the runs that meet it / the runs it "
+              "judges.\n\n| "
+           << by.column << " | runs | every aim |";
+        for (const auto& aim : spec.aims) md << " " << aim_text(aim) << " |";
+        md << "\n|---|---|---|";
+        for (std::size_t i = 0; i < spec.aims.size(); ++i) md << "---|";
+        md << "\n";
+        for (const auto& [value, r] : by.values) {
+            md << "| " << value << " | " << r.finished << " | " << r.every << " |";
+            for (const auto& t : r.per_aim) md << " " << t.met << "/" << t.met + t.missed << " |";
+            md << "\n";
+        }
+    }
 }
 
-void print_aims(const CampaignSpec& spec, const AimsReport& report, std::ostream& out) {
+void print_aims(const CampaignSpec& spec, const AimsReport& report, const std::vector<AimsByValue>& by_category,
+                std::ostream& out) {
     if (spec.aims.empty()) return;
     out << "aims, per run (" << report.finished << " finished runs"
         << (report.failed > 0 ? ", " + std::to_string(report.failed) + " failed, not judged" : std::string()) << "):\n";
@@ -124,6 +176,13 @@ void print_aims(const CampaignSpec& spec, const AimsReport& report, std::ostream
         out << "\n";
     }
     out << "  every aim: " << report.every << " of " << report.finished << " runs\n";
+    for (const auto& by : by_category) {
+        out << "  every aim by " << by.column << ":";
+        for (std::size_t i = 0; i < by.values.size(); ++i)
+            out << (i ? ", " : " ") << by.values[i].first << " " << by.values[i].second.every << " of "
+                << by.values[i].second.finished;
+        out << "\n";
+    }
 }
 
 }  // namespace campaign

@@ -37,12 +37,23 @@ struct AimsReport {
 // that run not judged by it.
 AimsReport judge_aims(const CampaignSpec& spec, const ResultRows& table);
 
+// The same per value of each drawn column that holds names (an orbit draw's class, a choice or grid of text: at
+// most max_category_values of them) and per case: which kinds of scene meet the aims.
+inline constexpr std::size_t max_category_values = 20;
+struct AimsByValue {
+    std::string column;
+    std::vector<std::pair<std::string, AimsReport>> values;  // in order of first appearance
+};
+std::vector<AimsByValue> judge_aims_by_category(const CampaignSpec& spec, const ResultRows& table);
+
 // Throws CampaignError naming the aim when its column is not one of the spec's metric or measure columns.
 void check_aim_columns(const CampaignSpec& spec);
 
 // The summary's section (nothing when the spec has no aims).
-void write_aims(std::ostream& md, const CampaignSpec& spec, const AimsReport& report);
-// The end of `cosim campaign` (nothing when the spec has no aims).
-void print_aims(const CampaignSpec& spec, const AimsReport& report, std::ostream& out);
+void write_aims(std::ostream& md, const CampaignSpec& spec, const AimsReport& report,
+                const std::vector<AimsByValue>& by_category);
+// The end of `cosim campaign` (nothing when the spec has no aims): per aim, then every aim per category.
+void print_aims(const CampaignSpec& spec, const AimsReport& report, const std::vector<AimsByValue>& by_category,
+                std::ostream& out);
 
 }  // namespace campaign

@@ -504,7 +504,7 @@ void write_summary(const std::filesystem::path& file, const CampaignSetup& setup
             metrics_table([&](const std::vector<std::string>& row) { return row[k] == c.name; });
         }
     }
-    write_aims(md, spec, judge_aims(spec, table));
+    write_aims(md, spec, judge_aims(spec, table), judge_aims_by_category(spec, table));
     write_detection(md, spec, table);
     write_paired(md, spec, table);
     if (failed > 0) {

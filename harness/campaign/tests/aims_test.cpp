@@ -135,14 +135,69 @@ at_least = 2
     EXPECT_EQ(r.missing_any, (std::vector<std::string>{"1", "3"}));
 
     std::ostringstream md, out;
-    write_aims(md, spec, r);
-    print_aims(spec, r, out);
+    write_aims(md, spec, r, {});
+    print_aims(spec, r, {}, out);
     EXPECT_NE(md.str().find("| err.p95 < 1 | 2 | 2 | 0 | 1, 3 |"), std::string::npos) << md.str();
     EXPECT_NE(md.str().find("**Every aim: 2 of 4 finished runs.**"), std::string::npos) << md.str();
     EXPECT_NE(out.str().find("err.mean in [0.5, 1.5]: 2 met, 1 missed (run 3), 1 not judged (no value)"),
               std::string::npos)
         << out.str();
     EXPECT_NE(out.str().find("every aim: 2 of 4 runs"), std::string::npos) << out.str();
+}
+
+// Per kind of scene: the values of a drawn choice of names, each judged apart (a numeric choice is no kind).
+TEST(Aims, EachKindOfSceneJudgedApart) {
+    auto spec = parse_spec(head + R"(
+[[draw]]
+kind = "choice"
+target = "env.orbit_class"
+values = ["polar", "iss"]
+[[draw]]
+kind = "choice"
+target = "est.rate"
+values = [1, 2]
+[[aim]]
+column = "err.p95"
+below = 1.0
+[[aim]]
+column = "bound.max"
+at_least = 2
+)",
+                           "/specs/test.toml");
+    ResultRows table;
+    table.header = {"run", "env.orbit_class", "est.rate", "err.p95", "bound.max", "wall_time", "status", "message"};
+    table.rows = {
+        {"0", "polar", "1", "0.5", "3", "1", "ok", ""},  // both aims
+        {"1", "iss", "2", "1.5", "3", "1", "ok", ""},    // misses the first
+        {"2", "polar", "1", "0.5", "1", "1", "ok", ""},  // misses the second
+        {"3", "iss", "1", "0.2", "2", "1", "ok", ""},    // both aims
+        {"4", "iss", "2", "", "", "1", "failed", "x"},   // not judged
+    };
+    const auto by = judge_aims_by_category(spec, table);
+    ASSERT_EQ(by.size(), 1u);
+    EXPECT_EQ(by[0].column, "env.orbit_class");
+    ASSERT_EQ(by[0].values.size(), 2u);
+    const auto& [polar_name, polar] = by[0].values[0];
+    const auto& [iss_name, iss] = by[0].values[1];
+    EXPECT_EQ(polar_name, "polar");
+    EXPECT_EQ(polar.finished, 2);
+    EXPECT_EQ(polar.every, 1);
+    EXPECT_EQ(polar.per_aim[0].met, 2);
+    EXPECT_EQ(polar.per_aim[1].met, 1);
+    EXPECT_EQ(iss_name, "iss");
+    EXPECT_EQ(iss.finished, 2);
+    EXPECT_EQ(iss.failed, 1);
+    EXPECT_EQ(iss.every, 1);
+    EXPECT_EQ(iss.per_aim[0].met, 1);
+    EXPECT_EQ(iss.per_aim[1].met, 2);
+
+    std::ostringstream md, out;
+    write_aims(md, spec, judge_aims(spec, table), by);
+    print_aims(spec, judge_aims(spec, table), by, out);
+    EXPECT_NE(md.str().find("### Aims by env.orbit_class"), std::string::npos) << md.str();
+    EXPECT_NE(md.str().find("| polar | 2 | 1 | 2/2 | 1/2 |"), std::string::npos) << md.str();
+    EXPECT_NE(md.str().find("| iss | 2 | 1 | 1/2 | 2/2 |"), std::string::npos) << md.str();
+    EXPECT_NE(out.str().find("every aim by env.orbit_class: polar 1 of 2, iss 1 of 2"), std::string::npos) << out.str();
 }
 
 // A whole campaign of two short runs with two aims no run can miss or meet: a state of charge is never negative.

@@ -146,7 +146,7 @@ int campaign_on_rank0(const CampaignSetup& setup, const CampaignOptions& options
     write_summary(spec.output / "summary.md", setup, table, stats, figures, note);
     print_statistics(stats, out);
     print_measures_over_runs(spec, table, out);
-    print_aims(spec, judge_aims(spec, table), out);
+    print_aims(spec, judge_aims(spec, table), judge_aims_by_category(spec, table), out);
     out << "results: " << table_file.string() << "\nsummary: " << (spec.output / "summary.md").string() << "\n";
     return 0;
 }
