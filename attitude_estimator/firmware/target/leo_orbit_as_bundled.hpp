@@ -75,6 +75,7 @@ inline void leo_orbit_3u(attitude_estimator::EstimatorData& d, bool detect, bool
     d.filter_drag = true;
     d.filter_watch_time = 300.0;
     d.filter_watch_sun = true;
+    d.filter_watch_gate = 8.0;
     d.filter_hold_field_axis = true;
     d.body_size = {0.1, 0.1, 0.34};
     d.centre_of_mass = {0.004, -0.003, -0.012};
