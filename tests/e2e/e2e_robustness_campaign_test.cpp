@@ -101,8 +101,8 @@ TEST(E2eRobustnessCampaign, EclipseStartIsValidTenMinutesAfterTheFirstSunlight) 
 // One run of the campaign drawn with `seed` to 64 runs, stopped at `stop`, with the --set `settings`: the spec's own
 // metric cells (those judged after `stop` read NaN) and two judged while the filter is valid: the error
 // (error_valid: max, count) and the normalized error (nees_valid: per_dof, chi2_99).
-std::map<std::string, double> while_valid(long seed, long index, double stop,
-                                          const std::vector<std::string>& settings, long runs = 64) {
+std::map<std::string, double> while_valid(long seed, long index, double stop, const std::vector<std::string>& settings,
+                                          long runs = 64) {
     campaign::CampaignSpec spec = campaign::read_spec(PVATT_SYSTEMS_DIR "/../campaigns/robustness.toml");
     spec.seed = static_cast<std::uint64_t>(seed);
     spec.runs = runs;
