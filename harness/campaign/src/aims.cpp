@@ -59,7 +59,8 @@ void check_aim_columns(const CampaignSpec& spec) {
                                 (spec.measures ? " or a measure.* column)" : ")"));
 }
 
-AimsReport judge_aims(const CampaignSpec& spec, const ResultRows& table) {
+AimsReport judge_aims(const CampaignSpec& spec, const ResultRows& table,
+                      const std::function<bool(const std::vector<std::string>&)>& keep) {
     AimsReport r;
     r.per_aim.resize(spec.aims.size());
     if (spec.aims.empty()) return r;
@@ -67,7 +68,8 @@ AimsReport judge_aims(const CampaignSpec& spec, const ResultRows& table) {
     std::vector<std::size_t> columns;
     for (const auto& aim : spec.aims) columns.push_back(table.column(aim.column));
     for (const auto& row : table.rows) {
-        if (row[status] != "ok" && row[status] != "stopped") {
+        if (keep && !keep(row)) continue;
+        if (row[status] == "failed") {
             ++r.failed;
             continue;
         }
@@ -112,18 +114,15 @@ std::vector<AimsByValue> judge_aims_by_category(const CampaignSpec& spec, const 
         if (std::find(table.header.begin(), table.header.end(), name) == table.header.end()) continue;
         const std::size_t c = table.column(name);
         std::vector<std::string> values;
-        for (const auto& row : table.rows)
-            if ((row[status] == "ok" || row[status] == "stopped") &&
-                std::find(values.begin(), values.end(), row[c]) == values.end())
+        for (const auto& row : table.rows)  // up to one past the limit: enough to skip the column
+            if (row[status] != "failed" && std::find(values.begin(), values.end(), row[c]) == values.end() &&
+                values.size() <= max_category_values)
                 values.push_back(row[c]);
         if (values.size() < 2 || values.size() > max_category_values) continue;
         AimsByValue by{name, {}};
-        for (const auto& v : values) {
-            ResultRows part{table.header, {}};
-            for (const auto& row : table.rows)
-                if (row[c] == v) part.rows.push_back(row);
-            by.values.emplace_back(v, judge_aims(spec, part));
-        }
+        for (const auto& v : values)
+            by.values.emplace_back(
+                v, judge_aims(spec, table, [&](const std::vector<std::string>& row) { return row[c] == v; }));
         out.push_back(std::move(by));
     }
     return out;

@@ -4,6 +4,7 @@
 // question it was run for instead of leaving the count to whoever reads the table.
 #pragma once
 
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -35,7 +36,9 @@ struct AimsReport {
 // Judges every finished run of the table by the spec's aims. A run with no value in an aim's column (the
 // metric sampled nothing: a run without an eclipse) misses it, unless the aim says skip_empty, which leaves
 // that run not judged by it.
-AimsReport judge_aims(const CampaignSpec& spec, const ResultRows& table);
+// `keep` selects the rows judged (all when empty).
+AimsReport judge_aims(const CampaignSpec& spec, const ResultRows& table,
+                      const std::function<bool(const std::vector<std::string>&)>& keep = {});
 
 // The same per value of each drawn column that holds names (an orbit draw's class, a choice or grid of text: at
 // most max_category_values of them) and per case: which kinds of scene meet the aims.

@@ -214,12 +214,7 @@ column = "soc.min"
 below = 0
 )";
     std::ofstream(dir / "aims.toml") << spec;
-    CampaignOptions o;
-    o.spec = dir / "aims.toml";
-    o.output = dir / "out";
-    o.fmu_dirs = {PVATT_FMU_DIR};
-    o.progress = false;
-    o.figures = false;
+    CampaignOptions o = campaign_test::quiet_options(dir / "aims.toml", dir / "out");
     o.runs = 2;
     o.stop_time = 4.0;
     std::ostringstream out;

@@ -160,12 +160,7 @@ TEST(Campaign, AfterFirstCountsFromWhereItsConditionFirstHeld) {
            "after = 2.0\nstats = [\"min\", \"count\"]\n"
            "[[metric]]\nname = \"never\"\nkind = \"column\"\ncolumn = \"est.samples\"\n"
            "after_first = \"env.irradiance < 0\"\nstats = [\"count\"]\n";
-    CampaignOptions o;
-    o.spec = dir / "spec.toml";
-    o.output = dir / "out";
-    o.fmu_dirs = {PVATT_FMU_DIR};
-    o.progress = false;
-    o.figures = false;
+    CampaignOptions o = campaign_test::quiet_options(dir / "spec.toml", dir / "out");
     o.replay = 0;  // the run's row and its full CSV, from one run
     std::ostringstream out;
     ASSERT_EQ(run_campaign(o, out), 0);
@@ -368,12 +363,7 @@ condition = "env.irradiance < 0"
 )";
     const auto spec_file = dir / "per_grid.toml";
     std::ofstream(spec_file) << spec;
-    CampaignOptions o;
-    o.spec = spec_file;
-    o.output = dir / "out";
-    o.fmu_dirs = {PVATT_FMU_DIR};
-    o.progress = false;
-    o.figures = false;
+    CampaignOptions o = campaign_test::quiet_options(spec_file, dir / "out");
     o.runs = 4;
     o.stop_time = 4.0;
     std::ostringstream out;

@@ -1,11 +1,14 @@
-// What the campaign's tests share about specs: the error a spec text is refused with, and the quick LEO spec
-// (specs/leo_short.toml) as text with its system's path made absolute, to extend and write elsewhere.
+// What the campaign's tests share about specs: the error a spec text is refused with, the quick LEO spec
+// (specs/leo_short.toml) as text with its system's path made absolute, to extend and write elsewhere, and the
+// options of a quiet campaign of a spec written there.
 #pragma once
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
+#include "campaign_command.hpp"
 #include "campaign_error.hpp"
 #include "campaign_spec.hpp"
 
@@ -31,6 +34,17 @@ inline std::string leo_short_text() {
     spec.replace(spec.find(relative), relative.size(),
                  "\"" + std::string(CAMPAIGN_TEST_SPECS) + "/../../../systems/leo_orbit.ssd\"");
     return spec;
+}
+
+// A campaign of `spec` into `output` on this build's FMUs, without progress lines or figures.
+inline campaign::CampaignOptions quiet_options(const std::filesystem::path& spec, const std::filesystem::path& output) {
+    campaign::CampaignOptions o;
+    o.spec = spec;
+    o.output = output;
+    o.fmu_dirs = {PVATT_FMU_DIR};
+    o.progress = false;
+    o.figures = false;
+    return o;
 }
 
 }  // namespace campaign_test
