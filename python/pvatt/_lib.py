@@ -162,6 +162,16 @@ _sig(
     ctypes.c_size_t,
     ctypes.POINTER(ctypes.c_size_t),
 )
+_sig(
+    "pvatt_campaign_aims",
+    _status,
+    ctypes.c_char_p,
+    ctypes.c_char_p,
+    ctypes.c_int,
+    ctypes.c_char_p,
+    ctypes.c_size_t,
+    ctypes.POINTER(ctypes.c_size_t),
+)
 
 # SIGINT during a run sets the library's interrupt flag (the run stops at its next check and returns
 # PVATT_INTERRUPTED, raised here as KeyboardInterrupt); Python's own handler is back after each call.
@@ -181,6 +191,19 @@ def check(status, callback_errors=None):
     if status in (PVATT_INVALID_ARGUMENT, PVATT_WRONG_STATE):
         raise PvattError(message, status)
     raise PvattError(message, status)
+
+
+def text_from(function, *args, size=256):
+    """The text a C call copies into a caller's buffer (the calls ending in buffer, size, needed): asked once
+    with a buffer of `size` bytes, again with the size it said it needs when that was too small."""
+    needed = ctypes.c_size_t()
+    buffer = ctypes.create_string_buffer(size)
+    status = function(*args, buffer, len(buffer), ctypes.byref(needed))
+    if status == PVATT_BUFFER_TOO_SMALL:
+        buffer = ctypes.create_string_buffer(needed.value)
+        status = function(*args, buffer, len(buffer), None)
+    check(status)
+    return buffer.value.decode()
 
 
 def encode(text, what="a name or value"):

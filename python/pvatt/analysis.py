@@ -15,7 +15,7 @@ import json
 import math
 
 from . import _lib
-from ._lib import check, lib
+from ._lib import lib
 
 _lib._sig(
     "pvatt_result_measures",
@@ -33,16 +33,8 @@ CHI2_3DOF_99 = 11.344866730144373
 
 
 def _call(result, converged_after, as_text):
-    handle = result._owner.handle
     after = math.nan if converged_after is None else float(converged_after)
-    size = ctypes.c_size_t()
-    buffer = ctypes.create_string_buffer(4096)
-    status = lib.pvatt_result_measures(handle, after, as_text, buffer, len(buffer), ctypes.byref(size))
-    if status == _lib.PVATT_BUFFER_TOO_SMALL:
-        buffer = ctypes.create_string_buffer(size.value)
-        status = lib.pvatt_result_measures(handle, after, as_text, buffer, len(buffer), None)
-    check(status)
-    return buffer.value.decode()
+    return _lib.text_from(lib.pvatt_result_measures, result._owner.handle, after, as_text, size=4096)
 
 
 def measures(result, converged_after=None):

@@ -184,15 +184,7 @@ class System:
 
     def get(self, name):
         """The value set, else the description's or the FMU's start value, as text."""
-        size = ctypes.c_size_t()
-        buffer = ctypes.create_string_buffer(256)
-        encoded = encode(name, "the name")
-        status = lib.pvatt_system_get(self._handle, encoded, buffer, len(buffer), ctypes.byref(size))
-        if status == _lib.PVATT_BUFFER_TOO_SMALL:
-            buffer = ctypes.create_string_buffer(size.value)
-            status = lib.pvatt_system_get(self._handle, encoded, buffer, len(buffer), None)
-        check(status)
-        return buffer.value.decode()
+        return _lib.text_from(lib.pvatt_system_get, self._handle, encode(name, "the name"))
 
     def clear_settings(self):
         lib.pvatt_system_clear_settings(self._handle)
@@ -312,15 +304,7 @@ class Simulation:
     def _get(self, name):
         component, _, variable = name.partition(".")
         if self.system.components[component][variable].type in ("String", "Enumeration"):
-            size = ctypes.c_size_t()
-            buffer = ctypes.create_string_buffer(256)
-            encoded = encode(name, "the name")
-            status = lib.pvatt_simulation_get_text(self._handle, encoded, buffer, len(buffer), ctypes.byref(size))
-            if status == _lib.PVATT_BUFFER_TOO_SMALL:
-                buffer = ctypes.create_string_buffer(size.value)
-                status = lib.pvatt_simulation_get_text(self._handle, encoded, buffer, len(buffer), None)
-            check(status)
-            return buffer.value.decode()
+            return _lib.text_from(lib.pvatt_simulation_get_text, self._handle, encode(name, "the name"))
         x = ctypes.c_double()
         check(lib.pvatt_simulation_get_real(self._handle, encode(name, "the name"), ctypes.byref(x)))
         return x.value

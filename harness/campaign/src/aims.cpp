@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "analysis/json_text.hpp"
 #include "campaign_error.hpp"
 #include "engine/value_text.hpp"
 #include "metric_observer.hpp"
@@ -182,6 +183,75 @@ void print_aims(const CampaignSpec& spec, const AimsReport& report, const std::v
                 << by.values[i].second.finished;
         out << "\n";
     }
+}
+
+namespace {
+
+// A run's cell as JSON: its number (the run column holds integers), or the text when it is not one.
+std::string json_run(const std::string& cell) {
+    const auto x = number_in(cell);
+    return x && *x == std::floor(*x) ? analysis::json_number(*x) : analysis::json_string(cell);
+}
+
+std::string json_runs(const std::vector<std::string>& runs) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < runs.size(); ++i) out += (i ? ", " : "") + json_run(runs[i]);
+    return out + "]";
+}
+
+std::string json_counts(const std::vector<AimTally>& per_aim, bool judged) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < per_aim.size(); ++i)
+        out += (i ? ", " : "") + std::to_string(per_aim[i].met + (judged ? per_aim[i].missed : 0));
+    return out + "]";
+}
+
+const char* kind_name(AimKind kind) {
+    switch (kind) {
+        case AimKind::below:
+            return "below";
+        case AimKind::at_least:
+            return "at_least";
+        case AimKind::within:
+            return "within";
+    }
+    return "";
+}
+
+}  // namespace
+
+std::string aims_json(const CampaignSpec& spec, const AimsReport& report, const std::vector<AimsByValue>& by_category) {
+    using analysis::json_number, analysis::json_string;
+    std::string out = "{\"finished\": " + std::to_string(report.finished) +
+                      ", \"failed\": " + std::to_string(report.failed) +
+                      ", \"every\": " + std::to_string(report.every) +
+                      ", \"missing_any\": " + json_runs(report.missing_any) + ", \"aims\": [";
+    for (std::size_t i = 0; i < spec.aims.size(); ++i) {
+        const Aim& a = spec.aims[i];
+        const AimTally& t = report.per_aim[i];
+        const bool low = a.kind != AimKind::below, high = a.kind != AimKind::at_least;
+        out += std::string(i ? ", " : "") + "{\"column\": " + json_string(a.column) +
+               ", \"condition\": " + json_string(aim_text(a)) + ", \"kind\": " + json_string(kind_name(a.kind)) +
+               ", \"low\": " + (low ? json_number(a.low) : "null") +
+               ", \"high\": " + (high ? json_number(a.high) : "null") +
+               ", \"skip_empty\": " + (a.skip_empty ? "true" : "false") + ", \"met\": " + std::to_string(t.met) +
+               ", \"missed\": " + std::to_string(t.missed) + ", \"not_judged\": " + std::to_string(t.not_judged) +
+               ", \"missing_runs\": " + json_runs(t.missing_runs) + "}";
+    }
+    out += "], \"by_category\": [";
+    for (std::size_t i = 0; i < by_category.size(); ++i) {
+        out += std::string(i ? ", " : "") + "{\"column\": " + json_string(by_category[i].column) + ", \"values\": [";
+        const auto& values = by_category[i].values;
+        for (std::size_t j = 0; j < values.size(); ++j) {
+            const AimsReport& r = values[j].second;
+            out += std::string(j ? ", " : "") + "{\"value\": " + json_string(values[j].first) +
+                   ", \"finished\": " + std::to_string(r.finished) + ", \"failed\": " + std::to_string(r.failed) +
+                   ", \"every\": " + std::to_string(r.every) + ", \"met\": " + json_counts(r.per_aim, false) +
+                   ", \"judged\": " + json_counts(r.per_aim, true) + "}";
+        }
+        out += "]}";
+    }
+    return out + "]}";
 }
 
 }  // namespace campaign

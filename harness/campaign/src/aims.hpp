@@ -59,4 +59,11 @@ void write_aims(std::ostream& md, const CampaignSpec& spec, const AimsReport& re
 void print_aims(const CampaignSpec& spec, const AimsReport& report, const std::vector<AimsByValue>& by_category,
                 std::ostream& out);
 
+// The same as JSON, for the C API (pvatt_campaign_aims) and Python (CampaignResult.aims): {"finished",
+// "failed", "every", "missing_any": [runs], "aims": [{"column", "condition", "kind", "low", "high",
+// "skip_empty", "met", "missed", "not_judged", "missing_runs": [runs]}], "by_category": [{"column",
+// "values": [{"value", "finished", "failed", "every", "met": [per aim], "judged": [per aim]}]}]}. A run is
+// its number; every run that misses is listed (the text lists 40).
+std::string aims_json(const CampaignSpec& spec, const AimsReport& report, const std::vector<AimsByValue>& by_category);
+
 }  // namespace campaign

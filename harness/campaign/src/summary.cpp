@@ -8,6 +8,7 @@
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <iterator>
 #include <set>
 #include <sstream>
 
@@ -50,6 +51,48 @@ ResultRows split_rows(const std::vector<std::string>& header, const std::map<lon
     ResultRows t;
     t.header = header;
     for (const auto& [index, line] : rows) t.rows.push_back(split_csv_line(line));
+    return t;
+}
+
+ResultRows read_table(const std::filesystem::path& file) {
+    const std::string name = "results table " + file.string();
+    std::error_code ec;
+    const auto bytes = std::filesystem::file_size(file, ec);
+    if (ec) throw CampaignError("cannot read the " + name + ": " + ec.message());
+    if (bytes > max_table_bytes)
+        throw CampaignError("the " + name + " has " + std::to_string(bytes) + " bytes, more than max_table_bytes (" +
+                            std::to_string(max_table_bytes) + ")");
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw CampaignError("cannot open the " + name);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad()) throw CampaignError("cannot read the " + name);
+    if (text.empty()) throw CampaignError("the " + name + " is empty");
+    if (text.back() != '\n')
+        throw CampaignError("the " + name +
+                            " ends in a row without its line end: the campaign is still running or was stopped "
+                            "(resume it first)");
+    ResultRows t;
+    std::size_t start = 0, line_number = 0;
+    while (start < text.size()) {
+        const auto end = text.find('\n', start);
+        auto cells = split_csv_line(text.substr(start, end - start));
+        start = end + 1;
+        ++line_number;
+        if (line_number == 1) {
+            if (cells.size() < 3 || cells.front() != "run" || cells[cells.size() - 2] != "status" ||
+                cells.back() != "message")
+                throw CampaignError(name +
+                                    ":1: not a campaign's results table (its first column is 'run', its last "
+                                    "two 'status' and 'message')");
+            t.header = std::move(cells);
+        } else if (cells.size() != t.header.size()) {
+            throw CampaignError(name + ":" + std::to_string(line_number) + ": a row of " +
+                                std::to_string(cells.size()) + " cells where the header has " +
+                                std::to_string(t.header.size()));
+        } else {
+            t.rows.push_back(std::move(cells));
+        }
+    }
     return t;
 }
 

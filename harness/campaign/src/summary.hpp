@@ -4,6 +4,7 @@
 // values of the first grid draw, and each angle metric against each drawn quantity).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -25,6 +26,14 @@ struct ResultRows {
     std::vector<double> finished_values(const std::string& name) const;
 };
 ResultRows split_rows(const std::vector<std::string>& header, const std::map<long, std::string>& rows);
+
+// A finished campaign's results.csv read back whole, to judge its aims afterwards (the C API's
+// pvatt_campaign_aims): every row with the header's number of cells, the header's first column "run" and its
+// last two "status" and "message", as the campaign writes them. Refused: a missing or unreadable file, one
+// larger than max_table_bytes, a last row without its line end (a campaign still running or stopped: resume
+// it first), a row of another width.
+inline constexpr std::uintmax_t max_table_bytes = std::uintmax_t{1} << 30;  // 1 GiB
+ResultRows read_table(const std::filesystem::path& file);
 
 // A cell as a finite number, or nothing.
 std::optional<double> number_in(const std::string& cell);

@@ -200,6 +200,73 @@ at_least = 2
     EXPECT_NE(out.str().find("every aim by env.orbit_class: polar 1 of 2, iss 1 of 2"), std::string::npos) << out.str();
 }
 
+// A table read back from its file (the C API's and Python's way to the aims) and judged as JSON: the same table as
+// above, written as the campaign writes it (a message with a comma quoted); the counts worked out by hand.
+TEST(Aims, AWrittenTableIsReadBackAndJudgedAsJson) {
+    const auto dir = std::filesystem::temp_directory_path() / ("campaign_aims_table_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    auto spec = parse_spec(head + R"(
+[[draw]]
+kind = "choice"
+target = "env.orbit_class"
+values = ["polar", "iss"]
+[[aim]]
+column = "err.p95"
+below = 1.0
+[[aim]]
+column = "bound.max"
+within = [2, 5]
+skip_empty = true
+)",
+                           "/specs/test.toml");
+    const std::string header = "run,env.orbit_class,err.p95,bound.max,wall_time,status,message\n";
+    std::ofstream(dir / "results.csv") << header << "0,polar,0.5,3,1,ok,\n"
+                                       << "1,iss,1.5,3,1,ok,\n"
+                                       << "2,polar,0.5,,1,ok,\n"  // no bound: not judged by the second
+                                       << "3,iss,0.2,6,1,ok,\n"
+                                       << "4,iss,,,1,failed,\"boom, twice\"\n";
+    const ResultRows table = read_table(dir / "results.csv");
+    ASSERT_EQ(table.rows.size(), 5u);
+    EXPECT_EQ(table.rows[4][6], "boom, twice");
+    const std::string json = aims_json(spec, judge_aims(spec, table), judge_aims_by_category(spec, table));
+    EXPECT_EQ(
+        json,
+        "{\"finished\": 4, \"failed\": 1, \"every\": 2, \"missing_any\": [1, 3], \"aims\": ["
+        "{\"column\": \"err.p95\", \"condition\": \"err.p95 < 1\", \"kind\": \"below\", \"low\": null, "
+        "\"high\": 1, \"skip_empty\": false, \"met\": 3, \"missed\": 1, \"not_judged\": 0, \"missing_runs\": [1]}, "
+        "{\"column\": \"bound.max\", \"condition\": \"bound.max in [2, 5]\", \"kind\": \"within\", \"low\": 2, "
+        "\"high\": 5, \"skip_empty\": true, \"met\": 2, \"missed\": 1, \"not_judged\": 1, \"missing_runs\": [3]}], "
+        "\"by_category\": [{\"column\": \"env.orbit_class\", \"values\": ["
+        "{\"value\": \"polar\", \"finished\": 2, \"failed\": 0, \"every\": 2, \"met\": [2, 1], \"judged\": [2, 1]}, "
+        "{\"value\": \"iss\", \"finished\": 2, \"failed\": 1, \"every\": 0, \"met\": [1, 1], \"judged\": [2, 2]}]}]}");
+
+    // What is refused, by name: no file, a row still being written, a row of another width, another kind of file,
+    // a table without an aim's column.
+    const auto refusal = [&](const std::string& text) {
+        std::ofstream(dir / "bad.csv", std::ios::trunc) << text;
+        try {
+            judge_aims(spec, read_table(dir / "bad.csv"));
+        } catch (const CampaignError& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    try {
+        read_table(dir / "none.csv");
+        ADD_FAILURE() << "a missing table was read";
+    } catch (const CampaignError& e) {
+        EXPECT_NE(std::string(e.what()).find("cannot read the results table"), std::string::npos) << e.what();
+    }
+    EXPECT_NE(refusal(header + "0,polar,0.5,3,1,ok,").find("still running or was stopped"), std::string::npos);
+    EXPECT_NE(refusal(header + "0,polar,0.5,3,1,ok\n").find("bad.csv:2: a row of 6 cells where the header has 7"),
+              std::string::npos);
+    EXPECT_NE(refusal("a,b\n1,2\n").find("not a campaign's results table"), std::string::npos);
+    EXPECT_NE(refusal("").find("is empty"), std::string::npos);
+    EXPECT_NE(refusal("run,err.p95,status,message\n0,1,ok,\n").find("no column 'bound.max'"), std::string::npos);
+    std::filesystem::remove_all(dir);
+}
+
 // A whole campaign of two short runs with two aims no run can miss or meet: a state of charge is never negative.
 TEST(Aims, ACampaignSaysThemAtItsEndAndInItsSummary) {
     const auto dir = std::filesystem::temp_directory_path() / ("campaign_aims_" + std::to_string(::getpid()));

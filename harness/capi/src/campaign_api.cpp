@@ -1,8 +1,12 @@
 // pvatt_campaign_run: a Monte-Carlo campaign in the calling process, through the campaign library: the
 // spec prepared, its runs done one after the other, one row each in the results table. What the
 // command `cosim campaign` adds around that (MPI ranks, the folder lock, the summary and its figures,
-// the replay of one run) stays with the command.
+// the replay of one run) stays with the command. pvatt_campaign_aims judges a written table by its spec's
+// aims, with the same code and words as the command's end.
 #include <cmath>
+#include <sstream>
+
+#include "aims.hpp"
 
 #include "campaign_error.hpp"
 #include "campaign_run.hpp"
@@ -13,6 +17,7 @@
 #include "drivers.hpp"
 #include "engine/interrupt.hpp"
 #include "results_table.hpp"
+#include "summary.hpp"
 
 using namespace pvatt_capi;
 
@@ -85,6 +90,27 @@ pvatt_status pvatt_campaign_run(const char* spec, const pvatt_campaign_options* 
             blocking.reported();
             throw;
         }
+    });
+}
+
+pvatt_status pvatt_campaign_aims(const char* spec, const char* table, int as_text, char* buffer, size_t size,
+                                 size_t* needed) {
+    return guarded([&] {
+        // The spec read for its aims and draws only: no FMU is loaded. A table without an aim's column (another
+        // spec's) is refused by name.
+        const campaign::CampaignSpec s = campaign::read_spec(required(spec, "spec"));
+        const campaign::ResultRows rows = campaign::read_table(required(table, "table"));
+        const campaign::AimsReport report = campaign::judge_aims(s, rows);
+        const auto by_category = campaign::judge_aims_by_category(s, rows);
+        std::string text;
+        if (as_text) {
+            std::ostringstream out;
+            campaign::print_aims(s, report, by_category, out);
+            text = out.str();
+        } else {
+            text = campaign::aims_json(s, report, by_category);
+        }
+        copy_text(text, buffer, size, needed);
     });
 }
 

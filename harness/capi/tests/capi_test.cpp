@@ -574,3 +574,38 @@ TEST(CapiSystemParameters, SetByNameLoadedFromAParameterFileAndListed) {
     pvatt_system_close(system);
     std::filesystem::remove_all(dir);
 }
+
+// A campaign's aims judged from a table written here (no run): JSON and the command's lines, the caller's buffer
+// sized as for pvatt_system_get, and a missing argument or a table of another spec refused with a message.
+TEST(CapiCampaign, AimsOfAWrittenTableAsJsonAndAsTheCommandsLines) {
+    const auto dir = std::filesystem::temp_directory_path() / ("pvatt_capi_aims_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    const auto spec = dir / "spec.toml", table = dir / "results.csv";
+    std::ofstream(spec)
+        << "system = \"never_opened.ssd\"\nruns = 3\nseed = 1\n[[metric]]\nname = \"x\"\nkind = \"column\"\n"
+           "column = \"gain.y\"\nstats = [\"final\"]\n[[aim]]\ncolumn = \"x.final\"\nbelow = 2\n";
+    std::ofstream(table) << "run,x.final,wall_time,status,message\n0,1.5,1,ok,\n1,2.5,1,ok,\n2,,1,failed,boom\n";
+    std::size_t needed = 0;
+    ASSERT_EQ(pvatt_campaign_aims(spec.c_str(), table.c_str(), 0, nullptr, 0, &needed), PVATT_BUFFER_TOO_SMALL);
+    std::string json(needed, '\0');
+    ASSERT_EQ(pvatt_campaign_aims(spec.c_str(), table.c_str(), 0, json.data(), json.size(), nullptr), PVATT_OK)
+        << pvatt_last_error();
+    json.resize(needed - 1);
+    EXPECT_EQ(json,
+              "{\"finished\": 2, \"failed\": 1, \"every\": 1, \"missing_any\": [1], \"aims\": [{\"column\": "
+              "\"x.final\", \"condition\": \"x.final < 2\", \"kind\": \"below\", \"low\": null, \"high\": 2, "
+              "\"skip_empty\": false, \"met\": 1, \"missed\": 1, \"not_judged\": 0, \"missing_runs\": [1]}], "
+              "\"by_category\": []}");
+    char text[512];
+    ASSERT_EQ(pvatt_campaign_aims(spec.c_str(), table.c_str(), 1, text, sizeof text, nullptr), PVATT_OK)
+        << pvatt_last_error();
+    EXPECT_STREQ(text,
+                 "aims, per run (2 finished runs, 1 failed, not judged):\n  x.final < 2: 1 met, 1 missed (run 1)\n"
+                 "  every aim: 1 of 2 runs\n");
+
+    EXPECT_EQ(pvatt_campaign_aims(nullptr, table.c_str(), 0, text, sizeof text, nullptr), PVATT_INVALID_ARGUMENT);
+    std::ofstream(table, std::ios::trunc) << "run,y.final,wall_time,status,message\n0,1,1,ok,\n";
+    EXPECT_EQ(pvatt_campaign_aims(spec.c_str(), table.c_str(), 0, text, sizeof text, nullptr), PVATT_ERROR);
+    EXPECT_NE(std::string(pvatt_last_error()).find("no column 'x.final'"), std::string::npos) << pvatt_last_error();
+    std::filesystem::remove_all(dir);
+}

@@ -235,6 +235,17 @@ PVATT_API pvatt_status pvatt_campaign_run(const char* spec, const pvatt_campaign
                                           const char* const* fmu_dirs, size_t fmu_dir_count, char* table_path,
                                           size_t size, size_t* needed);
 
+/* A campaign's aims (the [[aim]] entries of its spec: "error_sunlit.p95 < 1" and the like), judged from its
+ * results table (results.csv as pvatt_campaign_run or `cosim campaign` wrote it) as `cosim campaign` ends:
+ * per aim the runs that meet it and the runs that miss it, how many runs meet every aim, and every aim per
+ * kind of scene (an orbit draw's class, a choice of names, a case). As JSON (as_text 0; the keys in
+ * harness/campaign/src/aims.hpp, aims_json) or as the command's lines (as_text 1; empty for a spec without
+ * aims), copied into buffer as pvatt_system_get does. Only the spec is read, no FMU. Refused: a table that
+ * is not a whole campaign table (a last row without its line end: still running), larger than 1 GiB, or
+ * without a column an aim judges (another spec's). */
+PVATT_API pvatt_status pvatt_campaign_aims(const char* spec, const char* table, int as_text, char* buffer, size_t size,
+                                           size_t* needed);
+
 #ifdef __cplusplus
 }
 #endif
