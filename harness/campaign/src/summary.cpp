@@ -54,18 +54,7 @@ ResultRows split_rows(const std::vector<std::string>& header, const std::map<lon
     return t;
 }
 
-ResultRows read_table(const std::filesystem::path& file) {
-    const std::string name = "results table " + file.string();
-    std::error_code ec;
-    const auto bytes = std::filesystem::file_size(file, ec);
-    if (ec) throw CampaignError("cannot read the " + name + ": " + ec.message());
-    if (bytes > max_table_bytes)
-        throw CampaignError("the " + name + " has " + std::to_string(bytes) + " bytes, more than max_table_bytes (" +
-                            std::to_string(max_table_bytes) + ")");
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw CampaignError("cannot open the " + name);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) throw CampaignError("cannot read the " + name);
+ResultRows parse_table(const std::string& text, const std::string& name) {
     if (text.empty()) throw CampaignError("the " + name + " is empty");
     if (text.back() != '\n')
         throw CampaignError("the " + name +
@@ -94,6 +83,21 @@ ResultRows read_table(const std::filesystem::path& file) {
         }
     }
     return t;
+}
+
+ResultRows read_table(const std::filesystem::path& file) {
+    const std::string name = "results table " + file.string();
+    std::error_code ec;
+    const auto bytes = std::filesystem::file_size(file, ec);
+    if (ec) throw CampaignError("cannot read the " + name + ": " + ec.message());
+    if (bytes > max_table_bytes)
+        throw CampaignError("the " + name + " has " + std::to_string(bytes) + " bytes, more than max_table_bytes (" +
+                            std::to_string(max_table_bytes) + ")");
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw CampaignError("cannot open the " + name);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad()) throw CampaignError("cannot read the " + name);
+    return parse_table(text, name);
 }
 
 namespace {

@@ -34,6 +34,8 @@ ResultRows split_rows(const std::vector<std::string>& header, const std::map<lon
 // it first), a row of another width.
 inline constexpr std::uintmax_t max_table_bytes = std::uintmax_t{1} << 30;  // 1 GiB
 ResultRows read_table(const std::filesystem::path& file);
+// The same from the table's text; `name` says where it came from in an error.
+ResultRows parse_table(const std::string& text, const std::string& name);
 
 // A cell as a finite number, or nothing.
 std::optional<double> number_in(const std::string& cell);
