@@ -308,13 +308,14 @@ below = 0
     std::filesystem::remove_all(dir);
 }
 
-// The bundled robustness campaign carries issue 39's aims.
+// The bundled robustness campaign carries issue 39's eight aims and its own ninth.
 TEST(Aims, TheRobustnessCampaignCarriesIssue39sAims) {
     const auto spec = read_spec(std::filesystem::path(CAMPAIGN_TEST_SPECS) / "../../../campaigns/robustness.toml");
-    ASSERT_EQ(spec.aims.size(), 8u);
+    ASSERT_EQ(spec.aims.size(), 9u);
     EXPECT_EQ(aim_text(spec.aims[0]), "error_sunlit.p95 < 1");
     EXPECT_EQ(aim_text(spec.aims[2]), "nees_sunlit.per_dof in [0.5, 1.5]");
     EXPECT_EQ(aim_text(spec.aims[4]), "nees_sunlit.chi2_99 >= 95");
+    EXPECT_EQ(aim_text(spec.aims[8]), "error_while_valid.max < 10");  // never valid while further off than 10 deg
     EXPECT_TRUE(spec.aims[1].skip_empty);
     EXPECT_FALSE(spec.aims[0].skip_empty);
 }
