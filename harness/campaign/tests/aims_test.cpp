@@ -2,8 +2,6 @@
 // (counts worked out by hand for a table written here), and a whole campaign that says them.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -203,9 +201,7 @@ at_least = 2
 // A table read back from its file (the C API's and Python's way to the aims) and judged as JSON: the same table as
 // above, written as the campaign writes it (a message with a comma quoted); the counts worked out by hand.
 TEST(Aims, AWrittenTableIsReadBackAndJudgedAsJson) {
-    const auto dir = std::filesystem::temp_directory_path() / ("campaign_aims_table_" + std::to_string(::getpid()));
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
+    const auto dir = campaign_test::fresh_dir("aims_table");
     auto spec = parse_spec(head + R"(
 [[draw]]
 kind = "choice"
@@ -269,9 +265,7 @@ skip_empty = true
 
 // A whole campaign of two short runs with two aims no run can miss or meet: a state of charge is never negative.
 TEST(Aims, ACampaignSaysThemAtItsEndAndInItsSummary) {
-    const auto dir = std::filesystem::temp_directory_path() / ("campaign_aims_" + std::to_string(::getpid()));
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
+    const auto dir = campaign_test::fresh_dir("aims");
     std::string spec = campaign_test::leo_short_text() + R"(
 [[aim]]
 column = "soc.min"

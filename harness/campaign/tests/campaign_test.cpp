@@ -5,7 +5,6 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -30,11 +29,9 @@ using namespace campaign;
 
 namespace {
 
+// The campaign makes its output folder itself.
 std::filesystem::path fresh_dir(const std::string& name) {
-    const auto dir =
-        std::filesystem::temp_directory_path() / ("campaign_test_" + name + "_" + std::to_string(::getpid()));
-    std::filesystem::remove_all(dir);
-    return dir;
+    return campaign_test::fresh_dir(name, false);
 }
 
 std::vector<std::string> lines_of(const std::filesystem::path& file) {

@@ -7,18 +7,12 @@
 
 #include "campaign_error.hpp"
 #include "results_table.hpp"
+#include "spec_texts.hpp"
 
 using namespace campaign;
+using campaign_test::fresh_dir;
 
 namespace {
-
-std::filesystem::path fresh_dir(const std::string& name) {
-    const auto dir =
-        std::filesystem::temp_directory_path() / ("campaign_table_test_" + name + "_" + std::to_string(::getpid()));
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    return dir;
-}
 
 std::string slurp(const std::filesystem::path& file) {
     std::ifstream in(file);

@@ -1,7 +1,9 @@
 // What the campaign's tests share about specs: the error a spec text is refused with, the quick LEO spec
-// (specs/leo_short.toml) as text with its system's path made absolute, to extend and write elsewhere, and the
-// options of a quiet campaign of a spec written there.
+// (specs/leo_short.toml) as text with its system's path made absolute, to extend and write elsewhere, a scratch
+// folder to write it in, and the options of a quiet campaign of a spec written there.
 #pragma once
+
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -34,6 +36,16 @@ inline std::string leo_short_text() {
     spec.replace(spec.find(relative), relative.size(),
                  "\"" + std::string(CAMPAIGN_TEST_SPECS) + "/../../../systems/leo_orbit.ssd\"");
     return spec;
+}
+
+// A test's scratch folder, campaign_test_<name>_<pid> in the temporary directory: emptied, and created unless
+// `create` is false (a campaign's output folder the campaign makes itself).
+inline std::filesystem::path fresh_dir(const std::string& name, bool create = true) {
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("campaign_test_" + name + "_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    if (create) std::filesystem::create_directories(dir);
+    return dir;
 }
 
 // A campaign of `spec` into `output` on this build's FMUs, without progress lines or figures.
